@@ -1,0 +1,138 @@
+#include "ClusterBounds.h"
+
+#include <meshoptimizer.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace conescope {
+
+glm::dvec3 coneApex(const ConeOfNormals& cone, const glm::dvec3& center, const Mesh& mesh,
+                    const std::vector<glm::vec3>& world, const FaceGeometry& faces, const uint32_t* clusterFaces,
+                    size_t faceCount) {
+    if (!cone.cullable) return center;
+    // Move back along -axis until the point is on the back side of every face plane: then any eye
+    // that sees the apex from inside the back cone sees every face's back (meshoptimizer's argument).
+    double farthest = 0.0;
+    for (size_t i = 0; i < faceCount; ++i) {
+        const uint32_t f = clusterFaces[i];
+        const glm::dvec3& n = faces.normals[f];
+        const double along = glm::dot(n, cone.axis);
+        if (faces.degenerate[f] || !(along > 0.0)) continue;
+        for (size_t k = 0; k < mesh.faceSize(f); ++k) {
+            const glm::dvec3 q(world[mesh.faceBegin(f)[k]]);
+            farthest = std::max(farthest, glm::dot(n, center - q) / along);
+        }
+    }
+    return center - cone.axis * (farthest * (1.0 + 1e-12) + 1e-300);
+}
+
+namespace {
+
+ConeOfNormals coneByMethod(ConeMethod method, const std::vector<glm::dvec3>& normals) {
+    switch (method) {
+        case ConeMethod::Average: return averageCone(normals.data(), normals.size());
+        case ConeMethod::SeedSphere: return seedSphereCone(normals.data(), normals.size());
+        case ConeMethod::Minimal:
+        case ConeMethod::Meshopt: return minimalCone(normals.data(), normals.size());
+    }
+    return {};
+}
+
+// meshoptimizer's bounds for one cluster (fan triangles). Its float cone is widened to the exact
+// cone around the same axis when rounding made it too narrow, and its apex is pushed behind any
+// face plane it is in front of, so the tests built on it stay conservative.
+struct MeshoptCluster {
+    ConeOfNormals cone;
+    glm::dvec3 center{0.0};
+    glm::dvec3 apex{0.0};
+    bool usable = false;
+};
+
+MeshoptCluster meshoptBounds(const Mesh& mesh, const std::vector<glm::vec3>& world, const uint32_t* clusterFaces,
+                             size_t faceCount, const std::vector<glm::dvec3>& normals) {
+    std::vector<uint32_t> indices;
+    for (size_t i = 0; i < faceCount; ++i) {
+        const uint32_t* face = mesh.faceBegin(clusterFaces[i]);
+        for (size_t k = 1; k + 1 < mesh.faceSize(clusterFaces[i]); ++k)
+            indices.insert(indices.end(), {face[0], face[k], face[k + 1]});
+    }
+    MeshoptCluster result;
+    if (indices.empty() || indices.size() / 3 > 512) return result;  // meshoptimizer's own limit
+    const meshopt_Bounds bounds =
+        meshopt_computeClusterBounds(indices.data(), indices.size(), &world[0].x, world.size(), sizeof(glm::vec3));
+    result.center = glm::dvec3(bounds.center[0], bounds.center[1], bounds.center[2]);
+    result.apex = glm::dvec3(bounds.cone_apex[0], bounds.cone_apex[1], bounds.cone_apex[2]);
+    if (bounds.cone_cutoff >= 1.0f) return result;  // meshoptimizer: wider than a hemisphere
+    const glm::dvec3 axis(bounds.cone_axis[0], bounds.cone_axis[1], bounds.cone_axis[2]);
+    ConeOfNormals cone = coneAroundAxis(axis, normals.data(), normals.size());
+    if (!cone.cullable) return result;
+    cone.sinHalfAngle = std::max(cone.sinHalfAngle, double(bounds.cone_cutoff));
+    cone.cosHalfAngle = std::min(cone.cosHalfAngle, std::sqrt(std::max(0.0, 1.0 - cone.sinHalfAngle * cone.sinHalfAngle)));
+    result.cone = cone;
+    result.usable = true;
+    return result;
+}
+
+}  // namespace
+
+ClusterBounds computeClusterBounds(const Mesh& mesh, const std::vector<glm::vec3>& world, const FaceGeometry& faces,
+                                   const Partition& partition, ConeMethod coneMethod, SphereMethod sphereMethod) {
+    ClusterBounds bounds;
+    bounds.coneMethod = coneMethod;
+    bounds.sphereMethod = sphereMethod;
+    bounds.faces = facesByCluster(partition);
+    const size_t clusterCount = partition.clusterCount;
+    bounds.vertexStarts.assign(clusterCount + 1, 0);
+    bounds.triangles.assign(clusterCount, 0);
+    bounds.cones.resize(clusterCount);
+    bounds.boxes.resize(clusterCount);
+    bounds.spheres.resize(clusterCount);
+    bounds.apexes.resize(clusterCount);
+    std::vector<uint32_t> seen(world.size(), std::numeric_limits<uint32_t>::max());
+    std::vector<glm::dvec3> normals, points;
+    for (uint32_t c = 0; c < clusterCount; ++c) {
+        const uint32_t* clusterFaces = bounds.faces.faces.data() + bounds.faces.starts[c];
+        const size_t faceCount = bounds.faces.starts[c + 1] - bounds.faces.starts[c];
+        normals.clear();
+        points.clear();
+        Aabb box;
+        box.min = glm::vec3(std::numeric_limits<float>::max());
+        box.max = glm::vec3(-std::numeric_limits<float>::max());
+        for (size_t i = 0; i < faceCount; ++i) {
+            const uint32_t f = clusterFaces[i];
+            normals.push_back(faces.normals[f]);
+            bounds.triangles[c] += uint32_t(mesh.faceSize(f) - 2);
+            for (size_t k = 0; k < mesh.faceSize(f); ++k) {
+                const uint32_t v = mesh.faceBegin(f)[k];
+                if (seen[v] == c) continue;
+                seen[v] = c;
+                bounds.vertexIds.push_back(v);
+                points.emplace_back(world[v]);
+                box.min = glm::min(box.min, world[v]);
+                box.max = glm::max(box.max, world[v]);
+            }
+        }
+        bounds.vertexStarts[c + 1] = uint32_t(bounds.vertexIds.size());
+        bounds.boxes[c] = box;
+        bounds.spheres[c] = sphereMethod == SphereMethod::Minimal ? minimalSphere(points.data(), points.size())
+                                                                  : ritterSphere(points.data(), points.size());
+        if (coneMethod == ConeMethod::Meshopt) {
+            const MeshoptCluster meshopt = meshoptBounds(mesh, world, clusterFaces, faceCount, normals);
+            bounds.cones[c] = meshopt.cone;  // not cullable unless meshoptimizer gave a cone
+            if (meshopt.usable) {
+                bounds.spheres[c] = sphereAround(meshopt.center, points.data(), points.size());
+                bounds.apexes[c] = coneApex(meshopt.cone, meshopt.apex, mesh, world, faces, clusterFaces, faceCount);
+            } else {
+                bounds.apexes[c] = bounds.spheres[c].center;
+            }
+            continue;
+        }
+        bounds.cones[c] = coneByMethod(coneMethod, normals);
+        bounds.apexes[c] = coneApex(bounds.cones[c], bounds.spheres[c].center, mesh, world, faces, clusterFaces, faceCount);
+    }
+    return bounds;
+}
+
+}  // namespace conescope

@@ -1,0 +1,48 @@
+// Everything a cull test reads about a cluster, computed once per partition: its faces and
+// vertices, a cone of normals, an AABB, a bounding sphere and the apex of meshoptimizer's apex test.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "Cones.h"
+#include "Mesh.h"
+#include "Partition.h"
+#include "Spheres.h"
+
+namespace conescope {
+
+enum class ConeMethod { Average, SeedSphere, Minimal, Meshopt };
+enum class SphereMethod { Ritter, Minimal };
+
+struct ClusterBounds {
+    ConeMethod coneMethod = ConeMethod::Minimal;
+    SphereMethod sphereMethod = SphereMethod::Minimal;
+    ClusterFaces faces;                  // faces of each cluster
+    std::vector<uint32_t> vertexStarts;  // distinct vertices of each cluster, compressed rows
+    std::vector<uint32_t> vertexIds;
+    std::vector<uint32_t> triangles;     // fan triangles per cluster (degenerate faces included)
+    std::vector<ConeOfNormals> cones;
+    std::vector<Aabb> boxes;
+    std::vector<Sphere> spheres;
+    // Apex test: the cone's apex, placed on the back side of every face plane of the cluster.
+    std::vector<glm::dvec3> apexes;
+
+    size_t count() const { return cones.size(); }
+};
+
+// World positions and face geometry must come from the same mesh (worldPositions, computeFaceGeometry).
+ClusterBounds computeClusterBounds(const Mesh& mesh, const std::vector<glm::vec3>& world, const FaceGeometry& faces,
+                                   const Partition& partition, ConeMethod coneMethod,
+                                   SphereMethod sphereMethod = SphereMethod::Minimal);
+
+// The point behind every face plane along -axis (meshoptimizer's construction, in double):
+// apex = centre - axis * max_f n_f.(centre - q_f) / n_f.axis over the faces' vertices q_f.
+glm::dvec3 coneApex(const ConeOfNormals& cone, const glm::dvec3& center, const Mesh& mesh,
+                    const std::vector<glm::vec3>& world, const FaceGeometry& faces, const uint32_t* clusterFaces,
+                    size_t faceCount);
+
+}  // namespace conescope

@@ -1,0 +1,83 @@
+// Per-face truth and per-cluster cull tests. A test culls a cluster only when every face in it is
+// strictly back-facing, n.(e - q) < 0 for every vertex q; edge-on faces count as visible.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "ClusterBounds.h"
+#include "Views.h"
+
+namespace conescope {
+
+enum class CullTest { Oracle, Vertices, Aabb, AabbFast, Sphere, Apex, MeshoptSphere };
+
+// Margin added to every threshold a cluster test compares against: it absorbs the rounding of the
+// double-precision dot products so that a face exactly edge-on is never culled.
+constexpr double kCullMargin = 1e-9;
+
+enum class Facing : uint8_t { Front = 0, Back = 1, Degenerate = 2 };
+
+// The exact per-face oracle: Back iff n.(e - q) < 0 for every vertex q of the face (perspective),
+// or n.d > 0 for the view direction d (orthographic). Degenerate faces have no side.
+Facing classifyFace(const Mesh& mesh, const std::vector<glm::vec3>& world, const FaceGeometry& faces, size_t face,
+                    const Eye& eye);
+std::vector<Facing> classifyFaces(const Mesh& mesh, const std::vector<glm::vec3>& world, const FaceGeometry& faces,
+                                  const Eye& eye);
+
+// The everything a cluster test needs besides the bounds.
+struct CullingInput {
+    const Mesh& mesh;
+    const std::vector<glm::vec3>& world;
+    const FaceGeometry& faces;
+    const ClusterBounds& bounds;
+};
+
+// One cluster, one eye, one test.
+bool cullCluster(const CullingInput& input, uint32_t cluster, const Eye& eye, CullTest test);
+
+// All clusters: 1 = culled.
+std::vector<uint8_t> cullClusters(const CullingInput& input, const Eye& eye, CullTest test);
+
+// The single comparisons the tests are made of, exposed so the GUI can show each step.
+// v.V1 > sin(alpha): the unit view vector lies inside the cone of views that see every normal's back.
+bool viewDirectionSeesBack(const ConeOfNormals& cone, const glm::dvec3& unitView);
+// Seed 000's bounding-sphere test: v.V1 > cos(B - asin(r/d)); never culls with the eye inside.
+bool sphereSeesBack(const ConeOfNormals& cone, const Sphere& sphere, const glm::dvec3& eye);
+// meshoptimizer's sphere test: (c - e).V1 > sin(alpha) |c - e| + r.
+bool meshoptSphereSeesBack(const ConeOfNormals& cone, const Sphere& sphere, const glm::dvec3& eye);
+// Seed 000's box test without normalisation: for each corner k, (k - e).V1 > 0 and
+// ((k - e).V1)^2 > sin^2(alpha) |k - e|^2.
+bool pointSeesBackUnnormalised(const ConeOfNormals& cone, const glm::dvec3& point, const glm::dvec3& eye);
+std::array<glm::dvec3, 8> aabbCorners(const Aabb& box);
+
+// A learner's view of one decision: every number the chosen test compared.
+struct CullExplanation {
+    bool culled = false;
+    bool cullable = false;
+    glm::dvec3 axis{0.0};
+    double halfAngleDegrees = 90.0;
+    double cosHalfAngle = 0.0;        // min n.V1
+    double angleBDegrees = 0.0;       // B = 90 - alpha
+    double threshold = 0.0;           // the value v.V1 had to exceed
+    glm::dvec3 view{0.0};             // unit vector from the eye to the sphere centre (or the view direction)
+    double viewDotAxis = 0.0;
+    double distance = 0.0;            // |c - e|
+    double radius = 0.0;
+    double sphereAngleDegrees = 0.0;  // asin(r/d)
+    bool eyeInsideSphere = false;
+    glm::dvec3 apex{0.0};
+    std::array<glm::dvec3, 8> corners{};
+    std::array<double, 8> cornerDotAxis{};
+    std::array<bool, 8> cornerBack{};
+    size_t pointsTested = 0;          // vertices or corners looked at
+    size_t pointsBack = 0;
+    size_t frontFaces = 0;            // by the oracle
+    size_t backFaces = 0;
+    size_t degenerateFaces = 0;
+};
+CullExplanation explainCull(const CullingInput& input, uint32_t cluster, const Eye& eye, CullTest test);
+
+}  // namespace conescope

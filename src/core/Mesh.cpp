@@ -1,0 +1,142 @@
+#include "Mesh.h"
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+
+namespace conescope {
+
+void Mesh::addFace(std::initializer_list<uint32_t> vertices) { addFace(vertices.begin(), vertices.size()); }
+
+void Mesh::addFace(const uint32_t* vertices, size_t count) {
+    if (faceStarts.empty()) faceStarts.push_back(0);
+    faceVertices.insert(faceVertices.end(), vertices, vertices + count);
+    faceStarts.push_back(static_cast<uint32_t>(faceVertices.size()));
+}
+
+void validateMesh(const Mesh& mesh) {
+    auto fail = [](const std::string& message) { throw std::runtime_error(message); };
+    if (mesh.faceStarts.empty() || mesh.faceStarts.front() != 0) fail("face offsets must start at 0");
+    if (mesh.faceStarts.back() != mesh.faceVertices.size()) fail("face offsets do not cover the index list");
+    for (size_t i = 0; i < mesh.positions.size(); ++i) {
+        const glm::vec3& p = mesh.positions[i];
+        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
+            std::ostringstream out;
+            out << "vertex " << i << " has a non-finite coordinate (" << p.x << ", " << p.y << ", " << p.z << ")";
+            fail(out.str());
+        }
+    }
+    for (size_t f = 0; f < mesh.faceCount(); ++f) {
+        if (mesh.faceStarts[f + 1] < mesh.faceStarts[f]) fail("face offsets decrease at face " + std::to_string(f));
+        if (mesh.faceSize(f) < 3)
+            fail("face " + std::to_string(f) + " has " + std::to_string(mesh.faceSize(f)) + " vertices (needs 3 or more)");
+        const uint32_t* face = mesh.faceBegin(f);
+        for (size_t k = 0; k < mesh.faceSize(f); ++k)
+            if (face[k] >= mesh.positions.size())
+                fail("face " + std::to_string(f) + " uses vertex " + std::to_string(face[k]) + " but there are only " +
+                     std::to_string(mesh.positions.size()) + " vertices");
+    }
+    for (const auto& [name, values] : mesh.faceArrays)
+        if (values.size() != mesh.faceCount())
+            fail("per-face array '" + name + "' has " + std::to_string(values.size()) + " values for " +
+                 std::to_string(mesh.faceCount()) + " faces");
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r)
+            if (!std::isfinite(mesh.model[c][r])) fail("model matrix has a non-finite entry");
+    if (std::abs(glm::determinant(mesh.model)) == 0.0) fail("model matrix is singular");
+}
+
+size_t triangleCount(const Mesh& mesh) {
+    size_t total = 0;
+    for (size_t f = 0; f < mesh.faceCount(); ++f) total += mesh.faceSize(f) - 2;
+    return total;
+}
+
+static bool isIdentity(const glm::dmat4& m) { return m == glm::dmat4(1.0); }
+
+std::vector<glm::vec3> worldPositions(const Mesh& mesh) {
+    if (isIdentity(mesh.model)) return mesh.positions;
+    std::vector<glm::vec3> world(mesh.positions.size());
+    for (size_t i = 0; i < world.size(); ++i)
+        world[i] = glm::vec3(mesh.model * glm::dvec4(glm::dvec3(mesh.positions[i]), 1.0));
+    return world;
+}
+
+glm::dvec3 newellNormal(const glm::vec3* positions, const uint32_t* face, size_t count) {
+    if (count == 3) {
+        // The cross product of edges from one corner: fewer roundings than Newell's sum for triangles.
+        glm::dvec3 a(positions[face[0]]), b(positions[face[1]]), c(positions[face[2]]);
+        return glm::cross(b - a, c - a);
+    }
+    glm::dvec3 normal(0.0);
+    // Centre the loop first so large coordinates do not swamp the projected areas.
+    glm::dvec3 mean(0.0);
+    for (size_t i = 0; i < count; ++i) mean += glm::dvec3(positions[face[i]]);
+    mean /= double(count);
+    for (size_t i = 0; i < count; ++i) {
+        glm::dvec3 p = glm::dvec3(positions[face[i]]) - mean;
+        glm::dvec3 q = glm::dvec3(positions[face[(i + 1) % count]]) - mean;
+        normal.x += (p.y - q.y) * (p.z + q.z);
+        normal.y += (p.z - q.z) * (p.x + q.x);
+        normal.z += (p.x - q.x) * (p.y + q.y);
+    }
+    return normal;
+}
+
+glm::dvec4 transformPlane(const glm::dvec4& plane, const glm::dmat4& model) {
+    glm::dvec4 transformed = glm::transpose(glm::inverse(model)) * plane;
+    return glm::determinant(model) < 0.0 ? -transformed : transformed;
+}
+
+FaceGeometry computeFaceGeometry(const Mesh& mesh) {
+    const size_t faceCount = mesh.faceCount();
+    FaceGeometry geometry;
+    geometry.normals.resize(faceCount);
+    geometry.planeOffsets.resize(faceCount);
+    geometry.centroids.resize(faceCount);
+    geometry.areas.resize(faceCount);
+    geometry.degenerate.resize(faceCount);
+    const bool transformed = !isIdentity(mesh.model);
+    const glm::dmat4 normalMatrix = glm::transpose(glm::inverse(mesh.model));
+    const double orientation = glm::determinant(mesh.model) < 0.0 ? -1.0 : 1.0;
+    for (size_t f = 0; f < faceCount; ++f) {
+        const uint32_t* face = mesh.faceBegin(f);
+        const size_t count = mesh.faceSize(f);
+        glm::dvec3 mean(0.0);
+        for (size_t i = 0; i < count; ++i) mean += glm::dvec3(mesh.positions[face[i]]);
+        mean /= double(count);
+        glm::dvec3 normal = newellNormal(mesh.positions.data(), face, count);
+        double length = glm::length(normal);
+        if (transformed) {
+            // Seed 003: the plane [n, -n.p_mean] goes through (M^-1)^T, flipped when det M < 0.
+            glm::dvec4 plane = orientation * (normalMatrix * glm::dvec4(normal, -glm::dot(normal, mean)));
+            normal = glm::dvec3(plane);
+            mean = glm::dvec3(mesh.model * glm::dvec4(mean, 1.0));
+            // Area in world space: the cofactor matrix scales the Newell vector by |det M| along n.
+            length = glm::length(normal) * std::abs(glm::determinant(glm::dmat3(mesh.model)));
+        }
+        const double normalLength = glm::length(normal);
+        const bool degenerate = !(normalLength > 0.0) || !std::isfinite(normalLength);
+        geometry.degenerate[f] = degenerate ? 1 : 0;
+        geometry.degenerateCount += degenerate ? 1 : 0;
+        geometry.normals[f] = degenerate ? glm::dvec3(0.0) : normal / normalLength;
+        geometry.centroids[f] = mean;
+        geometry.planeOffsets[f] = -glm::dot(geometry.normals[f], mean);
+        geometry.areas[f] = degenerate ? 0.0 : 0.5 * length;
+    }
+    return geometry;
+}
+
+Aabb computeAabb(const std::vector<glm::vec3>& points) {
+    Aabb box;
+    if (points.empty()) return box;
+    box.min = box.max = points.front();
+    for (const glm::vec3& p : points) {
+        box.min = glm::min(box.min, p);
+        box.max = glm::max(box.max, p);
+    }
+    return box;
+}
+
+}  // namespace conescope

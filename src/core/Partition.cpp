@@ -1,0 +1,341 @@
+#include "Partition.h"
+
+#include <meshoptimizer.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <random>
+#include <sstream>
+#include <stdexcept>
+#include <unordered_map>
+
+namespace conescope {
+
+namespace {
+constexpr uint32_t kUnassigned = std::numeric_limits<uint32_t>::max();
+
+// Faces around each vertex, compressed rows: the adjacency every growing builder walks.
+struct VertexFaces {
+    std::vector<uint32_t> starts;
+    std::vector<uint32_t> faces;
+};
+
+VertexFaces facesAroundVertices(const Mesh& mesh) {
+    VertexFaces adjacency;
+    adjacency.starts.assign(mesh.positions.size() + 1, 0);
+    for (uint32_t v : mesh.faceVertices) ++adjacency.starts[v + 1];
+    for (size_t v = 0; v < mesh.positions.size(); ++v) adjacency.starts[v + 1] += adjacency.starts[v];
+    adjacency.faces.resize(mesh.faceVertices.size());
+    std::vector<uint32_t> cursor(adjacency.starts.begin(), adjacency.starts.end() - 1);
+    for (size_t f = 0; f < mesh.faceCount(); ++f)
+        for (size_t k = 0; k < mesh.faceSize(f); ++k) adjacency.faces[cursor[mesh.faceBegin(f)[k]]++] = uint32_t(f);
+    return adjacency;
+}
+
+// Renumbers cluster ids densely (0..K-1) in order of first use, dropping empty ids.
+Partition compact(std::vector<uint32_t> clusterOfFace) {
+    std::unordered_map<uint32_t, uint32_t> renumber;
+    for (uint32_t& id : clusterOfFace) {
+        auto [it, inserted] = renumber.try_emplace(id, uint32_t(renumber.size()));
+        id = it->second;
+    }
+    return {std::move(clusterOfFace), uint32_t(renumber.size())};
+}
+}  // namespace
+
+Partition buildMeshlets(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits, double normalWeight) {
+    const size_t faceCount = mesh.faceCount();
+    const VertexFaces adjacency = facesAroundVertices(mesh);
+    std::vector<uint32_t> clusterOfFace(faceCount, kUnassigned);
+    std::vector<uint32_t> vertexCluster(mesh.positions.size(), kUnassigned);
+    std::vector<uint32_t> candidateCluster(faceCount, kUnassigned);
+    std::vector<uint32_t> candidates, leftovers;
+    size_t nextUnassigned = 0;
+    uint32_t cluster = 0;
+
+    auto newVertices = [&](uint32_t f) {
+        size_t added = 0;
+        for (size_t k = 0; k < mesh.faceSize(f); ++k) added += vertexCluster[mesh.faceBegin(f)[k]] != cluster;
+        return added;
+    };
+
+    while (true) {
+        // Seed next to the previous cluster when possible, so clusters tile the surface without gaps.
+        uint32_t seed = kUnassigned;
+        for (uint32_t f : leftovers)
+            if (clusterOfFace[f] == kUnassigned) { seed = f; break; }
+        if (seed == kUnassigned) {
+            while (nextUnassigned < faceCount && clusterOfFace[nextUnassigned] != kUnassigned) ++nextUnassigned;
+            if (nextUnassigned == faceCount) break;
+            seed = uint32_t(nextUnassigned);
+        }
+        candidates.clear();
+        size_t vertexCount = 0, triangleTotal = 0;
+        glm::dvec3 normalSum(0.0);
+        glm::dvec3 positionSum(0.0);
+        size_t faceTotal = 0;
+
+        auto addFace = [&](uint32_t f) {
+            clusterOfFace[f] = cluster;
+            triangleTotal += mesh.faceSize(f) - 2;
+            normalSum += faces.normals[f];
+            positionSum += faces.centroids[f];
+            ++faceTotal;
+            for (size_t k = 0; k < mesh.faceSize(f); ++k) {
+                const uint32_t v = mesh.faceBegin(f)[k];
+                if (vertexCluster[v] != cluster) vertexCluster[v] = cluster, ++vertexCount;
+                for (uint32_t i = adjacency.starts[v]; i < adjacency.starts[v + 1]; ++i) {
+                    const uint32_t g = adjacency.faces[i];
+                    if (clusterOfFace[g] == kUnassigned && candidateCluster[g] != cluster)
+                        candidateCluster[g] = cluster, candidates.push_back(g);
+                }
+            }
+        };
+        addFace(seed);
+        double radiusSquared = 0.0;  // running extent of the cluster, to keep it round
+
+        while (true) {
+            const glm::dvec3 axis = glm::length(normalSum) > 0.0 ? glm::normalize(normalSum) : glm::dvec3(0.0);
+            const glm::dvec3 center = positionSum / double(faceTotal);
+            double bestScore = std::numeric_limits<double>::infinity();
+            uint32_t chosen = kUnassigned;  // a face id: the list below is compacted while scanned
+            for (size_t i = 0; i < candidates.size();) {
+                const uint32_t f = candidates[i];
+                if (clusterOfFace[f] != kUnassigned) {  // taken since it was listed
+                    candidates[i] = candidates.back();
+                    candidates.pop_back();
+                    continue;
+                }
+                const size_t added = newVertices(f);
+                if (vertexCount + added > limits.maxVertices || triangleTotal + mesh.faceSize(f) - 2 > limits.maxTriangles) {
+                    ++i;
+                    continue;
+                }
+                // Few new vertices keeps the meshlet dense; a normal close to the axis keeps the cone
+                // narrow; distance from the centre keeps the cluster round so its bounds stay tight.
+                const glm::dvec3 offset = faces.centroids[f] - center;
+                const double spread = radiusSquared > 0.0 ? glm::dot(offset, offset) / radiusSquared : 0.0;
+                const double score = double(added) / double(mesh.faceSize(f)) + 0.25 * spread +
+                                     normalWeight * 4.0 * (1.0 - glm::dot(faces.normals[f], axis));
+                if (score < bestScore) bestScore = score, chosen = f;
+                ++i;
+            }
+            if (chosen == kUnassigned) break;
+            const glm::dvec3 offset = faces.centroids[chosen] - center;
+            radiusSquared = std::max(radiusSquared, glm::dot(offset, offset));
+            addFace(chosen);
+        }
+        leftovers.swap(candidates);
+        ++cluster;
+    }
+    return {std::move(clusterOfFace), cluster};
+}
+
+Partition buildKMeans(const Mesh& mesh, const FaceGeometry& faces, size_t clusterCount, double normalWeight,
+                      size_t iterations, uint64_t seed) {
+    const size_t faceCount = mesh.faceCount();
+    if (faceCount == 0) return {};
+    clusterCount = std::clamp<size_t>(clusterCount, 1, faceCount);
+    double totalArea = 0.0;
+    for (double a : faces.areas) totalArea += a;
+    // Positions are divided by the expected cluster diameter so that position and normal weigh alike.
+    const double scale = std::max(std::sqrt(std::max(totalArea, 1e-300) / double(clusterCount)), 1e-300);
+    std::vector<glm::dvec3> centerPositions(clusterCount), centerNormals(clusterCount);
+    std::mt19937_64 random(seed);
+    std::vector<uint32_t> order(faceCount);
+    for (size_t f = 0; f < faceCount; ++f) order[f] = uint32_t(f);
+    std::shuffle(order.begin(), order.end(), random);
+    for (size_t k = 0; k < clusterCount; ++k) {
+        centerPositions[k] = faces.centroids[order[k]] / scale;
+        centerNormals[k] = faces.normals[order[k]] * normalWeight;
+    }
+    std::vector<uint32_t> assignment(faceCount, 0);
+    for (size_t iteration = 0; iteration < iterations; ++iteration) {
+        // Grid over centre positions (cell = 1 in scaled units): the nearest centre is found by
+        // searching rings of cells until the ring is farther than the best distance so far.
+        glm::dvec3 low = centerPositions[0], high = centerPositions[0];
+        for (const glm::dvec3& c : centerPositions) low = glm::min(low, c), high = glm::max(high, c);
+        const double cell = 1.0;
+        const glm::ivec3 dims = glm::clamp(glm::ivec3(glm::floor((high - low) / cell)) + 1, 1, 256);
+        const glm::dvec3 cellSize = glm::max((high - low) / glm::dvec3(dims), glm::dvec3(1e-300));
+        auto cellOf = [&](const glm::dvec3& p) {
+            return glm::clamp(glm::ivec3(glm::floor((p - low) / cellSize)), glm::ivec3(0), dims - 1);
+        };
+        const size_t cellCount = size_t(dims.x) * dims.y * dims.z;
+        std::vector<uint32_t> cellStarts(cellCount + 1, 0), cellCenters(clusterCount);
+        for (const glm::dvec3& c : centerPositions) {
+            const glm::ivec3 g = cellOf(c);
+            ++cellStarts[size_t(g.x) + size_t(dims.x) * (size_t(g.y) + size_t(dims.y) * g.z) + 1];
+        }
+        for (size_t i = 0; i < cellCount; ++i) cellStarts[i + 1] += cellStarts[i];
+        std::vector<uint32_t> cursor(cellStarts.begin(), cellStarts.end() - 1);
+        for (size_t k = 0; k < clusterCount; ++k) {
+            const glm::ivec3 g = cellOf(centerPositions[k]);
+            cellCenters[cursor[size_t(g.x) + size_t(dims.x) * (size_t(g.y) + size_t(dims.y) * g.z)]++] = uint32_t(k);
+        }
+        const double minCell = std::min({cellSize.x, cellSize.y, cellSize.z});
+        const int maxRing = std::max({dims.x, dims.y, dims.z});
+        for (size_t f = 0; f < faceCount; ++f) {
+            const glm::dvec3 p = faces.centroids[f] / scale, n = faces.normals[f] * normalWeight;
+            const glm::ivec3 home = cellOf(p);
+            double best = std::numeric_limits<double>::infinity();
+            uint32_t bestCluster = assignment[f];
+            for (int ring = 0; ring <= maxRing; ++ring) {
+                const double reach = std::max(0.0, (ring - 1) * minCell);
+                if (reach * reach > best) break;
+                for (int z = home.z - ring; z <= home.z + ring; ++z)
+                    for (int y = home.y - ring; y <= home.y + ring; ++y)
+                        for (int x = home.x - ring; x <= home.x + ring; ++x) {
+                            if (std::max({std::abs(x - home.x), std::abs(y - home.y), std::abs(z - home.z)}) != ring) continue;
+                            if (x < 0 || y < 0 || z < 0 || x >= dims.x || y >= dims.y || z >= dims.z) continue;
+                            const size_t c = size_t(x) + size_t(dims.x) * (size_t(y) + size_t(dims.y) * z);
+                            for (uint32_t i = cellStarts[c]; i < cellStarts[c + 1]; ++i) {
+                                const uint32_t k = cellCenters[i];
+                                const glm::dvec3 dp = p - centerPositions[k], dn = n - centerNormals[k];
+                                const double d = glm::dot(dp, dp) + glm::dot(dn, dn);
+                                if (d < best) best = d, bestCluster = k;
+                            }
+                        }
+            }
+            assignment[f] = bestCluster;
+        }
+        // Update: area-weighted means; an emptied cluster keeps its old centre.
+        std::vector<glm::dvec3> positionSums(clusterCount, glm::dvec3(0.0)), normalSums(clusterCount, glm::dvec3(0.0));
+        std::vector<double> weights(clusterCount, 0.0);
+        for (size_t f = 0; f < faceCount; ++f) {
+            const double w = std::max(faces.areas[f], 1e-300);
+            positionSums[assignment[f]] += w * faces.centroids[f] / scale;
+            normalSums[assignment[f]] += w * faces.normals[f];
+            weights[assignment[f]] += w;
+        }
+        for (size_t k = 0; k < clusterCount; ++k) {
+            if (weights[k] <= 0.0) continue;
+            centerPositions[k] = positionSums[k] / weights[k];
+            const double length = glm::length(normalSums[k]);
+            centerNormals[k] = length > 0.0 ? normalSums[k] / length * normalWeight : glm::dvec3(0.0);
+        }
+    }
+    return compact(std::move(assignment));
+}
+
+Partition buildMeshoptMeshlets(const Mesh& mesh, const MeshletLimits& limits, float coneWeight) {
+    if (limits.maxVertices < 3 || limits.maxVertices > 255 || limits.maxTriangles < 1 || limits.maxTriangles > 512 ||
+        limits.maxTriangles % 4 != 0)
+        throw std::invalid_argument("meshoptimizer needs 3 <= max vertices <= 255 and max triangles <= 512, divisible by 4 (got " +
+                                    std::to_string(limits.maxVertices) + "/" + std::to_string(limits.maxTriangles) + ")");
+    // Fan triangulation, remembering which face each triangle came from.
+    std::vector<uint32_t> indices;
+    indices.reserve(triangleCount(mesh) * 3);
+    for (size_t f = 0; f < mesh.faceCount(); ++f) {
+        const uint32_t* face = mesh.faceBegin(f);
+        for (size_t k = 1; k + 1 < mesh.faceSize(f); ++k) {
+            indices.push_back(face[0]);
+            indices.push_back(face[k]);
+            indices.push_back(face[k + 1]);
+        }
+    }
+    // meshoptimizer reorders triangles inside meshlets, so the face of each output triangle is found
+    // again by its sorted vertex triple (a list per triple handles duplicate faces).
+    struct TripleHash {
+        size_t operator()(const std::array<uint32_t, 3>& t) const {
+            return (size_t(t[0]) * 73856093u) ^ (size_t(t[1]) * 19349663u) ^ (size_t(t[2]) * 83492791u);
+        }
+    };
+    std::unordered_map<std::array<uint32_t, 3>, std::vector<uint32_t>, TripleHash> faceOfTriangle;
+    faceOfTriangle.reserve(indices.size() / 3);
+    {
+        size_t t = 0;
+        for (size_t f = 0; f < mesh.faceCount(); ++f)
+            for (size_t k = 1; k + 1 < mesh.faceSize(f); ++k, ++t) {
+                std::array<uint32_t, 3> key = {indices[3 * t], indices[3 * t + 1], indices[3 * t + 2]};
+                std::sort(key.begin(), key.end());
+                faceOfTriangle[key].push_back(uint32_t(f));
+            }
+    }
+    const size_t maxMeshlets = meshopt_buildMeshletsBound(indices.size(), limits.maxVertices, limits.maxTriangles);
+    std::vector<meshopt_Meshlet> meshlets(maxMeshlets);
+    std::vector<unsigned int> meshletVertices(maxMeshlets * limits.maxVertices);
+    std::vector<unsigned char> meshletTriangles(maxMeshlets * limits.maxTriangles * 3);
+    const size_t count = meshopt_buildMeshlets(meshlets.data(), meshletVertices.data(), meshletTriangles.data(),
+                                               indices.data(), indices.size(), &mesh.positions[0].x,
+                                               mesh.positions.size(), sizeof(glm::vec3), limits.maxVertices,
+                                               limits.maxTriangles, coneWeight);
+    std::vector<uint32_t> clusterOfFace(mesh.faceCount(), kUnassigned);
+    for (size_t m = 0; m < count; ++m) {
+        const meshopt_Meshlet& meshlet = meshlets[m];
+        for (size_t t = 0; t < meshlet.triangle_count; ++t) {
+            std::array<uint32_t, 3> key;
+            for (int c = 0; c < 3; ++c)
+                key[c] = meshletVertices[meshlet.vertex_offset + meshletTriangles[meshlet.triangle_offset + 3 * t + c]];
+            std::sort(key.begin(), key.end());
+            auto it = faceOfTriangle.find(key);
+            if (it == faceOfTriangle.end() || it->second.empty()) continue;
+            const uint32_t f = it->second.back();
+            it->second.pop_back();
+            if (clusterOfFace[f] == kUnassigned) clusterOfFace[f] = uint32_t(m);
+        }
+    }
+    // meshoptimizer drops nothing but fully degenerate index triples may not come back; give them a cluster.
+    uint32_t last = 0;
+    for (uint32_t& id : clusterOfFace) {
+        if (id == kUnassigned) id = last;
+        last = id;
+    }
+    return compact(std::move(clusterOfFace));
+}
+
+Partition partitionFromIds(const std::vector<double>& ids, size_t faceCount, const std::string& source) {
+    if (ids.size() != faceCount)
+        throw std::runtime_error(source + ": " + std::to_string(ids.size()) + " cluster ids for " +
+                                 std::to_string(faceCount) + " faces");
+    std::vector<uint32_t> clusterOfFace(faceCount);
+    for (size_t f = 0; f < faceCount; ++f) {
+        const double id = ids[f];
+        if (!(id >= 0.0) || id != std::floor(id) || id > 4294967294.0) {
+            std::ostringstream message;
+            message << source << ": face " << f << " has cluster id " << id << " (must be a non-negative integer)";
+            throw std::runtime_error(message.str());
+        }
+        clusterOfFace[f] = uint32_t(id);
+    }
+    return compact(std::move(clusterOfFace));
+}
+
+std::vector<double> readClusterIdFile(const std::string& path) {
+    std::ifstream in(path);
+    if (!in) throw std::runtime_error(path + ": cannot open cluster id file");
+    std::vector<double> ids;
+    std::string line;
+    size_t lineNumber = 0;
+    while (std::getline(in, line)) {
+        ++lineNumber;
+        const size_t hash = line.find('#');
+        if (hash != std::string::npos) line.resize(hash);
+        std::istringstream words(line);
+        std::string word;
+        while (words >> word) {
+            char* end = nullptr;
+            const double value = std::strtod(word.c_str(), &end);
+            if (end == word.c_str() || *end != '\0')
+                throw std::runtime_error(path + ":" + std::to_string(lineNumber) + ": '" + word + "' is not a number");
+            ids.push_back(value);
+        }
+    }
+    return ids;
+}
+
+ClusterFaces facesByCluster(const Partition& partition) {
+    ClusterFaces rows;
+    rows.starts.assign(size_t(partition.clusterCount) + 1, 0);
+    for (uint32_t c : partition.clusterOfFace) ++rows.starts[c + 1];
+    for (size_t c = 0; c < partition.clusterCount; ++c) rows.starts[c + 1] += rows.starts[c];
+    rows.faces.resize(partition.clusterOfFace.size());
+    std::vector<uint32_t> cursor(rows.starts.begin(), rows.starts.end() - 1);
+    for (size_t f = 0; f < partition.clusterOfFace.size(); ++f) rows.faces[cursor[partition.clusterOfFace[f]]++] = uint32_t(f);
+    return rows;
+}
+
+}  // namespace conescope

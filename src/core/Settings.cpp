@@ -1,0 +1,94 @@
+#include "Settings.h"
+
+#include <stdexcept>
+#include <utility>
+
+namespace conescope {
+
+namespace {
+template <typename Enum>
+using NameTable = std::vector<std::pair<Enum, const char*>>;
+
+const NameTable<Builder>& builderNames() {
+    static const NameTable<Builder> names = {
+        {Builder::Meshlet, "meshlet"}, {Builder::KMeans, "kmeans"}, {Builder::Meshopt, "meshopt"}, {Builder::File, "file"}};
+    return names;
+}
+const NameTable<ConeMethod>& coneNames() {
+    static const NameTable<ConeMethod> names = {{ConeMethod::Average, "average"},
+                                                {ConeMethod::SeedSphere, "seed-sphere"},
+                                                {ConeMethod::Minimal, "minimal"},
+                                                {ConeMethod::Meshopt, "meshopt"}};
+    return names;
+}
+const NameTable<CullTest>& testNames() {
+    static const NameTable<CullTest> names = {{CullTest::Oracle, "oracle"},     {CullTest::Vertices, "vertices"},
+                                              {CullTest::Aabb, "aabb"},         {CullTest::AabbFast, "aabb-fast"},
+                                              {CullTest::Sphere, "sphere"},     {CullTest::Apex, "apex"},
+                                              {CullTest::MeshoptSphere, "meshopt-sphere"}};
+    return names;
+}
+const NameTable<SphereMethod>& sphereNames() {
+    static const NameTable<SphereMethod> names = {{SphereMethod::Ritter, "ritter"}, {SphereMethod::Minimal, "minimal"}};
+    return names;
+}
+
+template <typename Enum>
+std::string nameOf(const NameTable<Enum>& table, Enum value) {
+    for (const auto& [entry, name] : table)
+        if (entry == value) return name;
+    return "unknown";
+}
+
+template <typename Enum>
+Enum parseName(const NameTable<Enum>& table, const std::string& text, const char* what) {
+    std::string accepted;
+    for (const auto& [entry, name] : table) {
+        if (text == name) return entry;
+        accepted += accepted.empty() ? name : std::string(", ") + name;
+    }
+    throw std::invalid_argument("unknown " + std::string(what) + " '" + text + "' (expected one of: " + accepted + ")");
+}
+
+template <typename Enum>
+std::vector<Enum> entriesOf(const NameTable<Enum>& table) {
+    std::vector<Enum> entries;
+    for (const auto& entry : table) entries.push_back(entry.first);
+    return entries;
+}
+}  // namespace
+
+std::string toString(Builder value) { return nameOf(builderNames(), value); }
+std::string toString(ConeMethod value) { return nameOf(coneNames(), value); }
+std::string toString(CullTest value) { return nameOf(testNames(), value); }
+std::string toString(SphereMethod value) { return nameOf(sphereNames(), value); }
+Builder parseBuilder(const std::string& text) { return parseName(builderNames(), text, "builder"); }
+ConeMethod parseConeMethod(const std::string& text) { return parseName(coneNames(), text, "cone method"); }
+CullTest parseCullTest(const std::string& text) { return parseName(testNames(), text, "cull test"); }
+SphereMethod parseSphereMethod(const std::string& text) { return parseName(sphereNames(), text, "sphere method"); }
+
+const std::vector<ConeMethod>& allConeMethods() {
+    static const std::vector<ConeMethod> all = entriesOf(coneNames());
+    return all;
+}
+const std::vector<CullTest>& allCullTests() {
+    static const std::vector<CullTest> all = entriesOf(testNames());
+    return all;
+}
+const std::vector<Builder>& allBuilders() {
+    static const std::vector<Builder> all = entriesOf(builderNames());
+    return all;
+}
+
+std::vector<Eye> viewsFor(const Settings& settings, const Aabb& worldBox) {
+    if (settings.eye) {
+        if (!settings.orthographic) return {Eye::perspective(*settings.eye)};
+        // An orthographic eye given as a point looks from there towards the mesh centre.
+        const glm::dvec3 direction = glm::dvec3(worldBox.center()) - *settings.eye;
+        if (!(glm::length(direction) > 0.0)) throw std::invalid_argument("orthographic eye is at the mesh centre: no direction");
+        return {Eye::orthographicAlong(direction)};
+    }
+    return orbitViews(worldBox, settings.views, settings.distance, settings.orthographic);
+}
+
+}  // namespace conescope

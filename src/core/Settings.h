@@ -1,0 +1,51 @@
+// One value that says how a run is made: what the CLI parses, what the GUI's panel edits and what
+// the statistics record, so a GUI export and a CLI run with the same settings give the same file.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "ClusterBounds.h"
+#include "Culling.h"
+#include "Partition.h"
+
+namespace conescope {
+
+enum class Builder { Meshlet, KMeans, Meshopt, File };
+
+struct Settings {
+    Builder builder = Builder::Meshlet;
+    MeshletLimits limits;
+    size_t clusterCount = 0;          // kmeans target; 0 = triangles / maxTriangles
+    std::string clusterFile;          // file builder: text file of ids; empty = the mesh's cluster_id array
+    double normalWeight = 1.0;        // meshlet / kmeans preference for narrow cones
+    float meshoptConeWeight = 1.0f;   // meshopt builder's cone_weight
+    std::vector<ConeMethod> cones{ConeMethod::Minimal};
+    std::vector<CullTest> tests{CullTest::Vertices};
+    SphereMethod sphere = SphereMethod::Minimal;
+    size_t views = 128;
+    double distance = 3.0;
+    bool orthographic = false;
+    std::optional<glm::dvec3> eye;    // a single eye instead of the orbit
+};
+
+std::string toString(Builder);
+std::string toString(ConeMethod);
+std::string toString(CullTest);
+std::string toString(SphereMethod);
+// Throw std::invalid_argument listing the accepted names.
+Builder parseBuilder(const std::string&);
+ConeMethod parseConeMethod(const std::string&);
+CullTest parseCullTest(const std::string&);
+SphereMethod parseSphereMethod(const std::string&);
+const std::vector<ConeMethod>& allConeMethods();
+const std::vector<CullTest>& allCullTests();
+const std::vector<Builder>& allBuilders();
+
+// The views a run uses: the single eye if set, else the standard orbit around the world AABB.
+std::vector<Eye> viewsFor(const Settings& settings, const Aabb& worldBox);
+
+}  // namespace conescope

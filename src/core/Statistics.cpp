@@ -1,0 +1,160 @@
+#include "Statistics.h"
+
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+namespace conescope {
+
+Partition buildPartition(const Mesh& mesh, const FaceGeometry& faces, const Settings& settings) {
+    switch (settings.builder) {
+        case Builder::Meshlet: return buildMeshlets(mesh, faces, settings.limits, settings.normalWeight);
+        case Builder::KMeans: {
+            const size_t target = settings.clusterCount > 0
+                                      ? settings.clusterCount
+                                      : (triangleCount(mesh) + settings.limits.maxTriangles - 1) / settings.limits.maxTriangles;
+            return buildKMeans(mesh, faces, target, settings.normalWeight);
+        }
+        case Builder::Meshopt: return buildMeshoptMeshlets(mesh, settings.limits, settings.meshoptConeWeight);
+        case Builder::File: {
+            if (!settings.clusterFile.empty())
+                return partitionFromIds(readClusterIdFile(settings.clusterFile), mesh.faceCount(), settings.clusterFile);
+            auto ids = mesh.faceArrays.find("cluster_id");
+            if (ids == mesh.faceArrays.end())
+                throw std::runtime_error("the file builder needs a per-face 'cluster_id' array in the mesh or a cluster file");
+            return partitionFromIds(ids->second, mesh.faceCount(), "cluster_id array");
+        }
+    }
+    throw std::invalid_argument("unknown builder");
+}
+
+namespace {
+
+// What the oracle says about each cluster from one eye; shared by every test of that view.
+struct ClusterTruth {
+    std::vector<uint32_t> frontFaces;
+    std::vector<uint32_t> backTriangles;
+};
+
+ClusterTruth truthForView(const CullingInput& input, const std::vector<Facing>& facing) {
+    const ClusterFaces& rows = input.bounds.faces;
+    const size_t clusterCount = input.bounds.count();
+    ClusterTruth truth{std::vector<uint32_t>(clusterCount, 0), std::vector<uint32_t>(clusterCount, 0)};
+    for (uint32_t c = 0; c < clusterCount; ++c)
+        for (uint32_t i = rows.starts[c]; i < rows.starts[c + 1]; ++i) {
+            const uint32_t f = rows.faces[i];
+            if (facing[f] == Facing::Front) ++truth.frontFaces[c];
+            if (facing[f] == Facing::Back) truth.backTriangles[c] += uint32_t(input.mesh.faceSize(f) - 2);
+        }
+    return truth;
+}
+
+double ratio(size_t culled, size_t back) { return back == 0 ? 1.0 : double(culled) / double(back); }
+
+}  // namespace
+
+TestStatistics measureCulling(const CullingInput& input, const std::vector<Eye>& views, CullTest test) {
+    const ClusterBounds& bounds = input.bounds;
+    const size_t clusterCount = bounds.count();
+    TestStatistics result;
+    result.cone = bounds.coneMethod;
+    result.test = test;
+    result.clusters.resize(clusterCount);
+    size_t totalTriangles = 0;
+    double expected = 0.0;
+    for (uint32_t c = 0; c < clusterCount; ++c) {
+        ClusterStatistics& cluster = result.clusters[c];
+        cluster.cluster = c;
+        cluster.faces = bounds.faces.starts[c + 1] - bounds.faces.starts[c];
+        cluster.triangles = bounds.triangles[c];
+        cluster.vertices = bounds.vertexStarts[c + 1] - bounds.vertexStarts[c];
+        cluster.cullable = bounds.cones[c].cullable;
+        cluster.halfAngleDegrees = cluster.cullable ? glm::degrees(bounds.cones[c].halfAngle()) : 90.0;
+        result.uncullableClusters += cluster.cullable ? 0 : 1;
+        totalTriangles += cluster.triangles;
+        if (cluster.cullable) expected += double(cluster.triangles) * (1.0 - bounds.cones[c].sinHalfAngle);
+    }
+    result.expectedEfficiency = totalTriangles ? expected / double(totalTriangles) : 0.0;
+
+    double totalNanoseconds = 0.0;
+    for (size_t v = 0; v < views.size(); ++v) {
+        const Eye& eye = views[v];
+        const std::vector<Facing> facing = classifyFaces(input.mesh, input.world, input.faces, eye);
+        const ClusterTruth truth = truthForView(input, facing);
+        const auto start = std::chrono::steady_clock::now();
+        const std::vector<uint8_t> culled = cullClusters(input, eye, test);
+        const double nanoseconds = std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start).count();
+        totalNanoseconds += nanoseconds;
+
+        ViewStatistics view;
+        view.view = v;
+        view.eye = eye;
+        view.nanosecondsPerCluster = clusterCount ? nanoseconds / double(clusterCount) : 0.0;
+        for (uint32_t c = 0; c < clusterCount; ++c) {
+            const bool backFacing = truth.frontFaces[c] == 0 && truth.backTriangles[c] > 0;
+            view.backFacingTriangles += truth.backTriangles[c];
+            view.frontFacingTriangles += bounds.triangles[c] - truth.backTriangles[c];
+            view.backFacingClusters += backFacing;
+            ClusterStatistics& cluster = result.clusters[c];
+            cluster.timesBackFacing += backFacing;
+            if (culled[c]) {
+                ++view.clustersCulled;
+                ++cluster.timesCulled;
+                view.trianglesCulled += truth.backTriangles[c];
+                if (truth.frontFaces[c] > 0) ++view.falseCulls, ++cluster.falseCulls;
+            } else if (backFacing) {
+                ++view.missedClusters;
+            }
+        }
+        view.efficiency = ratio(view.trianglesCulled, view.backFacingTriangles);
+        result.clustersCulled += view.clustersCulled;
+        result.trianglesCulled += view.trianglesCulled;
+        result.backFacingTriangles += view.backFacingTriangles;
+        result.missedClusters += view.missedClusters;
+        result.falseCulls += view.falseCulls;
+        result.views.push_back(view);
+    }
+    result.efficiency = ratio(result.trianglesCulled, result.backFacingTriangles);
+    result.nanosecondsPerCluster =
+        clusterCount && !views.empty() ? totalNanoseconds / double(clusterCount * views.size()) : 0.0;
+    return result;
+}
+
+RunStatistics runStatistics(const Mesh& mesh, const Settings& settings, const std::string& meshName,
+                            const ProgressCallback& progress) {
+    auto report = [&](double fraction, const std::string& stage) {
+        if (progress && !progress(fraction, stage)) throw OperationCancelled();
+    };
+    validateMesh(mesh);
+    RunStatistics run;
+    run.settings = settings;
+    run.meshName = meshName;
+    run.vertices = mesh.positions.size();
+    run.faces = mesh.faceCount();
+    run.triangles = triangleCount(mesh);
+    report(0.0, "face geometry");
+    const std::vector<glm::vec3> world = worldPositions(mesh);
+    const FaceGeometry faces = computeFaceGeometry(mesh);
+    run.degenerateFaces = faces.degenerateCount;
+    report(0.05, "clusters");
+    const Partition partition = buildPartition(mesh, faces, settings);
+    run.clusters = partition.clusterCount;
+    const std::vector<Eye> views = viewsFor(settings, computeAabb(world));
+    run.viewCount = views.size();
+    const size_t steps = settings.cones.size() * settings.tests.size();
+    size_t step = 0;
+    for (ConeMethod cone : settings.cones) {
+        report(0.1 + 0.9 * double(step) / double(steps), "bounds (" + toString(cone) + ")");
+        const ClusterBounds bounds = computeClusterBounds(mesh, world, faces, partition, cone, settings.sphere);
+        const CullingInput input{mesh, world, faces, bounds};
+        for (CullTest test : settings.tests) {
+            report(0.1 + 0.9 * double(step) / double(steps), "culling (" + toString(cone) + ", " + toString(test) + ")");
+            run.results.push_back(measureCulling(input, views, test));
+            ++step;
+        }
+    }
+    report(1.0, "done");
+    return run;
+}
+
+}  // namespace conescope

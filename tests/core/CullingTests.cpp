@@ -1,0 +1,106 @@
+#include <gtest/gtest.h>
+
+#include "TestMeshes.h"
+#include "core/Culling.h"
+#include "core/Settings.h"
+
+using namespace conescope;
+
+namespace {
+// One flat square facing +z, as a single cluster.
+struct FlatSquare {
+    Mesh mesh;
+    std::vector<glm::vec3> world;
+    FaceGeometry faces;
+    Partition partition;
+    FlatSquare() {
+        mesh.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+        mesh.addFace({0, 1, 2});
+        mesh.addFace({0, 2, 3});
+        world = worldPositions(mesh);
+        faces = computeFaceGeometry(mesh);
+        partition.clusterOfFace = {0, 0};
+        partition.clusterCount = 1;
+    }
+};
+}  // namespace
+
+TEST(Culling, OracleIsStrictAboutEdgeOn) {
+    FlatSquare square;
+    EXPECT_EQ(classifyFace(square.mesh, square.world, square.faces, 0, Eye::perspective({0.5, 0.5, -1})), Facing::Back);
+    EXPECT_EQ(classifyFace(square.mesh, square.world, square.faces, 0, Eye::perspective({0.5, 0.5, 1})), Facing::Front);
+    EXPECT_EQ(classifyFace(square.mesh, square.world, square.faces, 0, Eye::perspective({5, 5, 0})), Facing::Front);
+    EXPECT_EQ(classifyFace(square.mesh, square.world, square.faces, 0, Eye::orthographicAlong({0, 0, 1})), Facing::Back);
+    EXPECT_EQ(classifyFace(square.mesh, square.world, square.faces, 0, Eye::orthographicAlong({1, 0, 0})), Facing::Front);
+}
+
+TEST(Culling, FlatClusterIsCulledByEveryTestFromBehindAndByNoneFromTheSide) {
+    FlatSquare square;
+    for (ConeMethod method : allConeMethods()) {
+        const ClusterBounds bounds = computeClusterBounds(square.mesh, square.world, square.faces, square.partition, method);
+        const CullingInput input{square.mesh, square.world, square.faces, bounds};
+        for (CullTest test : allCullTests()) {
+            const std::string name = toString(method) + "/" + toString(test);
+            EXPECT_TRUE(cullCluster(input, 0, Eye::perspective({0.5, 0.5, -10}), test)) << name;
+            EXPECT_TRUE(cullCluster(input, 0, Eye::orthographicAlong({0.1, 0, 1}), test)) << name;
+            EXPECT_FALSE(cullCluster(input, 0, Eye::perspective({0.5, 0.5, 10}), test)) << name;
+            EXPECT_FALSE(cullCluster(input, 0, Eye::perspective({10, 0.5, 0}), test)) << name;  // edge-on
+            EXPECT_FALSE(cullCluster(input, 0, Eye::orthographicAlong({1, 0, 0}), test)) << name;
+        }
+    }
+}
+
+TEST(Culling, SphereTestNeverCullsWithTheEyeInside) {
+    FlatSquare square;
+    const ClusterBounds bounds =
+        computeClusterBounds(square.mesh, square.world, square.faces, square.partition, ConeMethod::Minimal);
+    // Just behind the square but inside its bounding sphere (radius ~0.707 around the centre).
+    EXPECT_FALSE(sphereSeesBack(bounds.cones[0], bounds.spheres[0], {0.5, 0.5, -0.1}));
+    EXPECT_TRUE(sphereSeesBack(bounds.cones[0], bounds.spheres[0], {0.5, 0.5, -10}));
+}
+
+TEST(Culling, TighterTestsCullAtLeastWhatLooserOnesCull) {
+    // The vertex hull is inside the box, so the vertex test culls whenever the box test does; the
+    // seed's unnormalised box test is the same test as the normalised one.
+    const Mesh mesh = testmesh::torus(1.0, 0.35, 48, 24);
+    const auto world = worldPositions(mesh);
+    const FaceGeometry faces = computeFaceGeometry(mesh);
+    const Partition partition = buildMeshlets(mesh, faces, {});
+    const ClusterBounds bounds = computeClusterBounds(mesh, world, faces, partition, ConeMethod::Minimal);
+    const CullingInput input{mesh, world, faces, bounds};
+    size_t boxCulls = 0;
+    for (const Eye& eye : orbitViews(computeAabb(world), 64, 2.0)) {
+        const auto vertices = cullClusters(input, eye, CullTest::Vertices);
+        const auto box = cullClusters(input, eye, CullTest::Aabb);
+        const auto boxFast = cullClusters(input, eye, CullTest::AabbFast);
+        const auto oracle = cullClusters(input, eye, CullTest::Oracle);
+        for (size_t c = 0; c < bounds.count(); ++c) {
+            EXPECT_GE(vertices[c], box[c]);
+            EXPECT_EQ(box[c], boxFast[c]);
+            EXPECT_GE(oracle[c], vertices[c]);
+            boxCulls += box[c];
+        }
+    }
+    EXPECT_GT(boxCulls, 0u);
+}
+
+TEST(Culling, ExplanationMatchesTheDecision) {
+    const Mesh mesh = testmesh::icosphere(2);
+    const auto world = worldPositions(mesh);
+    const FaceGeometry faces = computeFaceGeometry(mesh);
+    const Partition partition = buildMeshlets(mesh, faces, {});
+    const ClusterBounds bounds = computeClusterBounds(mesh, world, faces, partition, ConeMethod::Minimal);
+    const CullingInput input{mesh, world, faces, bounds};
+    const Eye eye = Eye::perspective({0, 0, 4});
+    for (CullTest test : allCullTests())
+        for (uint32_t c = 0; c < bounds.count(); ++c) {
+            const CullExplanation why = explainCull(input, c, eye, test);
+            EXPECT_EQ(why.culled, cullCluster(input, c, eye, test));
+            EXPECT_NEAR(why.angleBDegrees + why.halfAngleDegrees, 90.0, 1e-9);
+            EXPECT_EQ(why.frontFaces + why.backFaces + why.degenerateFaces,
+                      bounds.faces.starts[c + 1] - bounds.faces.starts[c]);
+            if (why.culled) EXPECT_EQ(why.frontFaces, 0u);
+            if (test == CullTest::Aabb) EXPECT_EQ(why.culled, why.pointsBack == 8);
+            if (test == CullTest::Vertices) EXPECT_EQ(why.culled, why.pointsTested > 0 && why.pointsBack == why.pointsTested);
+        }
+}

@@ -1,0 +1,146 @@
+#include <gtest/gtest.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <random>
+
+#include "TestMeshes.h"
+#include "core/Mesh.h"
+#include "core/Views.h"
+
+using namespace conescope;
+
+TEST(Mesh, NewellEqualsCrossProductForTriangles) {
+    std::mt19937_64 random(7);
+    std::uniform_real_distribution<float> coordinate(-10.f, 10.f);
+    for (int i = 0; i < 1000; ++i) {
+        glm::vec3 p[3];
+        for (auto& v : p) v = {coordinate(random), coordinate(random), coordinate(random)};
+        const uint32_t face[3] = {0, 1, 2};
+        const glm::dvec3 cross = glm::cross(glm::dvec3(p[1]) - glm::dvec3(p[0]), glm::dvec3(p[2]) - glm::dvec3(p[0]));
+        // Force the general Newell sum through a quad with a repeated last corner.
+        const uint32_t quad[4] = {0, 1, 2, 2};
+        const glm::dvec3 newell = newellNormal(p, quad, 4);
+        EXPECT_NEAR(glm::length(newell - cross), 0.0, 1e-9 * (1.0 + glm::length(cross)));
+        EXPECT_EQ(newellNormal(p, face, 3), cross);
+    }
+}
+
+TEST(Mesh, NewellGivesTwiceTheProjectedAreas) {
+    // Seed 003: the components are the signed areas of the projections, here a 2x3 rectangle in z = 5.
+    const glm::vec3 p[4] = {{0, 0, 5}, {2, 0, 5}, {2, 3, 5}, {0, 3, 5}};
+    const uint32_t face[4] = {0, 1, 2, 3};
+    const glm::dvec3 n = newellNormal(p, face, 4);
+    EXPECT_DOUBLE_EQ(n.x, 0.0);
+    EXPECT_DOUBLE_EQ(n.y, 0.0);
+    EXPECT_DOUBLE_EQ(n.z, 12.0);  // twice the area 6, counter-clockwise seen from +z
+}
+
+TEST(Mesh, FaceGeometryOfQuadCube) {
+    const Mesh cube = testmesh::quadCube();
+    const FaceGeometry geometry = computeFaceGeometry(cube);
+    const glm::dvec3 expected[6] = {{-1, 0, 0}, {1, 0, 0}, {0, -1, 0}, {0, 1, 0}, {0, 0, -1}, {0, 0, 1}};
+    for (int f = 0; f < 6; ++f) {
+        EXPECT_NEAR(glm::length(geometry.normals[f] - expected[f]), 0.0, 1e-12) << f;
+        EXPECT_NEAR(geometry.areas[f], 4.0, 1e-12);
+        // Plane [n, d] with d = -n.p_mean passes through every corner.
+        for (size_t k = 0; k < 4; ++k)
+            EXPECT_NEAR(glm::dot(geometry.normals[f], glm::dvec3(cube.positions[cube.faceBegin(f)[k]])) +
+                            geometry.planeOffsets[f], 0.0, 1e-12);
+    }
+    EXPECT_EQ(geometry.degenerateCount, 0u);
+}
+
+TEST(Mesh, DegenerateFacesAreDetected) {
+    Mesh mesh;
+    mesh.positions = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 1, 0}};
+    mesh.addFace({0, 1, 2});  // collinear
+    mesh.addFace({0, 0, 3});  // repeated vertex
+    mesh.addFace({0, 1, 3});
+    const FaceGeometry geometry = computeFaceGeometry(mesh);
+    EXPECT_EQ(geometry.degenerateCount, 2u);
+    EXPECT_TRUE(geometry.degenerate[0]);
+    EXPECT_TRUE(geometry.degenerate[1]);
+    EXPECT_FALSE(geometry.degenerate[2]);
+    EXPECT_EQ(geometry.normals[0], glm::dvec3(0.0));
+}
+
+// Seed 003: (M^-1)^T with the sign of det M gives the normal of the transformed vertices' winding,
+// for rotations, non-uniform scales and mirrors alike.
+TEST(Mesh, TransformedPlanesMatchTransformedVertices) {
+    std::mt19937_64 random(11);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0), scale(0.2, 3.0);
+    const Mesh sphere = testmesh::icosphere(1);
+    for (int trial = 0; trial < 200; ++trial) {
+        glm::dmat4 model = glm::translate(glm::dmat4(1.0), glm::dvec3(unit(random), unit(random), unit(random)) * 5.0);
+        model = glm::rotate(model, unit(random) * M_PI, glm::normalize(glm::dvec3(unit(random), unit(random), unit(random)) + 1e-3));
+        glm::dvec3 s(scale(random), scale(random), scale(random));
+        if (trial % 2) s.x = -s.x;  // mirrored half of the time
+        if (trial % 3 == 0) s.z = -s.z;
+        model = glm::scale(model, s);
+        Mesh mesh = sphere;
+        mesh.model = model;
+        const FaceGeometry geometry = computeFaceGeometry(mesh);
+        const std::vector<glm::vec3> world = worldPositions(mesh);
+        for (size_t f = 0; f < mesh.faceCount(); ++f) {
+            const glm::dvec3 fromVertices = glm::normalize(newellNormal(world.data(), mesh.faceBegin(f), 3));
+            EXPECT_NEAR(glm::length(geometry.normals[f] - fromVertices), 0.0, 1e-5) << "trial " << trial << " face " << f;
+            EXPECT_NEAR(glm::dot(geometry.normals[f], glm::dvec3(world[mesh.faceBegin(f)[0]])) + geometry.planeOffsets[f], 0.0, 1e-5);
+        }
+        // A mirror turns the sphere's winding inside out, and the normals follow the winding.
+        const glm::dvec3 center(model * glm::dvec4(0, 0, 0, 1));
+        const double side = glm::determinant(model) > 0.0 ? 1.0 : -1.0;
+        for (size_t f = 0; f < mesh.faceCount(); ++f)
+            EXPECT_GT(side * glm::dot(geometry.normals[f], geometry.centroids[f] - center), 0.0);
+    }
+}
+
+TEST(Mesh, TransformPlaneFlipsOnMirror) {
+    const glm::dvec4 plane(0, 0, 1, -2);  // z = 2, facing +z
+    const glm::dmat4 mirror = glm::scale(glm::dmat4(1.0), glm::dvec3(1, 1, -1));
+    const glm::dvec4 transformed = transformPlane(plane, mirror);
+    // The mirrored vertices keep their xy winding, so their normal stays +z on the plane z = -2:
+    // (M^-1)^T alone gives -z, and det M < 0 flips it back.
+    EXPECT_DOUBLE_EQ(transformed.z, 1.0);
+    EXPECT_DOUBLE_EQ(transformed.w, 2.0);
+}
+
+TEST(Mesh, ValidateRejectsBrokenMeshes) {
+    Mesh mesh;
+    mesh.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    mesh.addFace({0, 1, 2});
+    EXPECT_NO_THROW(validateMesh(mesh));
+    Mesh outOfRange = mesh;
+    outOfRange.addFace({0, 1, 7});
+    EXPECT_THROW(validateMesh(outOfRange), std::runtime_error);
+    Mesh tooSmall = mesh;
+    tooSmall.addFace({0, 1});
+    EXPECT_THROW(validateMesh(tooSmall), std::runtime_error);
+    Mesh notFinite = mesh;
+    notFinite.positions[1].x = std::numeric_limits<float>::quiet_NaN();
+    EXPECT_THROW(validateMesh(notFinite), std::runtime_error);
+    Mesh badArray = mesh;
+    badArray.faceArrays["cluster_id"] = {1, 2};
+    EXPECT_THROW(validateMesh(badArray), std::runtime_error);
+    Mesh singular = mesh;
+    singular.model = glm::dmat4(0.0);
+    EXPECT_THROW(validateMesh(singular), std::runtime_error);
+}
+
+TEST(Views, OrbitFollowsTheDocumentedFormula) {
+    Aabb box{{-1, -2, -3}, {3, 2, 1}};
+    const auto views = orbitViews(box, 5, 3.0);
+    ASSERT_EQ(views.size(), 5u);
+    const double radius = 0.5 * glm::length(glm::dvec3(4, 4, 4));
+    for (size_t i = 0; i < 5; ++i) {
+        const double y = 1.0 - 2.0 * (i + 0.5) / 5.0, r = std::sqrt(1 - y * y), phi = i * M_PI * (3 - std::sqrt(5.0));
+        const glm::dvec3 expected = glm::dvec3(1, 0, -1) + 3.0 * radius * glm::dvec3(std::cos(phi) * r, y, std::sin(phi) * r);
+        EXPECT_NEAR(glm::length(views[i].position - expected), 0.0, 1e-6);  // R is a float half-diagonal
+        EXPECT_FALSE(views[i].orthographic);
+    }
+    const auto ortho = orbitViews(box, 3, 2.0, true);
+    for (const Eye& eye : ortho) {
+        EXPECT_TRUE(eye.orthographic);
+        EXPECT_NEAR(glm::length(eye.direction), 1.0, 1e-12);
+        EXPECT_NEAR(glm::dot(eye.direction, glm::normalize(glm::dvec3(1, 0, -1) - eye.position)), 1.0, 1e-9);
+    }
+}

@@ -1,0 +1,168 @@
+// The correctness rule as a property: over many random clusters and eyes, no test of any cone
+// ever culls a cluster that holds a face the exact oracle calls front-facing.
+#include <gtest/gtest.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <cstdlib>
+#include <iostream>
+#include <random>
+
+#include "TestMeshes.h"
+#include "core/Culling.h"
+#include "core/Settings.h"
+
+using namespace conescope;
+
+namespace {
+
+size_t scaleFromEnvironment() {
+    const char* text = std::getenv("CONESCOPE_PROPERTY_SCALE");
+    const long value = text ? std::strtol(text, nullptr, 10) : 1;
+    return value > 0 ? size_t(value) : 1;
+}
+
+glm::dvec3 randomUnit(std::mt19937_64& random) {
+    std::normal_distribution<double> gauss;
+    glm::dvec3 v;
+    do v = {gauss(random), gauss(random), gauss(random)};
+    while (glm::length(v) < 1e-9);
+    return glm::normalize(v);
+}
+
+// A random triangle soup around the origin whose normals may span any range, hemisphere or more.
+Mesh randomSoup(std::mt19937_64& random, size_t triangles, double spreadDegrees) {
+    Mesh mesh;
+    const glm::dvec3 axis = randomUnit(random);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    for (size_t t = 0; t < triangles; ++t) {
+        const glm::dvec3 normal = glm::normalize(axis + std::tan(glm::radians(std::min(spreadDegrees, 89.0))) *
+                                                            unit(random) * randomUnit(random));
+        const glm::dvec3 n = spreadDegrees > 90.0 && t % 3 == 0 ? -normal : normal;
+        const glm::dvec3 u = glm::normalize(glm::cross(n, randomUnit(random))), v = glm::cross(n, u);
+        const glm::dvec3 center(unit(random), unit(random), unit(random));
+        const uint32_t base = uint32_t(mesh.positions.size());
+        for (int k = 0; k < 3; ++k) {
+            const double angle = 2 * M_PI * k / 3 + 0.3 * unit(random);
+            mesh.positions.emplace_back(center + 0.3 * (std::cos(angle) * u + std::sin(angle) * v));
+        }
+        mesh.addFace({base, base + 1, base + 2});
+    }
+    return mesh;
+}
+
+glm::dmat4 randomModel(std::mt19937_64& random, double scale) {
+    std::uniform_real_distribution<double> unit(-1.0, 1.0), stretch(0.3, 3.0);
+    glm::dmat4 model = glm::translate(glm::dmat4(1.0), scale * glm::dvec3(unit(random), unit(random), unit(random)));
+    model = glm::rotate(model, M_PI * unit(random), randomUnit(random));
+    glm::dvec3 s = scale * glm::dvec3(stretch(random), stretch(random), stretch(random));
+    if (unit(random) < 0.0) s.x = -s.x;  // mirrored
+    return glm::scale(model, s);
+}
+
+// Eyes of every awkward kind for a mesh whose world bounds are `box`.
+std::vector<Eye> awkwardEyes(std::mt19937_64& random, const Mesh& mesh, const std::vector<glm::vec3>& world,
+                             const FaceGeometry& faces, const Aabb& box, size_t count) {
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    const glm::dvec3 center(box.center());
+    const double radius = std::max(double(box.halfDiagonal()), 1e-30);
+    std::vector<Eye> eyes;
+    while (eyes.size() < count) {
+        const size_t kind = eyes.size() % 6;
+        if (kind == 0) {  // anywhere from inside the bounds to far away
+            eyes.push_back(Eye::perspective(center + randomUnit(random) * radius * std::pow(10.0, 3.0 * unit(random) - 1.5)));
+        } else if (kind == 1 || kind == 2) {  // on a face's plane (edge-on), or a hair in front or behind it
+            const size_t f = size_t(unit(random) * double(mesh.faceCount())) % mesh.faceCount();
+            if (faces.degenerate[f]) continue;
+            const glm::dvec3 q(world[mesh.faceBegin(f)[0]]);
+            const glm::dvec3 n = faces.normals[f];
+            const glm::dvec3 along = glm::normalize(glm::cross(n, randomUnit(random)));
+            const double offset = kind == 1 ? 0.0 : (unit(random) - 0.5) * 1e-7 * radius;
+            eyes.push_back(Eye::perspective(q + along * radius * 3.0 * unit(random) + n * offset));
+        } else if (kind == 3) {  // orthographic, any direction
+            eyes.push_back(Eye::orthographicAlong(randomUnit(random)));
+        } else if (kind == 4) {  // orthographic, exactly edge-on to some face
+            const size_t f = size_t(unit(random) * double(mesh.faceCount())) % mesh.faceCount();
+            if (faces.degenerate[f]) continue;
+            eyes.push_back(Eye::orthographicAlong(glm::cross(faces.normals[f], randomUnit(random))));
+        } else {  // at a vertex of the mesh
+            const size_t v = size_t(unit(random) * double(world.size())) % world.size();
+            eyes.push_back(Eye::perspective(glm::dvec3(world[v])));
+        }
+    }
+    return eyes;
+}
+
+struct PropertyCounts {
+    size_t cases = 0;       // (cluster, eye) pairs
+    size_t decisions = 0;   // (cluster, eye, cone, test)
+    size_t culls = 0;
+    size_t falseCulls = 0;
+};
+
+void checkMesh(std::mt19937_64& random, const Mesh& mesh, const Partition& partition, size_t eyeCount, PropertyCounts& counts) {
+    const auto world = worldPositions(mesh);
+    const FaceGeometry faces = computeFaceGeometry(mesh);
+    const auto eyes = awkwardEyes(random, mesh, world, faces, computeAabb(world), eyeCount);
+    std::vector<ClusterBounds> boundsPerCone;
+    for (ConeMethod cone : allConeMethods())
+        boundsPerCone.push_back(computeClusterBounds(mesh, world, faces, partition, cone,
+                                                     cone == ConeMethod::Average ? SphereMethod::Ritter : SphereMethod::Minimal));
+    const ClusterFaces rows = facesByCluster(partition);
+    for (const Eye& eye : eyes) {
+        const auto facing = classifyFaces(mesh, world, faces, eye);
+        for (uint32_t c = 0; c < partition.clusterCount; ++c) {
+            bool hasFront = false;
+            for (uint32_t i = rows.starts[c]; i < rows.starts[c + 1]; ++i) hasFront |= facing[rows.faces[i]] == Facing::Front;
+            ++counts.cases;
+            for (const ClusterBounds& bounds : boundsPerCone) {
+                const CullingInput input{mesh, world, faces, bounds};
+                for (CullTest test : allCullTests()) {
+                    ++counts.decisions;
+                    if (!cullCluster(input, c, eye, test)) continue;
+                    ++counts.culls;
+                    if (hasFront) {
+                        ++counts.falseCulls;
+                        ADD_FAILURE() << "false cull: cone " << toString(bounds.coneMethod) << " test " << toString(test)
+                                      << " cluster " << c << " eye (" << eye.position.x << ", " << eye.position.y << ", "
+                                      << eye.position.z << ") ortho " << eye.orthographic;
+                    }
+                }
+            }
+        }
+    }
+}
+
+}  // namespace
+
+TEST(Property, NoTestEverCullsAFrontFacingFace) {
+    const size_t scale = scaleFromEnvironment();
+    std::mt19937_64 random(20261122);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    PropertyCounts counts;
+    const size_t meshes = 3000 * scale;
+    for (size_t m = 0; m < meshes; ++m) {
+        Mesh mesh;
+        const size_t kind = m % 4;
+        if (kind == 0) mesh = testmesh::randomPatch(random, 2 + int(m % 5), 80.0 * unit(random));
+        else if (kind == 1) mesh = randomSoup(random, 1 + m % 12, 180.0 * unit(random));
+        else if (kind == 2) mesh = randomSoup(random, 1, 0.0);  // clusters of one face
+        else mesh = testmesh::icosphere(1);
+        // Coordinates from 1e-6 to 1e6 through the model matrix, mirrored half of the time.
+        mesh.model = randomModel(random, std::pow(10.0, 12.0 * unit(random) - 6.0));
+        Partition partition;
+        if (kind == 3 || (kind == 0 && m % 2)) {
+            const FaceGeometry faces = computeFaceGeometry(mesh);
+            partition = buildMeshlets(mesh, faces, MeshletLimits{12, 8});
+        } else {
+            partition.clusterOfFace.assign(mesh.faceCount(), 0);
+            partition.clusterCount = 1;
+        }
+        checkMesh(random, mesh, partition, 150, counts);
+    }
+    std::cout << "[ property ] " << counts.cases << " (cluster, eye) cases, " << counts.decisions << " decisions, "
+              << counts.culls << " culls, " << counts.falseCulls << " false culls\n";
+    RecordProperty("cases", std::to_string(counts.cases));
+    EXPECT_GE(counts.cases, 1000000u);
+    EXPECT_GT(counts.culls, counts.decisions / 100);  // the property is not vacuous
+    EXPECT_EQ(counts.falseCulls, 0u);
+}

@@ -1,0 +1,90 @@
+#include <gtest/gtest.h>
+
+#include <meshoptimizer.h>
+
+#include "TestMeshes.h"
+#include "core/Statistics.h"
+
+using namespace conescope;
+
+TEST(Statistics, EveryTestIsConservativeAndTheOracleIsTheCeiling) {
+    Settings settings;
+    settings.cones = allConeMethods();
+    settings.tests = allCullTests();
+    settings.views = 32;
+    const Mesh mesh = testmesh::torus(1.0, 0.4, 64, 32);
+    const RunStatistics run = runStatistics(mesh, settings, "torus");
+    EXPECT_EQ(run.results.size(), settings.cones.size() * settings.tests.size());
+    EXPECT_EQ(run.faces, mesh.faceCount());
+    for (const TestStatistics& result : run.results) {
+        EXPECT_EQ(result.falseCulls, 0u) << toString(result.cone) << "/" << toString(result.test);
+        EXPECT_EQ(result.views.size(), 32u);
+        EXPECT_GE(result.efficiency, 0.0);
+        EXPECT_LE(result.efficiency, 1.0);
+        size_t culled = 0, back = 0;
+        for (const ViewStatistics& view : result.views) {
+            culled += view.trianglesCulled;
+            back += view.backFacingTriangles;
+            EXPECT_EQ(view.backFacingTriangles + view.frontFacingTriangles, run.triangles);
+        }
+        EXPECT_EQ(culled, result.trianglesCulled);
+        EXPECT_EQ(back, result.backFacingTriangles);
+        size_t timesCulled = 0;
+        for (const ClusterStatistics& cluster : result.clusters) timesCulled += cluster.timesCulled;
+        EXPECT_EQ(timesCulled, result.clustersCulled);
+        if (result.test != CullTest::Oracle) {
+            const auto& oracle = run.results[size_t(&result - &run.results[0]) / settings.tests.size() * settings.tests.size()];
+            ASSERT_EQ(oracle.test, CullTest::Oracle);
+            EXPECT_LE(result.efficiency, oracle.efficiency + 1e-12);
+        }
+    }
+}
+
+TEST(Statistics, SingleEyeAndProgressCancel) {
+    Settings settings;
+    settings.eye = glm::dvec3(0, 0, 5);
+    const Mesh mesh = testmesh::icosphere(3);
+    const RunStatistics run = runStatistics(mesh, settings);
+    ASSERT_EQ(run.viewCount, 1u);
+    EXPECT_GT(run.results[0].efficiency, 0.1);
+    EXPECT_THROW(runStatistics(mesh, settings, "", [](double, const std::string&) { return false; }), OperationCancelled);
+}
+
+// The same meshlets, bounds and test as meshoptimizer's own loop (dot(normalize(apex - eye), axis)
+// >= cutoff) give the same culled clusters, up to the rounding guard at the threshold.
+TEST(Statistics, MeshoptApexMatchesMeshoptimizersOwnLoop) {
+    const Mesh mesh = testmesh::torus(1.0, 0.4, 96, 48);
+    Settings settings;
+    settings.builder = Builder::Meshopt;
+    settings.cones = {ConeMethod::Meshopt};
+    settings.tests = {CullTest::Apex};
+    settings.views = 64;
+    const RunStatistics run = runStatistics(mesh, settings);
+
+    std::vector<uint32_t> indices(mesh.faceVertices.begin(), mesh.faceVertices.end());
+    const size_t maxMeshlets = meshopt_buildMeshletsBound(indices.size(), 64, 124);
+    std::vector<meshopt_Meshlet> meshlets(maxMeshlets);
+    std::vector<unsigned> meshletVertices(maxMeshlets * 64);
+    std::vector<unsigned char> meshletTriangles(maxMeshlets * 124 * 3);
+    meshlets.resize(meshopt_buildMeshlets(meshlets.data(), meshletVertices.data(), meshletTriangles.data(), indices.data(),
+                                          indices.size(), &mesh.positions[0].x, mesh.positions.size(), 12, 64, 124,
+                                          settings.meshoptConeWeight));
+    ASSERT_EQ(meshlets.size(), run.clusters);
+    const auto views = viewsFor(settings, computeAabb(mesh.positions));
+    size_t theirCulled = 0;
+    for (const Eye& eye : views)
+        for (const meshopt_Meshlet& meshlet : meshlets) {
+            const meshopt_Bounds b = meshopt_computeMeshletBounds(&meshletVertices[meshlet.vertex_offset],
+                                                                  &meshletTriangles[meshlet.triangle_offset],
+                                                                  meshlet.triangle_count, &mesh.positions[0].x,
+                                                                  mesh.positions.size(), 12);
+            const glm::vec3 view = glm::normalize(glm::vec3(b.cone_apex[0], b.cone_apex[1], b.cone_apex[2]) - glm::vec3(eye.position));
+            if (glm::dot(view, glm::vec3(b.cone_axis[0], b.cone_axis[1], b.cone_axis[2])) >= b.cone_cutoff)
+                theirCulled += meshlet.triangle_count;
+        }
+    const double theirs = double(theirCulled);
+    const double ours = double(run.results[0].trianglesCulled);
+    EXPECT_EQ(run.results[0].falseCulls, 0u);
+    ASSERT_GT(theirs, 0.0);
+    EXPECT_NEAR(ours / theirs, 1.0, 0.01);
+}

@@ -1,0 +1,86 @@
+#include "TestMeshes.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace conescope::testmesh {
+
+Mesh icosphere(int subdivisions) {
+    const double t = (1.0 + std::sqrt(5.0)) / 2.0;
+    std::vector<glm::dvec3> points = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
+                                      {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
+    for (auto& p : points) p = glm::normalize(p);
+    std::vector<glm::uvec3> faces = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+                                     {11, 10, 2}, {10, 7, 6}, {7, 1, 8},   {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
+                                     {3, 8, 9},  {4, 9, 5},  {2, 4, 11},  {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
+    for (int s = 0; s < subdivisions; ++s) {
+        std::map<std::pair<uint32_t, uint32_t>, uint32_t> midpoints;
+        auto midpoint = [&](uint32_t a, uint32_t b) {
+            auto key = std::minmax(a, b);
+            auto it = midpoints.find(key);
+            if (it != midpoints.end()) return it->second;
+            points.push_back(glm::normalize(points[a] + points[b]));
+            return midpoints[key] = uint32_t(points.size() - 1);
+        };
+        std::vector<glm::uvec3> finer;
+        for (const auto& f : faces) {
+            const uint32_t ab = midpoint(f.x, f.y), bc = midpoint(f.y, f.z), ca = midpoint(f.z, f.x);
+            for (const glm::uvec3 child : {glm::uvec3(f.x, ab, ca), glm::uvec3(f.y, bc, ab), glm::uvec3(f.z, ca, bc), glm::uvec3(ab, bc, ca)})
+                finer.push_back(child);
+        }
+        faces.swap(finer);
+    }
+    Mesh mesh;
+    for (const auto& p : points) mesh.positions.emplace_back(p);
+    for (const auto& f : faces) mesh.addFace({f.x, f.y, f.z});
+    return mesh;
+}
+
+Mesh torus(double majorRadius, double minorRadius, int majorSegments, int minorSegments) {
+    Mesh mesh;
+    for (int i = 0; i < majorSegments; ++i)
+        for (int j = 0; j < minorSegments; ++j) {
+            const double u = 2 * M_PI * i / majorSegments, v = 2 * M_PI * j / minorSegments;
+            const double r = majorRadius + minorRadius * std::cos(v);
+            mesh.positions.emplace_back(r * std::cos(u), minorRadius * std::sin(v), r * std::sin(u));
+        }
+    auto index = [&](int i, int j) { return uint32_t((i % majorSegments) * minorSegments + (j % minorSegments)); };
+    for (int i = 0; i < majorSegments; ++i)
+        for (int j = 0; j < minorSegments; ++j) {
+            const uint32_t a = index(i, j), b = index(i + 1, j), c = index(i + 1, j + 1), d = index(i, j + 1);
+            mesh.addFace({a, d, c});
+            mesh.addFace({a, c, b});
+        }
+    return mesh;
+}
+
+Mesh quadCube() {
+    Mesh mesh;
+    for (int i = 0; i < 8; ++i) mesh.positions.emplace_back((i & 1) ? 1.f : -1.f, (i & 2) ? 1.f : -1.f, (i & 4) ? 1.f : -1.f);
+    mesh.addFace({0, 4, 6, 2});  // -x
+    mesh.addFace({1, 3, 7, 5});  // +x
+    mesh.addFace({0, 1, 5, 4});  // -y
+    mesh.addFace({2, 6, 7, 3});  // +y
+    mesh.addFace({0, 2, 3, 1});  // -z
+    mesh.addFace({4, 5, 7, 6});  // +z
+    return mesh;
+}
+
+Mesh randomPatch(std::mt19937_64& random, int cells, double maxTiltDegrees) {
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    Mesh mesh;
+    const double amplitude = std::tan(glm::radians(maxTiltDegrees)) * 0.5 / cells;
+    for (int y = 0; y <= cells; ++y)
+        for (int x = 0; x <= cells; ++x)
+            mesh.positions.emplace_back(double(x) / cells, double(y) / cells, amplitude * unit(random));
+    for (int y = 0; y < cells; ++y)
+        for (int x = 0; x < cells; ++x) {
+            const uint32_t a = uint32_t(y * (cells + 1) + x), b = a + 1, c = a + uint32_t(cells) + 2, d = a + uint32_t(cells) + 1;
+            mesh.addFace({a, b, c});
+            mesh.addFace({a, c, d});
+        }
+    return mesh;
+}
+
+}  // namespace conescope::testmesh

@@ -1,0 +1,19 @@
+// Small meshes made in code, so core tests need no reader.
+#pragma once
+
+#include <random>
+
+#include "core/Mesh.h"
+
+namespace conescope::testmesh {
+
+// Subdivided icosahedron on the unit sphere, counter-clockwise seen from outside.
+Mesh icosphere(int subdivisions);
+// Torus around the y axis, quads split into triangles.
+Mesh torus(double majorRadius, double minorRadius, int majorSegments, int minorSegments);
+// Unit cube as six quads (polygon faces).
+Mesh quadCube();
+// A random height-field patch: a bumpy grid whose normals spread up to about maxTiltDegrees.
+Mesh randomPatch(std::mt19937_64& random, int cells, double maxTiltDegrees);
+
+}  // namespace conescope::testmesh
