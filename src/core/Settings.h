@@ -30,6 +30,7 @@ struct Settings {
     double distance = 3.0;
     bool orthographic = false;
     std::optional<glm::dvec3> eye;    // a single eye instead of the orbit
+    bool fixWinding = false;          // make face winding consistent before culling (orientable parts)
 };
 
 std::string toString(Builder);

@@ -120,13 +120,24 @@ TestStatistics measureCulling(const CullingInput& input, const std::vector<Eye>&
     return result;
 }
 
-RunStatistics runStatistics(const Mesh& mesh, const Settings& settings, const std::string& meshName,
+RunStatistics runStatistics(const Mesh& inputMesh, const Settings& settings, const std::string& meshName,
                             const ProgressCallback& progress) {
     auto report = [&](double fraction, const std::string& stage) {
         if (progress && !progress(fraction, stage)) throw OperationCancelled();
     };
-    validateMesh(mesh);
+    validateMesh(inputMesh);
     RunStatistics run;
+    // A face wound against its neighbours has its normal inside out and poisons its cluster's cone:
+    // report it always, repair it only when asked (the repaired copy is what gets culled).
+    FaceGeometry faces = computeFaceGeometry(inputMesh);
+    run.meshReport = checkMesh(inputMesh, faces);
+    Mesh repaired;
+    if (settings.fixWinding && run.meshReport.inconsistentEdges > 0) {
+        repaired = inputMesh;
+        run.windingFixedFaces = fixWinding(repaired);
+        if (run.windingFixedFaces > 0) faces = computeFaceGeometry(repaired);
+    }
+    const Mesh& mesh = run.windingFixedFaces > 0 ? repaired : inputMesh;
     run.settings = settings;
     run.meshName = meshName;
     run.vertices = mesh.positions.size();
@@ -134,7 +145,6 @@ RunStatistics runStatistics(const Mesh& mesh, const Settings& settings, const st
     run.triangles = triangleCount(mesh);
     report(0.0, "face geometry");
     const std::vector<glm::vec3> world = worldPositions(mesh);
-    const FaceGeometry faces = computeFaceGeometry(mesh);
     run.degenerateFaces = faces.degenerateCount;
     report(0.05, "clusters");
     const Partition partition = buildPartition(mesh, faces, settings);

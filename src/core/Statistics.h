@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "Culling.h"
+#include "MeshChecks.h"
 #include "Settings.h"
 
 namespace conescope {
@@ -60,6 +61,8 @@ struct RunStatistics {
     size_t faces = 0;
     size_t triangles = 0;
     size_t degenerateFaces = 0;
+    MeshReport meshReport;            // winding and manifold problems found before culling
+    size_t windingFixedFaces = 0;     // faces flipped because settings.fixWinding was set
     size_t clusters = 0;
     size_t viewCount = 0;
     std::vector<TestStatistics> results;

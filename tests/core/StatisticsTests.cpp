@@ -88,3 +88,19 @@ TEST(Statistics, MeshoptApexMatchesMeshoptimizersOwnLoop) {
     ASSERT_GT(theirs, 0.0);
     EXPECT_NEAR(ours / theirs, 1.0, 0.01);
 }
+
+TEST(Statistics, InconsistentWindingIsReportedAndFixedOnRequest) {
+    Mesh mesh = testmesh::icosphere(2);
+    std::reverse(mesh.faceVertices.begin() + mesh.faceStarts[5], mesh.faceVertices.begin() + mesh.faceStarts[6]);
+    Settings settings;
+    settings.views = 16;
+    const RunStatistics asIs = runStatistics(mesh, settings);
+    EXPECT_EQ(asIs.meshReport.inconsistentEdges, 3u);
+    EXPECT_EQ(asIs.windingFixedFaces, 0u);
+    EXPECT_EQ(asIs.results[0].falseCulls, 0u);  // wrong winding is still culled conservatively for its own normal
+    settings.fixWinding = true;
+    const RunStatistics fixed = runStatistics(mesh, settings);
+    EXPECT_EQ(fixed.meshReport.inconsistentEdges, 3u);  // the report describes the input
+    EXPECT_EQ(fixed.windingFixedFaces, 1u);
+    EXPECT_GE(fixed.results[0].efficiency, asIs.results[0].efficiency);
+}
