@@ -1,0 +1,601 @@
+// conescope-bench-report: cull efficiency of every builder, cone and test on a set of meshes, next
+// to meshoptimizer's own pipeline run in the same process. Writes report.csv (every row),
+// report.md (the summary) and summary.csv (per mesh, for the plot) into the output directory.
+//
+// Work is shared as far as it can be: face geometry once per mesh, a partition once per
+// (builder, budget), bounds once per (partition, cone), and views once per distance.
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <atomic>
+#include <exception>
+#include <mutex>
+#include <thread>
+
+#include "BenchSupport.h"
+#include "core/ClusterBounds.h"
+#include "core/Culling.h"
+#include "core/Settings.h"
+#include "core/Statistics.h"
+#include "io/MeshReader.h"
+
+using namespace conescope;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+// Progress lines on stderr, whole lines at a time (meshes may be measured on several threads).
+void progress(const std::string& line) {
+    static std::mutex mutex;
+    std::lock_guard<std::mutex> lock(mutex);
+    std::cerr << line << std::endl;
+}
+
+// The name of meshoptimizer's own pipeline in the rows (builder and cone columns).
+const std::string kMeshoptLoop = "meshoptimizer";
+
+struct Row {
+    std::string mesh;
+    size_t triangles = 0;
+    std::string builder;
+    std::string coneWeight;  // meshoptimizer's cone_weight where a meshoptimizer builder made the clusters
+    size_t maxVertices = 0, maxTriangles = 0;
+    size_t clusters = 0;
+    size_t largestVertices = 0, largestTriangles = 0;
+    std::string cone, test;
+    double distance = 0.0;
+    double efficiency = 0.0, expectedEfficiency = 0.0;
+    size_t falseCulls = 0;
+    double nanosecondsPerCluster = 0.0;
+    double partitionSeconds = 0.0, boundsSeconds = 0.0;
+
+    bool withinLimits() const { return largestVertices <= maxVertices && largestTriangles <= maxTriangles; }
+    std::string configuration() const { return builder + (coneWeight.empty() ? "" : " (cw " + coneWeight + ")") + " / " + cone + " / " + test; }
+};
+
+struct Options {
+    std::string meshes;
+    std::string output;
+    bool quick = false;
+    size_t views = 128;
+    size_t jobs = 1;
+};
+
+std::string formatNumber(double value, int digits) {
+    std::ostringstream text;
+    text << std::fixed << std::setprecision(digits) << value;
+    return text.str();
+}
+
+std::string formatWeight(float weight) {
+    std::ostringstream text;
+    text << weight;
+    return text.str();
+}
+
+struct MeshData {
+    std::string name;
+    Mesh mesh;
+    std::vector<glm::vec3> world;
+    FaceGeometry faces;
+    size_t triangles = 0;
+    std::map<double, std::vector<Eye>> views;  // by distance
+};
+
+// Largest cluster, in distinct vertices and fan triangles.
+void recordClusterSizes(const ClusterBounds& bounds, Row& row) {
+    for (size_t c = 0; c < bounds.count(); ++c) {
+        row.largestVertices = std::max<size_t>(row.largestVertices, bounds.vertexStarts[c + 1] - bounds.vertexStarts[c]);
+        row.largestTriangles = std::max<size_t>(row.largestTriangles, bounds.triangles[c]);
+    }
+}
+
+// Every ConeScope builder (all but File) at one budget: partition, bounds per cone, every test and distance.
+void measureConeScope(const MeshData& data, const MeshletLimits& limits, std::vector<Row>& rows) {
+    Settings settings;
+    settings.limits = limits;
+    // k-means is compared at the meshlet builder's cluster count for the same budget.
+    settings.builder = Builder::Meshlet;
+    const size_t meshletCount = buildPartition(data.mesh, data.faces, settings).clusterCount;
+    settings.clusterCount = meshletCount;
+    for (Builder builder : allBuilders()) {
+        if (builder == Builder::File) continue;
+        settings.builder = builder;
+        const std::string what = "  " + data.name + " " + std::to_string(limits.maxVertices) + "/" +
+                                 std::to_string(limits.maxTriangles) + " " + toString(builder) + ": ";
+        Partition partition;
+        const auto partitionStart = Clock::now();
+        try {
+            partition = buildPartition(data.mesh, data.faces, settings);
+        } catch (const std::exception& error) {
+            progress(what + "skipped (" + error.what() + ")");
+            continue;
+        }
+        const double partitionSeconds = secondsSince(partitionStart);
+        const auto measureStart = Clock::now();
+        bool oracleDone = false;
+        for (ConeMethod cone : allConeMethods()) {
+            const auto boundsStart = Clock::now();
+            const ClusterBounds bounds =
+                computeClusterBounds(data.mesh, data.world, data.faces, partition, cone, settings.sphere);
+            const double boundsSeconds = secondsSince(boundsStart);
+            const CullingInput input{data.mesh, data.world, data.faces, bounds};
+            Row base;
+            base.mesh = data.name;
+            base.triangles = data.triangles;
+            base.builder = toString(builder);
+            if (builder == Builder::Meshopt) base.coneWeight = formatWeight(settings.meshoptConeWeight);
+            base.maxVertices = limits.maxVertices;
+            base.maxTriangles = limits.maxTriangles;
+            base.clusters = partition.clusterCount;
+            base.partitionSeconds = partitionSeconds;
+            base.boundsSeconds = boundsSeconds;
+            recordClusterSizes(bounds, base);
+            for (CullTest test : allCullTests()) {
+                // The oracle reads faces only: the same for every cone, so it is measured once.
+                if (test == CullTest::Oracle && oracleDone) continue;
+                for (const auto& [distance, views] : data.views) {
+                    const TestStatistics statistics = measureCulling(input, views, test);
+                    Row row = base;
+                    row.cone = test == CullTest::Oracle ? "-" : toString(cone);
+                    row.test = toString(test);
+                    row.distance = distance;
+                    row.efficiency = statistics.efficiency;
+                    row.expectedEfficiency = test == CullTest::Oracle ? 0.0 : statistics.expectedEfficiency;
+                    row.falseCulls = statistics.falseCulls;
+                    row.nanosecondsPerCluster = statistics.nanosecondsPerCluster;
+                    rows.push_back(row);
+                }
+                oracleDone |= test == CullTest::Oracle;
+            }
+        }
+        progress(what + std::to_string(partition.clusterCount) + " clusters in " + formatNumber(partitionSeconds, 2) +
+                 " s, every cone, test and distance in " + formatNumber(secondsSince(measureStart), 1) + " s");
+    }
+}
+
+// meshoptimizer's pipeline as its documentation shows it, judged by the same per-face oracle.
+void measureMeshopt(const MeshData& data, const MeshletLimits& limits, float coneWeight, std::vector<Row>& rows) {
+    const std::vector<unsigned int> indices = bench::fanTriangles(data.mesh);
+    const auto start = Clock::now();
+    const bench::MeshoptClusters clusters = bench::buildMeshoptClusters(indices, data.world, limits, coneWeight);
+    const double seconds = secondsSince(start);
+    const bench::MeshletTriangles triangles = bench::meshletTriangleMesh(clusters, data.world);
+    const FaceGeometry faces = computeFaceGeometry(triangles.mesh);
+    const size_t count = clusters.count();
+
+    Row base;
+    base.mesh = data.name;
+    base.triangles = data.triangles;
+    base.builder = kMeshoptLoop;
+    base.coneWeight = formatWeight(coneWeight);
+    base.maxVertices = limits.maxVertices;
+    base.maxTriangles = limits.maxTriangles;
+    base.clusters = count;
+    base.partitionSeconds = seconds;  // meshopt_buildMeshlets + meshopt_computeMeshletBounds
+    base.cone = kMeshoptLoop;
+    double expected = 0.0;
+    for (size_t m = 0; m < count; ++m) {
+        const meshopt_Meshlet& meshlet = clusters.meshlets[m];
+        base.largestVertices = std::max<size_t>(base.largestVertices, meshlet.vertex_count);
+        base.largestTriangles = std::max<size_t>(base.largestTriangles, meshlet.triangle_count);
+        if (clusters.bounds[m].cone_cutoff < 1.0f) expected += meshlet.triangle_count * (1.0 - clusters.bounds[m].cone_cutoff);
+    }
+    base.expectedEfficiency = triangles.mesh.faceCount() ? expected / double(triangles.mesh.faceCount()) : 0.0;
+    progress("  " + data.name + " " + std::to_string(limits.maxVertices) + "/" + std::to_string(limits.maxTriangles) +
+             " meshoptimizer cw " + formatWeight(coneWeight) + ": " + std::to_string(count) + " meshlets + bounds in " +
+             formatNumber(seconds, 2) + " s");
+
+    struct Totals {
+        size_t culledBack = 0, back = 0, falseCulls = 0;
+        double nanoseconds = 0.0;
+    };
+    std::vector<uint8_t> culled(count);
+    for (const auto& [distance, views] : data.views) {
+        Totals apex, sphere;
+        for (const Eye& eye : views) {
+            const std::vector<Facing> facing = classifyFaces(triangles.mesh, triangles.mesh.positions, faces, eye);
+            std::vector<uint32_t> front(count, 0), back(count, 0);
+            size_t backTotal = 0;
+            for (size_t m = 0; m < count; ++m)
+                for (uint32_t f = triangles.faceStarts[m]; f < triangles.faceStarts[m + 1]; ++f) {
+                    front[m] += facing[f] == Facing::Front;
+                    back[m] += facing[f] == Facing::Back;
+                }
+            for (size_t m = 0; m < count; ++m) backTotal += back[m];
+            const glm::vec3 eyePosition(eye.position);
+            auto run = [&](auto culls, Totals& totals) {
+                const auto start = Clock::now();
+                for (size_t m = 0; m < count; ++m) culled[m] = culls(clusters.bounds[m], eyePosition) ? 1 : 0;
+                totals.nanoseconds += std::chrono::duration<double, std::nano>(Clock::now() - start).count();
+                totals.back += backTotal;
+                for (size_t m = 0; m < count; ++m) {
+                    if (!culled[m]) continue;
+                    totals.culledBack += back[m];
+                    totals.falseCulls += front[m] > 0;
+                }
+            };
+            run(bench::meshoptApexCulls, apex);
+            run(bench::meshoptSphereCulls, sphere);
+        }
+        for (auto [test, totals] : {std::pair{toString(CullTest::Apex), apex}, std::pair{toString(CullTest::MeshoptSphere), sphere}}) {
+            Row row = base;
+            row.test = test;
+            row.distance = distance;
+            row.efficiency = totals.back ? double(totals.culledBack) / double(totals.back) : 1.0;
+            row.falseCulls = totals.falseCulls;
+            row.nanosecondsPerCluster = count && !views.empty() ? totals.nanoseconds / double(count * views.size()) : 0.0;
+            rows.push_back(row);
+        }
+    }
+}
+
+void writeCsv(const std::vector<Row>& rows, const std::string& path) {
+    std::ofstream out(path);
+    out << "mesh,triangles,builder,cone_weight,max_verts,max_tris,clusters,largest_cluster_verts,largest_cluster_tris,"
+           "within_limits,cone,test,distance,efficiency,expected_efficiency,false_culls,ns_per_cluster,partition_s,bounds_s\n";
+    out << std::setprecision(6);
+    for (const Row& r : rows)
+        out << r.mesh << ',' << r.triangles << ',' << r.builder << ',' << r.coneWeight << ',' << r.maxVertices << ','
+            << r.maxTriangles << ',' << r.clusters << ',' << r.largestVertices << ',' << r.largestTriangles << ','
+            << (r.withinLimits() ? 1 : 0) << ',' << r.cone << ',' << r.test << ',' << r.distance << ',' << r.efficiency
+            << ',' << r.expectedEfficiency << ',' << r.falseCulls << ',' << r.nanosecondsPerCluster << ','
+            << r.partitionSeconds << ',' << r.boundsSeconds << '\n';
+    if (!out) throw std::runtime_error("cannot write " + path);
+}
+
+// ---- Summary
+
+double geometricMean(const std::vector<double>& values) {
+    if (values.empty()) return 0.0;
+    double logSum = 0.0;
+    for (double v : values) logSum += std::log(std::max(v, 1e-12));
+    return std::exp(logSum / double(values.size()));
+}
+
+bool constantSizeTest(const std::string& test) {
+    return test != toString(CullTest::Oracle) && test != toString(CullTest::Vertices);
+}
+
+// Rows at one budget and distance, by configuration and then by mesh.
+using Table = std::map<std::string, std::map<std::string, const Row*>>;
+Table tableAt(const std::vector<Row>& rows, size_t maxVertices, size_t maxTriangles, double distance) {
+    Table table;
+    for (const Row& r : rows)
+        if (r.maxVertices == maxVertices && r.maxTriangles == maxTriangles && r.distance == distance)
+            table[r.configuration()][r.mesh] = &r;
+    return table;
+}
+
+struct Choice {
+    std::string configuration;
+    double geometricMean = 0.0;
+};
+
+// The one configuration (same on every mesh: nothing is tuned per mesh) with the best geometric
+// mean, among ConeScope configurations that respect the limits, never culled wrongly and, when
+// asked, use a constant-size test.
+Choice bestConfiguration(const Table& table, const std::vector<std::string>& meshes, const std::set<std::string>& unsafe,
+                         bool constantSizeOnly) {
+    Choice best;
+    for (const auto& [configuration, byMesh] : table) {
+        if (byMesh.size() != meshes.size() || unsafe.count(configuration)) continue;
+        const Row& any = *byMesh.begin()->second;
+        if (any.builder == kMeshoptLoop || any.test == toString(CullTest::Oracle)) continue;
+        if (constantSizeOnly && !constantSizeTest(any.test)) continue;
+        std::vector<double> values;
+        bool withinLimits = true;
+        for (const auto& [mesh, row] : byMesh) values.push_back(row->efficiency), withinLimits &= row->withinLimits();
+        if (!withinLimits) continue;
+        const double mean = geometricMean(values);
+        if (mean > best.geometricMean) best = {configuration, mean};
+    }
+    return best;
+}
+
+std::string meshoptApexConfiguration(const std::string& weight) {
+    return kMeshoptLoop + " (cw " + weight + ") / " + kMeshoptLoop + " / " + toString(CullTest::Apex);
+}
+
+double efficiencyOf(const Table& table, const std::string& configuration, const std::string& mesh) {
+    auto byMesh = table.find(configuration);
+    if (byMesh == table.end()) return 0.0;
+    auto row = byMesh->second.find(mesh);
+    return row == byMesh->second.end() ? 0.0 : row->second->efficiency;
+}
+
+double meanOf(const Table& table, const std::string& configuration, const std::vector<std::string>& meshes) {
+    std::vector<double> values;
+    for (const std::string& mesh : meshes) values.push_back(efficiencyOf(table, configuration, mesh));
+    return geometricMean(values);
+}
+
+std::string machineDescription() {
+    std::ifstream cpuinfo("/proc/cpuinfo");
+    std::string line, model = "unknown CPU";
+    while (std::getline(cpuinfo, line))
+        if (line.rfind("model name", 0) == 0) {
+            model = line.substr(line.find(':') + 2);
+            break;
+        }
+    return model + ", " + std::to_string(std::thread::hardware_concurrency()) + " cores";
+}
+
+struct SummaryInputs {
+    std::vector<Row> rows;
+    std::vector<std::string> meshes;
+    std::vector<MeshletLimits> budgets;
+    std::vector<double> distances;
+    std::vector<std::string> weights;  // meshoptimizer cone weights measured
+    size_t views = 0;
+    size_t jobs = 1;
+    double seconds = 0.0;
+    std::string command;
+};
+
+void writeSummary(const SummaryInputs& in, const std::string& markdownPath, const std::string& plotCsvPath) {
+    const MeshletLimits headline = in.budgets.front();
+    const double headlineDistance = std::count(in.distances.begin(), in.distances.end(), 3.0) ? 3.0 : in.distances.front();
+    std::set<std::string> unsafe;  // configurations with a false cull anywhere
+    for (const Row& r : in.rows)
+        if (r.falseCulls > 0) unsafe.insert(r.configuration());
+    const Table table = tableAt(in.rows, headline.maxVertices, headline.maxTriangles, headlineDistance);
+    const Choice fixed = bestConfiguration(table, in.meshes, unsafe, true);
+    const Choice anyTest = bestConfiguration(table, in.meshes, unsafe, false);
+    const std::string budget = std::to_string(headline.maxVertices) + "/" + std::to_string(headline.maxTriangles);
+
+    // The stronger meshoptimizer baseline (by geometric mean) is the one the ratio is taken against.
+    std::string strongest = in.weights.front();
+    for (const std::string& w : in.weights)
+        if (meanOf(table, meshoptApexConfiguration(w), in.meshes) > meanOf(table, meshoptApexConfiguration(strongest), in.meshes))
+            strongest = w;
+    const std::string baseline = meshoptApexConfiguration(strongest);
+
+    std::ofstream md(markdownPath);
+    md << "# ConeScope cull-efficiency report\n\n";
+    md << "Efficiency = triangles in culled clusters / back-facing triangles (per-face oracle), summed over "
+       << in.views << " orbit views per distance. meshoptimizer rows run meshopt_buildMeshlets + "
+          "meshopt_computeMeshletBounds and its documented float tests in this process.\n\n";
+    md << "- command: `" << in.command << "`\n";
+    md << "- machine: " << machineDescription() << "\n";
+    md << "- run time: " << formatNumber(in.seconds, 1) << " s with " << in.jobs << (in.jobs == 1 ? " thread" : " threads")
+       << " (ns_per_cluster in report.csv comes from this run; speed.txt has the careful timings)\n";
+    md << "- meshes: " << in.meshes.size() << "; budgets:";
+    for (const MeshletLimits& b : in.budgets) md << " " << b.maxVertices << "/" << b.maxTriangles;
+    md << "; distances:";
+    for (double d : in.distances) md << " " << d;
+    md << " (times the half diagonal of the bounding box)\n\n";
+
+    md << "## Per mesh, budget " << budget << ", distance " << headlineDistance << "\n\n";
+    md << "ConeScope (fixed) is one configuration for every mesh, the best geometric mean among builders "
+          "that respect the budget, with a constant-size test and no false cull anywhere: **"
+       << (fixed.configuration.empty() ? "none" : fixed.configuration) << "**.\n"
+       << "Best per mesh allows any test but the oracle (including the per-vertex test) and differs between meshes; "
+          "it is shown for information only. The ratio is against the stronger meshoptimizer baseline (cone_weight "
+       << strongest << ").\n\n";
+    md << "| mesh | triangles |";
+    for (const std::string& w : in.weights) md << " meshopt apex cw " << w << " |";
+    md << " meshopt false culls | ConeScope (fixed) | ratio | clusters meshopt / ours | best per mesh | configuration |\n";
+    md << "|---|---:|";
+    for (size_t i = 0; i < in.weights.size(); ++i) md << "---:|";
+    md << "---:|---:|---:|---:|---:|---|\n";
+    std::ofstream plot(plotCsvPath);
+    plot << "mesh";
+    for (const std::string& w : in.weights) plot << ",meshoptimizer apex (cone_weight " << w << ")";
+    plot << ",ConeScope (" << fixed.configuration << ")\n";
+    std::vector<double> ratios;
+    size_t meshesBetter = 0;
+    for (const std::string& mesh : in.meshes) {
+        const Row* any = table.count(fixed.configuration) ? table.at(fixed.configuration).at(mesh) : nullptr;
+        md << "| " << mesh << " | " << (any ? any->triangles : 0) << " |";
+        plot << mesh;
+        size_t meshoptFalse = 0;
+        for (const std::string& w : in.weights) {
+            md << " " << formatNumber(efficiencyOf(table, meshoptApexConfiguration(w), mesh), 3) << " |";
+            plot << "," << efficiencyOf(table, meshoptApexConfiguration(w), mesh);
+            auto row = table.find(meshoptApexConfiguration(w));
+            if (row != table.end() && row->second.count(mesh)) meshoptFalse += row->second.at(mesh)->falseCulls;
+        }
+        const double ours = efficiencyOf(table, fixed.configuration, mesh);
+        const double theirs = efficiencyOf(table, baseline, mesh);
+        ratios.push_back(theirs > 0 ? ours / theirs : 0.0);
+        meshesBetter += ours > theirs;
+        // Best per mesh: any safe ConeScope configuration within the limits.
+        double bestValue = 0.0;
+        std::string bestName;
+        for (const auto& [configuration, byMesh] : table) {
+            auto row = byMesh.find(mesh);
+            if (row == byMesh.end() || unsafe.count(configuration)) continue;
+            const Row& r = *row->second;
+            if (r.builder == kMeshoptLoop || r.test == toString(CullTest::Oracle) || !r.withinLimits()) continue;
+            if (r.efficiency > bestValue) bestValue = r.efficiency, bestName = configuration;
+        }
+        auto clustersOf = [&](const std::string& configuration) -> std::string {
+            auto byMesh = table.find(configuration);
+            if (byMesh == table.end() || !byMesh->second.count(mesh)) return "-";
+            return std::to_string(byMesh->second.at(mesh)->clusters);
+        };
+        md << " " << meshoptFalse << " | " << formatNumber(ours, 3) << " | " << formatNumber(ratios.back(), 2) << "x | "
+           << clustersOf(baseline) << " / " << clustersOf(fixed.configuration) << " | " << formatNumber(bestValue, 3)
+           << " | " << bestName << " |\n";
+        plot << "," << ours << "\n";
+    }
+    md << "| **geometric mean** | |";
+    for (const std::string& w : in.weights) md << " " << formatNumber(meanOf(table, meshoptApexConfiguration(w), in.meshes), 3) << " |";
+    const double baselineMean = meanOf(table, baseline, in.meshes);
+    const double ratio = baselineMean > 0 ? fixed.geometricMean / baselineMean : 0.0;
+    md << " | **" << formatNumber(fixed.geometricMean, 3) << "** | **" << formatNumber(ratio, 2) << "x** | | | |\n\n";
+
+    md << "## Targets\n\n";
+    md << "- geometric-mean efficiency >= 1.25x meshoptimizer's apex test: " << formatNumber(ratio, 2) << "x -> "
+       << (ratio >= 1.25 ? "**met**" : "**not met**") << "\n";
+    md << "- better on every mesh: " << meshesBetter << " of " << in.meshes.size() << " -> "
+       << (meshesBetter == in.meshes.size() ? "**met**" : "**not met**") << "\n";
+    size_t ourFalse = 0, theirFalse = 0;
+    for (const Row& r : in.rows) (r.builder == kMeshoptLoop ? theirFalse : ourFalse) += r.falseCulls;
+    md << "- false culls of every ConeScope row: " << ourFalse << " -> " << (ourFalse == 0 ? "**met**" : "**not met**")
+       << " (meshoptimizer's own float loop, all rows: " << theirFalse << ")\n";
+    md << "- with any test but the oracle (per-vertex test allowed): " << anyTest.configuration << ", geometric mean "
+       << formatNumber(anyTest.geometricMean, 3) << " = " << formatNumber(baselineMean > 0 ? anyTest.geometricMean / baselineMean : 0.0, 2)
+       << "x\n\n";
+
+    md << "## Every budget and distance (geometric means over meshes)\n\n";
+    md << "The fixed configuration is re-chosen at each budget and distance by the same rule.\n\n";
+    md << "| budget | distance | meshopt apex (best cw) | ConeScope fixed | ratio | configuration | oracle, same partition |\n";
+    md << "|---|---:|---:|---:|---:|---|---:|\n";
+    for (const MeshletLimits& b : in.budgets)
+        for (double d : in.distances) {
+            const Table t = tableAt(in.rows, b.maxVertices, b.maxTriangles, d);
+            double meshopt = 0.0;
+            for (const std::string& w : in.weights) meshopt = std::max(meshopt, meanOf(t, meshoptApexConfiguration(w), in.meshes));
+            const Choice c = bestConfiguration(t, in.meshes, unsafe, true);
+            double oracle = 0.0;
+            if (!c.configuration.empty()) {
+                const Row& any = *t.at(c.configuration).begin()->second;
+                oracle = meanOf(t, any.builder + (any.coneWeight.empty() ? "" : " (cw " + any.coneWeight + ")") + " / - / oracle", in.meshes);
+            }
+            md << "| " << b.maxVertices << "/" << b.maxTriangles << " | " << d << " | " << formatNumber(meshopt, 3) << " | "
+               << formatNumber(c.geometricMean, 3) << " | " << formatNumber(meshopt > 0 ? c.geometricMean / meshopt : 0.0, 2)
+               << "x | " << c.configuration << " | " << formatNumber(oracle, 3) << " |\n";
+        }
+
+    md << "\n## Top configurations, budget " << budget << ", distance " << headlineDistance << "\n\n";
+    md << "| configuration | geometric mean | mean ns/cluster (core, scalar double) | within limits | false culls |\n|---|---:|---:|---|---:|\n";
+    std::vector<std::pair<double, std::string>> ranked;
+    for (const auto& [configuration, byMesh] : table) ranked.emplace_back(meanOf(table, configuration, in.meshes), configuration);
+    std::sort(ranked.rbegin(), ranked.rend());
+    for (size_t i = 0; i < std::min<size_t>(ranked.size(), 25); ++i) {
+        const auto& byMesh = table.at(ranked[i].second);
+        double nanoseconds = 0.0;
+        bool within = true;
+        size_t falseCulls = 0;
+        for (const auto& [mesh, row] : byMesh)
+            nanoseconds += row->nanosecondsPerCluster, within &= row->withinLimits(), falseCulls += row->falseCulls;
+        md << "| " << ranked[i].second << " | " << formatNumber(ranked[i].first, 3) << " | "
+           << formatNumber(nanoseconds / double(byMesh.size()), 1) << " | " << (within ? "yes" : "no") << " | " << falseCulls << " |\n";
+    }
+
+    md << "\n## Cluster counts, budget " << budget << "\n\n";
+    md << "k-means is asked for the meshlet builder's count; the largest cluster (vertices/triangles) shows which builders respect the budget.\n\n";
+    std::vector<std::string> builders;
+    for (const Row& r : in.rows)
+        if (r.maxVertices == headline.maxVertices && r.maxTriangles == headline.maxTriangles) {
+            const std::string name = r.builder + (r.coneWeight.empty() ? "" : " (cw " + r.coneWeight + ")");
+            if (std::find(builders.begin(), builders.end(), name) == builders.end()) builders.push_back(name);
+        }
+    md << "| mesh |";
+    for (const std::string& b : builders) md << " " << b << " |";
+    md << "\n|---|";
+    for (size_t i = 0; i < builders.size(); ++i) md << "---:|";
+    md << "\n";
+    for (const std::string& mesh : in.meshes) {
+        md << "| " << mesh << " |";
+        for (const std::string& b : builders) {
+            const Row* found = nullptr;
+            for (const Row& r : in.rows)
+                if (r.mesh == mesh && r.maxVertices == headline.maxVertices && r.maxTriangles == headline.maxTriangles &&
+                    r.builder + (r.coneWeight.empty() ? "" : " (cw " + r.coneWeight + ")") == b) {
+                    found = &r;
+                    break;
+                }
+            if (found) md << " " << found->clusters << " (" << found->largestVertices << "/" << found->largestTriangles << ") |";
+            else md << " - |";
+        }
+        md << "\n";
+    }
+    if (!md) throw std::runtime_error("cannot write " + markdownPath);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    Options options;
+    options.meshes = bench::sourceDirectory() + "/datasets/cgal";
+    options.output = bench::sourceDirectory() + "/bench/results";
+    CLI::App app{"Cull efficiency of every ConeScope builder, cone and test against meshoptimizer's pipeline"};
+    app.add_option("--meshes", options.meshes, "directory of .off meshes, or one mesh file")->capture_default_str();
+    app.add_option("--output", options.output, "directory for report.csv, report.md and summary.csv")->capture_default_str();
+    app.add_flag("--quick", options.quick, "one budget (64/124) and one distance (3): a short run for CI");
+    app.add_option("--views", options.views, "orbit views per distance")->capture_default_str()->check(CLI::PositiveNumber);
+    app.add_option("--jobs", options.jobs, "meshes measured at the same time, one thread each")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 64));
+    CLI11_PARSE(app, argc, argv);
+
+    const auto start = Clock::now();
+    try {
+        std::vector<MeshletLimits> budgets = {{64, 124}, {128, 256}, {32, 64}};
+        std::vector<double> distances = {1.5, 3.0, 10.0};
+        if (options.quick) budgets.resize(1), distances = {3.0};
+        std::vector<float> weights = {0.25f};
+        if (Settings{}.meshoptConeWeight != 0.25f) weights.push_back(Settings{}.meshoptConeWeight);
+
+        SummaryInputs summary;
+        summary.budgets = budgets;
+        summary.distances = distances;
+        summary.views = options.views;
+        for (float w : weights) summary.weights.push_back(formatWeight(w));
+        for (int i = 0; i < argc; ++i) summary.command += (i ? " " : "") + std::string(i ? argv[i] : "conescope-bench-report");
+
+        const std::vector<std::string> files = bench::meshFiles(options.meshes);
+        // Meshes are independent: `jobs` threads take them in turn; rows are merged in file order.
+        std::vector<std::vector<Row>> rowsPerMesh(files.size());
+        std::vector<std::exception_ptr> failures(files.size());
+        std::atomic<size_t> next{0};
+        auto work = [&] {
+            for (size_t i; (i = next++) < files.size();) {
+                try {
+                    MeshData data;
+                    data.name = bench::meshName(files[i]);
+                    data.mesh = readMesh(files[i]);
+                    data.world = worldPositions(data.mesh);
+                    data.faces = computeFaceGeometry(data.mesh);
+                    data.triangles = triangleCount(data.mesh);
+                    const Aabb box = computeAabb(data.world);
+                    for (double d : distances) data.views[d] = orbitViews(box, options.views, d);
+                    progress("[" + std::to_string(i + 1) + "/" + std::to_string(files.size()) + "] " + data.name + ": " +
+                             std::to_string(data.triangles) + " triangles (" + formatNumber(secondsSince(start), 0) +
+                             " s elapsed)");
+                    for (const MeshletLimits& limits : budgets) {
+                        for (float w : weights) measureMeshopt(data, limits, w, rowsPerMesh[i]);
+                        measureConeScope(data, limits, rowsPerMesh[i]);
+                    }
+                } catch (...) {
+                    failures[i] = std::current_exception();
+                }
+            }
+        };
+        std::vector<std::thread> threads;
+        for (size_t j = 1; j < options.jobs; ++j) threads.emplace_back(work);
+        work();
+        for (std::thread& thread : threads) thread.join();
+        for (size_t i = 0; i < files.size(); ++i) {
+            if (failures[i]) std::rethrow_exception(failures[i]);
+            summary.meshes.push_back(bench::meshName(files[i]));
+            summary.rows.insert(summary.rows.end(), rowsPerMesh[i].begin(), rowsPerMesh[i].end());
+        }
+        summary.seconds = secondsSince(start);
+        summary.jobs = options.jobs;
+        std::filesystem::create_directories(options.output);
+        writeCsv(summary.rows, options.output + "/report.csv");
+        writeSummary(summary, options.output + "/report.md", options.output + "/summary.csv");
+        std::cerr << "wrote " << summary.rows.size() << " rows to " << options.output << "/report.csv, the summary to "
+                  << options.output << "/report.md in " << formatNumber(summary.seconds, 1) << " s\n";
+    } catch (const std::exception& error) {
+        std::cerr << "conescope-bench-report: " << error.what() << "\n";
+        return 1;
+    }
+    return 0;
+}

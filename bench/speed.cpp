@@ -1,0 +1,252 @@
+// conescope-bench-speed: Google Benchmark timings of
+//  - one cull pass over all clusters, per test: the core's scalar double cullClusters, the batched
+//    float tests at each SIMD level, and meshoptimizer's own float loop over meshopt_Bounds;
+//  - preparation of a >= 1M-triangle mesh (a real mesh subdivided 1->4): face geometry + partition
+//    + bounds (minimal cone) for every ConeScope builder, against meshopt_buildMeshlets +
+//    meshopt_computeMeshletBounds.
+// After the usual output it prints ns per cluster for every cull benchmark.
+//
+//   conescope-bench-speed [--mesh=path.off] [--min-triangles=N] [google benchmark flags]
+#include <benchmark/benchmark.h>
+
+#include <cstring>
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <memory>
+
+#include "BenchSupport.h"
+#include "core/BatchCulling.h"
+#include "core/ClusterBounds.h"
+#include "core/Culling.h"
+#include "core/Settings.h"
+#include "core/Statistics.h"
+#include "io/MeshReader.h"
+
+using namespace conescope;
+
+namespace {
+
+std::string meshPath = bench::sourceDirectory() + "/datasets/cgal/armadillo.off";
+size_t minTriangles = 1000000;
+const MeshletLimits kLimits{64, 124};
+
+// A mesh with its clusters (meshlet builder, minimal cone), their float batch, meshoptimizer's
+// clusters for the same budget, and 128 orbit eyes at distance 3 to cycle through.
+struct Scene {
+    std::string name;
+    Mesh mesh;
+    std::vector<glm::vec3> world;
+    FaceGeometry faces;
+    ClusterBounds bounds;
+    ClusterBatch batch;
+    bench::MeshoptClusters meshopt;
+    std::vector<Eye> eyes;
+};
+
+std::unique_ptr<Scene> makeScene(const std::string& name, Mesh mesh) {
+    auto scene = std::make_unique<Scene>();
+    scene->name = name;
+    scene->mesh = std::move(mesh);
+    scene->world = worldPositions(scene->mesh);
+    scene->faces = computeFaceGeometry(scene->mesh);
+    const Partition partition = buildMeshlets(scene->mesh, scene->faces, kLimits);
+    scene->bounds = computeClusterBounds(scene->mesh, scene->world, scene->faces, partition, ConeMethod::Minimal);
+    scene->batch = makeClusterBatch(scene->bounds);
+    scene->meshopt = bench::buildMeshoptClusters(bench::fanTriangles(scene->mesh), scene->world, kLimits, 0.25f);
+    scene->eyes = orbitViews(computeAabb(scene->world), 128, 3.0);
+    return scene;
+}
+
+const Mesh& baseMesh() {
+    static const Mesh mesh = readMesh(meshPath);
+    return mesh;
+}
+
+const Mesh& largeMesh() {
+    static const Mesh mesh = bench::subdivideToAtLeast(baseMesh(), minTriangles);
+    return mesh;
+}
+
+// Scenes are built on first use, so filtering benchmarks also skips the preparation they need.
+const Scene& scene(bool large) {
+    static std::map<bool, std::unique_ptr<Scene>> scenes;
+    auto& slot = scenes[large];
+    if (!slot) {
+        const std::string name = bench::meshName(meshPath);
+        slot = large ? makeScene(name + "-" + std::to_string(triangleCount(largeMesh())), largeMesh())
+                     : makeScene(name, baseMesh());
+    }
+    return *slot;
+}
+
+void countClusters(benchmark::State& state, size_t clusters) {
+    state.counters["clusters"] = double(clusters);
+    state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(clusters));
+}
+
+void cullScalarCore(benchmark::State& state, bool large, CullTest test) {
+    const Scene& s = scene(large);
+    const CullingInput input{s.mesh, s.world, s.faces, s.bounds};
+    size_t view = 0, culled = 0;
+    for (auto _ : state) {
+        const std::vector<uint8_t> result = cullClusters(input, s.eyes[view++ % s.eyes.size()], test);
+        culled += result[0];
+        benchmark::DoNotOptimize(result.data());
+    }
+    benchmark::DoNotOptimize(culled);
+    countClusters(state, s.bounds.count());
+}
+
+void cullBatched(benchmark::State& state, bool large, CullTest test, SimdLevel level) {
+    const Scene& s = scene(large);
+    std::vector<uint8_t> culled(s.batch.count);
+    size_t view = 0;
+    for (auto _ : state) {
+        cullBatch(s.batch, s.eyes[view++ % s.eyes.size()].position, test, culled.data(), level);
+        benchmark::DoNotOptimize(culled.data());
+        benchmark::ClobberMemory();
+    }
+    countClusters(state, s.batch.count);
+}
+
+void cullMeshoptLoop(benchmark::State& state, bool large, bool apex) {
+    const Scene& s = scene(large);
+    std::vector<uint8_t> culled(s.meshopt.count());
+    size_t view = 0;
+    for (auto _ : state) {
+        const glm::vec3 eye(s.eyes[view++ % s.eyes.size()].position);
+        for (size_t m = 0; m < culled.size(); ++m)
+            culled[m] = (apex ? bench::meshoptApexCulls(s.meshopt.bounds[m], eye) : bench::meshoptSphereCulls(s.meshopt.bounds[m], eye)) ? 1 : 0;
+        benchmark::DoNotOptimize(culled.data());
+        benchmark::ClobberMemory();
+    }
+    countClusters(state, culled.size());
+}
+
+// ConeScope's preparation: what a run needs before its first cull, from the mesh.
+void prepareConeScope(benchmark::State& state, Builder builder) {
+    const Mesh& mesh = largeMesh();
+    Settings settings;
+    settings.builder = builder;
+    settings.limits = kLimits;  // k-means: triangles / 124 clusters (the settings default)
+    size_t clusters = 0;
+    for (auto _ : state) {
+        const std::vector<glm::vec3> world = worldPositions(mesh);
+        const FaceGeometry faces = computeFaceGeometry(mesh);
+        const Partition partition = buildPartition(mesh, faces, settings);
+        const ClusterBounds bounds = computeClusterBounds(mesh, world, faces, partition, ConeMethod::Minimal);
+        clusters = bounds.count();
+        benchmark::DoNotOptimize(bounds.cones.data());
+    }
+    state.counters["clusters"] = double(clusters);
+    state.counters["triangles"] = double(triangleCount(mesh));
+}
+
+void prepareMeshopt(benchmark::State& state, float coneWeight) {
+    const Mesh& mesh = largeMesh();
+    size_t clusters = 0;
+    for (auto _ : state) {
+        const std::vector<glm::vec3> world = worldPositions(mesh);
+        const bench::MeshoptClusters result =
+            bench::buildMeshoptClusters(bench::fanTriangles(mesh), world, kLimits, coneWeight);
+        clusters = result.count();
+        benchmark::DoNotOptimize(result.bounds.data());
+    }
+    state.counters["clusters"] = double(clusters);
+    state.counters["triangles"] = double(triangleCount(mesh));
+}
+
+// Console output as usual, then one line per cull benchmark in plain nanoseconds per cluster.
+class PerClusterReporter : public benchmark::ConsoleReporter {
+public:
+    // Tabular without colour codes: the output usually goes to a file (speed.txt).
+    PerClusterReporter() : ConsoleReporter(OO_Tabular) {}
+
+    void ReportRuns(const std::vector<Run>& runs) override {
+        ConsoleReporter::ReportRuns(runs);
+        for (const Run& run : runs) {
+            auto clusters = run.counters.find("clusters");
+            if (run.error_occurred || clusters == run.counters.end() || run.counters.count("triangles")) continue;
+            const double unit = benchmark::GetTimeUnitMultiplier(run.time_unit);
+            lines_.push_back({run.benchmark_name(), run.GetAdjustedRealTime() / unit * 1e9 / clusters->second,
+                              run.GetAdjustedCPUTime() / unit * 1e9 / clusters->second});
+        }
+    }
+    void Finalize() override {
+        ConsoleReporter::Finalize();
+        std::ostream& out = GetOutputStream();
+        out << "\nns per cluster, one cull pass over all clusters (real and CPU time / clusters; they differ when\n"
+               "other processes share the cores):\n";
+        out << "  " << std::left << std::setw(50) << "benchmark" << std::right << std::setw(10) << "real" << std::setw(10)
+            << "cpu" << "\n";
+        for (const Line& line : lines_)
+            out << "  " << std::left << std::setw(50) << line.name << std::right << std::fixed << std::setprecision(3)
+                << std::setw(10) << line.real << std::setw(10) << line.cpu << "\n";
+    }
+
+private:
+    struct Line {
+        std::string name;
+        double real, cpu;
+    };
+    std::vector<Line> lines_;
+};
+
+// Takes --mesh=... and --min-triangles=... out of argv before Google Benchmark reads it.
+void takeOwnFlags(int& argc, char** argv) {
+    int kept = 1;
+    for (int i = 1; i < argc; ++i) {
+        if (std::strncmp(argv[i], "--mesh=", 7) == 0) meshPath = argv[i] + 7;
+        else if (std::strncmp(argv[i], "--min-triangles=", 16) == 0) minTriangles = std::stoul(argv[i] + 16);
+        else argv[kept++] = argv[i];
+    }
+    argc = kept;
+}
+
+void registerBenchmarks() {
+    for (bool large : {false, true}) {
+        const std::string size = large ? "large" : "mesh";
+        for (CullTest test : allCullTests())
+            benchmark::RegisterBenchmark(("cull/core-scalar/" + toString(test) + "/" + size).c_str(), cullScalarCore, large, test);
+        for (CullTest test : allCullTests()) {
+            if (!batchSupports(test)) continue;
+            for (SimdLevel level : {SimdLevel::Scalar, SimdLevel::Sse2, SimdLevel::Avx2})
+                if (level <= bestSimdLevel())
+                    benchmark::RegisterBenchmark(("cull/batch-" + std::string(toString(level)) + "/" + toString(test) + "/" + size).c_str(),
+                                                 cullBatched, large, test, level);
+        }
+        benchmark::RegisterBenchmark(("cull/meshoptimizer-loop/apex/" + size).c_str(), cullMeshoptLoop, large, true);
+        benchmark::RegisterBenchmark(("cull/meshoptimizer-loop/meshopt-sphere/" + size).c_str(), cullMeshoptLoop, large, false);
+    }
+    for (Builder builder : allBuilders())
+        if (builder != Builder::File)
+            benchmark::RegisterBenchmark(("prepare/conescope-" + toString(builder) + "+minimal").c_str(), prepareConeScope, builder)
+                ->Unit(benchmark::kMillisecond)
+                ->Iterations(2);
+    for (float weight : {0.25f, Settings{}.meshoptConeWeight})
+        benchmark::RegisterBenchmark(("prepare/meshoptimizer-cw" + std::to_string(weight).substr(0, 4)).c_str(), prepareMeshopt, weight)
+            ->Unit(benchmark::kMillisecond)
+            ->Iterations(2);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    takeOwnFlags(argc, argv);
+    registerBenchmarks();
+    benchmark::Initialize(&argc, argv);
+    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+    try {
+        PerClusterReporter reporter;
+        std::cout << "mesh: " << meshPath << ", large mesh: at least " << minTriangles << " triangles, budget "
+                  << kLimits.maxVertices << "/" << kLimits.maxTriangles << ", best SIMD level: " << toString(bestSimdLevel())
+                  << "\n";
+        benchmark::RunSpecifiedBenchmarks(&reporter);
+    } catch (const std::exception& error) {
+        std::cerr << "conescope-bench-speed: " << error.what() << "\n";
+        return 1;
+    }
+    benchmark::Shutdown();
+    return 0;
+}

@@ -1,0 +1,56 @@
+#!/usr/bin/env bash
+# One command for the benchmarks: fetches the CGAL meshes if missing, builds the benchmark programs
+# in Release, and writes bench/results/:
+#   report.csv      every (mesh, builder, budget, cone, test, distance) row, with meshoptimizer's own pipeline
+#   report.md       the summary: per mesh against meshoptimizer's apex test, geometric means, targets
+#   summary.csv     the per-mesh numbers behind the plot
+#   efficiency.png  bar chart of efficiency per mesh (VTK charts under xvfb-run)
+#   speed.txt       Google Benchmark: ns per cluster per test (scalar core, batched SIMD, meshoptimizer's
+#                   loop) and preparation time for a >= 1M-triangle mesh; then preparation peak memory
+#
+#   scripts/bench-report.sh            # full run (see docs/benchmarks.md for its duration)
+#   scripts/bench-report.sh --quick    # one budget, one distance, cull timings on the real mesh only
+#
+# Environment: CONESCOPE_BENCH_BUILD_DIR (default build-bench), CONESCOPE_BENCH_OUTPUT (default bench/results).
+set -euo pipefail
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+build=${CONESCOPE_BENCH_BUILD_DIR:-$root/build-bench}
+output=${CONESCOPE_BENCH_OUTPUT:-$root/bench/results}
+quick=0
+for argument in "$@"; do
+  case "$argument" in
+    --quick) quick=1 ;;
+    *) echo "bench-report: unknown argument '$argument' (expected --quick)" >&2; exit 2 ;;
+  esac
+done
+
+"$root/scripts/fetch-datasets.sh"
+
+cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DCONESCOPE_BUILD_GUI=OFF >/dev/null
+cmake --build "$build" -j"$(nproc)" --target conescope-bench-report conescope-bench-plot conescope-bench-speed conescope-bench-prepare
+bin="$build/bench"
+mkdir -p "$output"
+
+report_flags=()
+speed_flags=()
+if [[ $quick -eq 1 ]]; then
+  report_flags+=(--quick)
+  speed_flags+=(--benchmark_filter='^cull/.*/mesh$' --benchmark_min_time=0.05)
+fi
+
+start=$(date +%s)
+"$bin/conescope-bench-report" --meshes "$root/datasets/cgal" --output "$output" --jobs "$(nproc)" "${report_flags[@]}"
+echo "bench-report: report took $(( $(date +%s) - start )) s" >&2
+
+xvfb-run -a -s "-screen 0 1600x1000x24" "$bin/conescope-bench-plot" "$output/summary.csv" "$output/efficiency.png"
+
+{
+  echo "# $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ //'), $(nproc) cores"
+  "$bin/conescope-bench-speed" "${speed_flags[@]}"
+  if [[ $quick -eq 0 ]]; then
+    echo
+    echo "Preparation time and peak memory, each in its own child process:"
+    "$bin/conescope-bench-prepare"
+  fi
+} > "$output/speed.txt" 2>&1
+echo "bench-report: wrote $output/{report.csv,report.md,summary.csv,efficiency.png,speed.txt} in $(( $(date +%s) - start )) s" >&2

@@ -1,0 +1,46 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer targets with clang (+ AddressSanitizer and UBSan) and runs each one for
+# SECONDS (default 60) on a seed corpus made from datasets/ and tests/data/. Findings are written to
+# fuzz-out/<target>/ and make the script fail.
+#   scripts/fuzz.sh            # a minute per target
+#   scripts/fuzz.sh 3600       # the long run
+set -euo pipefail
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+seconds=${1:-60}
+build=${CONESCOPE_FUZZ_BUILD_DIR:-$root/build-fuzz}
+"$root/scripts/install-dependencies.sh"
+CC=clang CXX=clang++ cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCONESCOPE_FUZZ=ON \
+  -DCONESCOPE_BUILD_GUI=OFF -DCONESCOPE_BUILD_TESTS=OFF -DCONESCOPE_BUILD_BENCH=OFF >/dev/null
+targets=(fuzz_off_parser fuzz_mesh_readers fuzz_mesh_ingestion)
+cmake --build "$build" -j"$(nproc)" --target "${targets[@]}"
+
+out=$root/fuzz-out
+mkdir -p "$out"
+status=0
+for target in "${targets[@]}"; do
+  corpus=$out/$target/corpus
+  mkdir -p "$corpus"
+  case $target in
+    fuzz_off_parser) find "$root/datasets" "$root/tests/data" -name '*.off' -size -200k -exec cp {} "$corpus/" \; ;;
+    fuzz_mesh_readers)
+      # The first byte picks the reader: 0 off, 1 ply, 2 obj, 3 stl, 4 vtp, 5 vtk.
+      index=0
+      for extension in off ply obj stl vtp vtk; do
+        while IFS= read -r -d '' file; do
+          { printf "\\x$(printf %02x $index)"; cat "$file"; } > "$corpus/$(basename "$file").seed"
+        done < <(find "$root/datasets" "$root/tests/data" -name "*.$extension" -size -200k -print0)
+        index=$((index + 1))
+      done ;;
+    fuzz_mesh_ingestion) head -c 4096 /dev/urandom > "$corpus/random.seed" ;;
+  esac
+  echo "conescope: fuzzing $target for ${seconds}s"
+  if ! (cd "$out/$target" && "$build/fuzz/$target" -max_total_time="$seconds" -rss_limit_mb=2048 -timeout=20 \
+         -max_len=65536 -print_final_stats=1 "$corpus" 2>"$out/$target/log.txt"); then
+    echo "conescope: $target found a problem; see $out/$target/log.txt and the crash-* files there" >&2
+    tail -40 "$out/$target/log.txt" >&2
+    status=1
+  else
+    grep -E "stat::number_of_executed_units|stat::peak_rss_mb" "$out/$target/log.txt" | sed "s/^/  /"
+  fi
+done
+exit $status

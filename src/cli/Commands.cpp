@@ -1,0 +1,98 @@
+#include "cli/Commands.h"
+
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+
+#include "cli/OutputFiles.h"
+#include "core/MeshChecks.h"
+#include "core/Statistics.h"
+#include "io/MeshReader.h"
+#include "io/MeshWriter.h"
+
+namespace conescope::cli {
+
+namespace {
+
+// Stage names on stderr, so a long run shows it is alive while stdout stays clean for the data.
+ProgressCallback stderrProgress(bool quiet) {
+    if (quiet) return {};
+    return [](double fraction, const std::string& stage) {
+        std::cerr << "conescope-cli: " << int(fraction * 100.0 + 0.5) << "% " << stage << std::endl;
+        return true;
+    };
+}
+
+void note(bool quiet, const std::string& message) {
+    if (!quiet) std::cerr << "conescope-cli: " << message << std::endl;
+}
+
+std::string fileName(const std::string& path) { return std::filesystem::path(path).filename().string(); }
+
+std::string outputFormat(const StatsOptions& options) {
+    if (!options.format.empty()) return options.format;
+    return hasExtension(options.output, {".csv"}) ? "csv" : "json";
+}
+
+void writeText(const std::string& output, const std::string& text) {
+    if (output.empty()) {
+        std::cout << text << std::flush;
+        if (!std::cout) throw std::runtime_error("cannot write to standard output");
+    } else {
+        writeTextFileAtomically(output, text);
+    }
+}
+
+nlohmann::json meshSummary(const std::string& path, const Mesh& mesh) {
+    return {{"name", fileName(path)},
+            {"vertices", mesh.positions.size()},
+            {"faces", mesh.faceCount()},
+            {"triangles", triangleCount(mesh)}};
+}
+
+}  // namespace
+
+void runStats(const StatsOptions& options) {
+    const Settings settings = options.run.toSettings();
+    note(options.quiet, "reading " + options.mesh);
+    const Mesh mesh = readMesh(options.mesh);
+    const RunStatistics run = runStatistics(mesh, settings, fileName(options.mesh), stderrProgress(options.quiet));
+    // The whole text is made before anything is written, so stdout never gets half a document.
+    std::ostringstream text;
+    if (outputFormat(options) == "csv")
+        writeStatisticsCsv(run, text, options.detail);
+    else
+        writeStatisticsJson(run, text, options.detail);
+    writeText(options.output, text.str());
+    if (!options.output.empty()) note(options.quiet, "wrote " + options.output);
+}
+
+void runCheck(const CheckOptions& options) {
+    Mesh mesh = readMesh(options.mesh);
+    nlohmann::json result = {{"mesh", meshSummary(options.mesh, mesh)},
+                             {"report", meshReportToJson(checkMesh(mesh, computeFaceGeometry(mesh)))}};
+    if (options.fixWinding) {
+        result["winding_fixed_faces"] = fixWinding(mesh);
+        result["report_after_fix"] = meshReportToJson(checkMesh(mesh, computeFaceGeometry(mesh)));
+        if (!options.output.empty())
+            replaceFileAtomically(options.output, [&](const std::string& temporary) { writePolyData(mesh, temporary); });
+    }
+    result["output"] = options.output.empty() ? nlohmann::json(nullptr) : nlohmann::json(options.output);
+    std::cout << result.dump(2) << std::endl;
+}
+
+void runPartition(const PartitionOptions& options) {
+    const Settings settings = options.run.toSettings();
+    note(options.quiet, "reading " + options.mesh);
+    const Mesh mesh = readMesh(options.mesh);
+    note(options.quiet, "building clusters (" + toString(settings.builder) + ")");
+    const Partition partition = buildPartition(mesh, computeFaceGeometry(mesh), settings);
+    const std::vector<double> ids(partition.clusterOfFace.begin(), partition.clusterOfFace.end());
+    replaceFileAtomically(options.output, [&](const std::string& temporary) {
+        writePolyData(mesh, temporary, {{"cluster_id", ids}});
+    });
+    note(options.quiet, "wrote " + options.output + ": " + std::to_string(mesh.faceCount()) + " faces in " +
+                            std::to_string(partition.clusterCount) + " clusters");
+}
+
+}  // namespace conescope::cli

@@ -1,0 +1,43 @@
+// The three subcommands, each taking what its options parsed. They throw on failure; main turns
+// the exception into a message and an exit code.
+#pragma once
+
+#include <string>
+
+#include "cli/SettingsOptions.h"
+#include "io/StatisticsIO.h"
+
+namespace conescope::cli {
+
+struct StatsOptions {
+    std::string mesh;
+    SettingsOptions run;
+    std::string format;                // "json", "csv" or empty: from the output's extension, else json
+    std::string output;                // empty = stdout
+    StatisticsDetail detail;
+    bool quiet = false;
+};
+
+struct CheckOptions {
+    std::string mesh;
+    bool fixWinding = false;
+    std::string output;                // the repaired mesh; needs fixWinding
+};
+
+struct PartitionOptions {
+    std::string mesh;
+    SettingsOptions run;
+    std::string output;                // .vtp or .vtk: the formats that keep the cluster_id array
+    bool quiet = false;
+};
+
+// Culling statistics for every requested (cone, test) as JSON or CSV.
+void runStats(const StatsOptions& options);
+
+// Mesh problems as JSON on stdout; with fixWinding also the repaired mesh.
+void runCheck(const CheckOptions& options);
+
+// The mesh with a per-face "cluster_id" array, readable by the file builder.
+void runPartition(const PartitionOptions& options);
+
+}  // namespace conescope::cli

@@ -1,0 +1,99 @@
+// conescope-cli: culling statistics, mesh checks and partitions from the command line.
+// Exit codes: 0 success, 1 a file could not be read or written (or the run failed), 2 bad arguments.
+#include <iostream>
+#include <stdexcept>
+
+#include <CLI/CLI.hpp>
+
+#include "cli/Commands.h"
+#include "cli/OutputFiles.h"
+#include "io/MeshWriter.h"
+
+namespace {
+
+constexpr int kExitFileError = 1;
+constexpr int kExitUsageError = 2;
+
+void printError(const std::string& message) { std::cerr << "conescope-cli: error: " << message << std::endl; }
+
+std::string joined(const std::vector<std::string>& items) {
+    std::string text;
+    for (const std::string& item : items) text += (text.empty() ? "" : " ") + item;
+    return text;
+}
+
+// -o of a mesh-writing command: the extension decides the format, so check it while parsing.
+CLI::Validator meshOutputValidator(const std::vector<std::string>& extensions) {
+    return CLI::Validator(
+        [extensions](std::string& path) -> std::string {
+            if (conescope::cli::hasExtension(path, extensions)) return {};
+            return "'" + path + "' must end in one of: " + joined(extensions);
+        },
+        "FILE");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    using namespace conescope::cli;
+
+    CLI::App app{"ConeScope: back-face culling of mesh clusters with normal cones.", "conescope-cli"};
+    app.require_subcommand(1);
+    app.set_version_flag("--version", conescope::conescopeVersion());
+    app.failure_message([](const CLI::App*, const CLI::Error& error) {
+        return "conescope-cli: error: " + std::string(error.what()) + "\nRun with --help for more information.\n";
+    });
+
+    StatsOptions stats;
+    CLI::App* statsCommand = app.add_subcommand("stats", "Culling statistics over a set of views, as JSON or CSV");
+    statsCommand->add_option("mesh", stats.mesh, "Mesh file (.off .ply .obj .stl .vtp .vtk)")->required();
+    addBuilderOptions(*statsCommand, stats.run);
+    addCullingOptions(*statsCommand, stats.run);
+    statsCommand->add_option("--format", stats.format, "Output format (default: csv for a .csv output, else json)")
+        ->check(CLI::IsMember({"json", "csv"}));
+    statsCommand->add_option("-o,--output", stats.output, "Output file, replaced only when the run succeeds (default: stdout)");
+    statsCommand->add_flag_callback("--no-per-view", [&stats] { stats.detail.views = false; }, "Leave out the per-view table");
+    statsCommand->add_flag_callback("--no-per-cluster", [&stats] { stats.detail.clusters = false; },
+                                    "Leave out the per-cluster table");
+    statsCommand->add_flag("-q,--quiet", stats.quiet, "No progress messages on stderr");
+
+    CheckOptions check;
+    CLI::App* checkCommand = app.add_subcommand("check", "Mesh problems that make culling wrong, as JSON");
+    checkCommand->add_option("mesh", check.mesh, "Mesh file")->required();
+    CLI::Option* fixWinding =
+        checkCommand->add_flag("--fix-winding", check.fixWinding, "Make face winding consistent (reports the faces flipped)");
+    checkCommand->add_option("-o,--output", check.output, "Write the repaired mesh here (.vtp .vtk .ply .off)")
+        ->check(meshOutputValidator(conescope::writableMeshExtensions()))
+        ->needs(fixWinding);
+
+    PartitionOptions partition;
+    CLI::App* partitionCommand =
+        app.add_subcommand("partition", "Write the mesh with a per-face cluster_id array (read back by --builder file)");
+    partitionCommand->add_option("mesh", partition.mesh, "Mesh file")->required();
+    addBuilderOptions(*partitionCommand, partition.run);
+    partitionCommand->add_option("-o,--output", partition.output, "Output mesh (.vtp or .vtk keep the cluster_id array)")
+        ->required()
+        ->check(meshOutputValidator({".vtp", ".vtk"}));
+    partitionCommand->add_flag("-q,--quiet", partition.quiet, "No progress messages on stderr");
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& error) {
+        const int code = app.exit(error);  // prints help, the version or the failure message
+        return code == 0 ? 0 : kExitUsageError;
+    }
+
+    try {
+        if (statsCommand->parsed()) runStats(stats);
+        if (checkCommand->parsed()) runCheck(check);
+        if (partitionCommand->parsed()) runPartition(partition);
+    } catch (const std::invalid_argument& error) {
+        // Settings the core refused (e.g. meshoptimizer's limits): still a usage problem.
+        printError(error.what());
+        return kExitUsageError;
+    } catch (const std::exception& error) {
+        printError(error.what());
+        return kExitFileError;
+    }
+    return 0;
+}

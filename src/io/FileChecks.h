@@ -1,0 +1,26 @@
+// Small file helpers shared by the readers (internal to conescope_io).
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+namespace conescope {
+
+// Throws MeshReadError "path: what" unless path names an existing, readable, non-empty regular
+// file. Done before handing a path to VTK, whose readers report these cases unevenly.
+void requireReadableFile(const std::string& path);
+
+// Size in bytes; throws MeshReadError when it cannot be determined.
+std::uintmax_t fileSizeOrThrow(const std::string& path);
+
+// The whole file as bytes. Throws MeshReadError on open or read failure.
+std::string readFileBytes(const std::string& path);
+
+// Lower-case extension with the dot (".off"), or "" when the name has none.
+std::string lowerCaseExtension(const std::string& path);
+
+// A token or header fragment made safe to quote in a message: printable ASCII kept, other bytes
+// as \xNN, cut to maxLength characters with "..." so binary garbage cannot flood the message.
+std::string quotedForMessage(const std::string& text, size_t maxLength = 32);
+
+}  // namespace conescope

@@ -1,0 +1,169 @@
+#include "io/MeshReader.h"
+
+#include <algorithm>
+#include <new>
+
+#include <vtkAlgorithm.h>
+#include <vtkErrorCode.h>
+#include <vtkExecutive.h>
+#include <vtkOBJReader.h>
+#include <vtkPLYReader.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataReader.h>
+#include <vtkSTLReader.h>
+#include <vtkSmartPointer.h>
+#include <vtkXMLPolyDataReader.h>
+
+#include "io/ClassicLocale.h"
+#include "io/FileChecks.h"
+#include "io/HeaderChecks.h"
+#include "io/OffFormat.h"
+#include "io/PolyDataConversion.h"
+#include "io/VtkMessageCapture.h"
+
+namespace conescope {
+
+namespace {
+
+struct MeshFormat {
+    const char* extension;
+    const char* filterLabel;
+};
+
+// Order is the order of the GUI's file filter.
+const MeshFormat meshFormats[] = {
+    {".off", "OFF"}, {".ply", "PLY"}, {".obj", "Wavefront OBJ"},
+    {".stl", "STL"}, {".vtp", "VTK XML PolyData"}, {".vtk", "VTK legacy"},
+};
+
+std::string supportedExtensionList() {
+    std::string list;
+    for (const MeshFormat& format : meshFormats) list += (list.empty() ? "" : " ") + std::string(format.extension);
+    return list;
+}
+
+// The reader for a VTK-handled extension, with its file name set, after the cheap checks that must
+// run before VTK allocates anything from the header.
+vtkSmartPointer<vtkAlgorithm> makeVtkReader(const std::string& path, const std::string& extension) {
+    if (extension == ".ply") {
+        checkPlyFile(path);
+        vtkSmartPointer<vtkPLYReader> reader = vtkSmartPointer<vtkPLYReader>::New();
+        reader->SetFileName(path.c_str());
+        return reader;
+    }
+    if (extension == ".obj") {
+        checkObjFile(path);
+        vtkSmartPointer<vtkOBJReader> reader = vtkSmartPointer<vtkOBJReader>::New();
+        reader->SetFileName(path.c_str());
+        return reader;
+    }
+    if (extension == ".stl") {
+        checkStlFile(path);
+        vtkSmartPointer<vtkSTLReader> reader = vtkSmartPointer<vtkSTLReader>::New();
+        reader->SetFileName(path.c_str());
+        return reader;
+    }
+    if (extension == ".vtp") {
+        vtkSmartPointer<vtkXMLPolyDataReader> reader = vtkSmartPointer<vtkXMLPolyDataReader>::New();
+        if (!reader->CanReadFile(path.c_str())) throw MeshReadError(path + ": not a VTK XML PolyData (.vtp) file");
+        reader->SetInputString(prepareVtpForVtk(path));
+        reader->ReadFromInputStringOn();
+        return reader;
+    }
+    // .vtk: the legacy format holds any dataset type; we only take polygonal data.
+    vtkSmartPointer<vtkPolyDataReader> reader = vtkSmartPointer<vtkPolyDataReader>::New();
+    reader->SetFileName(path.c_str());
+    if (!reader->IsFilePolyData()) throw MeshReadError(path + ": not a legacy VTK file with POLYDATA");
+    checkLegacyVtkFile(path);
+    return reader;
+}
+
+std::string describeFailure(const VtkMessageCapture& capture, vtkAlgorithm* reader) {
+    std::string messages = capture.summary();
+    if (!messages.empty()) return messages;
+    unsigned long code = reader ? reader->GetErrorCode() : static_cast<unsigned long>(vtkErrorCode::NoError);
+    if (code != vtkErrorCode::NoError) return vtkErrorCode::GetStringFromErrorCode(code);
+    return "the VTK reader failed without a message";
+}
+
+Mesh readWithVtk(const std::string& path, const std::string& extension) {
+    ScopedClassicNumericLocale classicNumbers;
+    VtkMessageCapture capture;
+    vtkSmartPointer<vtkAlgorithm> reader = makeVtkReader(path, extension);
+    if (capture.hasErrors()) throw MeshReadError(path + ": " + describeFailure(capture, reader));
+    capture.watch(reader);
+    capture.watch(reader->GetExecutive());
+    reader->Update();
+    if (capture.hasErrors() || reader->GetErrorCode() != vtkErrorCode::NoError)
+        throw MeshReadError(path + ": " + describeFailure(capture, reader));
+    vtkPolyData* polyData = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
+    if (!polyData || polyData->GetNumberOfPoints() == 0) {
+        std::string warnings = capture.summary();
+        throw MeshReadError(path + ": no points" + (warnings.empty() ? "" : " (" + warnings + ")"));
+    }
+    if (polyData->GetNumberOfPolys() + polyData->GetNumberOfStrips() == 0)
+        throw MeshReadError(path + ": no faces (" + std::to_string(polyData->GetNumberOfPoints()) + " points, " +
+                            std::to_string(polyData->GetNumberOfLines()) + " lines, no polygons)");
+    try {
+        return meshFromPolyData(polyData);
+    } catch (const std::runtime_error& error) {
+        throw MeshReadError(path + ": " + error.what());
+    }
+}
+
+Mesh readByExtension(const std::string& path, const std::string& extension) {
+    if (extension == ".off") return readOff(path);
+    return readWithVtk(path, extension);
+}
+
+}  // namespace
+
+Mesh readMesh(const std::string& path) {
+    std::string extension = lowerCaseExtension(path);
+    if (!hasSupportedMeshExtension(path))
+        throw MeshReadError(path + ": unsupported file extension " +
+                            (extension.empty() ? std::string("(none)") : quotedForMessage(extension)) +
+                            "; supported: " + supportedExtensionList());
+    requireReadableFile(path);
+    Mesh mesh;
+    try {
+        mesh = readByExtension(path, extension);
+    } catch (const MeshReadError&) {
+        throw;
+    } catch (const std::bad_alloc&) {
+        throw MeshReadError(path + ": out of memory while reading (corrupt counts or a very large file)");
+    } catch (const std::exception& error) {
+        throw MeshReadError(path + ": " + error.what());
+    }
+    if (mesh.faceCount() == 0) throw MeshReadError(path + ": no faces");
+    try {
+        validateMesh(mesh);
+    } catch (const std::runtime_error& error) {
+        throw MeshReadError(path + ": " + error.what());
+    }
+    return mesh;
+}
+
+std::vector<std::string> supportedMeshExtensions() {
+    std::vector<std::string> extensions;
+    for (const MeshFormat& format : meshFormats) extensions.push_back(format.extension);
+    return extensions;
+}
+
+bool hasSupportedMeshExtension(const std::string& path) {
+    std::string extension = lowerCaseExtension(path);
+    return std::any_of(std::begin(meshFormats), std::end(meshFormats),
+                       [&](const MeshFormat& format) { return extension == format.extension; });
+}
+
+std::string meshFileFilter() {
+    std::string all, each;
+    for (const MeshFormat& format : meshFormats) {
+        std::string pattern = std::string("*") + format.extension;
+        all += (all.empty() ? "" : " ") + pattern;
+        each += std::string(";;") + format.filterLabel + " (" + pattern + ")";
+    }
+    return "Meshes (" + all + ")" + each + ";;All files (*)";
+}
+
+}  // namespace conescope

@@ -1,0 +1,37 @@
+// Reading meshes from files. Free of VTK types so the CLI, the file builder and tests can use it
+// without pulling VTK headers in; VTK is an implementation detail of conescope_io.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "core/Mesh.h"
+
+namespace conescope {
+
+// Thrown for every file that cannot be turned into a valid Mesh: missing, unreadable, unknown
+// extension, malformed, empty ("no faces"), or failing validateMesh. what() always starts with the
+// file path, then for OFF the 1-based line ("path:line: what"), then what is wrong.
+class MeshReadError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+// Reads .off (own parser), .ply .obj .stl .vtp .vtk (VTK readers), choosing by the extension,
+// case-insensitively. The result has at least one face and has passed validateMesh; its model
+// matrix is the identity unless the file stored one (see PolyDataConversion.h). Per-face scalar
+// arrays of VTK files (e.g. "cluster_id") land in Mesh::faceArrays. VTK's own messages are
+// captured into the exception instead of being printed. Throws MeshReadError.
+Mesh readMesh(const std::string& path);
+
+// Lower-case extensions readMesh accepts, with the dot: {".off", ".ply", ...}.
+std::vector<std::string> supportedMeshExtensions();
+
+// True when readMesh would try to read a file of this name (extension check only).
+bool hasSupportedMeshExtension(const std::string& path);
+
+// Qt file-dialog filter: "Meshes (*.off *.ply ...);;OFF (*.off);;...;;All files (*)".
+std::string meshFileFilter();
+
+}  // namespace conescope

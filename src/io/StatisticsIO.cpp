@@ -1,0 +1,243 @@
+#include "io/StatisticsIO.h"
+
+#include <array>
+#include <charconv>
+#include <string>
+#include <variant>
+#include <vector>
+
+#ifndef CONESCOPE_VERSION
+#error "CONESCOPE_VERSION must be defined by the build"
+#endif
+
+namespace conescope {
+
+const char* conescopeVersion() { return CONESCOPE_VERSION; }
+
+namespace {
+
+// One scalar of a table row. The JSON object and the CSV row of a row type are both made from one
+// list of named cells, so a key cannot exist in one format and be missing from the other.
+using Cell = std::variant<size_t, double, bool>;
+
+template <typename Row>
+struct Column {
+    const char* name;
+    Cell (*value)(const Row&);
+};
+
+// Totals of one (cone, test); the run-wide cluster and view counts are columns of the CSV only.
+const std::vector<Column<TestStatistics>>& totalColumns() {
+    static const std::vector<Column<TestStatistics>> columns = {
+        {"clusters_culled", [](const TestStatistics& r) -> Cell { return r.clustersCulled; }},
+        {"triangles_culled", [](const TestStatistics& r) -> Cell { return r.trianglesCulled; }},
+        {"back_facing_triangles", [](const TestStatistics& r) -> Cell { return r.backFacingTriangles; }},
+        {"missed_clusters", [](const TestStatistics& r) -> Cell { return r.missedClusters; }},
+        {"false_culls", [](const TestStatistics& r) -> Cell { return r.falseCulls; }},
+        {"efficiency", [](const TestStatistics& r) -> Cell { return r.efficiency; }},
+        {"expected_efficiency", [](const TestStatistics& r) -> Cell { return r.expectedEfficiency; }},
+        {"uncullable_clusters", [](const TestStatistics& r) -> Cell { return r.uncullableClusters; }},
+        {"ns_per_cluster", [](const TestStatistics& r) -> Cell { return r.nanosecondsPerCluster; }},
+    };
+    return columns;
+}
+
+// Per view, after "view" and the eye; the eye is an array in JSON and three columns in CSV.
+const std::vector<Column<ViewStatistics>>& viewColumns() {
+    static const std::vector<Column<ViewStatistics>> columns = {
+        {"orthographic", [](const ViewStatistics& v) -> Cell { return v.eye.orthographic; }},
+        {"clusters_culled", [](const ViewStatistics& v) -> Cell { return v.clustersCulled; }},
+        {"triangles_culled", [](const ViewStatistics& v) -> Cell { return v.trianglesCulled; }},
+        {"back_facing_triangles", [](const ViewStatistics& v) -> Cell { return v.backFacingTriangles; }},
+        {"front_facing_triangles", [](const ViewStatistics& v) -> Cell { return v.frontFacingTriangles; }},
+        {"back_facing_clusters", [](const ViewStatistics& v) -> Cell { return v.backFacingClusters; }},
+        {"missed_clusters", [](const ViewStatistics& v) -> Cell { return v.missedClusters; }},
+        {"false_culls", [](const ViewStatistics& v) -> Cell { return v.falseCulls; }},
+        {"efficiency", [](const ViewStatistics& v) -> Cell { return v.efficiency; }},
+        {"ns_per_cluster", [](const ViewStatistics& v) -> Cell { return v.nanosecondsPerCluster; }},
+    };
+    return columns;
+}
+
+const std::vector<Column<ClusterStatistics>>& clusterColumns() {
+    static const std::vector<Column<ClusterStatistics>> columns = {
+        {"cluster", [](const ClusterStatistics& c) -> Cell { return size_t(c.cluster); }},
+        {"faces", [](const ClusterStatistics& c) -> Cell { return c.faces; }},
+        {"triangles", [](const ClusterStatistics& c) -> Cell { return c.triangles; }},
+        {"vertices", [](const ClusterStatistics& c) -> Cell { return c.vertices; }},
+        {"half_angle_deg", [](const ClusterStatistics& c) -> Cell { return c.halfAngleDegrees; }},
+        {"cullable", [](const ClusterStatistics& c) -> Cell { return c.cullable; }},
+        {"times_culled", [](const ClusterStatistics& c) -> Cell { return c.timesCulled; }},
+        {"times_back_facing", [](const ClusterStatistics& c) -> Cell { return c.timesBackFacing; }},
+        {"false_culls", [](const ClusterStatistics& c) -> Cell { return c.falseCulls; }},
+    };
+    return columns;
+}
+
+nlohmann::json cellToJson(const Cell& cell) {
+    return std::visit([](auto value) { return nlohmann::json(value); }, cell);
+}
+
+template <typename Row>
+void addCells(nlohmann::json& object, const std::vector<Column<Row>>& columns, const Row& row) {
+    for (const Column<Row>& column : columns) object[column.name] = cellToJson(column.value(row));
+}
+
+// A float setting as the double with the same shortest text, so 0.3f is written as 0.3 and not as
+// 0.30000001192092896; it still reads back to the same float.
+double floatAsShortestDouble(float value) {
+    std::array<char, 32> buffer{};
+    const auto end = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value).ptr;
+    double result = 0.0;
+    std::from_chars(buffer.data(), end, result);
+    return result;
+}
+
+nlohmann::json vectorToJson(const glm::dvec3& v) { return nlohmann::json::array({v.x, v.y, v.z}); }
+
+nlohmann::json viewToJson(const ViewStatistics& view) {
+    nlohmann::json object = {{"view", view.view}, {"eye", vectorToJson(view.eye.position)},
+                             {"direction", vectorToJson(view.eye.direction)}};
+    addCells(object, viewColumns(), view);
+    return object;
+}
+
+nlohmann::json resultToJson(const TestStatistics& result, const StatisticsDetail& detail) {
+    nlohmann::json object = {{"cone", toString(result.cone)}, {"test", toString(result.test)}};
+    addCells(object, totalColumns(), result);
+    if (detail.views) {
+        nlohmann::json views = nlohmann::json::array();
+        for (const ViewStatistics& view : result.views) views.push_back(viewToJson(view));
+        object["views"] = std::move(views);
+    }
+    if (detail.clusters) {
+        nlohmann::json clusters = nlohmann::json::array();
+        for (const ClusterStatistics& cluster : result.clusters) {
+            nlohmann::json row = nlohmann::json::object();
+            addCells(row, clusterColumns(), cluster);
+            clusters.push_back(std::move(row));
+        }
+        object["clusters"] = std::move(clusters);
+    }
+    return object;
+}
+
+template <typename Enum>
+nlohmann::json namesToJson(const std::vector<Enum>& values) {
+    nlohmann::json names = nlohmann::json::array();
+    for (Enum value : values) names.push_back(toString(value));
+    return names;
+}
+
+// CSV text of a number: shortest round-trip form from to_chars, which ignores the C locale (a
+// decimal comma would break the table).
+std::string csvNumber(double value) {
+    std::array<char, 64> buffer{};
+    const auto end = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value).ptr;
+    return std::string(buffer.data(), end);
+}
+
+std::string csvCell(const Cell& cell) {
+    if (const size_t* count = std::get_if<size_t>(&cell)) return std::to_string(*count);
+    if (const bool* flag = std::get_if<bool>(&cell)) return *flag ? "1" : "0";
+    return csvNumber(std::get<double>(cell));
+}
+
+template <typename Row>
+void writeHeader(std::ostream& out, const std::vector<Column<Row>>& columns) {
+    for (const Column<Row>& column : columns) out << ',' << column.name;
+}
+
+template <typename Row>
+void writeCells(std::ostream& out, const std::vector<Column<Row>>& columns, const Row& row) {
+    for (const Column<Row>& column : columns) out << ',' << csvCell(column.value(row));
+}
+
+}  // namespace
+
+nlohmann::json meshReportToJson(const MeshReport& report) {
+    return {{"open_edges", report.openEdges},
+            {"non_manifold_edges", report.nonManifoldEdges},
+            {"inconsistent_edges", report.inconsistentEdges},
+            {"duplicate_faces", report.duplicateFaces},
+            {"degenerate_faces", report.degenerateFaces},
+            {"components", report.components},
+            {"orientable", report.orientable}};
+}
+
+nlohmann::json settingsToJson(const Settings& settings) {
+    return {{"builder", toString(settings.builder)},
+            {"max_vertices", settings.limits.maxVertices},
+            {"max_triangles", settings.limits.maxTriangles},
+            {"clusters_target", settings.clusterCount},
+            {"cluster_file", settings.clusterFile.empty() ? nlohmann::json(nullptr) : nlohmann::json(settings.clusterFile)},
+            {"normal_weight", settings.normalWeight},
+            {"cone_weight", floatAsShortestDouble(settings.meshoptConeWeight)},
+            {"cones", namesToJson(settings.cones)},
+            {"tests", namesToJson(settings.tests)},
+            {"sphere", toString(settings.sphere)},
+            {"views", settings.views},
+            {"distance", settings.distance},
+            {"orthographic", settings.orthographic},
+            {"eye", settings.eye ? vectorToJson(*settings.eye) : nlohmann::json(nullptr)},
+            {"fix_winding", settings.fixWinding}};
+}
+
+nlohmann::json statisticsToJson(const RunStatistics& run, const StatisticsDetail& detail) {
+    nlohmann::json results = nlohmann::json::array();
+    for (const TestStatistics& result : run.results) results.push_back(resultToJson(result, detail));
+    return {{"conescope_version", conescopeVersion()},
+            {"mesh",
+             {{"name", run.meshName},
+              {"vertices", run.vertices},
+              {"faces", run.faces},
+              {"triangles", run.triangles},
+              {"degenerate_faces", run.degenerateFaces},
+              {"report", meshReportToJson(run.meshReport)},
+              {"winding_fixed_faces", run.windingFixedFaces}}},
+            {"settings", settingsToJson(run.settings)},
+            {"clusters", run.clusters},
+            {"view_count", run.viewCount},
+            {"results", std::move(results)}};
+}
+
+void writeStatisticsJson(const RunStatistics& run, std::ostream& out, const StatisticsDetail& detail) {
+    out << statisticsToJson(run, detail).dump(2) << '\n';
+}
+
+void writeStatisticsCsv(const RunStatistics& run, std::ostream& out, const StatisticsDetail& detail) {
+    out << "# section: totals\ncone,test,clusters,views";
+    writeHeader(out, totalColumns());
+    out << '\n';
+    for (const TestStatistics& result : run.results) {
+        out << toString(result.cone) << ',' << toString(result.test) << ',' << run.clusters << ',' << run.viewCount;
+        writeCells(out, totalColumns(), result);
+        out << '\n';
+    }
+    if (detail.views) {
+        out << "# section: views\ncone,test,view,eye_x,eye_y,eye_z,direction_x,direction_y,direction_z";
+        writeHeader(out, viewColumns());
+        out << '\n';
+        for (const TestStatistics& result : run.results)
+            for (const ViewStatistics& view : result.views) {
+                out << toString(result.cone) << ',' << toString(result.test) << ',' << view.view;
+                for (int k = 0; k < 3; ++k) out << ',' << csvNumber(view.eye.position[k]);
+                for (int k = 0; k < 3; ++k) out << ',' << csvNumber(view.eye.direction[k]);
+                writeCells(out, viewColumns(), view);
+                out << '\n';
+            }
+    }
+    if (detail.clusters) {
+        out << "# section: clusters\ncone,test";
+        writeHeader(out, clusterColumns());
+        out << '\n';
+        for (const TestStatistics& result : run.results)
+            for (const ClusterStatistics& cluster : result.clusters) {
+                out << toString(result.cone) << ',' << toString(result.test);
+                writeCells(out, clusterColumns(), cluster);
+                out << '\n';
+            }
+    }
+}
+
+}  // namespace conescope

@@ -1,0 +1,68 @@
+// Tokenising helpers shared by the pre-read format checks (internal to conescope_io).
+#pragma once
+
+#include <charconv>
+#include <cstdint>
+#include <optional>
+#include <string_view>
+#include <vector>
+
+namespace conescope::text {
+
+inline bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
+
+inline std::vector<std::string_view> splitWords(std::string_view line) {
+    std::vector<std::string_view> words;
+    size_t position = 0;
+    while (position < line.size()) {
+        while (position < line.size() && isBlank(line[position])) ++position;
+        size_t start = position;
+        while (position < line.size() && !isBlank(line[position])) ++position;
+        if (position > start) words.push_back(line.substr(start, position - start));
+    }
+    return words;
+}
+
+inline std::optional<int64_t> parseInteger(std::string_view word) {
+    if (!word.empty() && word.front() == '+') word.remove_prefix(1);
+    int64_t value = 0;
+    auto [end, error] = std::from_chars(word.data(), word.data() + word.size(), value);
+    if (word.empty() || error != std::errc() || end != word.data() + word.size()) return std::nullopt;
+    return value;
+}
+
+inline bool isNumber(std::string_view word) {
+    if (!word.empty() && word.front() == '+') word.remove_prefix(1);
+    double value = 0;
+    auto [end, error] = std::from_chars(word.data(), word.data() + word.size(), value);
+    return !word.empty() && error == std::errc() && end == word.data() + word.size();
+}
+
+// Splits text into lines one at a time, remembering 1-based line numbers.
+class LineCursor {
+public:
+    LineCursor(std::string_view text, size_t offset, size_t linesBefore)
+        : text_(text), position_(offset), lineNumber_(linesBefore) {}
+    bool atEnd() const { return position_ >= text_.size(); }
+    std::string_view next() {
+        size_t end = text_.find('\n', position_);
+        if (end == std::string_view::npos) end = text_.size();
+        std::string_view line = text_.substr(position_, end - position_);
+        lastLineHadNewline_ = end < text_.size();
+        position_ = lastLineHadNewline_ ? end + 1 : end;
+        ++lineNumber_;
+        return line;
+    }
+    // False when the line just returned ran to the end of the text without a '\n'.
+    bool lastLineHadNewline() const { return lastLineHadNewline_; }
+    size_t lineNumber() const { return lineNumber_; }
+    size_t position() const { return position_; }
+
+private:
+    std::string_view text_;
+    size_t position_;
+    size_t lineNumber_;
+    bool lastLineHadNewline_ = true;
+};
+
+}  // namespace conescope::text

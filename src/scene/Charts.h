@@ -1,0 +1,32 @@
+// Charts of cull statistics for a vtkChartXY (in a vtkContextView): efficiency per view along the
+// orbit, and the histogram of cone half-angles. The numbers come from the core's statistics rows;
+// the charts only bin and draw them.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "core/Statistics.h"
+
+class vtkChartXY;
+
+namespace conescope {
+
+// Counts of cullable clusters per half-angle bin [i*binDegrees, (i+1)*binDegrees) over [0, 90),
+// and the uncullable clusters apart (their cone is a hemisphere or wider).
+struct HalfAngleHistogram {
+    double binDegrees = 5.0;
+    std::vector<size_t> counts;      // ceil(90 / binDegrees) bins
+    size_t uncullable = 0;
+};
+HalfAngleHistogram halfAngleHistogram(const std::vector<ClusterStatistics>& clusters, double binDegrees = 5.0);
+
+// Replaces the chart's plots: efficiency (triangles culled / back-facing) per view as a line, and
+// the current view as a marked point when currentView is a row index. Axes: view, efficiency [0, 1].
+void plotEfficiencyPerView(vtkChartXY* chart, const std::vector<ViewStatistics>& views, long currentView = -1);
+
+// Replaces the chart's plots: bars of halfAngleHistogram at the bin centres, and one bar for the
+// uncullable clusters past 90 degrees in another colour. Axes: half-angle (degrees), clusters.
+void plotHalfAngleHistogram(vtkChartXY* chart, const std::vector<ClusterStatistics>& clusters, double binDegrees = 5.0);
+
+}  // namespace conescope

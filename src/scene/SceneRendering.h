@@ -1,0 +1,48 @@
+// Headless rendering of a ClusterScene into an image or a PNG file: used by `conescope --screenshot`
+// and by the image-baseline tests. Needs an X display (run under xvfb-run without one).
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include <glm/glm.hpp>
+#include <vtkSmartPointer.h>
+
+#include "scene/ClusterPalette.h"
+
+class vtkCamera;
+class vtkImageData;
+
+namespace conescope {
+
+class ClusterScene;
+
+struct RenderOptions {
+    int width = 1280;
+    int height = 800;
+    // Observer camera. Unset focal point: the centre of the mesh bounds. Unset position: far enough
+    // that the mesh's bounding sphere fills the view angle, from 60 degrees to the side of the cull eye
+    // if the scene has one (setEye: the border between drawn and culled clusters faces the observer),
+    // else from +z, looking along Eye{}.direction.
+    std::optional<glm::dvec3> cameraPosition;
+    std::optional<glm::dvec3> focalPoint;
+    glm::dvec3 viewUp{0.0, 1.0, 0.0};
+    double viewAngleDegrees = 30.0;
+    Rgb background{0.12, 0.13, 0.16};
+    // Render what the cull eye sees instead of the observer view: camera from applyEyeToCamera, only
+    // the visible-clusters actor (culled clusters removed). Needs setEye.
+    bool fromEye = false;
+};
+
+// The default observer camera for these options (what an unset cameraPosition / focalPoint means).
+void placeObserverCamera(const ClusterScene& scene, const RenderOptions& options, vtkCamera* camera);
+
+// Renders into an RGB image of options.width x options.height (multisampling off, so the pixels are
+// the same on every run of the same driver). Throws std::runtime_error when there is no X display
+// ("rendering needs an X display; run under xvfb-run") or the window cannot be made.
+vtkSmartPointer<vtkImageData> renderToImage(const ClusterScene& scene, const RenderOptions& options);
+
+// renderToImage, then PNG. Throws std::runtime_error naming the path if it cannot be written.
+void renderToPng(const ClusterScene& scene, const RenderOptions& options, const std::string& path);
+
+}  // namespace conescope

@@ -1,0 +1,82 @@
+#include "CliTestSupport.h"
+
+#include <fstream>
+#include <random>
+#include <sstream>
+#include <stdexcept>
+
+#include <fcntl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace conescope::clitest {
+
+std::filesystem::path datasetsDir() { return CONESCOPE_DATASETS_DIR; }
+
+std::string dataset(const std::string& name) { return (datasetsDir() / name).string(); }
+
+ScratchDirectory::ScratchDirectory() {
+    std::random_device seed;
+    path_ = std::filesystem::temp_directory_path() /
+            ("conescope-cli-test-" + std::to_string(::getpid()) + "-" + std::to_string(seed()));
+    std::filesystem::create_directories(path_);
+}
+
+ScratchDirectory::~ScratchDirectory() {
+    std::error_code ignored;
+    std::filesystem::remove_all(path_, ignored);
+}
+
+std::string ScratchDirectory::writeFile(const std::string& name, const std::string& text) const {
+    const std::string path = file(name);
+    std::ofstream out(path, std::ios::binary);
+    out << text;
+    if (!out) throw std::runtime_error("cannot write " + path);
+    return path;
+}
+
+std::string readTextFile(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+std::vector<std::string> splitLines(const std::string& text) {
+    std::vector<std::string> lines;
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);) lines.push_back(line);
+    return lines;
+}
+
+// fork + exec rather than system(): the arguments reach the program exactly as given.
+CliRun runCli(const std::vector<std::string>& arguments) {
+    ScratchDirectory capture;
+    const std::string outPath = capture.file("stdout"), errPath = capture.file("stderr");
+    const pid_t child = ::fork();
+    if (child < 0) throw std::runtime_error("fork failed");
+    if (child == 0) {
+        const int out = ::open(outPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        const int err = ::open(errPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        if (out < 0 || err < 0) ::_exit(126);
+        ::dup2(out, STDOUT_FILENO);
+        ::dup2(err, STDERR_FILENO);
+        std::vector<char*> argv;
+        std::string program = CONESCOPE_CLI_PATH;
+        argv.push_back(program.data());
+        std::vector<std::string> copies = arguments;
+        for (std::string& argument : copies) argv.push_back(argument.data());
+        argv.push_back(nullptr);
+        ::execv(program.c_str(), argv.data());
+        ::_exit(127);
+    }
+    int status = 0;
+    ::waitpid(child, &status, 0);
+    CliRun run;
+    run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    run.out = readTextFile(outPath);
+    run.err = readTextFile(errPath);
+    return run;
+}
+
+}  // namespace conescope::clitest

@@ -1,0 +1,44 @@
+// Running the built conescope-cli from tests: its path comes from the build, and every run's
+// exit code, stdout and stderr are captured through files in a scratch directory.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace conescope::clitest {
+
+std::filesystem::path datasetsDir();
+std::string dataset(const std::string& name);  // full path of datasets/<name>
+
+// A fresh directory under the system temp dir, removed with everything in it on destruction.
+class ScratchDirectory {
+public:
+    ScratchDirectory();
+    ~ScratchDirectory();
+    ScratchDirectory(const ScratchDirectory&) = delete;
+    ScratchDirectory& operator=(const ScratchDirectory&) = delete;
+
+    const std::filesystem::path& path() const { return path_; }
+    std::string file(const std::string& name) const { return (path_ / name).string(); }
+    std::string writeFile(const std::string& name, const std::string& text) const;
+
+private:
+    std::filesystem::path path_;
+};
+
+struct CliRun {
+    int exitCode = -1;
+    std::string out;
+    std::string err;
+};
+
+// Runs conescope-cli with these arguments (each passed as one word, no shell expansion).
+CliRun runCli(const std::vector<std::string>& arguments);
+
+std::string readTextFile(const std::string& path);
+
+// Lines of a text, without the newlines.
+std::vector<std::string> splitLines(const std::string& text);
+
+}  // namespace conescope::clitest

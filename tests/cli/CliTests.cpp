@@ -1,0 +1,389 @@
+// conescope-cli end to end: the built binary on the bundled datasets, checked against the core.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <map>
+
+#include <nlohmann/json.hpp>
+
+#include "CliTestSupport.h"
+#include "core/Statistics.h"
+#include "io/MeshReader.h"
+#include "io/StatisticsIO.h"
+
+namespace conescope {
+namespace {
+
+using clitest::CliRun;
+using clitest::dataset;
+using clitest::readTextFile;
+using clitest::runCli;
+using clitest::ScratchDirectory;
+using clitest::splitLines;
+
+nlohmann::json runStatsJson(const std::vector<std::string>& arguments) {
+    std::vector<std::string> command = {"stats", "--quiet"};
+    command.insert(command.end(), arguments.begin(), arguments.end());
+    const CliRun run = runCli(command);
+    EXPECT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_EQ(run.err, "");
+    try {
+        return nlohmann::json::parse(run.out);
+    } catch (const nlohmann::json::parse_error& error) {
+        ADD_FAILURE() << "stdout is not JSON: " << error.what() << "\n" << run.out.substr(0, 500);
+        return {};
+    }
+}
+
+// Timings differ between any two runs; everything else is deterministic.
+void removeTimings(nlohmann::json& json) {
+    if (json.is_object()) {
+        json.erase("ns_per_cluster");
+        for (auto& [key, value] : json.items()) removeTimings(value);
+    } else if (json.is_array()) {
+        for (nlohmann::json& value : json) removeTimings(value);
+    }
+}
+
+nlohmann::json inProcessJson(const std::string& path, const Settings& settings, const std::string& name) {
+    nlohmann::json json = statisticsToJson(runStatistics(readMesh(path), settings, name));
+    removeTimings(json);
+    return json;
+}
+
+void expectSameDocument(nlohmann::json actual, const nlohmann::json& expected) {
+    removeTimings(actual);
+    const nlohmann::json differences = nlohmann::json::diff(expected, actual);
+    EXPECT_TRUE(differences.empty()) << differences.dump().substr(0, 2000);
+}
+
+TEST(CliStats, DefaultRunEqualsTheCoreWithDefaultSettings) {
+    const nlohmann::json json = runStatsJson({dataset("icosphere.off")});
+    expectSameDocument(json, inProcessJson(dataset("icosphere.off"), Settings{}, "icosphere.off"));
+}
+
+TEST(CliStats, EveryFlagReachesTheCore) {
+    const nlohmann::json json =
+        runStatsJson({dataset("torus.off"), "--builder", "kmeans", "--clusters", "23", "--normal-weight", "0.5",
+                      "--cone", "all", "--test", "oracle,vertices", "--test", "meshopt-sphere", "--sphere", "ritter",
+                      "--views", "9", "--distance", "4.5", "--ortho"});
+    Settings settings;
+    settings.builder = Builder::KMeans;
+    settings.clusterCount = 23;
+    settings.normalWeight = 0.5;
+    settings.cones = allConeMethods();
+    settings.tests = {CullTest::Oracle, CullTest::Vertices, CullTest::MeshoptSphere};
+    settings.sphere = SphereMethod::Ritter;
+    settings.views = 9;
+    settings.distance = 4.5;
+    settings.orthographic = true;
+    expectSameDocument(json, inProcessJson(dataset("torus.off"), settings, "torus.off"));
+}
+
+TEST(CliStats, MeshoptBuilderFlagsReachTheCore) {
+    const nlohmann::json json = runStatsJson({dataset("icosphere.off"), "--builder", "meshopt", "--max-verts", "32",
+                                              "--max-tris", "40", "--cone-weight", "0.25", "--cone", "meshopt",
+                                              "--test", "apex", "--views", "5"});
+    Settings settings;
+    settings.builder = Builder::Meshopt;
+    settings.limits.maxVertices = 32;
+    settings.limits.maxTriangles = 40;
+    settings.meshoptConeWeight = 0.25f;
+    settings.cones = {ConeMethod::Meshopt};
+    settings.tests = {CullTest::Apex};
+    settings.views = 5;
+    expectSameDocument(json, inProcessJson(dataset("icosphere.off"), settings, "icosphere.off"));
+}
+
+TEST(CliStats, JsonHasEveryKey) {
+    const nlohmann::json json = runStatsJson({dataset("cube-quads.off"), "--views", "4"});
+    for (const char* key : {"conescope_version", "mesh", "settings", "clusters", "view_count", "results"})
+        EXPECT_TRUE(json.contains(key)) << key;
+    for (const char* key : {"name", "vertices", "faces", "triangles", "degenerate_faces", "report", "winding_fixed_faces"})
+        EXPECT_TRUE(json["mesh"].contains(key)) << key;
+    EXPECT_EQ(json["mesh"]["name"], "cube-quads.off");
+    EXPECT_EQ(json["mesh"]["faces"], 6);
+    EXPECT_EQ(json["mesh"]["triangles"], 12);
+    for (const char* key : {"builder", "max_vertices", "max_triangles", "clusters_target", "cluster_file", "normal_weight",
+                            "cone_weight", "cones", "tests", "sphere", "views", "distance", "orthographic", "eye"})
+        EXPECT_TRUE(json["settings"].contains(key)) << key;
+    ASSERT_EQ(json["results"].size(), 1u);
+    const nlohmann::json& result = json["results"][0];
+    for (const char* key : {"cone", "test", "clusters_culled", "triangles_culled", "back_facing_triangles",
+                            "missed_clusters", "false_culls", "efficiency", "expected_efficiency", "uncullable_clusters",
+                            "ns_per_cluster", "views", "clusters"})
+        EXPECT_TRUE(result.contains(key)) << key;
+    ASSERT_EQ(result["views"].size(), 4u);
+    for (const char* key : {"view", "eye", "direction", "orthographic", "clusters_culled", "triangles_culled",
+                            "back_facing_triangles", "front_facing_triangles", "back_facing_clusters", "missed_clusters",
+                            "false_culls", "efficiency", "ns_per_cluster"})
+        EXPECT_TRUE(result["views"][0].contains(key)) << key;
+    ASSERT_EQ(result["clusters"].size(), json["clusters"].get<size_t>());
+    for (const char* key : {"cluster", "faces", "triangles", "vertices", "half_angle_deg", "cullable", "times_culled",
+                            "times_back_facing", "false_culls"})
+        EXPECT_TRUE(result["clusters"][0].contains(key)) << key;
+}
+
+// The safety property: no cone method with no test ever culls a cluster holding a visible face.
+TEST(CliStats, NoFalseCullsForAnyConeAndTest) {
+    for (const char* mesh : {"torus.off", "hexagonal-prism.off", "icosphere.off"}) {
+        SCOPED_TRACE(mesh);
+        const nlohmann::json json = runStatsJson({dataset(mesh), "--cone", "all", "--test", "all", "--views", "24"});
+        ASSERT_EQ(json["results"].size(), allConeMethods().size() * allCullTests().size());
+        for (const nlohmann::json& result : json["results"]) {
+            SCOPED_TRACE(result["cone"].get<std::string>() + "/" + result["test"].get<std::string>());
+            EXPECT_EQ(result["false_culls"], 0);
+            EXPECT_GE(result["efficiency"].get<double>(), 0.0);
+            EXPECT_LE(result["efficiency"].get<double>(), 1.0);
+            size_t culled = 0;
+            ASSERT_EQ(result["views"].size(), 24u);
+            for (const nlohmann::json& view : result["views"]) {
+                EXPECT_EQ(view["false_culls"], 0);
+                EXPECT_GE(view["efficiency"].get<double>(), 0.0);
+                EXPECT_LE(view["efficiency"].get<double>(), 1.0);
+                culled += view["clusters_culled"].get<size_t>();
+            }
+            EXPECT_EQ(result["clusters_culled"].get<size_t>(), culled);
+            for (const nlohmann::json& cluster : result["clusters"]) EXPECT_EQ(cluster["false_culls"], 0);
+        }
+    }
+}
+
+TEST(CliStats, CsvHasThreeSectionsWithOneRowPerViewAndCluster) {
+    const CliRun run = runCli({"stats", dataset("torus.off"), "--format", "csv", "--cone", "minimal,average",
+                               "--test", "vertices,aabb", "--views", "7", "--quiet"});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const nlohmann::json json =
+        runStatsJson({dataset("torus.off"), "--cone", "minimal,average", "--test", "vertices,aabb", "--views", "7"});
+    const size_t clusters = json["clusters"].get<size_t>();
+    ASSERT_GT(clusters, 1u);
+
+    std::map<std::string, std::vector<std::string>> rows;
+    std::map<std::string, size_t> columns;
+    std::vector<std::string> order;
+    std::string section;
+    for (const std::string& line : splitLines(run.out)) {
+        if (line.rfind("# section: ", 0) == 0) {
+            section = line.substr(11);
+            order.push_back(section);
+        } else if (!columns.count(section)) {
+            columns[section] = size_t(std::count(line.begin(), line.end(), ',')) + 1;
+            EXPECT_EQ(line.rfind("cone,test,", 0), 0u) << line;
+        } else {
+            EXPECT_EQ(size_t(std::count(line.begin(), line.end(), ',')) + 1, columns[section]) << line;
+            rows[section].push_back(line);
+        }
+    }
+    EXPECT_EQ(order, (std::vector<std::string>{"totals", "views", "clusters"}));
+    EXPECT_EQ(rows["totals"].size(), 4u);
+    EXPECT_EQ(rows["views"].size(), 4u * 7u);
+    EXPECT_EQ(rows["clusters"].size(), 4u * clusters);
+    EXPECT_EQ(rows["totals"][0].rfind("minimal,vertices,", 0), 0u);
+    EXPECT_EQ(rows["totals"][3].rfind("average,aabb,", 0), 0u);
+}
+
+TEST(CliStats, OutputFileTakesTheFormatFromItsExtension) {
+    ScratchDirectory scratch;
+    const std::string output = scratch.file("result.csv");
+    const CliRun run = runCli({"stats", dataset("cube.off"), "--views", "3", "-o", output});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_EQ(run.out, "");
+    EXPECT_NE(run.err.find("%"), std::string::npos) << "progress goes to stderr unless --quiet";
+    EXPECT_EQ(readTextFile(output).rfind("# section: totals\n", 0), 0u);
+    // Only the result is left in the folder: the temporary file was renamed, not copied.
+    EXPECT_EQ(std::distance(std::filesystem::directory_iterator(scratch.path()), {}), 1);
+}
+
+TEST(CliStats, EyeGivesOneView) {
+    const nlohmann::json json = runStatsJson({dataset("icosphere.off"), "--eye", "-4,0.5,2", "--cone", "all"});
+    EXPECT_EQ(json["view_count"], 1);
+    EXPECT_EQ(json["settings"]["eye"], nlohmann::json::array({-4.0, 0.5, 2.0}));
+    for (const nlohmann::json& result : json["results"]) {
+        ASSERT_EQ(result["views"].size(), 1u);
+        EXPECT_EQ(result["views"][0]["eye"], nlohmann::json::array({-4.0, 0.5, 2.0}));
+        EXPECT_EQ(result["views"][0]["orthographic"], false);
+        EXPECT_GT(result["views"][0]["back_facing_triangles"].get<size_t>(), 0u);
+    }
+}
+
+TEST(CliStats, TablesCanBeLeftOut) {
+    const nlohmann::json json = runStatsJson({dataset("cube.off"), "--views", "3", "--no-per-view", "--no-per-cluster"});
+    ASSERT_EQ(json["results"].size(), 1u);
+    EXPECT_FALSE(json["results"][0].contains("views"));
+    EXPECT_FALSE(json["results"][0].contains("clusters"));
+    EXPECT_TRUE(json["results"][0].contains("efficiency"));
+}
+
+TEST(CliStats, MissingOrBrokenMeshFailsNamingTheFile) {
+    ScratchDirectory scratch;
+    const std::string missing = scratch.file("no-such-mesh.off");
+    CliRun run = runCli({"stats", missing});
+    EXPECT_EQ(run.exitCode, 1);
+    EXPECT_EQ(run.out, "");
+    EXPECT_NE(run.err.find("conescope-cli: error: "), std::string::npos) << run.err;
+    EXPECT_NE(run.err.find(missing), std::string::npos) << run.err;
+
+    const std::string broken = scratch.writeFile("broken.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n");
+    run = runCli({"stats", broken, "--quiet"});
+    EXPECT_EQ(run.exitCode, 1);
+    EXPECT_NE(run.err.find("conescope-cli: error: " + broken), std::string::npos) << run.err;
+}
+
+TEST(CliStats, FailedRunKeepsTheOldOutput) {
+    ScratchDirectory scratch;
+    const std::string output = scratch.writeFile("result.json", "old\n");
+    const CliRun run = runCli({"stats", scratch.file("missing.off"), "-o", output, "--quiet"});
+    EXPECT_EQ(run.exitCode, 1);
+    EXPECT_EQ(readTextFile(output), "old\n");
+    EXPECT_EQ(std::distance(std::filesystem::directory_iterator(scratch.path()), {}), 1);
+
+    const CliRun good = runCli({"stats", dataset("cube.off"), "--views", "2", "-o", output, "--quiet"});
+    ASSERT_EQ(good.exitCode, 0) << good.err;
+    EXPECT_EQ(nlohmann::json::parse(readTextFile(output))["view_count"], 2);
+}
+
+TEST(CliStats, BadArgumentsExitWithTwo) {
+    const std::string mesh = dataset("cube.off");
+    const std::vector<std::vector<std::string>> commands = {
+        {},
+        {"frobnicate"},
+        {"stats"},
+        {"stats", mesh, "--frobnicate"},
+        {"stats", mesh, "--cone", "widest"},
+        {"stats", mesh, "--test", "vertices,bogus"},
+        {"stats", mesh, "--builder", "octree"},
+        {"stats", mesh, "--sphere", "cube"},
+        {"stats", mesh, "--views", "0"},
+        {"stats", mesh, "--views", "many"},
+        {"stats", mesh, "--distance", "-1"},
+        {"stats", mesh, "--eye", "1,2"},
+        {"stats", mesh, "--eye", "1,2,x"},
+        {"stats", mesh, "--eye", "1,2,3", "--views", "5"},
+        {"stats", mesh, "--format", "xml"},
+        {"stats", mesh, "--cone-weight", "2"},
+        // Accepted by the parser, refused by the core: meshoptimizer needs max-tris divisible by 4.
+        {"stats", mesh, "--builder", "meshopt", "--max-tris", "10"},
+        {"check", mesh, "-o", "fixed.off"},
+        {"partition", mesh},
+        {"partition", mesh, "-o", "clusters.off"},
+    };
+    for (const std::vector<std::string>& command : commands) {
+        std::string text;
+        for (const std::string& word : command) text += word + " ";
+        SCOPED_TRACE(text);
+        const CliRun run = runCli(command);
+        EXPECT_EQ(run.exitCode, 2) << run.err;
+        EXPECT_NE(run.err.find("conescope-cli: error: "), std::string::npos) << run.err;
+    }
+    const CliRun unknownCone = runCli({"stats", mesh, "--cone", "widest"});
+    EXPECT_NE(unknownCone.err.find("minimal"), std::string::npos) << "the message lists the accepted names";
+}
+
+TEST(CliStats, HelpShowsTheDefaultSettings) {
+    const CliRun run = runCli({"stats", "--help"});
+    ASSERT_EQ(run.exitCode, 0);
+    const Settings defaults;
+    // CLI11 shows a default as "--option TYPE:CHECK=value" on the option's line.
+    auto shownDefault = [&](const std::string& option, const std::string& value) {
+        const size_t line = run.out.find("  " + option + " ");
+        if (line == std::string::npos) return std::string("option not listed");
+        const std::string text = run.out.substr(line, run.out.find('\n', line) - line);
+        const size_t equals = text.find('=');
+        if (equals == std::string::npos) return "no default in: " + text;
+        const std::string shown = text.substr(equals + 1, text.find(' ', equals) - equals - 1);
+        return shown == value ? std::string() : "shows '" + shown + "' in: " + text;
+    };
+    EXPECT_EQ(shownDefault("--max-verts", std::to_string(defaults.limits.maxVertices)), "");
+    EXPECT_EQ(shownDefault("--max-tris", std::to_string(defaults.limits.maxTriangles)), "");
+    EXPECT_EQ(shownDefault("--views", std::to_string(defaults.views)), "");
+    EXPECT_EQ(shownDefault("--builder", toString(defaults.builder)), "");
+    EXPECT_EQ(shownDefault("--cone", toString(defaults.cones.front())), "");
+    EXPECT_EQ(shownDefault("--test", toString(defaults.tests.front())), "");
+    EXPECT_EQ(shownDefault("--sphere", toString(defaults.sphere)), "");
+}
+
+TEST(CliPartition, FileBuilderReadsThePartitionBack) {
+    ScratchDirectory scratch;
+    for (const std::vector<std::string>& builder :
+         {std::vector<std::string>{"--builder", "meshlet", "--max-tris", "32"},
+          std::vector<std::string>{"--builder", "kmeans", "--clusters", "17"}}) {
+        SCOPED_TRACE(builder[1]);
+        const std::string output = scratch.file("clusters-" + builder[1] + ".vtp");
+        std::vector<std::string> command = {"partition", dataset("torus.off"), "-o", output, "--quiet"};
+        command.insert(command.end(), builder.begin(), builder.end());
+        const CliRun run = runCli(command);
+        ASSERT_EQ(run.exitCode, 0) << run.err;
+        const Mesh written = readMesh(output);
+        ASSERT_EQ(written.faceArrays.count("cluster_id"), 1u);
+
+        std::vector<std::string> direct = {dataset("torus.off"), "--views", "6", "--test", "all"};
+        direct.insert(direct.end(), builder.begin(), builder.end());
+        nlohmann::json original = runStatsJson(direct);
+        nlohmann::json readBack = runStatsJson({output, "--builder", "file", "--views", "6", "--test", "all"});
+        EXPECT_EQ(readBack["clusters"], original["clusters"]);
+        // Cluster numbering may differ; every total over all clusters may not.
+        for (size_t r = 0; r < original["results"].size(); ++r) {
+            for (const char* key : {"clusters_culled", "triangles_culled", "back_facing_triangles", "missed_clusters",
+                                    "uncullable_clusters"})
+                EXPECT_EQ(readBack["results"][r][key], original["results"][r][key]) << key;
+            // A sum over clusters: another order may round the last bit differently.
+            EXPECT_NEAR(readBack["results"][r]["expected_efficiency"].get<double>(),
+                        original["results"][r]["expected_efficiency"].get<double>(), 1e-12);
+        }
+    }
+}
+
+TEST(CliPartition, BundledPartitionIsReadByTheFileBuilder) {
+    const nlohmann::json json = runStatsJson({dataset("icosphere-clusters.vtp"), "--builder", "file", "--views", "4"});
+    EXPECT_GT(json["clusters"].get<size_t>(), 1u);
+    EXPECT_EQ(json["results"][0]["false_culls"], 0);
+}
+
+// A tetrahedron whose last face is wound against the other three.
+constexpr const char* kMisWoundTetrahedron =
+    "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 3 2\n";
+
+TEST(CliCheck, ReportsAndRepairsWinding) {
+    ScratchDirectory scratch;
+    const std::string input = scratch.writeFile("tetrahedron.off", kMisWoundTetrahedron);
+    CliRun run = runCli({"check", input});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    nlohmann::json report = nlohmann::json::parse(run.out);
+    EXPECT_EQ(report["mesh"]["faces"], 4);
+    EXPECT_EQ(report["report"]["inconsistent_edges"], 3);
+    EXPECT_EQ(report["report"]["open_edges"], 0);
+    EXPECT_EQ(report["report"]["components"], 1);
+    EXPECT_EQ(report["report"]["orientable"], true);
+    EXPECT_FALSE(report.contains("winding_fixed_faces"));
+
+    const std::string output = scratch.file("fixed.vtp");
+    run = runCli({"check", input, "--fix-winding", "-o", output});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    report = nlohmann::json::parse(run.out);
+    EXPECT_EQ(report["winding_fixed_faces"], 1);
+    EXPECT_EQ(report["report_after_fix"]["inconsistent_edges"], 0);
+    EXPECT_EQ(report["output"], output);
+
+    run = runCli({"check", output});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_EQ(nlohmann::json::parse(run.out)["report"]["inconsistent_edges"], 0);
+}
+
+TEST(CliCheck, CleanMeshHasNoProblems) {
+    const CliRun run = runCli({"check", dataset("cube.off")});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const nlohmann::json report = nlohmann::json::parse(run.out)["report"];
+    for (const char* key : {"open_edges", "non_manifold_edges", "inconsistent_edges", "duplicate_faces", "degenerate_faces"})
+        EXPECT_EQ(report[key], 0) << key;
+    EXPECT_EQ(report["components"], 1);
+    EXPECT_EQ(report["orientable"], true);
+}
+
+TEST(CliCheck, MissingFileFails) {
+    const CliRun run = runCli({"check", "/nonexistent/mesh.ply"});
+    EXPECT_EQ(run.exitCode, 1);
+    EXPECT_NE(run.err.find("/nonexistent/mesh.ply"), std::string::npos) << run.err;
+}
+
+}  // namespace
+}  // namespace conescope

@@ -1,0 +1,244 @@
+// The statistics writers on a small hand-made RunStatistics: every key, every column, exact text.
+#include <gtest/gtest.h>
+
+#include <set>
+#include <sstream>
+
+#include "io/StatisticsIO.h"
+
+namespace conescope {
+namespace {
+
+ViewStatistics makeView(size_t index, const Eye& eye, std::array<size_t, 7> counts, double efficiency, double ns) {
+    ViewStatistics view;
+    view.view = index;
+    view.eye = eye;
+    view.clustersCulled = counts[0];
+    view.trianglesCulled = counts[1];
+    view.backFacingTriangles = counts[2];
+    view.frontFacingTriangles = counts[3];
+    view.backFacingClusters = counts[4];
+    view.missedClusters = counts[5];
+    view.falseCulls = counts[6];
+    view.efficiency = efficiency;
+    view.nanosecondsPerCluster = ns;
+    return view;
+}
+
+ClusterStatistics makeCluster(uint32_t index, size_t faces, size_t triangles, size_t vertices, double halfAngle,
+                              bool cullable, size_t culled, size_t back) {
+    ClusterStatistics cluster;
+    cluster.cluster = index;
+    cluster.faces = faces;
+    cluster.triangles = triangles;
+    cluster.vertices = vertices;
+    cluster.halfAngleDegrees = halfAngle;
+    cluster.cullable = cullable;
+    cluster.timesCulled = culled;
+    cluster.timesBackFacing = back;
+    return cluster;
+}
+
+// Two views (one perspective, one orthographic) and two clusters of one (cone, test).
+RunStatistics smallRun() {
+    RunStatistics run;
+    run.settings.builder = Builder::KMeans;
+    run.settings.clusterCount = 2;
+    run.settings.cones = {ConeMethod::Average};
+    run.settings.tests = {CullTest::Sphere, CullTest::Apex};
+    run.settings.meshoptConeWeight = 0.3f;
+    run.settings.eye = glm::dvec3(1.0, -2.0, 0.5);
+    run.meshName = "tiny.off";
+    run.vertices = 4;
+    run.faces = 2;
+    run.triangles = 3;
+    run.meshReport.openEdges = 5;
+    run.meshReport.components = 1;
+    run.windingFixedFaces = 0;
+    run.clusters = 2;
+    run.viewCount = 2;
+
+    TestStatistics result;
+    result.cone = ConeMethod::Average;
+    result.test = CullTest::Sphere;
+    result.clustersCulled = 1;
+    result.trianglesCulled = 2;
+    result.backFacingTriangles = 6;
+    result.missedClusters = 1;
+    result.falseCulls = 0;
+    result.efficiency = 1.0 / 3.0;
+    result.expectedEfficiency = 0.25;
+    result.uncullableClusters = 1;
+    result.nanosecondsPerCluster = 12.5;
+    result.views.push_back(makeView(0, Eye::perspective({0.0, 0.0, 3.0}), {1, 2, 2, 1, 1, 0, 0}, 1.0, 10.0));
+    result.views.push_back(makeView(1, Eye{{0.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, true}, {0, 0, 4, 1, 1, 1, 0}, 0.0, 15.0));
+    result.clusters.push_back(makeCluster(0, 1, 2, 4, 12.75, true, 1, 2));
+    result.clusters.push_back(makeCluster(1, 1, 1, 3, 90.0, false, 0, 0));
+    run.results.push_back(result);
+    return run;
+}
+
+std::set<std::string> keysOf(const nlohmann::json& object) {
+    std::set<std::string> keys;
+    for (const auto& [key, value] : object.items()) keys.insert(key);
+    return keys;
+}
+
+TEST(StatisticsJson, HasEveryKeyWithItsValue) {
+    const nlohmann::json json = statisticsToJson(smallRun());
+    EXPECT_EQ(keysOf(json), (std::set<std::string>{"conescope_version", "mesh", "settings", "clusters", "view_count", "results"}));
+    EXPECT_EQ(json["conescope_version"], CONESCOPE_EXPECTED_VERSION);
+    EXPECT_EQ(json["clusters"], 2);
+    EXPECT_EQ(json["view_count"], 2);
+
+    const nlohmann::json& mesh = json["mesh"];
+    EXPECT_EQ(keysOf(mesh), (std::set<std::string>{"name", "vertices", "faces", "triangles", "degenerate_faces", "report",
+                                                   "winding_fixed_faces"}));
+    EXPECT_EQ(mesh["name"], "tiny.off");
+    EXPECT_EQ(mesh["triangles"], 3);
+    EXPECT_EQ(mesh["report"]["open_edges"], 5);
+    EXPECT_EQ(mesh["report"]["orientable"], true);
+    EXPECT_EQ(keysOf(mesh["report"]), (std::set<std::string>{"open_edges", "non_manifold_edges", "inconsistent_edges",
+                                                             "duplicate_faces", "degenerate_faces", "components", "orientable"}));
+
+    const nlohmann::json& settings = json["settings"];
+    EXPECT_EQ(keysOf(settings),
+              (std::set<std::string>{"builder", "max_vertices", "max_triangles", "clusters_target", "cluster_file",
+                                     "normal_weight", "cone_weight", "cones", "tests", "sphere", "views", "distance",
+                                     "orthographic", "eye", "fix_winding"}));
+    EXPECT_EQ(settings["builder"], "kmeans");
+    EXPECT_EQ(settings["clusters_target"], 2);
+    EXPECT_TRUE(settings["cluster_file"].is_null());
+    EXPECT_EQ(settings["cone_weight"].get<double>(), 0.3);  // the float's shortest text, not 0.30000001...
+    EXPECT_EQ(settings["cones"], nlohmann::json::array({"average"}));
+    EXPECT_EQ(settings["tests"], nlohmann::json::array({"sphere", "apex"}));
+    EXPECT_EQ(settings["eye"], nlohmann::json::array({1.0, -2.0, 0.5}));
+    EXPECT_EQ(settings["max_vertices"], Settings{}.limits.maxVertices);
+
+    ASSERT_EQ(json["results"].size(), 1u);
+    const nlohmann::json& result = json["results"][0];
+    EXPECT_EQ(keysOf(result), (std::set<std::string>{"cone", "test", "clusters_culled", "triangles_culled",
+                                                     "back_facing_triangles", "missed_clusters", "false_culls",
+                                                     "efficiency", "expected_efficiency", "uncullable_clusters",
+                                                     "ns_per_cluster", "views", "clusters"}));
+    EXPECT_EQ(result["cone"], "average");
+    EXPECT_EQ(result["test"], "sphere");
+    EXPECT_EQ(result["efficiency"].get<double>(), 1.0 / 3.0);
+    EXPECT_EQ(result["back_facing_triangles"], 6);
+
+    ASSERT_EQ(result["views"].size(), 2u);
+    const nlohmann::json& ortho = result["views"][1];
+    EXPECT_EQ(keysOf(ortho), (std::set<std::string>{"view", "eye", "direction", "orthographic", "clusters_culled",
+                                                    "triangles_culled", "back_facing_triangles", "front_facing_triangles",
+                                                    "back_facing_clusters", "missed_clusters", "false_culls", "efficiency",
+                                                    "ns_per_cluster"}));
+    EXPECT_EQ(ortho["view"], 1);
+    EXPECT_EQ(ortho["orthographic"], true);
+    EXPECT_EQ(ortho["direction"], nlohmann::json::array({0.0, 1.0, 0.0}));
+    EXPECT_EQ(ortho["missed_clusters"], 1);
+    EXPECT_EQ(result["views"][0]["eye"], nlohmann::json::array({0.0, 0.0, 3.0}));
+
+    ASSERT_EQ(result["clusters"].size(), 2u);
+    const nlohmann::json& cluster = result["clusters"][1];
+    EXPECT_EQ(keysOf(cluster), (std::set<std::string>{"cluster", "faces", "triangles", "vertices", "half_angle_deg",
+                                                      "cullable", "times_culled", "times_back_facing", "false_culls"}));
+    EXPECT_EQ(cluster["cluster"], 1);
+    EXPECT_EQ(cluster["cullable"], false);
+    EXPECT_EQ(cluster["half_angle_deg"].get<double>(), 90.0);
+    EXPECT_EQ(result["clusters"][0]["half_angle_deg"].get<double>(), 12.75);
+}
+
+TEST(StatisticsJson, UnsetEyeAndDefaultSettings) {
+    RunStatistics run;
+    const nlohmann::json settings = statisticsToJson(run)["settings"];
+    EXPECT_TRUE(settings["eye"].is_null());
+    EXPECT_EQ(settings["views"], Settings{}.views);
+    EXPECT_EQ(settings["distance"].get<double>(), Settings{}.distance);
+    EXPECT_EQ(settings["builder"], toString(Settings{}.builder));
+    EXPECT_EQ(settings["sphere"], toString(Settings{}.sphere));
+    EXPECT_TRUE(statisticsToJson(run)["results"].empty());
+}
+
+TEST(StatisticsJson, WrittenTextParsesBackToTheSameDocument) {
+    const RunStatistics run = smallRun();
+    std::ostringstream text;
+    writeStatisticsJson(run, text);
+    ASSERT_FALSE(text.str().empty());
+    EXPECT_EQ(text.str().back(), '\n');
+    EXPECT_EQ(nlohmann::json::parse(text.str()), statisticsToJson(run));
+}
+
+TEST(StatisticsJson, DetailLeavesTablesOut) {
+    const nlohmann::json noViews = statisticsToJson(smallRun(), StatisticsDetail{false, true});
+    EXPECT_FALSE(noViews["results"][0].contains("views"));
+    EXPECT_EQ(noViews["results"][0]["clusters"].size(), 2u);
+    const nlohmann::json noClusters = statisticsToJson(smallRun(), StatisticsDetail{true, false});
+    EXPECT_FALSE(noClusters["results"][0].contains("clusters"));
+    EXPECT_EQ(noClusters["results"][0]["views"].size(), 2u);
+}
+
+TEST(StatisticsCsv, ExactText) {
+    std::ostringstream text;
+    writeStatisticsCsv(smallRun(), text);
+    const std::string expected =
+        "# section: totals\n"
+        "cone,test,clusters,views,clusters_culled,triangles_culled,back_facing_triangles,missed_clusters,false_culls,"
+        "efficiency,expected_efficiency,uncullable_clusters,ns_per_cluster\n"
+        "average,sphere,2,2,1,2,6,1,0,0.3333333333333333,0.25,1,12.5\n"
+        "# section: views\n"
+        "cone,test,view,eye_x,eye_y,eye_z,direction_x,direction_y,direction_z,orthographic,clusters_culled,"
+        "triangles_culled,back_facing_triangles,front_facing_triangles,back_facing_clusters,missed_clusters,false_culls,"
+        "efficiency,ns_per_cluster\n"
+        "average,sphere,0,0,0,3,0,0,-1,0,1,2,2,1,1,0,0,1,10\n"
+        "average,sphere,1,0,0,0,0,1,0,1,0,0,4,1,1,1,0,0,15\n"
+        "# section: clusters\n"
+        "cone,test,cluster,faces,triangles,vertices,half_angle_deg,cullable,times_culled,times_back_facing,false_culls\n"
+        "average,sphere,0,1,2,4,12.75,1,1,2,0\n"
+        "average,sphere,1,1,1,3,90,0,0,0,0\n";
+    EXPECT_EQ(text.str(), expected);
+}
+
+TEST(StatisticsCsv, DetailLeavesSectionsOut) {
+    std::ostringstream text;
+    writeStatisticsCsv(smallRun(), text, StatisticsDetail{false, false});
+    EXPECT_EQ(text.str().find("# section: views"), std::string::npos);
+    EXPECT_EQ(text.str().find("# section: clusters"), std::string::npos);
+    EXPECT_EQ(text.str().rfind("# section: totals\n", 0), 0u);
+}
+
+// The CSV headers are the JSON keys: a column cannot exist in one format only.
+TEST(StatisticsCsv, ColumnsAreTheJsonKeys) {
+    const RunStatistics run = smallRun();
+    const nlohmann::json result = statisticsToJson(run)["results"][0];
+    std::ostringstream text;
+    writeStatisticsCsv(run, text);
+    std::istringstream lines(text.str());
+    std::vector<std::set<std::string>> headers;
+    for (std::string line, previous; std::getline(lines, line); previous = line)
+        if (previous.rfind("# section:", 0) == 0) {
+            std::set<std::string> columns;
+            std::istringstream cells(line);
+            for (std::string cell; std::getline(cells, cell, ',');) columns.insert(cell);
+            headers.push_back(columns);
+        }
+    ASSERT_EQ(headers.size(), 3u);
+
+    std::set<std::string> totals = keysOf(result);
+    totals.erase("views");
+    totals.erase("clusters");
+    totals.insert({"clusters", "views"});  // the run's counts, repeated on every row
+    EXPECT_EQ(headers[0], totals);
+
+    std::set<std::string> views = keysOf(result["views"][0]);
+    views.erase("eye");
+    views.erase("direction");
+    views.insert({"cone", "test", "eye_x", "eye_y", "eye_z", "direction_x", "direction_y", "direction_z"});
+    EXPECT_EQ(headers[1], views);
+
+    std::set<std::string> clusters = keysOf(result["clusters"][0]);
+    clusters.insert({"cone", "test"});
+    EXPECT_EQ(headers[2], clusters);
+}
+
+}  // namespace
+}  // namespace conescope

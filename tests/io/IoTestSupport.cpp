@@ -1,0 +1,89 @@
+#include "IoTestSupport.h"
+
+#include <clocale>
+#include <cstdlib>
+#include <fstream>
+#include <limits>
+
+#include <gtest/gtest.h>
+
+#include "io/MeshReader.h"
+
+namespace conescope::testing {
+
+std::filesystem::path datasetsDir() { return CONESCOPE_DATASETS_DIR; }
+
+std::filesystem::path formatSamplesDir() { return std::filesystem::path(CONESCOPE_TESTDATA_DIR) / "formats"; }
+
+ScratchDirectory::ScratchDirectory() {
+    std::string pattern = (std::filesystem::temp_directory_path() / "conescope-io-XXXXXX").string();
+    // mkdtemp: a unique directory even when ctest runs test cases in parallel.
+    if (!mkdtemp(pattern.data())) throw std::runtime_error("cannot create a scratch directory");
+    path_ = pattern;
+}
+
+ScratchDirectory::~ScratchDirectory() {
+    std::error_code ignored;
+    std::filesystem::remove_all(path_, ignored);
+}
+
+std::string ScratchDirectory::writeFile(const std::string& name, const std::string& bytes) const {
+    std::string fullPath = file(name);
+    std::ofstream out(fullPath, std::ios::binary | std::ios::trunc);
+    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    if (!out) throw std::runtime_error("cannot write " + fullPath);
+    return fullPath;
+}
+
+namespace {
+struct CommaDecimalPoint : std::numpunct<char> {
+    char do_decimal_point() const override { return ','; }
+    char do_thousands_sep() const override { return '.'; }
+    std::string do_grouping() const override { return "\3"; }
+};
+}  // namespace
+
+ScopedCommaDecimalLocale::ScopedCommaDecimalLocale()
+    : previousGlobal_(std::locale::global(std::locale(std::locale::classic(), new CommaDecimalPoint))),
+      previousC_(std::setlocale(LC_ALL, nullptr)) {
+    if (!std::setlocale(LC_ALL, "de_DE.UTF-8")) std::setlocale(LC_ALL, "de_DE");
+}
+
+ScopedCommaDecimalLocale::~ScopedCommaDecimalLocale() {
+    std::setlocale(LC_ALL, previousC_.c_str());
+    std::locale::global(previousGlobal_);
+}
+
+std::string readErrorMessage(const std::string& path) {
+    try {
+        Mesh mesh = readMesh(path);
+        ADD_FAILURE() << "readMesh(" << path << ") succeeded with " << mesh.faceCount() << " faces";
+    } catch (const MeshReadError& error) {
+        return error.what();
+    } catch (const std::exception& error) {
+        ADD_FAILURE() << "readMesh(" << path << ") threw a non-MeshReadError: " << error.what();
+    }
+    return "";
+}
+
+glm::dvec3 unitFaceNormal(const Mesh& mesh, size_t face) {
+    return glm::normalize(newellNormal(mesh.positions.data(), mesh.faceBegin(face), mesh.faceSize(face)));
+}
+
+size_t faceNearest(const Mesh& mesh, const glm::dvec3& point) {
+    size_t nearest = 0;
+    double nearestDistance = std::numeric_limits<double>::max();
+    for (size_t f = 0; f < mesh.faceCount(); ++f) {
+        glm::dvec3 centroid(0.0);
+        for (size_t k = 0; k < mesh.faceSize(f); ++k) centroid += glm::dvec3(mesh.positions[mesh.faceBegin(f)[k]]);
+        centroid /= double(mesh.faceSize(f));
+        double distance = glm::length(centroid - point);
+        if (distance < nearestDistance) {
+            nearestDistance = distance;
+            nearest = f;
+        }
+    }
+    return nearest;
+}
+
+}  // namespace conescope::testing

@@ -1,0 +1,71 @@
+// Helpers shared by the io tests: data folders, a scratch directory, and checks on read errors.
+#pragma once
+
+#include <filesystem>
+#include <locale>
+#include <string>
+
+#include <glm/glm.hpp>
+
+#include "core/Mesh.h"
+
+namespace conescope::testing {
+
+std::filesystem::path datasetsDir();
+std::filesystem::path formatSamplesDir();  // tests/data/formats, written by make_format_samples.py
+
+// A fresh directory under the system temp dir, removed with everything in it on destruction.
+class ScratchDirectory {
+public:
+    ScratchDirectory();
+    ~ScratchDirectory();
+    ScratchDirectory(const ScratchDirectory&) = delete;
+    ScratchDirectory& operator=(const ScratchDirectory&) = delete;
+
+    const std::filesystem::path& path() const { return path_; }
+    // Writes bytes verbatim (binary mode) and returns the file's full path.
+    std::string writeFile(const std::string& name, const std::string& bytes) const;
+    std::string file(const std::string& name) const { return (path_ / name).string(); }
+
+private:
+    std::filesystem::path path_;
+};
+
+// While alive, numbers are formatted the German way: the global C++ locale uses ',' as decimal
+// point (what iostreams would then read and write), and the C locale is de_DE when installed
+// (what strtod/printf would use; Qt applications call setlocale(LC_ALL, "")). Restores both.
+class ScopedCommaDecimalLocale {
+public:
+    ScopedCommaDecimalLocale();
+    ~ScopedCommaDecimalLocale();
+    ScopedCommaDecimalLocale(const ScopedCommaDecimalLocale&) = delete;
+    ScopedCommaDecimalLocale& operator=(const ScopedCommaDecimalLocale&) = delete;
+
+private:
+    std::locale previousGlobal_;
+    std::string previousC_;
+};
+
+// The message of the MeshReadError readMesh(path) throws; fails the test (and returns "") when it
+// throws nothing or another type.
+std::string readErrorMessage(const std::string& path);
+
+// Unit normal of face f by Newell's method (the core's definition).
+glm::dvec3 unitFaceNormal(const Mesh& mesh, size_t face);
+
+// Index of the face whose centroid is closest to point.
+size_t faceNearest(const Mesh& mesh, const glm::dvec3& point);
+
+}  // namespace conescope::testing
+
+// Expects readMesh(path) to throw MeshReadError whose message names the file and contains fragment.
+#define EXPECT_READ_ERROR(path, fragment)                                                 \
+    do {                                                                                  \
+        const std::string expectReadErrorPath = (path);                                   \
+        const std::string expectReadErrorMessage =                                        \
+            ::conescope::testing::readErrorMessage(expectReadErrorPath);                  \
+        EXPECT_NE(expectReadErrorMessage.find(expectReadErrorPath), std::string::npos)    \
+            << "message does not name the file: " << expectReadErrorMessage;              \
+        EXPECT_NE(expectReadErrorMessage.find(fragment), std::string::npos)               \
+            << "message lacks \"" << (fragment) << "\": " << expectReadErrorMessage;      \
+    } while (false)

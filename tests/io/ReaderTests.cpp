@@ -1,0 +1,225 @@
+// Good files in every format: counts, face sizes, orientation and per-face arrays come through.
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include <gtest/gtest.h>
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkFieldData.h>
+#include <vtkFloatArray.h>
+#include <vtkIntArray.h>
+#include <vtkNew.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkStringArray.h>
+
+#include "IoTestSupport.h"
+#include "io/MeshReader.h"
+#include "io/PolyDataConversion.h"
+
+namespace conescope {
+namespace {
+
+using testing::faceNearest;
+using testing::formatSamplesDir;
+using testing::unitFaceNormal;
+
+struct CubeSample {
+    const char* file;
+    size_t vertexCount;
+    size_t faceCount;
+    size_t verticesPerFace;
+    bool hasClusterIds;
+};
+
+std::string sampleName(const ::testing::TestParamInfo<CubeSample>& info) {
+    std::string name = info.param.file;
+    std::replace_if(name.begin(), name.end(), [](char c) { return !std::isalnum(static_cast<unsigned char>(c)); }, '_');
+    return name;
+}
+
+class CubeInEveryFormat : public ::testing::TestWithParam<CubeSample> {};
+
+TEST_P(CubeInEveryFormat, HasTheCubesCountsAndOutwardNormals) {
+    const CubeSample& sample = GetParam();
+    Mesh mesh = readMesh((formatSamplesDir() / sample.file).string());
+    EXPECT_EQ(mesh.positions.size(), sample.vertexCount);
+    ASSERT_EQ(mesh.faceCount(), sample.faceCount);
+    for (size_t f = 0; f < mesh.faceCount(); ++f) EXPECT_EQ(mesh.faceSize(f), sample.verticesPerFace) << "face " << f;
+    EXPECT_EQ(mesh.model, glm::dmat4(1.0));
+
+    // The cube is centred on the origin, so an outward normal points the same way as the face centre.
+    size_t top = faceNearest(mesh, {0.0, 0.0, 0.5});
+    glm::dvec3 topNormal = unitFaceNormal(mesh, top);
+    EXPECT_NEAR(topNormal.x, 0.0, 1e-9);
+    EXPECT_NEAR(topNormal.y, 0.0, 1e-9);
+    EXPECT_NEAR(topNormal.z, 1.0, 1e-9);
+    for (size_t f = 0; f < mesh.faceCount(); ++f) {
+        glm::dvec3 anyVertex(mesh.positions[mesh.faceBegin(f)[0]]);
+        EXPECT_GT(glm::dot(unitFaceNormal(mesh, f), anyVertex), 0.0) << "face " << f << " points inward";
+    }
+
+    if (sample.hasClusterIds) {
+        ASSERT_EQ(mesh.faceArrays.count("cluster_id"), 1u);
+        EXPECT_EQ(mesh.faceArrays.at("cluster_id"), (std::vector<double>{0, 0, 1, 1, 2, 2}));
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Formats, CubeInEveryFormat,
+                         ::testing::Values(CubeSample{"cube.ply", 8, 6, 4, false},
+                                           CubeSample{"cube-binary.ply", 8, 12, 3, false},
+                                           CubeSample{"cube.obj", 8, 6, 4, false},
+                                           CubeSample{"cube-ascii.stl", 8, 12, 3, false},
+                                           CubeSample{"cube-binary.stl", 8, 12, 3, false},
+                                           CubeSample{"cube.vtp", 8, 6, 4, true},
+                                           CubeSample{"cube.vtk", 8, 6, 4, true}),
+                         sampleName);
+
+TEST(ReadMesh, ReadsEveryFormatUnderACommaDecimalLocale) {
+    // Only the C++ part is exercised where no de_DE locale is installed (LOCPATH can supply one).
+    testing::ScopedCommaDecimalLocale german;
+    for (const char* file : {"cube.ply", "cube-binary.ply", "cube.obj", "cube-ascii.stl", "cube-binary.stl", "cube.vtp", "cube.vtk"}) {
+        Mesh mesh = readMesh((formatSamplesDir() / file).string());
+        for (const glm::vec3& p : mesh.positions)
+            for (int axis = 0; axis < 3; ++axis) EXPECT_EQ(std::abs(p[axis]), 0.5f) << file;
+    }
+}
+
+TEST(ReadMesh, SkipsCellArraysWithSeveralComponents) {
+    // cube.vtp also has a 3-component "face_normal" cell array; faceArrays holds scalars only.
+    Mesh mesh = readMesh((formatSamplesDir() / "cube.vtp").string());
+    EXPECT_EQ(mesh.faceArrays.count("face_normal"), 0u);
+}
+
+TEST(ReadMesh, SplitsTriangleStripsKeepingOrientationAndCellData) {
+    Mesh mesh = readMesh((formatSamplesDir() / "cube-strips.vtk").string());
+    ASSERT_EQ(mesh.faceCount(), 2u + 8u);  // two quad caps, then eight strip triangles
+    EXPECT_EQ(mesh.faceSize(0), 4u);
+    EXPECT_EQ(mesh.faceSize(2), 3u);
+    for (size_t f = 0; f < mesh.faceCount(); ++f) {
+        glm::dvec3 anyVertex(mesh.positions[mesh.faceBegin(f)[0]]);
+        EXPECT_GT(glm::dot(unitFaceNormal(mesh, f), anyVertex), 0.0) << "face " << f << " points inward";
+    }
+    ASSERT_EQ(mesh.faceArrays.count("part"), 1u);
+    EXPECT_EQ(mesh.faceArrays.at("part"), (std::vector<double>{0, 0, 1, 1, 1, 1, 1, 1, 1, 1}));
+}
+
+TEST(ReadMesh, ExtensionIsCaseInsensitive) {
+    testing::ScratchDirectory scratch;
+    std::filesystem::copy_file(formatSamplesDir() / "cube.ply", scratch.path() / "CUBE.PLY");
+    std::filesystem::copy_file(testing::datasetsDir() / "cube.off", scratch.path() / "Cube.Off");
+    EXPECT_EQ(readMesh(scratch.file("CUBE.PLY")).faceCount(), 6u);
+    EXPECT_EQ(readMesh(scratch.file("Cube.Off")).faceCount(), 12u);
+}
+
+TEST(ReadMesh, ReadsAClusterIdArrayFromTheBundledVtp) {
+    Mesh mesh = readMesh((testing::datasetsDir() / "icosphere-clusters.vtp").string());
+    EXPECT_EQ(mesh.positions.size(), 162u);
+    ASSERT_EQ(mesh.faceCount(), 320u);
+    ASSERT_EQ(mesh.faceArrays.count("cluster_id"), 1u);
+    const std::vector<double>& clusterIds = mesh.faceArrays.at("cluster_id");
+    std::set<double> distinct(clusterIds.begin(), clusterIds.end());
+    EXPECT_EQ(distinct.size(), 20u);
+    EXPECT_EQ(*distinct.begin(), 0.0);
+    EXPECT_EQ(*distinct.rbegin(), 19.0);
+}
+
+TEST(SupportedFormats, ListsEveryReadableExtension) {
+    std::vector<std::string> extensions = supportedMeshExtensions();
+    for (const char* expected : {".off", ".ply", ".obj", ".stl", ".vtp", ".vtk"})
+        EXPECT_NE(std::find(extensions.begin(), extensions.end(), expected), extensions.end()) << expected;
+    EXPECT_TRUE(hasSupportedMeshExtension("/some/where/Model.STL"));
+    EXPECT_FALSE(hasSupportedMeshExtension("notes.txt"));
+    EXPECT_FALSE(hasSupportedMeshExtension("no_extension"));
+}
+
+TEST(SupportedFormats, FileFilterIsQtStyle) {
+    std::string filter = meshFileFilter();
+    EXPECT_EQ(filter.rfind("Meshes (*.off *.ply *.obj *.stl *.vtp *.vtk)", 0), 0u) << filter;
+    EXPECT_NE(filter.find(";;OFF (*.off)"), std::string::npos) << filter;
+    EXPECT_NE(filter.find(";;All files (*)"), std::string::npos) << filter;
+}
+
+// Direct conversion tests, without files.
+
+vtkSmartPointer<vtkPolyData> squarePyramid() {
+    vtkNew<vtkPoints> points;
+    points->InsertNextPoint(0, 0, 0);
+    points->InsertNextPoint(1, 0, 0);
+    points->InsertNextPoint(1, 1, 0);
+    points->InsertNextPoint(0, 1, 0);
+    points->InsertNextPoint(0.5, 0.5, 1);
+    vtkNew<vtkCellArray> polygons;
+    vtkIdType base[] = {0, 3, 2, 1};
+    polygons->InsertNextCell(4, base);
+    for (vtkIdType k = 0; k < 4; ++k) {
+        vtkIdType side[] = {k, (k + 1) % 4, 4};
+        polygons->InsertNextCell(3, side);
+    }
+    vtkNew<vtkCellArray> vertices;  // a vertex cell before the polygons shifts the cell ids
+    vtkIdType apex = 4;
+    vertices->InsertNextCell(1, &apex);
+    vtkSmartPointer<vtkPolyData> polyData = vtkSmartPointer<vtkPolyData>::New();
+    polyData->SetPoints(points);
+    polyData->SetVerts(vertices);
+    polyData->SetPolys(polygons);
+    vtkNew<vtkIntArray> clusterIds;
+    clusterIds->SetName("cluster_id");
+    for (int value : {-1, 10, 11, 11, 12, 12}) clusterIds->InsertNextValue(value);
+    polyData->GetCellData()->AddArray(clusterIds);
+    vtkNew<vtkStringArray> labels;  // not numeric: must be skipped, not crash
+    labels->SetName("label");
+    for (int i = 0; i < 6; ++i) labels->InsertNextValue("x");
+    polyData->GetCellData()->AddArray(labels);
+    return polyData;
+}
+
+TEST(PolyDataConversion, TakesPolygonsAndSkipsVertexCells) {
+    Mesh mesh = meshFromPolyData(squarePyramid());
+    EXPECT_EQ(mesh.positions.size(), 5u);
+    ASSERT_EQ(mesh.faceCount(), 5u);
+    EXPECT_EQ(mesh.faceSize(0), 4u);
+    EXPECT_EQ(mesh.faceArrays.at("cluster_id"), (std::vector<double>{10, 11, 11, 12, 12}));
+    EXPECT_EQ(mesh.faceArrays.count("label"), 0u);
+    EXPECT_NO_THROW(validateMesh(mesh));
+}
+
+TEST(PolyDataConversion, RoundTripsThroughPolyData) {
+    Mesh original = meshFromPolyData(squarePyramid());
+    original.faceArrays["weight"] = {0.5, 1.25, -3.0, 1e-9, 7.0};
+    original.model = glm::dmat4(2.0);
+    original.model[3] = glm::dvec4(1.0, 2.0, 3.0, 1.0);
+    Mesh copy = meshFromPolyData(polyDataFromMesh(original));
+    EXPECT_EQ(copy.positions, original.positions);
+    EXPECT_EQ(copy.faceStarts, original.faceStarts);
+    EXPECT_EQ(copy.faceVertices, original.faceVertices);
+    EXPECT_EQ(copy.faceArrays, original.faceArrays);
+    EXPECT_EQ(copy.model, original.model);
+}
+
+TEST(PolyDataConversion, IntegerArraysBecomeIntArraysOthersDouble) {
+    Mesh mesh = meshFromPolyData(squarePyramid());
+    mesh.faceArrays["weight"] = {0.5, 1, 2, 3, 4};
+    vtkSmartPointer<vtkPolyData> polyData = polyDataFromMesh(mesh);
+    EXPECT_TRUE(vtkIntArray::SafeDownCast(polyData->GetCellData()->GetArray("cluster_id")));
+    EXPECT_FALSE(vtkIntArray::SafeDownCast(polyData->GetCellData()->GetArray("weight")));
+    EXPECT_EQ(polyData->GetCellData()->GetScalars(), nullptr) << "active scalars would recolour the mapper";
+    EXPECT_EQ(polyData->GetFieldData()->GetArray(modelMatrixArrayName), nullptr) << "identity is not stored";
+}
+
+TEST(PolyDataConversion, NullAndEmptyInputGiveEmptyMesh) {
+    EXPECT_EQ(meshFromPolyData(nullptr).faceCount(), 0u);
+    vtkNew<vtkPolyData> empty;
+    EXPECT_EQ(meshFromPolyData(empty).faceCount(), 0u);
+}
+
+TEST(PolyDataConversion, NegativePointIdThrows) {
+    vtkSmartPointer<vtkPolyData> polyData = squarePyramid();
+    vtkIdType bad[] = {0, 1, -5};
+    polyData->GetPolys()->InsertNextCell(3, bad);
+    EXPECT_THROW(meshFromPolyData(polyData), std::runtime_error);
+}
+
+}  // namespace
+}  // namespace conescope

@@ -1,0 +1,175 @@
+// Pixels: the eye's view without culled clusters, the missing-display error, and the image baselines.
+#include <cstdlib>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <vtkImageData.h>
+
+#include "RenderTestSupport.h"
+#include "core/Culling.h"
+#include "scene/ClusterScene.h"
+#include "scene/SceneRendering.h"
+
+namespace conescope {
+namespace {
+
+using rendertest::SceneInput;
+
+ClusterScene makeScene(const SceneInput& input) {
+    return ClusterScene(input.mesh, input.world, input.faces, input.partition, input.bounds);
+}
+
+// Pixels that differ from the background colour by more than a little.
+size_t foregroundPixels(vtkImageData* image, const Rgb& background) {
+    int dimensions[3];
+    image->GetDimensions(dimensions);
+    const auto* p = static_cast<const unsigned char*>(image->GetScalarPointer());
+    const int channels = image->GetNumberOfScalarComponents();
+    size_t count = 0;
+    for (size_t i = 0; i < size_t(dimensions[0]) * dimensions[1]; ++i) {
+        int difference = 0;
+        for (int c = 0; c < 3; ++c) difference += std::abs(int(p[i * channels + c]) - int(std::lround(background[c] * 255.0)));
+        count += difference > 6;
+    }
+    return count;
+}
+
+RenderOptions smallImage() {
+    RenderOptions options;
+    options.width = 400;
+    options.height = 300;
+    return options;
+}
+
+TEST(SceneRendering, EyeViewDropsCulledClustersWithoutChangingWhatIsSeen) {
+    const SceneInput input = rendertest::loadDataset("icosphere.off", 32);
+    ClusterScene scene = makeScene(input);
+    const Eye eye = Eye::perspective({0.5, 0.8, 2.6});
+    scene.setEye(eye, {0, 0, 0});
+    RenderOptions options = smallImage();
+    options.fromEye = true;
+
+    const auto everything = renderToImage(scene, options);
+    const size_t covered = foregroundPixels(everything, options.background);
+    EXPECT_GT(covered, 400u * 300u / 10);
+
+    // A closed mesh: culled clusters face away, so removing them leaves the picture as it was.
+    const CullingInput cullInput{input.mesh, input.world, input.faces, input.bounds};
+    const std::vector<uint8_t> culled = cullClusters(cullInput, eye, CullTest::Vertices);
+    const std::vector<uint8_t> allBack = cullClusters(cullInput, eye, CullTest::Oracle);
+    size_t culledCount = 0;
+    for (uint8_t c : culled) culledCount += c;
+    ASSERT_GT(culledCount, 0u);
+    scene.setClusterDecisions(culled, allBack);
+    const auto withCulling = renderToImage(scene, options);
+    const rendertest::ImageComparison same = rendertest::compareImages(withCulling, everything);
+    EXPECT_TRUE(same.sameSize);
+    EXPECT_LT(same.meanChannelDifference, 0.05);
+
+    // Marking every cluster culled empties the view: the culled clusters really are removed.
+    scene.setClusterDecisions(std::vector<uint8_t>(scene.clusterCount(), 1), std::vector<uint8_t>(scene.clusterCount(), 1));
+    EXPECT_EQ(foregroundPixels(renderToImage(scene, options), options.background), 0u);
+
+    // Culling the front clusters instead opens holes where they were.
+    std::vector<uint8_t> front(scene.clusterCount());
+    for (size_t c = 0; c < front.size(); ++c) front[c] = !allBack[c];
+    scene.setClusterDecisions(front, std::vector<uint8_t>(scene.clusterCount(), 0));
+    const auto holes = renderToImage(scene, options);
+    EXPECT_GT(rendertest::compareImages(holes, everything).meanChannelDifference, 2.0);
+}
+
+TEST(SceneRendering, MissingDisplayGivesAClearError) {
+    const SceneInput input = rendertest::loadDataset("cube.off", 4);
+    ClusterScene scene = makeScene(input);
+    const char* display = std::getenv("DISPLAY");
+    const std::string saved = display ? display : "";
+    unsetenv("DISPLAY");
+    try {
+        renderToPng(scene, smallImage(), std::string(CONESCOPE_RENDER_OUTPUT_DIR) + "/never-written.png");
+        ADD_FAILURE() << "rendering without a display did not throw";
+    } catch (const std::runtime_error& error) {
+        EXPECT_NE(std::string(error.what()).find("xvfb-run"), std::string::npos) << error.what();
+    }
+    if (display) setenv("DISPLAY", saved.c_str(), 1);
+}
+
+TEST(SceneRendering, UnwritablePngPathThrows) {
+    const SceneInput input = rendertest::loadDataset("cube.off", 4);
+    ClusterScene scene = makeScene(input);
+    EXPECT_THROW(renderToPng(scene, smallImage(), "/nonexistent-directory/image.png"), std::runtime_error);
+}
+
+// The three baseline pictures share one torus split into small clusters and one observer camera.
+class RenderImages : public ::testing::Test {
+protected:
+    static void SetUpTestSuite() { torus_ = new SceneInput(rendertest::loadDataset("torus.off", 64)); }
+    static void TearDownTestSuite() { delete torus_; }
+    static RenderOptions observer() {
+        RenderOptions options = smallImage();
+        options.cameraPosition = glm::dvec3(2.2, -2.6, 2.4);
+        options.focalPoint = glm::dvec3(0.0, 0.0, 0.0);
+        options.viewUp = glm::dvec3(0.0, 0.0, 1.0);
+        return options;
+    }
+    static SceneInput* torus_;
+};
+SceneInput* RenderImages::torus_ = nullptr;
+
+// The eye of the decision pictures, and its decisions by the sphere test (some missed culls).
+const Eye decisionEye = Eye::perspective({-1.6, 2.4, 1.5});
+
+TEST_F(RenderImages, ClustersColouredByPalette) {
+    ClusterScene scene = makeScene(*torus_);
+    const auto image = renderToImage(scene, observer());
+    const std::string failure = rendertest::checkAgainstBaseline(image, "clusters");
+    EXPECT_TRUE(failure.empty()) << failure;
+}
+
+TEST_F(RenderImages, CullDecisionsWithConesAndBoxes) {
+    ClusterScene scene = makeScene(*torus_);
+    const CullingInput cullInput{torus_->mesh, torus_->world, torus_->faces, torus_->bounds};
+    scene.setClusterDecisions(cullClusters(cullInput, decisionEye, CullTest::Sphere),
+                              cullClusters(cullInput, decisionEye, CullTest::Oracle));
+    scene.setFaceColoring(FaceColoring::CullDecision);
+    scene.setLayerVisible(Layer::Boxes, true);
+    scene.setLayerVisible(Layer::Borders, false);
+    scene.setEye(decisionEye, {0, 0, 0});
+    // From below the side facing away from the eye: culled, missed and drawn clusters all in view.
+    RenderOptions options = observer();
+    options.cameraPosition = glm::dvec3(3.9, -3.6, -2.1);
+    const auto image = renderToImage(scene, options);
+    const std::string failure = rendertest::checkAgainstBaseline(image, "decisions");
+    EXPECT_TRUE(failure.empty()) << failure;
+}
+
+TEST_F(RenderImages, SpheresEyeAndPickedCluster) {
+    ClusterScene scene = makeScene(*torus_);
+    scene.setLayerVisible(Layer::Cones, false);
+    scene.setLayerVisible(Layer::Spheres, true);
+    scene.setEye(decisionEye, {0, 0, 0});
+    scene.setHighlightedCluster(5);
+    scene.setLayerVisible(Layer::Legend, false);
+    RenderOptions options = observer();
+    // Aimed between the torus and the eye, so the eye marker is in view.
+    options.cameraPosition = glm::dvec3(4.2, -7.6, 5.6);
+    options.focalPoint = glm::dvec3(-0.5, 0.8, 0.6);
+    const auto image = renderToImage(scene, options);
+    const std::string failure = rendertest::checkAgainstBaseline(image, "spheres_eye");
+    EXPECT_TRUE(failure.empty()) << failure;
+}
+
+TEST_F(RenderImages, ComparisonRejectsADifferentPicture) {
+    // The same scene from another side must fail against the clusters baseline: the limits catch real changes.
+    ClusterScene scene = makeScene(*torus_);
+    RenderOptions options = observer();
+    options.cameraPosition = glm::dvec3(-2.2, 2.6, 2.4);
+    const auto image = renderToImage(scene, options);
+    const std::string baseline = std::string(CONESCOPE_BASELINE_DIR) + "/clusters.png";
+    const rendertest::ImageComparison comparison = rendertest::compareImages(image, rendertest::readPng(baseline));
+    ASSERT_TRUE(comparison.sameSize) << "baseline " << baseline << " missing or of another size";
+    EXPECT_TRUE(comparison.thresholdedError > rendertest::maxThresholdedError ||
+                comparison.meanChannelDifference > rendertest::maxMeanChannelDifference);
+}
+
+}  // namespace
+}  // namespace conescope

@@ -1,0 +1,636 @@
+// The window driven as a user would (shortcuts, combo boxes, typed coordinates, mouse clicks) and
+// through its test interface, with every number checked against the core computed in-process.
+#include <map>
+#include <set>
+
+#include <QAction>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFile>
+#include <QImage>
+#include <QLineEdit>
+#include <QMimeData>
+#include <QUrl>
+#include <QProcess>
+#include <QPushButton>
+#include <QSurfaceFormat>
+#include <QTabWidget>
+#include <QSignalSpy>
+#include <QSpinBox>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <QVTKOpenGLNativeWidget.h>
+#include <vtkCamera.h>
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
+#include <vtkPolyData.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkRendererCollection.h>
+
+#include "EyePanel.h"
+#include "HelpDialog.h"
+#include "MainWindow.h"
+#include "SettingsPanel.h"
+#include "StatisticsPanel.h"
+#include "UiTestSupport.h"
+#include "io/MeshReader.h"
+#include "io/StatisticsIO.h"
+
+using namespace conescope;
+using namespace conescope::testing;
+
+namespace {
+
+// Selects the entry of a combo box whose text is `name`, as a user would.
+void chooseInCombo(QComboBox* box, const std::string& name) {
+    const int index = box->findText(QString::fromStdString(name));
+    QVERIFY2(index >= 0, name.c_str());
+    box->setCurrentIndex(index);
+}
+
+// Types a value into a spin box and presses Enter.
+void typeInto(QDoubleSpinBox* box, double value) {
+    box->setFocus();
+    box->selectAll();
+    QTest::keyClicks(box, QString::number(value, 'g', 10));
+    QTest::keyClick(box, Qt::Key_Return);
+}
+
+vtkRenderer* observerRenderer(MainWindow& window) {
+    return window.observerView()->renderWindow()->GetRenderers()->GetFirstRenderer();
+}
+
+glm::dvec3 cameraPosition(MainWindow& window) {
+    double position[3];
+    observerRenderer(window)->GetActiveCamera()->GetPosition(position);
+    return {position[0], position[1], position[2]};
+}
+
+// The eye's single view as runStatistics gives it for the window's settings.
+ViewStatistics expectedView(MainWindow& window) {
+    Settings settings = window.settings();
+    settings.cones = {settings.cones.front()};
+    settings.tests = {settings.tests.front()};
+    settings.eye = window.eyePosition();
+    const RunStatistics run = statisticsInProcess(QString::fromStdString(window.preparedMesh()->path), settings);
+    return run.results.front().views.front();
+}
+
+void compareWithCore(MainWindow& window) {
+    const EyeMeasurement* measured = window.currentStatistics();
+    QVERIFY(measured);
+    const ViewStatistics expected = expectedView(window);
+    const ViewStatistics& view = measured->view();
+    QCOMPARE(view.clustersCulled, expected.clustersCulled);
+    QCOMPARE(view.trianglesCulled, expected.trianglesCulled);
+    QCOMPARE(view.backFacingTriangles, expected.backFacingTriangles);
+    QCOMPARE(view.missedClusters, expected.missedClusters);
+    QCOMPARE(view.falseCulls, size_t(0));
+    QCOMPARE(view.efficiency, expected.efficiency);
+}
+
+}  // namespace
+
+class MainWindowTests : public QObject {
+    Q_OBJECT
+
+private:
+    std::unique_ptr<MainWindow> window_;
+    QString outputDir_;
+    QTemporaryDir temporary_;
+
+    void saveWindowPicture(const QString& name) {
+        // The whole window as the user sees it, for looking at when a test fails.
+        QApplication::processEvents();
+        window_->grab().save(QDir(outputDir_).filePath(name));
+    }
+
+private slots:
+    void initTestCase() {
+        QStandardPaths::setTestModeEnabled(true);
+        QCoreApplication::setOrganizationName(QStringLiteral("ConeScopeTests"));
+        QCoreApplication::setApplicationName(QStringLiteral("conescope-ui-tests"));
+        outputDir_ = qEnvironmentVariable("CONESCOPE_UI_TEST_OUTPUT", QDir::tempPath());
+        QVERIFY(temporary_.isValid());
+        window_ = std::make_unique<MainWindow>();
+        window_->setErrorDialogsEnabled(false);
+        window_->resize(1280, 960);
+        window_->show();
+        QVERIFY(QTest::qWaitForWindowExposed(window_.get()));
+        // No window manager under Xvfb: make the window the active one so its shortcuts apply.
+        QApplication::setActiveWindow(window_.get());
+        QCOMPARE(QApplication::activeWindow(), window_.get());
+    }
+
+    void init() { window_->observerView()->setFocus(); }
+
+    void cleanupTestCase() { window_.reset(); }
+
+    void loadsAMesh() {
+        const QString path = datasetPath("icosphere.off");
+        QVERIFY(window_->openMeshBlocking(path));
+        const PreparedMesh* prepared = window_->preparedMesh();
+        QVERIFY(prepared);
+        QCOMPARE(prepared->mesh().faceCount(), size_t(1280));
+        QVERIFY(window_->clusters()->partition.clusterCount > 1);
+        QCOMPARE(window_->scene()->clusterCount(), size_t(window_->clusters()->partition.clusterCount));
+        QVERIFY(window_->windowTitle().contains(QStringLiteral("icosphere.off")));
+        QCOMPARE(window_->statisticsPanel()->value(QStringLiteral("faces")), QLocale().toString(1280));
+        QCOMPARE(window_->statisticsPanel()->value(QStringLiteral("false culls")), QStringLiteral("0"));
+        QVERIFY(window_->recentFiles().contains(QFileInfo(path).absoluteFilePath()));
+        compareWithCore(*window_);
+        // The orbit measured in the background feeds the efficiency plot: one row per view.
+        QCOMPARE(window_->orbitStatistics().size(), window_->settings().views);
+        saveWindowPicture(QStringLiteral("window-icosphere.png"));
+    }
+
+    void startsWithDefaultSettings() {
+        // The lead tunes Settings{}; the window must start on exactly those.
+        MainWindow fresh;
+        const Settings shown = fresh.settingsPanel()->settings();
+        const Settings defaults;
+        QVERIFY(shown.builder == defaults.builder);
+        QVERIFY(shown.cones.front() == defaults.cones.front());
+        QVERIFY(shown.tests.front() == defaults.tests.front());
+        QVERIFY(shown.sphere == defaults.sphere);
+        QCOMPARE(shown.limits.maxVertices, defaults.limits.maxVertices);
+        QCOMPARE(shown.limits.maxTriangles, defaults.limits.maxTriangles);
+        QCOMPARE(shown.views, defaults.views);
+        QCOMPARE(shown.distance, defaults.distance);
+        QCOMPARE(shown.orthographic, defaults.orthographic);
+    }
+
+    void settingsWidgetsRecompute() {
+        QVERIFY(window_->openMeshBlocking(datasetPath("torus.off")));
+        SettingsPanel* panel = window_->settingsPanel();
+        std::set<size_t> culledTriangles;
+        std::set<uint32_t> clusterCounts;
+
+        chooseInCombo(panel->builderBox(), toString(Builder::KMeans));
+        window_->waitUntilIdle();
+        QVERIFY(window_->clusters()->settings.builder == Builder::KMeans);
+        clusterCounts.insert(window_->clusters()->partition.clusterCount);
+        compareWithCore(*window_);
+        culledTriangles.insert(window_->currentStatistics()->view().trianglesCulled);
+
+        chooseInCombo(panel->builderBox(), toString(Builder::Meshopt));
+        window_->waitUntilIdle();
+        QVERIFY(window_->clusters()->settings.builder == Builder::Meshopt);
+        clusterCounts.insert(window_->clusters()->partition.clusterCount);
+        compareWithCore(*window_);
+
+        panel->maxTrianglesBox()->setValue(64);
+        window_->waitUntilIdle();
+        QCOMPARE(window_->clusters()->settings.limits.maxTriangles, size_t(64));
+        clusterCounts.insert(window_->clusters()->partition.clusterCount);
+        compareWithCore(*window_);
+        QVERIFY2(clusterCounts.size() >= 2, "changing the builder and its limits changes the clusters");
+
+        for (ConeMethod cone : allConeMethods()) {
+            chooseInCombo(panel->coneBox(), toString(cone));
+            window_->waitUntilIdle();
+            QVERIFY(window_->clusters()->bounds.coneMethod == cone);
+            compareWithCore(*window_);
+            culledTriangles.insert(window_->currentStatistics()->view().trianglesCulled);
+        }
+        for (CullTest test : allCullTests()) {
+            chooseInCombo(panel->testBox(), toString(test));
+            window_->waitUntilIdle();
+            QVERIFY(window_->currentStatistics()->statistics.test == test);
+            compareWithCore(*window_);
+            culledTriangles.insert(window_->currentStatistics()->view().trianglesCulled);
+        }
+        QVERIFY2(culledTriangles.size() >= 3, "builders, cones and tests give different culled counts");
+
+        // The T shortcut walks the tests the same way.
+        const CullTest before = displayedTest(window_->settings());
+        QTest::keyClick(window_.get(), Qt::Key_T);
+        window_->waitUntilIdle();
+        QVERIFY(displayedTest(window_->settings()) != before);
+        QCOMPARE(panel->testBox()->currentText(), QString::fromStdString(toString(displayedTest(window_->settings()))));
+        compareWithCore(*window_);
+        window_->setSettings(Settings{});
+        window_->waitUntilIdle();
+    }
+
+    void typedEyeChangesCulling() {
+        QVERIFY(window_->openMeshBlocking(datasetPath("icosphere.off")));
+        EyePanel* eye = window_->eyePanel();
+        typeInto(eye->coordinateBox(0), 0.0);
+        typeInto(eye->coordinateBox(1), 0.0);
+        typeInto(eye->coordinateBox(2), 4.0);
+        QCOMPARE(window_->eyePosition(), glm::dvec3(0.0, 0.0, 4.0));
+        compareWithCore(*window_);
+        const std::vector<uint8_t> fromFront = window_->currentStatistics()->culled;
+        QVERIFY(window_->currentStatistics()->view().clustersCulled > 0);
+
+        typeInto(eye->coordinateBox(2), -4.0);
+        QCOMPARE(window_->eyePosition(), glm::dvec3(0.0, 0.0, -4.0));
+        compareWithCore(*window_);
+        const std::vector<uint8_t> fromBehind = window_->currentStatistics()->culled;
+        QVERIFY2(fromFront != fromBehind, "moving the eye to the other side culls other clusters");
+        // Clusters on the far side from one eye face the other eye: culled from one side only.
+        size_t culledFromFrontOnly = 0;
+        for (size_t c = 0; c < fromFront.size(); ++c) culledFromFrontOnly += fromFront[c] && !fromBehind[c];
+        QVERIFY(culledFromFrontOnly > 0);
+        QCOMPARE(window_->statisticsPanel()->value(QStringLiteral("clusters culled")),
+                 QStringLiteral("%1 / %2").arg(QLocale().toString(qulonglong(window_->currentStatistics()->view().clustersCulled)),
+                                               QLocale().toString(qulonglong(fromBehind.size()))));
+
+        // Orthographic: the eye becomes a direction towards the centre; the core agrees.
+        chooseInCombo(window_->settingsPanel()->projectionBox(), "orthographic");
+        QVERIFY(window_->currentStatistics()->eye.orthographic);
+        compareWithCore(*window_);
+        QTest::keyClick(window_.get(), Qt::Key_O);
+        QVERIFY(!window_->settings().orthographic);
+        QVERIFY(!window_->currentStatistics()->eye.orthographic);
+        window_->waitUntilIdle();
+    }
+
+    void lookFromHereAndFollow() {
+        QVERIFY(window_->openMeshBlocking(datasetPath("icosphere.off")));
+        window_->activateWindow();
+        window_->observerView()->setFocus();
+        QTest::keyClick(window_.get(), Qt::Key_L);
+        QCOMPARE(window_->eyePosition(), cameraPosition(*window_));
+        compareWithCore(*window_);
+
+        QTest::keyClick(window_.get(), Qt::Key_F);
+        QVERIFY(window_->followAction()->isChecked());
+        QVERIFY(window_->eyePanel()->followBox()->isChecked());
+        vtkCamera* camera = observerRenderer(*window_)->GetActiveCamera();
+        camera->Azimuth(70.0);
+        camera->Elevation(20.0);
+        QTRY_COMPARE(window_->eyePosition(), cameraPosition(*window_));
+        QTRY_VERIFY(window_->currentStatistics()->eye.position == cameraPosition(*window_));
+        compareWithCore(*window_);
+        QTest::keyClick(window_.get(), Qt::Key_F);
+        QVERIFY(!window_->followAction()->isChecked());
+        const glm::dvec3 kept = window_->eyePosition();
+        camera->Azimuth(40.0);
+        QTest::qWait(50);
+        QCOMPARE(window_->eyePosition(), kept);
+    }
+
+    void orbitAnimationFollowsTheStandardViews() {
+        QVERIFY(window_->openMeshBlocking(datasetPath("icosphere.off")));
+        const std::vector<Eye> views = orbitOf(window_->settings(), window_->preparedMesh()->box);
+        QTest::keyClick(window_.get(), Qt::Key_N);
+        QCOMPARE(window_->eyePosition(), views[0].position);
+        QTest::keyClick(window_.get(), Qt::Key_N);
+        QCOMPARE(window_->eyePosition(), views[1].position);
+        compareWithCore(*window_);
+        // The window's orbit rows are runStatistics' views rows for the same settings.
+        QCOMPARE(window_->currentStatistics()->view().trianglesCulled, window_->orbitStatistics()[1].trianglesCulled);
+
+        QTest::keyClick(window_.get(), Qt::Key_Space);
+        QVERIFY(window_->animateAction()->isChecked());
+        const glm::dvec3 start = window_->eyePosition();
+        QTRY_VERIFY_WITH_TIMEOUT(window_->eyePosition() != start, 3000);
+        QTest::keyClick(window_.get(), Qt::Key_Space);
+        QVERIFY(!window_->animateAction()->isChecked());
+        const glm::dvec3 stopped = window_->eyePosition();
+        QVERIFY(std::find_if(views.begin(), views.end(), [&](const Eye& eye) { return eye.position == stopped; }) != views.end());
+        QTest::qWait(400);
+        QCOMPARE(window_->eyePosition(), stopped);
+    }
+
+    void clickPicksACluster() {
+        QVERIFY(window_->openMeshBlocking(datasetPath("icosphere.off")));
+        window_->setEyePosition({0.0, 0.0, 4.0});
+        // Cones and the eye marker would hide the face behind them: switch them off with their keys.
+        const int conesKey = Qt::Key_1 + int(std::find(allLayers().begin(), allLayers().end(), Layer::Cones) - allLayers().begin());
+        const int eyeKey = Qt::Key_1 + int(std::find(allLayers().begin(), allLayers().end(), Layer::Eye) - allLayers().begin());
+        QVERIFY(window_->layerVisible(Layer::Cones));
+        QTest::keyClick(window_.get(), Qt::Key(conesKey));
+        QTest::keyClick(window_.get(), Qt::Key(eyeKey));
+        QVERIFY(!window_->layerVisible(Layer::Cones));
+        QVERIFY(!window_->layerVisible(Layer::Eye));
+        window_->resetCamera();
+
+        // The face turned most towards the camera: its centroid is certainly visible.
+        const PreparedMesh& prepared = *window_->preparedMesh();
+        const glm::dvec3 camera = cameraPosition(*window_);
+        size_t best = 0;
+        double bestFacing = -2.0;
+        for (size_t f = 0; f < prepared.mesh().faceCount(); ++f) {
+            const double facing = glm::dot(prepared.faces.normals[f], glm::normalize(camera - prepared.faces.centroids[f]));
+            if (facing > bestFacing) bestFacing = facing, best = f;
+        }
+        const int expected = int(window_->clusters()->partition.clusterOfFace[best]);
+        const QPoint where = window_->viewPositionOf(prepared.faces.centroids[best]);
+        QVERIFY(window_->observerView()->rect().contains(where));
+        QTest::mouseClick(window_->observerView(), Qt::LeftButton, Qt::NoModifier, where);
+        QCOMPARE(window_->pickedCluster(), expected);
+        QCOMPARE(window_->scene()->highlightedCluster(), expected);
+
+        // The panel shows the core's numbers for this cluster and eye.
+        const ClusterBounds& bounds = window_->clusters()->bounds;
+        const CullExplanation why = explainCull(cullingInput(prepared, *window_->clusters()), uint32_t(expected),
+                                                window_->currentStatistics()->eye, displayedTest(window_->settings()));
+        const QString report = window_->clusterReportHtml();
+        QVERIFY(report.contains(QStringLiteral("Cluster %1").arg(expected)));
+        QVERIFY(report.contains(QString::number(bounds.triangles[size_t(expected)])));
+        QVERIFY(report.contains(QString::number(why.halfAngleDegrees, 'f', 3)));
+        QVERIFY(report.contains(QString::number(bounds.spheres[size_t(expected)].radius, 'g', 7)));
+        QVERIFY(report.contains(QStringLiteral("front-facing faces")));
+        QVERIFY(report.contains(QString::fromStdString(toString(displayedTest(window_->settings())))));
+        saveWindowPicture(QStringLiteral("window-picked.png"));
+
+        // Escape clears the pick; a drag rotates the camera instead of picking.
+        QTest::keyClick(window_.get(), Qt::Key_Escape);
+        QCOMPARE(window_->pickedCluster(), -1);
+        QTest::mousePress(window_->observerView(), Qt::LeftButton, Qt::NoModifier, where);
+        QTest::mouseRelease(window_->observerView(), Qt::LeftButton, Qt::NoModifier, where + QPoint(40, 25));
+        QCOMPARE(window_->pickedCluster(), -1);
+        window_->resetCamera();
+        QCOMPARE(window_->pickAt(where), expected);
+        window_->pickCluster(-1);
+        QTest::keyClick(window_.get(), Qt::Key(conesKey));
+        QTest::keyClick(window_.get(), Qt::Key(eyeKey));
+        QVERIFY(window_->layerVisible(Layer::Cones));
+    }
+
+    void explainsEveryTest() {
+        QVERIFY(window_->openMeshBlocking(datasetPath("torus.off")));
+        window_->pickCluster(0);
+        for (CullTest test : allCullTests()) {
+            chooseInCombo(window_->settingsPanel()->testBox(), toString(test));
+            window_->waitUntilIdle();
+            const QString report = window_->clusterReportHtml();
+            QVERIFY(report.contains(QStringLiteral("Cluster 0")));
+            QVERIFY(report.contains(QStringLiteral("decision")));
+            const bool culled = window_->currentStatistics()->culled[0] != 0;
+            QVERIFY(report.contains(culled ? QStringLiteral("culled") : QStringLiteral("drawn")));
+        }
+        window_->setSettings(Settings{});
+        window_->waitUntilIdle();
+        window_->pickCluster(-1);
+    }
+
+    void exportsMatchTheCore() {
+        QVERIFY(window_->openMeshBlocking(datasetPath("torus.off")));
+        window_->setEyePosition({0.3, 2.0, 1.5});
+        const Settings settings = window_->settings();
+        const QString eyeJson = temporary_.filePath(QStringLiteral("eye.json"));
+        const QString eyeCsv = temporary_.filePath(QStringLiteral("eye.csv"));
+        const QString orbitJson = temporary_.filePath(QStringLiteral("orbit.json"));
+        QVERIFY(window_->exportStatistics(eyeJson, StatisticsFormat::Json, false));
+        QVERIFY(window_->exportStatistics(eyeCsv, StatisticsFormat::Csv, false));
+        QVERIFY(window_->exportStatistics(orbitJson, StatisticsFormat::Json, true));
+
+        Settings eyeSettings = settings;
+        eyeSettings.eye = window_->eyePosition();
+        const nlohmann::json expectedEye = statisticsToJson(statisticsInProcess(datasetPath("torus.off"), eyeSettings));
+        const nlohmann::json expectedOrbit = statisticsToJson(statisticsInProcess(datasetPath("torus.off"), settings));
+        const nlohmann::json writtenEye = readJsonFile(eyeJson);
+        const nlohmann::json writtenOrbit = readJsonFile(orbitJson);
+        for (const auto& [written, expected] : {std::pair{writtenEye, expectedEye}, std::pair{writtenOrbit, expectedOrbit}}) {
+            QCOMPARE(written["clusters"], expected["clusters"]);
+            QCOMPARE(written["view_count"], expected["view_count"]);
+            QCOMPARE(written["settings"], expected["settings"]);
+            QCOMPARE(written["mesh"], expected["mesh"]);
+            QCOMPARE(written["results"].size(), expected["results"].size());
+            for (size_t r = 0; r < expected["results"].size(); ++r)
+                for (const char* key : {"cone", "test", "efficiency", "false_culls", "clusters_culled", "triangles_culled",
+                                        "back_facing_triangles", "missed_clusters"})
+                    QCOMPARE(written["results"][r][key], expected["results"][r][key]);
+            QCOMPARE(written["results"][0]["false_culls"], nlohmann::json(0));
+        }
+        QCOMPARE(writtenEye["view_count"], nlohmann::json(1));
+        QCOMPARE(writtenOrbit["view_count"], nlohmann::json(settings.views));
+        // The window's efficiency plot shows the same per-view numbers the orbit export holds.
+        const nlohmann::json& views = writtenOrbit["results"][0]["views"];
+        QCOMPARE(views.size(), window_->orbitStatistics().size());
+        for (size_t v = 0; v < views.size(); ++v) {
+            QCOMPARE(views[v]["efficiency"].get<double>(), window_->orbitStatistics()[v].efficiency);
+            QCOMPARE(views[v]["clusters_culled"].get<size_t>(), window_->orbitStatistics()[v].clustersCulled);
+        }
+        // The CSV holds the same totals as the JSON.
+        const auto totals = readCsvSection(eyeCsv, "totals");
+        QCOMPARE(totals.size(), size_t(1));
+        QCOMPARE(std::stoul(totals[0].at("clusters_culled")), writtenEye["results"][0]["clusters_culled"].get<size_t>());
+        QCOMPARE(std::stod(totals[0].at("efficiency")), writtenEye["results"][0]["efficiency"].get<double>());
+        QCOMPARE(totals[0].at("false_culls"), std::string("0"));
+
+#ifdef CONESCOPE_CLI_PATH
+        // conescope-cli stats with the same settings writes the same numbers.
+        for (const auto& [written, eye] : {std::pair{writtenEye, true}, std::pair{writtenOrbit, false}}) {
+            const QString cliJson = temporary_.filePath(eye ? QStringLiteral("cli-eye.json") : QStringLiteral("cli-orbit.json"));
+            QProcess cli;
+            QStringList arguments{QStringLiteral("stats"), datasetPath("torus.off")};
+            arguments << cliSettingsArguments(eye ? eyeSettings : settings) << QStringLiteral("--format")
+                      << QStringLiteral("json") << QStringLiteral("-o") << cliJson;
+            cli.start(QStringLiteral(CONESCOPE_CLI_PATH), arguments);
+            QVERIFY(cli.waitForFinished(120000));
+            QVERIFY2(cli.exitCode() == 0, cli.readAllStandardError().constData());
+            const nlohmann::json fromCli = readJsonFile(cliJson);
+            QCOMPARE(fromCli["clusters"], written["clusters"]);
+            QCOMPARE(fromCli["view_count"], written["view_count"]);
+            QCOMPARE(fromCli["settings"], written["settings"]);
+            for (const char* key : {"efficiency", "false_culls", "clusters_culled", "triangles_culled"})
+                QCOMPARE(fromCli["results"][0][key], written["results"][0][key]);
+        }
+#endif
+    }
+
+    void exportsThePartitionForTheFileBuilder() {
+        QVERIFY(window_->openMeshBlocking(datasetPath("torus.off")));
+        const uint32_t clusterCount = window_->clusters()->partition.clusterCount;
+        const std::vector<uint32_t> clusterOfFace = window_->clusters()->partition.clusterOfFace;
+        const QString path = temporary_.filePath(QStringLiteral("torus-clusters.vtp"));
+        QVERIFY(window_->exportPartition(path));
+        const Mesh written = readMesh(path.toStdString());
+        for (const char* name : {"cluster_id", "cone_half_angle_deg", "cone_axis_x", "cone_axis_y", "cone_axis_z",
+                                 "sphere_radius", "sphere_center_x", "aabb_min_x", "aabb_max_z"})
+            QVERIFY2(written.faceArrays.count(name) == 1, name);
+        const ClusterBounds& bounds = window_->clusters()->bounds;
+        for (size_t f = 0; f < written.faceCount(); ++f) {
+            QCOMPARE(written.faceArrays.at("cluster_id")[f], double(clusterOfFace[f]));
+            QCOMPARE(written.faceArrays.at("sphere_radius")[f], bounds.spheres[clusterOfFace[f]].radius);
+        }
+        // The file builder reads the same partition back.
+        Settings fileSettings = window_->settings();
+        fileSettings.builder = Builder::File;
+        window_->setSettings(fileSettings);
+        QVERIFY(window_->openMeshBlocking(path));
+        QCOMPARE(window_->clusters()->partition.clusterCount, clusterCount);
+        // The same grouping of faces; the file builder may number the clusters differently.
+        const std::vector<uint32_t>& readBack = window_->clusters()->partition.clusterOfFace;
+        QCOMPARE(readBack.size(), clusterOfFace.size());
+        std::map<uint32_t, uint32_t> renumbering;
+        std::set<uint32_t> used;
+        for (size_t f = 0; f < readBack.size(); ++f) {
+            auto [entry, added] = renumbering.emplace(clusterOfFace[f], readBack[f]);
+            QCOMPARE(entry->second, readBack[f]);
+            if (added) QVERIFY(used.insert(readBack[f]).second);
+        }
+        window_->setSettings(Settings{});
+        window_->waitUntilIdle();
+    }
+
+    void badFileKeepsTheMesh() {
+        QVERIFY(window_->openMeshBlocking(datasetPath("icosphere.off")));
+        const std::string before = window_->preparedMesh()->path;
+        const QString garbage = temporary_.filePath(QStringLiteral("garbage.off"));
+        QFile file(garbage);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write("OFF\n3 1 0\n0 0 zero\n1 0 0\n");
+        file.close();
+        QSignalSpy errors(window_.get(), &MainWindow::errorShown);
+        QVERIFY(!window_->openMeshBlocking(garbage));
+        QCOMPARE(errors.count(), 1);
+        QVERIFY(errors.front().front().toString().contains(QStringLiteral("garbage.off")));
+        QCOMPARE(window_->preparedMesh()->path, before);
+        QVERIFY(window_->currentStatistics());
+        QVERIFY(!window_->openMeshBlocking(temporary_.filePath(QStringLiteral("missing.off"))));
+        QCOMPARE(errors.count(), 2);
+        QCOMPARE(window_->preparedMesh()->path, before);
+    }
+
+    void cancelledLoadKeepsTheMesh() {
+        QVERIFY(window_->openMeshBlocking(datasetPath("icosphere.off")));
+        const std::string before = window_->preparedMesh()->path;
+        QSignalSpy shown(window_.get(), &MainWindow::meshShown);
+        window_->openMesh(datasetPath("torus.off"));
+        // The Cancel button of the status bar; the task stops at its next stage.
+        QPushButton* cancel = nullptr;
+        for (QPushButton* button : window_->findChildren<QPushButton*>())
+            if (button->text() == QStringLiteral("Cancel")) cancel = button;
+        QVERIFY(cancel);
+        cancel->click();
+        window_->waitUntilIdle();
+        QCOMPARE(shown.count(), 0);
+        QCOMPARE(window_->preparedMesh()->path, before);
+    }
+
+    void screenshotOfTheView() {
+        QVERIFY(window_->openMeshBlocking(datasetPath("torus.off")));
+        const QString path = temporary_.filePath(QStringLiteral("view.png"));
+        QVERIFY(window_->saveScreenshot(path));
+        QImage image(path);
+        QVERIFY(!image.isNull());
+        const int* size = window_->observerView()->renderWindow()->GetSize();
+        QCOMPARE(image.width(), size[0]);
+        QCOMPARE(image.height(), size[1]);
+        // Not a blank picture: the mesh's colours differ from the background's.
+        QSet<QRgb> colours;
+        for (int y = 0; y < image.height(); y += 7)
+            for (int x = 0; x < image.width(); x += 7) colours.insert(image.pixel(x, y));
+        QVERIFY(colours.size() > 20);
+        image.save(QDir(outputDir_).filePath(QStringLiteral("view-torus.png")));
+    }
+
+    void colouringKeysSwitchTheFaceColours() {
+        QVERIFY(window_->openMeshBlocking(datasetPath("torus.off")));
+        QCOMPARE(int(window_->scene()->faceColoring()), int(FaceColoring::CullDecision));
+        QTest::keyClick(window_.get(), Qt::Key_3, Qt::ControlModifier);
+        QCOMPARE(int(window_->scene()->faceColoring()), int(FaceColoring::FaceFacing));
+        // The oracle's facing per face reached the scene: front/back for every face, none unclassified.
+        const std::vector<Facing> expected = classifyFaces(window_->preparedMesh()->mesh(), window_->preparedMesh()->world,
+                                                           window_->preparedMesh()->faces, window_->currentStatistics()->eye);
+        vtkDataArray* facing = window_->scene()->meshPolyData()->GetCellData()->GetArray(facingArrayName);
+        QVERIFY(facing);
+        QCOMPARE(size_t(facing->GetNumberOfTuples()), expected.size());
+        for (size_t f = 0; f < expected.size(); ++f) QCOMPARE(facing->GetTuple1(vtkIdType(f)), double(expected[f]));
+        // Moving the eye updates the facing too.
+        window_->setEyePosition({0.0, 0.0, -3.0});
+        const std::vector<Facing> moved = classifyFaces(window_->preparedMesh()->mesh(), window_->preparedMesh()->world,
+                                                        window_->preparedMesh()->faces, window_->currentStatistics()->eye);
+        for (size_t f = 0; f < moved.size(); ++f) QCOMPARE(facing->GetTuple1(vtkIdType(f)), double(moved[f]));
+        auto* plots = window_->findChild<QTabWidget*>();
+        QVERIFY(plots);
+        plots->setCurrentIndex(1);
+        saveWindowPicture(QStringLiteral("window-facing-histogram.png"));
+        plots->setCurrentIndex(0);
+        QTest::keyClick(window_.get(), Qt::Key_1, Qt::ControlModifier);
+        QCOMPARE(int(window_->scene()->faceColoring()), int(FaceColoring::Cluster));
+        QTest::keyClick(window_.get(), Qt::Key_2, Qt::ControlModifier);
+        QCOMPARE(int(window_->scene()->faceColoring()), int(FaceColoring::CullDecision));
+    }
+
+    void eyeHandleDragMovesTheEye() {
+        QVERIFY(window_->openMeshBlocking(datasetPath("icosphere.off")));
+        window_->setEyePosition({1.5, 1.0, 2.5});
+        window_->resetCamera();
+        const glm::dvec3 before = window_->eyePosition();
+        const QPoint start = window_->viewPositionOf(before);
+        QVERIFY(window_->observerView()->rect().contains(start));
+        QWidget* view = window_->observerView();
+        QTest::mousePress(view, Qt::LeftButton, Qt::NoModifier, start);
+        for (int step = 1; step <= 5; ++step) {
+            const QPoint at = start + QPoint(-8 * step, 6 * step);
+            QMouseEvent move(QEvent::MouseMove, at, view->mapToGlobal(at), Qt::NoButton, Qt::LeftButton, Qt::NoModifier);
+            QApplication::sendEvent(view, &move);
+        }
+        QTest::mouseRelease(view, Qt::LeftButton, Qt::NoModifier, start + QPoint(-40, 30));
+        QTRY_VERIFY(window_->eyePosition() != before);
+        QTRY_VERIFY(window_->currentStatistics()->eye.position == window_->eyePosition());
+        // The handle moves the eye across the screen, towards the lower left.
+        const QPoint after = window_->viewPositionOf(window_->eyePosition());
+        QVERIFY(after.x() < start.x() - 20);
+        QVERIFY(after.y() > start.y() + 15);
+        // The typed-coordinates boxes show the new place (rounded to their decimals).
+        for (int axis = 0; axis < 3; ++axis)
+            QVERIFY(std::abs(window_->eyePanel()->position()[axis] - window_->eyePosition()[axis]) < 1e-3);
+        compareWithCore(*window_);
+    }
+
+    void resetKeyLooksAtTheMesh() {
+        QVERIFY(window_->openMeshBlocking(datasetPath("torus.off")));
+        vtkCamera* camera = observerRenderer(*window_)->GetActiveCamera();
+        camera->SetFocalPoint(10.0, 10.0, 10.0);
+        camera->SetPosition(20.0, 10.0, 10.0);
+        QTest::keyClick(window_.get(), Qt::Key_R);
+        double focal[3];
+        camera->GetFocalPoint(focal);
+        const glm::dvec3 center(window_->preparedMesh()->box.center());
+        // ResetCamera centres on everything shown (mesh, cones and eye marker): near the mesh centre.
+        QVERIFY(glm::length(glm::dvec3(focal[0], focal[1], focal[2]) - center) < 2.0 * window_->preparedMesh()->box.halfDiagonal());
+        QVERIFY(glm::length(glm::dvec3(focal[0], focal[1], focal[2]) - glm::dvec3(10.0)) > 5.0);
+    }
+
+    void dropOpensAMesh() {
+        QVERIFY(window_->openMeshBlocking(datasetPath("icosphere.off")));
+        QMimeData text;
+        text.setUrls({QUrl::fromLocalFile(temporary_.filePath(QStringLiteral("notes.txt")))});
+        QDragEnterEvent refused(QPoint(20, 20), Qt::CopyAction, &text, Qt::LeftButton, Qt::NoModifier);
+        refused.setAccepted(false);
+        QApplication::sendEvent(window_.get(), &refused);
+        QVERIFY(!refused.isAccepted());
+
+        QMimeData mesh;
+        mesh.setUrls({QUrl::fromLocalFile(datasetPath("cube.off"))});
+        QDragEnterEvent enter(QPoint(20, 20), Qt::CopyAction, &mesh, Qt::LeftButton, Qt::NoModifier);
+        enter.setAccepted(false);
+        QApplication::sendEvent(window_.get(), &enter);
+        QVERIFY(enter.isAccepted());
+        QDropEvent drop(QPointF(20, 20), Qt::CopyAction, &mesh, Qt::LeftButton, Qt::NoModifier);
+        QApplication::sendEvent(window_.get(), &drop);
+        window_->waitUntilIdle();
+        QCOMPARE(QString::fromStdString(window_->preparedMesh()->path), datasetPath("cube.off"));
+        QCOMPARE(window_->preparedMesh()->mesh().faceCount(), size_t(12));
+    }
+
+    void helpListsTheShortcuts() {
+        const QString html = HelpDialog::shortcutsHtml(window_->shortcutActions());
+        for (const char* key : {"Ctrl+O", "Ctrl+S", "Ctrl+Shift+S", "F1", "Space"})
+            QVERIFY2(html.contains(QLatin1String(key)), key);
+        for (const char* text : {"Look from here", "Reset camera", "Animate along the orbit", "Show faces"})
+            QVERIFY2(html.contains(QLatin1String(text)), text);
+    }
+};
+
+int main(int argc, char** argv) {
+    // The GL format VTK needs, before the application object exists.
+    QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
+    QApplication application(argc, argv);
+    MainWindowTests tests;
+    return QTest::qExec(&tests, argc, argv);
+}
+
+#include "MainWindowTests.moc"

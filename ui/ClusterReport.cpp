@@ -1,0 +1,197 @@
+#include "ClusterReport.h"
+
+#include <QStringList>
+
+#include "core/Settings.h"
+
+namespace conescope {
+
+namespace {
+
+QString number(double value) { return QString::number(value, 'g', 7); }
+QString degrees(double value) { return QString::number(value, 'f', 3) + QStringLiteral("&deg;"); }
+
+template <typename Vector>
+QString vector3(const Vector& v) {
+    return QStringLiteral("(%1, %2, %3)").arg(number(v.x), number(v.y), number(v.z));
+}
+
+QString yesNo(bool value) { return value ? QStringLiteral("yes") : QStringLiteral("no"); }
+
+QString verdict(bool back) {
+    return back ? QStringLiteral("<span style='color:#207020'>back</span>")
+                : QStringLiteral("<span style='color:#b03020'>may face the eye</span>");
+}
+
+// A two-column table of (what, value) rows under a heading.
+class Table {
+public:
+    explicit Table(const QString& heading) { html_ = QStringLiteral("<h3>%1</h3><table border='1' cellspacing='0' cellpadding='3'>").arg(heading); }
+    Table& row(const QString& what, const QString& value) {
+        html_ += QStringLiteral("<tr><td>%1</td><td>%2</td></tr>").arg(what, value);
+        return *this;
+    }
+    QString html() const { return html_ + QStringLiteral("</table>"); }
+
+private:
+    QString html_;
+};
+
+QString clusterSection(const ClusterReportInput& input) {
+    const ClusterBounds& bounds = *input.bounds;
+    const uint32_t c = input.cluster;
+    return Table(QStringLiteral("Cluster %1").arg(c))
+        .row(QStringLiteral("faces"), QString::number(bounds.faces.starts[c + 1] - bounds.faces.starts[c]))
+        .row(QStringLiteral("triangles"), QString::number(bounds.triangles[c]))
+        .row(QStringLiteral("vertices"), QString::number(bounds.vertexStarts[c + 1] - bounds.vertexStarts[c]))
+        .html();
+}
+
+QString coneSection(const ClusterReportInput& input) {
+    const CullExplanation& why = input.explanation;
+    Table table(QStringLiteral("Cone of normals (%1)").arg(QString::fromStdString(toString(input.bounds->coneMethod))));
+    table.row(QStringLiteral("axis V1"), vector3(why.axis)).row(QStringLiteral("cullable"), yesNo(why.cullable));
+    if (why.cullable) {
+        table.row(QStringLiteral("half-angle &alpha;"), degrees(why.halfAngleDegrees))
+            .row(QStringLiteral("min n&middot;V1 = cos &alpha;"), number(why.cosHalfAngle))
+            .row(QStringLiteral("B = 90&deg; &minus; &alpha;"), degrees(why.angleBDegrees));
+    } else {
+        table.row(QStringLiteral("half-angle &alpha;"), QStringLiteral("no cone narrower than a hemisphere holds the normals"));
+    }
+    return table.html();
+}
+
+QString boundsSection(const ClusterReportInput& input) {
+    const ClusterBounds& bounds = *input.bounds;
+    const uint32_t c = input.cluster;
+    return Table(QStringLiteral("Bounds (sphere: %1)").arg(QString::fromStdString(toString(bounds.sphereMethod))))
+        .row(QStringLiteral("sphere centre c"), vector3(bounds.spheres[c].center))
+        .row(QStringLiteral("sphere radius r"), number(bounds.spheres[c].radius))
+        .row(QStringLiteral("AABB min"), vector3(bounds.boxes[c].min))
+        .row(QStringLiteral("AABB max"), vector3(bounds.boxes[c].max))
+        .row(QStringLiteral("apex"), vector3(bounds.apexes[c]))
+        .html();
+}
+
+QString cornerTable(const CullExplanation& why) {
+    QString html = QStringLiteral(
+        "<table border='1' cellspacing='0' cellpadding='3'><tr><th>corner k</th><th>position</th>"
+        "<th>v&middot;V1, v = (k &minus; e)/|k &minus; e|</th><th>verdict</th></tr>");
+    for (int i = 0; i < 8; ++i)
+        html += QStringLiteral("<tr><td>%1</td><td>%2</td><td>%3</td><td>%4</td></tr>")
+                    .arg(i)
+                    .arg(vector3(why.corners[i]), number(why.cornerDotAxis[i]), verdict(why.cornerBack[i]));
+    return html + QStringLiteral("</table>");
+}
+
+// The steps of the chosen test with the numbers it compared.
+QString testSection(const ClusterReportInput& input) {
+    const CullExplanation& why = input.explanation;
+    const Eye& eye = input.eye;
+    const QString testName = QString::fromStdString(toString(input.test));
+    Table table(QStringLiteral("Test &laquo;%1&raquo; from the eye").arg(testName));
+    if (eye.orthographic)
+        table.row(QStringLiteral("eye"), QStringLiteral("orthographic, looking along d = %1").arg(vector3(eye.direction)));
+    else
+        table.row(QStringLiteral("eye e"), vector3(eye.position));
+    QString steps;
+    if (input.test == CullTest::Oracle) {
+        table.row(QStringLiteral("rule"), QStringLiteral("culled iff every face is back-facing: n&middot;(e &minus; q) &lt; 0 "
+                                                         "at every vertex q (exact, per face)"));
+    } else if (!why.cullable) {
+        table.row(QStringLiteral("rule"), QStringLiteral("no cone: the cluster is never culled"));
+    } else if (eye.orthographic) {
+        table.row(QStringLiteral("rule"), QStringLiteral("from infinitely far every view vector is d: culled iff d&middot;V1 &gt; sin &alpha;"))
+            .row(QStringLiteral("d&middot;V1"), number(why.viewDotAxis))
+            .row(QStringLiteral("threshold sin &alpha; (+ margin)"), number(why.threshold));
+    } else {
+        switch (input.test) {
+            case CullTest::Vertices:
+                table.row(QStringLiteral("rule"), QStringLiteral("culled iff v&middot;V1 &gt; sin &alpha; for v = (q &minus; e)/|q &minus; e| "
+                                                                 "at every cluster vertex q"))
+                    .row(QStringLiteral("threshold sin &alpha; (+ margin)"), number(why.threshold))
+                    .row(QStringLiteral("vertices seeing the back"),
+                         QStringLiteral("%1 of %2").arg(why.pointsBack).arg(why.pointsTested));
+                break;
+            case CullTest::Aabb:
+            case CullTest::AabbFast:
+                table.row(QStringLiteral("rule"),
+                          input.test == CullTest::Aabb
+                              ? QStringLiteral("culled iff v&middot;V1 &gt; sin &alpha; at all 8 AABB corners")
+                              : QStringLiteral("culled iff (k &minus; e)&middot;V1 &gt; 0 and ((k &minus; e)&middot;V1)&sup2; &gt; "
+                                               "sin&sup2; &alpha; |k &minus; e|&sup2; at all 8 corners k (no square root; "
+                                               "the table shows the normalised form)"))
+                    .row(QStringLiteral("threshold sin &alpha; (+ margin)"), number(why.threshold))
+                    .row(QStringLiteral("corners seeing the back"),
+                         QStringLiteral("%1 of %2").arg(why.pointsBack).arg(why.pointsTested));
+                steps = cornerTable(why);
+                break;
+            case CullTest::Sphere:
+                table.row(QStringLiteral("rule"), QStringLiteral("culled iff v&middot;V1 &gt; cos(B &minus; asin(r/d)), "
+                                                                 "v = (c &minus; e)/d, d = |c &minus; e|; never with the eye inside"))
+                    .row(QStringLiteral("d = |c &minus; e|"), number(why.distance))
+                    .row(QStringLiteral("r"), number(why.radius))
+                    .row(QStringLiteral("eye inside the sphere"), yesNo(why.eyeInsideSphere))
+                    .row(QStringLiteral("asin(r/d)"), why.eyeInsideSphere ? QStringLiteral("&mdash;") : degrees(why.sphereAngleDegrees))
+                    .row(QStringLiteral("B"), degrees(why.angleBDegrees))
+                    .row(QStringLiteral("v"), vector3(why.view))
+                    .row(QStringLiteral("v&middot;V1"), number(why.viewDotAxis))
+                    .row(QStringLiteral("threshold cos(B &minus; asin(r/d)) (+ margin)"), number(why.threshold));
+                break;
+            case CullTest::Apex:
+                table.row(QStringLiteral("rule"), QStringLiteral("culled iff v&middot;V1 &gt; sin &alpha; for v = (apex &minus; e)/|apex &minus; e|: "
+                                                                 "the apex lies behind every face plane"))
+                    .row(QStringLiteral("apex"), vector3(why.apex))
+                    .row(QStringLiteral("threshold sin &alpha; (+ margin)"), number(why.threshold));
+                break;
+            case CullTest::MeshoptSphere:
+                table.row(QStringLiteral("rule"), QStringLiteral("culled iff (c &minus; e)&middot;V1 &gt; sin &alpha; |c &minus; e| + r, "
+                                                                 "i.e. d (v&middot;V1) &gt; d sin &alpha; + r"))
+                    .row(QStringLiteral("d = |c &minus; e|"), number(why.distance))
+                    .row(QStringLiteral("r"), number(why.radius))
+                    .row(QStringLiteral("v = (c &minus; e)/d"), vector3(why.view))
+                    .row(QStringLiteral("v&middot;V1"), number(why.viewDotAxis))
+                    .row(QStringLiteral("sin &alpha; (+ margin)"), number(why.threshold));
+                break;
+            case CullTest::Oracle: break;
+        }
+    }
+    table.row(QStringLiteral("<b>decision</b>"), why.culled ? QStringLiteral("<b>culled</b>") : QStringLiteral("<b>drawn</b>"));
+    return table.html() + steps;
+}
+
+// What the exact per-face classification says, and whether the decision was right.
+QString truthSection(const CullExplanation& why) {
+    QString outcome;
+    if (why.culled && why.frontFaces > 0)
+        outcome = QStringLiteral("<span style='color:#d00000'><b>false cull</b>: a front-facing face was culled</span>");
+    else if (why.culled)
+        outcome = QStringLiteral("correct cull: every face faces away");
+    else if (why.frontFaces == 0 && why.backFaces > 0)
+        outcome = QStringLiteral("<span style='color:#c06000'>missed cull</span>: every face faces away, the test was not sure");
+    else
+        outcome = QStringLiteral("correctly drawn: some face may be seen");
+    return Table(QStringLiteral("Per-face truth (oracle)"))
+        .row(QStringLiteral("front-facing faces"), QString::number(why.frontFaces))
+        .row(QStringLiteral("back-facing faces"), QString::number(why.backFaces))
+        .row(QStringLiteral("degenerate faces"), QString::number(why.degenerateFaces))
+        .row(QStringLiteral("outcome"), outcome)
+        .html();
+}
+
+}  // namespace
+
+QString clusterReportHtml(const ClusterReportInput& input) {
+    if (!input.bounds || input.cluster >= input.bounds->count()) return emptyClusterReportHtml();
+    QStringList parts;
+    parts << clusterSection(input) << coneSection(input) << boundsSection(input) << testSection(input)
+          << truthSection(input.explanation);
+    return QStringLiteral("<html><body>") + parts.join(QString()) + QStringLiteral("</body></html>");
+}
+
+QString emptyClusterReportHtml() {
+    return QStringLiteral("<html><body><p>Click a cluster in the view (without dragging) to see its cone, its bounds "
+                          "and every number the cull test compares for the current eye.</p></body></html>");
+}
+
+}  // namespace conescope

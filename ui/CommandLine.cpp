@@ -1,0 +1,222 @@
+#include "CommandLine.h"
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <stdexcept>
+
+#include <QCommandLineParser>
+#include <QCoreApplication>
+
+#include "Datasets.h"
+#include "Pipeline.h"
+#include "SceneBinding.h"
+#include "scene/SceneRendering.h"
+
+namespace conescope {
+
+glm::dvec3 parseEyeText(const QString& text) {
+    const QStringList parts = text.split(QLatin1Char(','));
+    glm::dvec3 eye(0.0);
+    bool valid = parts.size() == 3;
+    for (int axis = 0; valid && axis < 3; ++axis) {
+        eye[axis] = parts[axis].trimmed().toDouble(&valid);
+        valid = valid && std::isfinite(eye[axis]);
+    }
+    if (!valid) throw std::invalid_argument("eye '" + text.toStdString() + "' is not x,y,z (three numbers)");
+    return eye;
+}
+
+QSize parseSizeText(const QString& text) {
+    const QStringList parts = text.toLower().split(QLatin1Char('x'));
+    bool widthValid = false, heightValid = false;
+    const int width = parts.size() == 2 ? parts[0].toInt(&widthValid) : 0;
+    const int height = parts.size() == 2 ? parts[1].toInt(&heightValid) : 0;
+    if (!widthValid || !heightValid || width < 16 || height < 16 || width > 16384 || height > 16384)
+        throw std::invalid_argument("size '" + text.toStdString() + "' is not WxH with both in 16..16384");
+    return {width, height};
+}
+
+FaceColoring parseFaceColoring(const QString& text) {
+    QStringList names;
+    for (FaceColoring coloring : {FaceColoring::Cluster, FaceColoring::CullDecision, FaceColoring::FaceFacing}) {
+        const QString name = QString::fromStdString(toString(coloring));
+        if (text == name) return coloring;
+        names << name;
+    }
+    throw std::invalid_argument("unknown colouring '" + text.toStdString() + "' (expected one of: " +
+                                names.join(QStringLiteral(", ")).toStdString() + ")");
+}
+
+namespace {
+
+// Names separated by commas, through the core's parse function; the first is the one displayed.
+template <typename Enum, typename Parse>
+std::vector<Enum> parseNameList(const QString& text, Parse parse) {
+    std::vector<Enum> values;
+    for (const QString& name : text.split(QLatin1Char(','), Qt::SkipEmptyParts)) {
+        const Enum value = parse(name.trimmed().toStdString());
+        if (std::find(values.begin(), values.end(), value) == values.end()) values.push_back(value);
+    }
+    if (values.empty()) throw std::invalid_argument("empty list '" + text.toStdString() + "'");
+    return values;
+}
+
+size_t positiveCount(const QString& text, const char* what) {
+    bool valid = false;
+    const qulonglong value = text.toULongLong(&valid);
+    if (!valid) throw std::invalid_argument(std::string(what) + " '" + text.toStdString() + "' is not a count");
+    return size_t(value);
+}
+
+double finiteNumber(const QString& text, const char* what) {
+    bool valid = false;
+    const double value = text.toDouble(&valid);
+    if (!valid || !std::isfinite(value))
+        throw std::invalid_argument(std::string(what) + " '" + text.toStdString() + "' is not a number");
+    return value;
+}
+
+}  // namespace
+
+CommandLineResult parseCommandLine(const QStringList& arguments) {
+    QCommandLineParser parser;
+    parser.setApplicationDescription(QStringLiteral(
+        "ConeScope: cluster back-face culling with normal cones. Opens MESH (or a bundled mesh) in the "
+        "viewer, or with --screenshot renders one frame to a PNG and exits."));
+    const QCommandLineOption help = parser.addHelpOption();
+    const QCommandLineOption version = parser.addVersionOption();
+    const Settings defaults;
+    const QCommandLineOption screenshot(QStringLiteral("screenshot"), QStringLiteral("Render one frame to this PNG and exit."),
+                                        QStringLiteral("OUT.png"));
+    const QCommandLineOption size(QStringLiteral("size"), QStringLiteral("Screenshot size (default 1280x800)."),
+                                  QStringLiteral("WxH"));
+    const QCommandLineOption fromEye(QStringLiteral("from-eye"),
+                                     QStringLiteral("Screenshot what the cull eye sees (culled clusters removed)."));
+    const QCommandLineOption coloring(
+        QStringLiteral("coloring"),
+        QStringLiteral("Face colours: %1, %2 (default) or %3.")
+            .arg(QString::fromStdString(toString(FaceColoring::Cluster)),
+                 QString::fromStdString(toString(FaceColoring::CullDecision)),
+                 QString::fromStdString(toString(FaceColoring::FaceFacing))),
+        QStringLiteral("name"));
+    const QCommandLineOption eye(QStringLiteral("eye"), QStringLiteral("Cull eye position."), QStringLiteral("x,y,z"));
+    const QCommandLineOption builder(QStringLiteral("builder"),
+                                     QStringLiteral("meshlet, kmeans, meshopt or file (default %1).")
+                                         .arg(QString::fromStdString(toString(defaults.builder))),
+                                     QStringLiteral("name"));
+    const QCommandLineOption maxVertices(QStringLiteral("max-verts"), QStringLiteral("Meshlet vertex limit."), QStringLiteral("n"));
+    const QCommandLineOption maxTriangles(QStringLiteral("max-tris"), QStringLiteral("Meshlet triangle limit."), QStringLiteral("n"));
+    const QCommandLineOption clusters(QStringLiteral("clusters"), QStringLiteral("kmeans cluster count (0 = auto)."), QStringLiteral("K"));
+    const QCommandLineOption clusterFile(QStringLiteral("cluster-file"), QStringLiteral("file builder: ids, one per face."),
+                                        QStringLiteral("path"));
+    const QCommandLineOption normalWeight(QStringLiteral("normal-weight"), QStringLiteral("meshlet / kmeans normal weight."),
+                                          QStringLiteral("w"));
+    const QCommandLineOption coneWeight(QStringLiteral("cone-weight"), QStringLiteral("meshopt builder cone weight."),
+                                        QStringLiteral("w"));
+    const QCommandLineOption cone(QStringLiteral("cone"), QStringLiteral("Cone method(s), comma separated; the first is shown."),
+                                  QStringLiteral("names"));
+    const QCommandLineOption test(QStringLiteral("test"), QStringLiteral("Cull test(s), comma separated; the first is shown."),
+                                  QStringLiteral("names"));
+    const QCommandLineOption sphere(QStringLiteral("sphere"), QStringLiteral("ritter or minimal."), QStringLiteral("name"));
+    const QCommandLineOption views(QStringLiteral("views"), QStringLiteral("Orbit views."), QStringLiteral("n"));
+    const QCommandLineOption distance(QStringLiteral("distance"), QStringLiteral("Orbit distance in half AABB diagonals."),
+                                      QStringLiteral("d"));
+    const QCommandLineOption orthographic(QStringLiteral("ortho"), QStringLiteral("Orthographic cull eye."));
+    const QCommandLineOption fixWinding(QStringLiteral("fix-winding"), QStringLiteral("Repair inconsistent face winding."));
+    parser.addOptions({screenshot, size, fromEye, coloring, eye, builder, maxVertices, maxTriangles, clusters, clusterFile,
+                       normalWeight, coneWeight, cone, test, sphere, views, distance, orthographic, fixWinding});
+    parser.addPositionalArgument(QStringLiteral("MESH"), QStringLiteral("Mesh file (.off .ply .obj .stl .vtp .vtk)."),
+                                 QStringLiteral("[MESH]"));
+
+    CommandLineResult result;
+    if (!parser.parse(arguments)) {
+        result.action = CommandLineResult::Action::ExitFailure;
+        result.message = parser.errorText();
+        return result;
+    }
+    if (parser.isSet(help) || parser.isSet(QStringLiteral("help-all"))) {
+        result.action = CommandLineResult::Action::ExitSuccess;
+        if (QCoreApplication::instance()) {
+            result.message = parser.helpText();
+        } else {
+            // QCommandLineParser writes its usage line from the application object: make a
+            // short-lived one, so asking for help needs neither a display nor a window.
+            static int argumentCount = 1;
+            static char programName[] = "conescope";
+            static char* argumentValues[] = {programName, nullptr};
+            QCoreApplication application(argumentCount, argumentValues);
+            result.message = parser.helpText();
+        }
+        return result;
+    }
+    if (parser.isSet(version)) {
+        result.action = CommandLineResult::Action::ExitSuccess;
+        result.message = QStringLiteral("conescope %1").arg(QStringLiteral(CONESCOPE_VERSION));
+        return result;
+    }
+    AppOptions& options = result.options;
+    try {
+        const QStringList positional = parser.positionalArguments();
+        if (positional.size() > 1) throw std::invalid_argument("more than one mesh given");
+        if (!positional.isEmpty()) options.mesh = positional.front();
+        Settings& settings = options.settings;
+        if (parser.isSet(builder)) settings.builder = parseBuilder(parser.value(builder).toStdString());
+        if (parser.isSet(maxVertices)) settings.limits.maxVertices = positiveCount(parser.value(maxVertices), "max-verts");
+        if (parser.isSet(maxTriangles)) settings.limits.maxTriangles = positiveCount(parser.value(maxTriangles), "max-tris");
+        if (parser.isSet(clusters)) settings.clusterCount = positiveCount(parser.value(clusters), "clusters");
+        if (parser.isSet(clusterFile)) settings.clusterFile = parser.value(clusterFile).toStdString();
+        if (parser.isSet(normalWeight)) settings.normalWeight = finiteNumber(parser.value(normalWeight), "normal-weight");
+        if (parser.isSet(coneWeight)) settings.meshoptConeWeight = float(finiteNumber(parser.value(coneWeight), "cone-weight"));
+        if (parser.isSet(cone)) settings.cones = parseNameList<ConeMethod>(parser.value(cone), parseConeMethod);
+        if (parser.isSet(test)) settings.tests = parseNameList<CullTest>(parser.value(test), parseCullTest);
+        if (parser.isSet(sphere)) settings.sphere = parseSphereMethod(parser.value(sphere).toStdString());
+        if (parser.isSet(views)) settings.views = positiveCount(parser.value(views), "views");
+        if (parser.isSet(distance)) settings.distance = finiteNumber(parser.value(distance), "distance");
+        settings.orthographic = settings.orthographic || parser.isSet(orthographic);
+        settings.fixWinding = settings.fixWinding || parser.isSet(fixWinding);
+        if (settings.views == 0) throw std::invalid_argument("views must be at least 1");
+        if (parser.isSet(eye)) options.eye = parseEyeText(parser.value(eye));
+        if (parser.isSet(size)) options.size = parseSizeText(parser.value(size));
+        if (parser.isSet(screenshot)) {
+            options.screenshot = parser.value(screenshot);
+            if (options.screenshot.isEmpty()) throw std::invalid_argument("--screenshot needs a file name");
+        }
+        options.fromEye = parser.isSet(fromEye);
+        if (parser.isSet(coloring)) options.coloring = parseFaceColoring(parser.value(coloring));
+        if (options.screenshot.isEmpty() && (parser.isSet(size) || options.fromEye))
+            throw std::invalid_argument("--size and --from-eye only apply to --screenshot");
+    } catch (const std::exception& error) {
+        result.action = CommandLineResult::Action::ExitFailure;
+        result.message = QString::fromStdString(error.what());
+    }
+    return result;
+}
+
+int runHeadlessScreenshot(const AppOptions& options) {
+    try {
+        const QString meshPath = options.mesh.isEmpty() ? defaultMeshPath() : options.mesh;
+        if (meshPath.isEmpty()) throw std::runtime_error("no mesh given and no bundled mesh found");
+        const Settings& settings = options.settings;
+        const PreparedMesh prepared = loadMesh(meshPath.toStdString(), settings.fixWinding);
+        const ClusterSet clusters = buildClusters(prepared, settings);
+        ClusterScene scene(prepared.mesh(), prepared.world, prepared.faces, clusters.partition, clusters.bounds);
+        const glm::dvec3 eyePosition = options.eye ? *options.eye : startingEyePosition(prepared.box, settings);
+        const EyeMeasurement measurement =
+            measureEye(prepared, clusters, eyeAt(settings, eyePosition, prepared.box), displayedTest(settings));
+        showMeasurement(scene, prepared, measurement);
+        scene.setFaceColoring(options.coloring);
+        if (options.coloring == FaceColoring::FaceFacing) showFaceFacing(scene, prepared, measurement.eye);
+        RenderOptions render;
+        render.width = options.size.width();
+        render.height = options.size.height();
+        render.fromEye = options.fromEye;
+        renderToPng(scene, render, options.screenshot.toStdString());
+        return 0;
+    } catch (const std::exception& error) {
+        std::cerr << "conescope: " << error.what() << '\n';
+        return 1;
+    }
+}
+
+}  // namespace conescope

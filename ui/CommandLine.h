@@ -1,0 +1,49 @@
+// The application's command line (QCommandLineParser): a mesh to open, the run settings, and the
+// headless `--screenshot OUT.png` mode that renders one frame and exits without a window.
+#pragma once
+
+#include <optional>
+
+#include <QSize>
+#include <QString>
+#include <QStringList>
+
+#include <glm/glm.hpp>
+
+#include "core/Settings.h"
+#include "scene/ClusterScene.h"
+
+namespace conescope {
+
+struct AppOptions {
+    QString mesh;                     // empty = the bundled mesh
+    Settings settings;                // Settings{} changed by the options given
+    std::optional<glm::dvec3> eye;    // --eye: the cull eye's position
+    QString screenshot;               // --screenshot: render headlessly to this PNG and exit
+    QSize size{1280, 800};            // --size WxH of the screenshot
+    bool fromEye = false;             // --from-eye: the screenshot shows what the cull eye sees
+    FaceColoring coloring = FaceColoring::CullDecision;  // --coloring, as the window starts
+};
+
+// The scene's names (toString(FaceColoring)). Throws std::invalid_argument.
+FaceColoring parseFaceColoring(const QString& text);
+
+struct CommandLineResult {
+    enum class Action { Run, ExitSuccess, ExitFailure } action = Action::Run;
+    QString message;                  // help/version text on success, the error on failure
+    AppOptions options;
+};
+
+// Parses the arguments (args[0] is the program). Never exits the process itself.
+CommandLineResult parseCommandLine(const QStringList& arguments);
+
+// "x,y,z" as three finite numbers. Throws std::invalid_argument.
+glm::dvec3 parseEyeText(const QString& text);
+// "WxH" with both in [16, 16384]. Throws std::invalid_argument.
+QSize parseSizeText(const QString& text);
+
+// --screenshot: load, cluster, measure the eye, render through the scene's renderToPng. Returns the
+// exit code (0, or 1 with the error on stderr).
+int runHeadlessScreenshot(const AppOptions& options);
+
+}  // namespace conescope

@@ -1,0 +1,58 @@
+#include "Exports.h"
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+
+#include <vtkNew.h>
+#include <vtkPNGWriter.h>
+#include <vtkRenderWindow.h>
+#include <vtkWindowToImageFilter.h>
+
+#include "io/MeshWriter.h"
+#include "io/StatisticsIO.h"
+
+namespace conescope {
+
+StatisticsFormat statisticsFormatOf(const std::string& path) {
+    std::string extension = std::filesystem::path(path).extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    return extension == ".csv" ? StatisticsFormat::Csv : StatisticsFormat::Json;
+}
+
+RunStatistics exportStatistics(const PreparedMesh& prepared, const Settings& settings, const std::string& path,
+                               StatisticsFormat format, const ProgressCallback& progress) {
+    // From the mesh as read: runStatistics repairs the winding itself when the settings ask, as the CLI does.
+    RunStatistics run = runStatistics(*prepared.original, settings, prepared.name, progress);
+    std::ofstream out(path, std::ios::binary);
+    if (!out) throw std::runtime_error(path + ": cannot open for writing");
+    if (format == StatisticsFormat::Csv)
+        writeStatisticsCsv(run, out);
+    else
+        writeStatisticsJson(run, out);
+    out.close();
+    if (!out) throw std::runtime_error(path + ": write failed");
+    return run;
+}
+
+void exportPartition(const PreparedMesh& prepared, const ClusterSet& clusters, const std::string& path) {
+    writePolyData(prepared.mesh(), path, partitionFaceArrays(prepared, clusters));
+}
+
+void saveRenderWindowPng(vtkRenderWindow* window, const std::string& path) {
+    vtkNew<vtkWindowToImageFilter> capture;
+    capture->SetInput(window);
+    capture->SetInputBufferTypeToRGB();
+    capture->ReadFrontBufferOff();
+    capture->Update();
+    vtkNew<vtkPNGWriter> writer;
+    writer->SetFileName(path.c_str());
+    writer->SetInputConnection(capture->GetOutputPort());
+    writer->Write();
+    if (writer->GetErrorCode() != 0 || !std::filesystem::exists(path) || std::filesystem::file_size(path) == 0)
+        throw std::runtime_error(path + ": cannot write the PNG");
+}
+
+}  // namespace conescope

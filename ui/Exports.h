@@ -1,0 +1,34 @@
+// What the window writes to files: cull statistics in the CLI's format (runStatistics with the
+// window's settings, then StatisticsIO), the partition as a mesh with per-face arrays, and PNG
+// screenshots of a render window.
+#pragma once
+
+#include <string>
+
+#include "Pipeline.h"
+
+class vtkRenderWindow;
+
+namespace conescope {
+
+enum class StatisticsFormat { Json, Csv };
+
+// ".csv" (any case) is CSV, everything else JSON, like `conescope-cli stats -o`.
+StatisticsFormat statisticsFormatOf(const std::string& path);
+
+// runStatistics on the mesh as read with `settings` (their eye set for one eye, unset for the
+// orbit), written as `format`. Throws std::runtime_error naming the path when it cannot be written,
+// OperationCancelled when `progress` cancels.
+RunStatistics exportStatistics(const PreparedMesh& prepared, const Settings& settings, const std::string& path,
+                               StatisticsFormat format, const ProgressCallback& progress = {});
+
+// The culled mesh with cluster_id and the per-cluster cone and bound arrays per face
+// (partitionFaceArrays), through writePolyData: .vtp or .vtk keep the arrays, and the `file`
+// builder reads cluster_id back. Throws MeshWriteError.
+void exportPartition(const PreparedMesh& prepared, const ClusterSet& clusters, const std::string& path);
+
+// The window's current picture as PNG (vtkWindowToImageFilter, back buffer re-rendered).
+// Throws std::runtime_error naming the path when it cannot be written.
+void saveRenderWindowPng(vtkRenderWindow* window, const std::string& path);
+
+}  // namespace conescope

@@ -1,0 +1,9 @@
+#include "ObserverStyle.h"
+
+#include <vtkObjectFactory.h>
+
+namespace conescope {
+
+vtkStandardNewMacro(ObserverStyle);
+
+}  // namespace conescope

@@ -1,0 +1,203 @@
+#include "Pipeline.h"
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <stdexcept>
+
+#include "io/MeshReader.h"
+
+namespace conescope {
+
+namespace {
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// Calls the callback and turns a refusal into the core's cancellation exception, like runStatistics.
+void report(const ProgressCallback& progress, double fraction, const std::string& stage) {
+    if (progress && !progress(fraction, stage)) throw OperationCancelled();
+}
+
+}  // namespace
+
+ConeMethod displayedCone(const Settings& settings) {
+    return settings.cones.empty() ? ConeMethod::Minimal : settings.cones.front();
+}
+
+CullTest displayedTest(const Settings& settings) {
+    return settings.tests.empty() ? CullTest::Vertices : settings.tests.front();
+}
+
+bool partitionChanged(const Settings& before, const Settings& after) {
+    if (before.builder != after.builder) return true;
+    switch (after.builder) {
+        case Builder::Meshlet:
+            return before.limits.maxVertices != after.limits.maxVertices ||
+                   before.limits.maxTriangles != after.limits.maxTriangles || before.normalWeight != after.normalWeight;
+        case Builder::KMeans:
+            return before.clusterCount != after.clusterCount || before.normalWeight != after.normalWeight ||
+                   (after.clusterCount == 0 && before.limits.maxTriangles != after.limits.maxTriangles);
+        case Builder::Meshopt:
+            return before.limits.maxVertices != after.limits.maxVertices ||
+                   before.limits.maxTriangles != after.limits.maxTriangles ||
+                   before.meshoptConeWeight != after.meshoptConeWeight;
+        case Builder::File: return before.clusterFile != after.clusterFile;
+    }
+    return true;
+}
+
+bool boundsChanged(const Settings& before, const Settings& after) {
+    return partitionChanged(before, after) || displayedCone(before) != displayedCone(after) ||
+           before.sphere != after.sphere;
+}
+
+PreparedMesh prepareMesh(std::shared_ptr<const Mesh> mesh, const std::string& path, bool fixWinding,
+                         const ProgressCallback& progress) {
+    const auto start = std::chrono::steady_clock::now();
+    PreparedMesh prepared;
+    prepared.path = path;
+    prepared.name = std::filesystem::path(path).filename().string();
+    prepared.original = mesh;
+    prepared.culled = mesh;
+    prepared.fixWindingAsked = fixWinding;
+    report(progress, 0.3, "face geometry");
+    prepared.faces = computeFaceGeometry(*mesh);
+    report(progress, 0.5, "mesh checks");
+    prepared.report = checkMesh(*mesh, prepared.faces);
+    // The same repair runStatistics makes, so the window culls the mesh an export would.
+    if (fixWinding && prepared.report.inconsistentEdges > 0) {
+        report(progress, 0.6, "winding repair");
+        auto repaired = std::make_shared<Mesh>(*mesh);
+        prepared.windingFixedFaces = conescope::fixWinding(*repaired);
+        if (prepared.windingFixedFaces > 0) {
+            prepared.faces = computeFaceGeometry(*repaired);
+            prepared.culled = repaired;
+        }
+    }
+    report(progress, 0.8, "world positions");
+    prepared.world = worldPositions(prepared.mesh());
+    prepared.box = computeAabb(prepared.world);
+    prepared.triangles = triangleCount(prepared.mesh());
+    prepared.prepareSeconds = secondsSince(start);
+    return prepared;
+}
+
+PreparedMesh loadMesh(const std::string& path, bool fixWinding, const ProgressCallback& progress) {
+    report(progress, 0.0, "reading " + std::filesystem::path(path).filename().string());
+    const auto start = std::chrono::steady_clock::now();
+    auto mesh = std::make_shared<const Mesh>(readMesh(path));
+    const double readSeconds = secondsSince(start);
+    PreparedMesh prepared = prepareMesh(mesh, path, fixWinding, progress);
+    prepared.prepareSeconds += readSeconds;
+    return prepared;
+}
+
+ClusterSet buildClusters(const PreparedMesh& prepared, const Settings& settings, const ClusterSet* previous,
+                         const ProgressCallback& progress) {
+    ClusterSet clusters;
+    clusters.settings = settings;
+    if (previous && !partitionChanged(previous->settings, settings)) {
+        clusters.partition = previous->partition;
+        clusters.partitionSeconds = previous->partitionSeconds;
+    } else {
+        report(progress, 0.0, "clusters (" + toString(settings.builder) + ")");
+        const auto start = std::chrono::steady_clock::now();
+        clusters.partition = buildPartition(prepared.mesh(), prepared.faces, settings);
+        clusters.partitionSeconds = secondsSince(start);
+    }
+    report(progress, 0.6, "bounds (" + toString(displayedCone(settings)) + ")");
+    const auto start = std::chrono::steady_clock::now();
+    clusters.bounds = computeClusterBounds(prepared.mesh(), prepared.world, prepared.faces, clusters.partition,
+                                           displayedCone(settings), settings.sphere);
+    clusters.boundsSeconds = secondsSince(start);
+    report(progress, 1.0, "clusters ready");
+    return clusters;
+}
+
+CullingInput cullingInput(const PreparedMesh& prepared, const ClusterSet& clusters) {
+    return CullingInput{prepared.mesh(), prepared.world, prepared.faces, clusters.bounds};
+}
+
+Eye eyeAt(const Settings& settings, const glm::dvec3& position, const Aabb& worldBox) {
+    Settings single = settings;
+    single.eye = position;
+    return viewsFor(single, worldBox).front();
+}
+
+std::vector<Eye> orbitOf(const Settings& settings, const Aabb& worldBox) {
+    Settings orbit = settings;
+    orbit.eye.reset();
+    return viewsFor(orbit, worldBox);
+}
+
+EyeMeasurement measureEye(const PreparedMesh& prepared, const ClusterSet& clusters, const Eye& eye, CullTest test) {
+    const CullingInput input = cullingInput(prepared, clusters);
+    EyeMeasurement measurement;
+    measurement.eye = eye;
+    measurement.culled = cullClusters(input, eye, test);
+    measurement.statistics = measureCulling(input, {eye}, test);
+    return measurement;
+}
+
+std::vector<uint8_t> allBackFacingClusters(const EyeMeasurement& measurement) {
+    std::vector<uint8_t> backFacing(measurement.statistics.clusters.size());
+    for (size_t c = 0; c < backFacing.size(); ++c) backFacing[c] = measurement.statistics.clusters[c].timesBackFacing > 0;
+    return backFacing;
+}
+
+glm::dvec3 startingEyePosition(const Aabb& worldBox, const Settings& settings) {
+    const glm::dvec3 direction = glm::normalize(glm::dvec3(0.45, 0.5, 1.0));
+    const double radius = std::max(double(worldBox.halfDiagonal()), 1e-6);
+    return glm::dvec3(worldBox.center()) + settings.distance * radius * direction;
+}
+
+std::vector<ViewStatistics> measureOrbit(const PreparedMesh& prepared, const ClusterSet& clusters,
+                                         const Settings& settings, const ProgressCallback& progress) {
+    const CullingInput input = cullingInput(prepared, clusters);
+    const std::vector<Eye> views = orbitOf(settings, prepared.box);
+    // measureCulling has no callback; measuring in slices lets a cancel land between slices.
+    const size_t sliceSize = 16;
+    std::vector<ViewStatistics> rows;
+    for (size_t first = 0; first < views.size(); first += sliceSize) {
+        report(progress, double(first) / double(views.size()), "orbit statistics");
+        const std::vector<Eye> slice(views.begin() + first, views.begin() + std::min(views.size(), first + sliceSize));
+        for (ViewStatistics& view : measureCulling(input, slice, displayedTest(settings)).views) {
+            view.view += first;
+            rows.push_back(view);
+        }
+    }
+    return rows;
+}
+
+Settings exportSettings(const Settings& settings, const std::optional<glm::dvec3>& eye) {
+    Settings result = settings;
+    result.eye = eye;
+    return result;
+}
+
+std::map<std::string, std::vector<double>> partitionFaceArrays(const PreparedMesh& prepared, const ClusterSet& clusters) {
+    const size_t faceCount = prepared.mesh().faceCount();
+    std::map<std::string, std::vector<double>> arrays;
+    auto spread = [&](const std::string& name, auto valueOfCluster) {
+        std::vector<double>& values = arrays[name];
+        values.resize(faceCount);
+        for (size_t f = 0; f < faceCount; ++f) values[f] = valueOfCluster(clusters.partition.clusterOfFace[f]);
+    };
+    const ClusterBounds& bounds = clusters.bounds;
+    spread("cluster_id", [](uint32_t c) { return double(c); });
+    spread("cone_half_angle_deg", [&](uint32_t c) { return glm::degrees(bounds.cones[c].halfAngle()); });
+    spread("cone_cullable", [&](uint32_t c) { return bounds.cones[c].cullable ? 1.0 : 0.0; });
+    for (int axis = 0; axis < 3; ++axis) {
+        const std::string suffix = std::string("_") + "xyz"[axis];
+        spread("cone_axis" + suffix, [&](uint32_t c) { return bounds.cones[c].axis[axis]; });
+        spread("sphere_center" + suffix, [&](uint32_t c) { return bounds.spheres[c].center[axis]; });
+        spread("aabb_min" + suffix, [&](uint32_t c) { return double(bounds.boxes[c].min[axis]); });
+        spread("aabb_max" + suffix, [&](uint32_t c) { return double(bounds.boxes[c].max[axis]); });
+    }
+    spread("sphere_radius", [&](uint32_t c) { return bounds.spheres[c].radius; });
+    return arrays;
+}
+
+}  // namespace conescope

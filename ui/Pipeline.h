@@ -1,0 +1,113 @@
+// The stages the application runs, as plain functions over core types: prepare a loaded mesh,
+// build its clusters, measure one eye, measure the orbit. Each stage makes exactly the core calls
+// runStatistics makes, in the same order, so what the window shows and what an export (or the CLI)
+// writes for the same Settings agree number for number. No Qt widgets and no VTK here: the headless
+// screenshot path and the window share them.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/Culling.h"
+#include "core/MeshChecks.h"
+#include "core/Settings.h"
+#include "core/Statistics.h"
+
+namespace conescope {
+
+// A mesh ready for clustering: the mesh as culled (winding repaired when asked), its world
+// positions, face geometry and world box, plus the report of its problems.
+struct PreparedMesh {
+    std::string path;
+    std::string name;                 // file name, as statistics record it
+    std::shared_ptr<const Mesh> original;  // as read: what runStatistics (exports) starts from
+    std::shared_ptr<const Mesh> culled;    // the original, or its repaired copy
+    const Mesh& mesh() const { return *culled; }
+    std::vector<glm::vec3> world;
+    FaceGeometry faces;
+    Aabb box;
+    MeshReport report;
+    bool fixWindingAsked = false;     // the settings.fixWinding it was prepared with
+    size_t windingFixedFaces = 0;
+    size_t triangles = 0;
+    double prepareSeconds = 0.0;
+};
+
+// The clusters of a prepared mesh for the builder, cone and sphere of `settings`.
+struct ClusterSet {
+    Settings settings;                // the settings the partition and bounds were built with
+    Partition partition;
+    ClusterBounds bounds;
+    double partitionSeconds = 0.0;
+    double boundsSeconds = 0.0;
+};
+
+// The first cone method and cull test of the settings: the ones the window shows.
+ConeMethod displayedCone(const Settings& settings);
+CullTest displayedTest(const Settings& settings);
+
+// True when going from `before` to `after` needs a new partition (builder or its parameters).
+bool partitionChanged(const Settings& before, const Settings& after);
+// True when it needs new bounds (a new partition, cone method or sphere method).
+bool boundsChanged(const Settings& before, const Settings& after);
+
+// Reads nothing: takes a mesh already read and computes what every later stage needs, exactly as
+// runStatistics does (face geometry, mesh checks, winding repair when settings.fixWinding).
+// `progress` may cancel between stages (it then throws OperationCancelled).
+PreparedMesh prepareMesh(std::shared_ptr<const Mesh> mesh, const std::string& path, bool fixWinding,
+                         const ProgressCallback& progress = {});
+
+// Reads the file (readMesh, throws MeshReadError) and prepares it.
+PreparedMesh loadMesh(const std::string& path, bool fixWinding, const ProgressCallback& progress = {});
+
+// Partition (buildPartition) then bounds for the displayed cone (computeClusterBounds). Reuses
+// `previous` partition when only the cone or sphere changed.
+ClusterSet buildClusters(const PreparedMesh& prepared, const Settings& settings, const ClusterSet* previous = nullptr,
+                         const ProgressCallback& progress = {});
+
+CullingInput cullingInput(const PreparedMesh& prepared, const ClusterSet& clusters);
+
+// The eye a run with settings.eye = position makes (viewsFor): perspective at the point, or
+// orthographic looking from it to the mesh centre. Throws std::invalid_argument for an
+// orthographic eye at the centre.
+Eye eyeAt(const Settings& settings, const glm::dvec3& position, const Aabb& worldBox);
+
+// The standard orbit of the settings (views, distance, projection), ignoring settings.eye.
+std::vector<Eye> orbitOf(const Settings& settings, const Aabb& worldBox);
+
+// What the window shows for one eye: the cull decision of every cluster for `test`, and the
+// statistics of that single view (measureCulling over {eye}).
+struct EyeMeasurement {
+    Eye eye;
+    std::vector<uint8_t> culled;      // 1 = culled, per cluster
+    TestStatistics statistics;        // statistics.views[0] is this eye
+    const ViewStatistics& view() const { return statistics.views.front(); }
+};
+EyeMeasurement measureEye(const PreparedMesh& prepared, const ClusterSet& clusters, const Eye& eye, CullTest test);
+
+// Clusters whose every face faces away from the measured eye (1 = yes), as the oracle inside
+// measureCulling counted them: what the scene colours a missed cull.
+std::vector<uint8_t> allBackFacingClusters(const EyeMeasurement& measurement);
+
+// Where the cull eye starts on a new mesh: on the orbit sphere (settings.distance half-diagonals
+// from the centre), above and in front, so the first picture shows culled and drawn clusters.
+glm::dvec3 startingEyePosition(const Aabb& worldBox, const Settings& settings);
+
+// The per-view rows of the displayed test over the standard orbit (measureCulling over orbitOf):
+// what the efficiency plot draws. Cancellable between slices of views.
+std::vector<ViewStatistics> measureOrbit(const PreparedMesh& prepared, const ClusterSet& clusters,
+                                         const Settings& settings, const ProgressCallback& progress = {});
+
+// The settings for a statistics export: the current settings with the eye set (current eye) or
+// cleared (orbit).
+Settings exportSettings(const Settings& settings, const std::optional<glm::dvec3>& eye);
+
+// Per-face arrays describing the partition for writePolyData: cluster_id plus each cluster's cone
+// and bounds spread to its faces (cone_half_angle_deg, cone_axis_x/y/z, cone_cullable,
+// sphere_center_x/y/z, sphere_radius, aabb_min_x/y/z, aabb_max_x/y/z).
+std::map<std::string, std::vector<double>> partitionFaceArrays(const PreparedMesh& prepared, const ClusterSet& clusters);
+
+}  // namespace conescope

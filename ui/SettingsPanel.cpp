@@ -1,0 +1,220 @@
+#include "SettingsPanel.h"
+
+#include <algorithm>
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFileDialog>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QSignalBlocker>
+#include <QSpinBox>
+#include <QVBoxLayout>
+
+namespace conescope {
+
+namespace {
+
+// A combo box listing an enum by the names the CLI accepts; the item data is the enum's index.
+template <typename Enum>
+QComboBox* enumBox(const std::vector<Enum>& values, QWidget* parent) {
+    auto* box = new QComboBox(parent);
+    for (Enum value : values) box->addItem(QString::fromStdString(toString(value)), int(value));
+    return box;
+}
+
+template <typename Enum>
+Enum enumOf(const QComboBox* box) {
+    return Enum(box->currentData().toInt());
+}
+
+template <typename Enum>
+void selectEnum(QComboBox* box, Enum value) {
+    box->setCurrentIndex(std::max(0, box->findData(int(value))));
+}
+
+QSpinBox* countBox(int minimum, int maximum, QWidget* parent) {
+    auto* box = new QSpinBox(parent);
+    box->setRange(minimum, maximum);
+    // Typing "124" must not rebuild the clusters for "1" and "12" first.
+    box->setKeyboardTracking(false);
+    return box;
+}
+
+QDoubleSpinBox* weightBox(double maximum, double step, QWidget* parent) {
+    auto* box = new QDoubleSpinBox(parent);
+    box->setRange(0.0, maximum);
+    box->setSingleStep(step);
+    box->setDecimals(3);
+    box->setKeyboardTracking(false);
+    return box;
+}
+
+// Puts `value` first in `list`, keeping the other entries once.
+template <typename Enum>
+std::vector<Enum> withFirst(std::vector<Enum> list, Enum value) {
+    list.erase(std::remove(list.begin(), list.end(), value), list.end());
+    list.insert(list.begin(), value);
+    return list;
+}
+
+const std::vector<SphereMethod>& allSphereMethods() {
+    static const std::vector<SphereMethod> all{SphereMethod::Ritter, SphereMethod::Minimal};
+    return all;
+}
+
+}  // namespace
+
+SettingsPanel::SettingsPanel(QWidget* parent) : QWidget(parent) {
+    builder_ = enumBox(allBuilders(), this);
+    builder_->setToolTip(tr("How faces are grouped into clusters"));
+    // meshoptimizer's meshlets hold at most 255 vertices and 512 triangles.
+    maxVertices_ = countBox(3, 255, this);
+    maxTriangles_ = countBox(1, 512, this);
+    clusterCount_ = countBox(0, 10000000, this);
+    clusterCount_->setSpecialValueText(tr("auto (triangles / max triangles)"));
+    clusterFile_ = new QLineEdit(this);
+    clusterFile_->setPlaceholderText(tr("the mesh's cluster_id array"));
+    clusterFile_->setClearButtonEnabled(true);
+    browseClusterFile_ = new QPushButton(tr("Browse..."), this);
+    normalWeight_ = weightBox(100.0, 0.25, this);
+    normalWeight_->setToolTip(tr("meshlet / kmeans: preference for narrow cones (0 = locality only)"));
+    coneWeight_ = weightBox(1.0, 0.05, this);
+    coneWeight_->setToolTip(tr("meshopt builder: meshopt_buildMeshlets' cone_weight"));
+
+    cone_ = enumBox(allConeMethods(), this);
+    test_ = enumBox(allCullTests(), this);
+    sphere_ = enumBox(allSphereMethods(), this);
+    projection_ = new QComboBox(this);
+    projection_->addItem(tr("perspective"), false);
+    projection_->addItem(tr("orthographic"), true);
+    fixWinding_ = new QCheckBox(tr("Fix inconsistent winding"), this);
+    views_ = countBox(1, 100000, this);
+    distance_ = weightBox(1000.0, 0.25, this);
+    distance_->setMinimum(0.01);
+    distance_->setToolTip(tr("orbit distance in half AABB diagonals"));
+
+    auto* clusterFileRow = new QHBoxLayout;
+    clusterFileRow->addWidget(clusterFile_, 1);
+    clusterFileRow->addWidget(browseClusterFile_);
+
+    auto* clustersGroup = new QGroupBox(tr("Clusters"), this);
+    auto* clustersForm = new QFormLayout(clustersGroup);
+    clustersForm->addRow(tr("&Builder"), builder_);
+    clustersForm->addRow(tr("Max vertices"), maxVertices_);
+    clustersForm->addRow(tr("Max triangles"), maxTriangles_);
+    clustersForm->addRow(tr("Clusters (K)"), clusterCount_);
+    clustersForm->addRow(tr("Cluster file"), clusterFileRow);
+    clustersForm->addRow(tr("Normal weight"), normalWeight_);
+    clustersForm->addRow(tr("Cone weight"), coneWeight_);
+    clustersForm->addRow(fixWinding_);
+
+    auto* cullingGroup = new QGroupBox(tr("Culling"), this);
+    auto* cullingForm = new QFormLayout(cullingGroup);
+    cullingForm->addRow(tr("&Cone"), cone_);
+    cullingForm->addRow(tr("&Test"), test_);
+    cullingForm->addRow(tr("Sphere"), sphere_);
+    cullingForm->addRow(tr("&Projection"), projection_);
+
+    auto* orbitGroup = new QGroupBox(tr("Orbit"), this);
+    auto* orbitForm = new QFormLayout(orbitGroup);
+    orbitForm->addRow(tr("Views"), views_);
+    orbitForm->addRow(tr("Distance"), distance_);
+
+    auto* layout = new QVBoxLayout(this);
+    layout->addWidget(clustersGroup);
+    layout->addWidget(cullingGroup);
+    layout->addWidget(orbitGroup);
+    layout->addStretch(1);
+
+    setSettings(Settings{});
+
+    for (QComboBox* box : {builder_, cone_, test_, sphere_, projection_})
+        connect(box, qOverload<int>(&QComboBox::currentIndexChanged), this, &SettingsPanel::emitChanged);
+    for (QSpinBox* box : {maxVertices_, maxTriangles_, clusterCount_, views_})
+        connect(box, qOverload<int>(&QSpinBox::valueChanged), this, &SettingsPanel::emitChanged);
+    for (QDoubleSpinBox* box : {normalWeight_, coneWeight_, distance_})
+        connect(box, qOverload<double>(&QDoubleSpinBox::valueChanged), this, &SettingsPanel::emitChanged);
+    connect(clusterFile_, &QLineEdit::editingFinished, this, [this]() {
+        if (clusterFile_->text().toStdString() != base_.clusterFile) emitChanged();
+    });
+    connect(fixWinding_, &QCheckBox::toggled, this, &SettingsPanel::emitChanged);
+    connect(browseClusterFile_, &QPushButton::clicked, this, &SettingsPanel::browseClusterFile);
+}
+
+Settings SettingsPanel::settings() const {
+    Settings settings = base_;
+    settings.builder = enumOf<Builder>(builder_);
+    settings.limits.maxVertices = size_t(maxVertices_->value());
+    settings.limits.maxTriangles = size_t(maxTriangles_->value());
+    settings.clusterCount = size_t(clusterCount_->value());
+    settings.clusterFile = clusterFile_->text().toStdString();
+    settings.normalWeight = normalWeight_->value();
+    settings.meshoptConeWeight = float(coneWeight_->value());
+    settings.cones = withFirst(base_.cones, enumOf<ConeMethod>(cone_));
+    settings.tests = withFirst(base_.tests, enumOf<CullTest>(test_));
+    settings.sphere = enumOf<SphereMethod>(sphere_);
+    settings.orthographic = projection_->currentData().toBool();
+    settings.fixWinding = fixWinding_->isChecked();
+    settings.views = size_t(views_->value());
+    settings.distance = distance_->value();
+    return settings;
+}
+
+void SettingsPanel::setSettings(const Settings& settings) {
+    base_ = settings;
+    const QSignalBlocker blockers[] = {
+        QSignalBlocker(builder_),      QSignalBlocker(maxVertices_), QSignalBlocker(maxTriangles_),
+        QSignalBlocker(clusterCount_), QSignalBlocker(clusterFile_), QSignalBlocker(normalWeight_),
+        QSignalBlocker(coneWeight_),   QSignalBlocker(cone_),        QSignalBlocker(test_),
+        QSignalBlocker(sphere_),       QSignalBlocker(projection_),  QSignalBlocker(fixWinding_),
+        QSignalBlocker(views_),        QSignalBlocker(distance_)};
+    selectEnum(builder_, settings.builder);
+    maxVertices_->setValue(int(settings.limits.maxVertices));
+    maxTriangles_->setValue(int(settings.limits.maxTriangles));
+    clusterCount_->setValue(int(settings.clusterCount));
+    clusterFile_->setText(QString::fromStdString(settings.clusterFile));
+    normalWeight_->setValue(settings.normalWeight);
+    coneWeight_->setValue(double(settings.meshoptConeWeight));
+    if (!settings.cones.empty()) selectEnum(cone_, settings.cones.front());
+    if (!settings.tests.empty()) selectEnum(test_, settings.tests.front());
+    selectEnum(sphere_, settings.sphere);
+    projection_->setCurrentIndex(settings.orthographic ? 1 : 0);
+    fixWinding_->setChecked(settings.fixWinding);
+    views_->setValue(int(settings.views));
+    distance_->setValue(settings.distance);
+    enableForBuilder();
+}
+
+void SettingsPanel::emitChanged() {
+    enableForBuilder();
+    base_ = settings();
+    emit settingsChanged(base_);
+}
+
+void SettingsPanel::enableForBuilder() {
+    const Builder builder = enumOf<Builder>(builder_);
+    const bool meshletLimits = builder == Builder::Meshlet || builder == Builder::Meshopt;
+    maxVertices_->setEnabled(meshletLimits);
+    // kmeans derives its default cluster count from the triangle limit.
+    maxTriangles_->setEnabled(meshletLimits || (builder == Builder::KMeans && clusterCount_->value() == 0));
+    clusterCount_->setEnabled(builder == Builder::KMeans);
+    clusterFile_->setEnabled(builder == Builder::File);
+    browseClusterFile_->setEnabled(builder == Builder::File);
+    normalWeight_->setEnabled(builder == Builder::Meshlet || builder == Builder::KMeans);
+    coneWeight_->setEnabled(builder == Builder::Meshopt);
+}
+
+void SettingsPanel::browseClusterFile() {
+    const QString path = QFileDialog::getOpenFileName(this, tr("Cluster id file"), clusterFile_->text(),
+                                                      tr("Cluster ids (*.txt *.ids);;All files (*)"));
+    if (path.isEmpty()) return;
+    clusterFile_->setText(path);
+    emitChanged();
+}
+
+}  // namespace conescope

@@ -1,0 +1,99 @@
+#include "StatisticsPanel.h"
+
+#include <QFormLayout>
+#include <QLabel>
+#include <QLocale>
+
+namespace conescope {
+
+namespace {
+
+QString count(size_t value) { return QLocale().toString(qulonglong(value)); }
+QString percent(double fraction) { return QString::number(100.0 * fraction, 'f', 1) + QLatin1Char('%'); }
+QString seconds(double value) { return QString::number(1000.0 * value, 'f', 1) + QStringLiteral(" ms"); }
+
+}  // namespace
+
+StatisticsPanel::StatisticsPanel(QWidget* parent) : QWidget(parent) {
+    form_ = new QFormLayout(this);
+    form_->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
+    // The current eye's numbers first: they change as the eye moves; the mesh's below.
+    for (const char* name : {"eye", "clusters culled", "triangles culled", "back-facing triangles", "efficiency",
+                             "false culls", "missed clusters", "time per test", "mesh", "faces", "triangles",
+                             "degenerate faces", "mesh problems", "clusters", "uncullable clusters", "builder",
+                             "cone / test", "build time"})
+        addRow(QString::fromLatin1(name));
+    clear();
+}
+
+QLabel* StatisticsPanel::addRow(const QString& name) {
+    auto* label = new QLabel(this);
+    label->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    label->setWordWrap(true);
+    label->setObjectName(name);
+    form_->addRow(name + QLatin1Char(':'), label);
+    values_[name] = label;
+    return label;
+}
+
+QString StatisticsPanel::value(const QString& row) const {
+    auto found = values_.find(row);
+    return found == values_.end() ? QString() : found->second->text();
+}
+
+void StatisticsPanel::clear() {
+    for (auto& [name, label] : values_) label->setText(QStringLiteral("-"));
+}
+
+void StatisticsPanel::showClusters(const PreparedMesh& prepared, const ClusterSet& clusters) {
+    values_["mesh"]->setText(QString::fromStdString(prepared.name));
+    values_["faces"]->setText(count(prepared.mesh().faceCount()));
+    values_["triangles"]->setText(count(prepared.triangles));
+    values_["degenerate faces"]->setText(count(prepared.faces.degenerateCount));
+    const MeshReport& report = prepared.report;
+    QStringList problems;
+    if (report.openEdges) problems << tr("%1 open edges").arg(report.openEdges);
+    if (report.nonManifoldEdges) problems << tr("%1 non-manifold edges").arg(report.nonManifoldEdges);
+    if (report.inconsistentEdges) problems << tr("%1 inconsistently wound edges").arg(report.inconsistentEdges);
+    if (report.duplicateFaces) problems << tr("%1 duplicate faces").arg(report.duplicateFaces);
+    if (prepared.windingFixedFaces) problems << tr("%1 faces flipped").arg(prepared.windingFixedFaces);
+    values_["mesh problems"]->setText(problems.isEmpty() ? tr("none") : problems.join(QStringLiteral(", ")));
+    values_["clusters"]->setText(count(clusters.partition.clusterCount));
+    values_["builder"]->setText(QString::fromStdString(toString(clusters.settings.builder)));
+    values_["cone / test"]->setText(QStringLiteral("%1 / %2").arg(
+        QString::fromStdString(toString(displayedCone(clusters.settings))),
+        QString::fromStdString(toString(displayedTest(clusters.settings)))));
+    values_["build time"]->setText(tr("partition %1, bounds %2")
+                                       .arg(seconds(clusters.partitionSeconds), seconds(clusters.boundsSeconds)));
+}
+
+void StatisticsPanel::showEye(const EyeMeasurement& measurement) {
+    const ViewStatistics& view = measurement.view();
+    const Eye& eye = measurement.eye;
+    values_["eye"]->setText(eye.orthographic
+                                ? tr("orthographic along (%1, %2, %3)")
+                                      .arg(eye.direction.x, 0, 'g', 4).arg(eye.direction.y, 0, 'g', 4).arg(eye.direction.z, 0, 'g', 4)
+                                : tr("(%1, %2, %3)")
+                                      .arg(eye.position.x, 0, 'g', 5).arg(eye.position.y, 0, 'g', 5).arg(eye.position.z, 0, 'g', 5));
+    values_["clusters culled"]->setText(tr("%1 / %2").arg(count(view.clustersCulled), count(measurement.culled.size())));
+    values_["triangles culled"]->setText(count(view.trianglesCulled));
+    values_["back-facing triangles"]->setText(count(view.backFacingTriangles));
+    values_["efficiency"]->setText(percent(view.efficiency));
+    values_["missed clusters"]->setText(count(view.missedClusters));
+    QLabel* falseCulls = values_["false culls"];
+    falseCulls->setText(count(view.falseCulls));
+    // A false cull is a bug in a test: make it impossible to overlook.
+    falseCulls->setStyleSheet(view.falseCulls ? QStringLiteral("color: white; background: #d00000; font-weight: bold;")
+                                              : QStringLiteral("color: #207020;"));
+    values_["time per test"]->setText(tr("%1 ns per cluster").arg(view.nanosecondsPerCluster, 0, 'f', 1));
+    values_["uncullable clusters"]->setText(count(measurement.statistics.uncullableClusters));
+}
+
+void StatisticsPanel::showEyeError(const QString& message) {
+    values_["eye"]->setText(message);
+    for (const char* name : {"clusters culled", "triangles culled", "back-facing triangles", "efficiency",
+                             "missed clusters", "false culls", "time per test"})
+        values_[QString::fromLatin1(name)]->setText(QStringLiteral("-"));
+}
+
+}  // namespace conescope
