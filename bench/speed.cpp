@@ -34,7 +34,6 @@ const MeshletLimits kLimits{64, 124};
 // A mesh with its clusters (meshlet builder, minimal cone), their float batch, meshoptimizer's
 // clusters for the same budget, and 128 orbit eyes at distance 3 to cycle through.
 struct Scene {
-    std::string name;
     Mesh mesh;
     std::vector<glm::vec3> world;
     FaceGeometry faces;
@@ -44,9 +43,8 @@ struct Scene {
     std::vector<Eye> eyes;
 };
 
-std::unique_ptr<Scene> makeScene(const std::string& name, Mesh mesh) {
+std::unique_ptr<Scene> makeScene(Mesh mesh) {
     auto scene = std::make_unique<Scene>();
-    scene->name = name;
     scene->mesh = std::move(mesh);
     scene->world = worldPositions(scene->mesh);
     scene->faces = computeFaceGeometry(scene->mesh);
@@ -72,11 +70,7 @@ const Mesh& largeMesh() {
 const Scene& scene(bool large) {
     static std::map<bool, std::unique_ptr<Scene>> scenes;
     auto& slot = scenes[large];
-    if (!slot) {
-        const std::string name = bench::meshName(meshPath);
-        slot = large ? makeScene(name + "-" + std::to_string(triangleCount(largeMesh())), largeMesh())
-                     : makeScene(name, baseMesh());
-    }
+    if (!slot) slot = makeScene(large ? largeMesh() : baseMesh());
     return *slot;
 }
 

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <stdexcept>
 #include <vector>
 
 #include "core/Culling.h"
@@ -52,7 +53,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     for (const glm::vec3& p : world)
         if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) return 0;  // matrix overflowed
     const FaceGeometry faces = computeFaceGeometry(mesh);
-    const Partition partition = buildMeshlets(mesh, faces, MeshletLimits{8 + in.byte() % 32, 4 + in.byte() % 32});
+    const Partition partition = buildMeshlets(mesh, faces, MeshletLimits{size_t(8 + in.byte() % 32), size_t(4 + in.byte() % 32)});
     std::vector<Eye> eyes = {Eye::perspective({0, 0, 0}), Eye::orthographicAlong({0, 0, 1})};
     while (!in.empty()) {
         const glm::dvec3 point(in.number(), in.number(), in.number());

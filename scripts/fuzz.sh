@@ -7,10 +7,10 @@
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 seconds=${1:-60}
-build=${CONESCOPE_FUZZ_BUILD_DIR:-$root/build-fuzz}
+build=${CONESCOPE_SANITIZE_BUILD_DIR:-$root/build-sanitize}
 "$root/scripts/install-dependencies.sh"
 CC=clang CXX=clang++ cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCONESCOPE_FUZZ=ON \
-  -DCONESCOPE_BUILD_GUI=OFF -DCONESCOPE_BUILD_TESTS=OFF -DCONESCOPE_BUILD_BENCH=OFF >/dev/null
+  -DCONESCOPE_BUILD_GUI=OFF -DCONESCOPE_BUILD_TESTS=ON -DCONESCOPE_BUILD_BENCH=OFF >/dev/null
 targets=(fuzz_off_parser fuzz_mesh_readers fuzz_mesh_ingestion)
 cmake --build "$build" -j"$(nproc)" --target "${targets[@]}"
 

@@ -43,6 +43,9 @@ bool partitionChanged(const Settings& before, const Settings& after) {
             return before.limits.maxVertices != after.limits.maxVertices ||
                    before.limits.maxTriangles != after.limits.maxTriangles ||
                    before.meshoptConeWeight != after.meshoptConeWeight;
+        case Builder::Optimized:
+            return before.limits.maxVertices != after.limits.maxVertices ||
+                   before.limits.maxTriangles != after.limits.maxTriangles || before.clusterCount != after.clusterCount;
         case Builder::File: return before.clusterFile != after.clusterFile;
     }
     return true;

@@ -198,11 +198,11 @@ void SettingsPanel::emitChanged() {
 
 void SettingsPanel::enableForBuilder() {
     const Builder builder = enumOf<Builder>(builder_);
-    const bool meshletLimits = builder == Builder::Meshlet || builder == Builder::Meshopt;
+    const bool meshletLimits = builder == Builder::Meshlet || builder == Builder::Meshopt || builder == Builder::Optimized;
     maxVertices_->setEnabled(meshletLimits);
     // kmeans derives its default cluster count from the triangle limit.
     maxTriangles_->setEnabled(meshletLimits || (builder == Builder::KMeans && clusterCount_->value() == 0));
-    clusterCount_->setEnabled(builder == Builder::KMeans);
+    clusterCount_->setEnabled(builder == Builder::KMeans || builder == Builder::Optimized);
     clusterFile_->setEnabled(builder == Builder::File);
     browseClusterFile_->setEnabled(builder == Builder::File);
     normalWeight_->setEnabled(builder == Builder::Meshlet || builder == Builder::KMeans);

@@ -117,13 +117,13 @@ void addBuilderOptions(CLI::App& command, SettingsOptions& options) {
     command.add_option("--builder", options.builder, "How faces are grouped into clusters: " + acceptedNames(allBuilders(), false))
         ->check(nameValidator(parseBuilder, "BUILDER"))
         ->capture_default_str();
-    command.add_option("--max-verts", options.settings.limits.maxVertices, "Most vertices per cluster (meshlet, meshopt)")
+    command.add_option("--max-verts", options.settings.limits.maxVertices, "Most vertices per cluster (optimized, meshlet, meshopt)")
         ->check(CLI::Range(size_t(3), size_t(1) << 20))
         ->capture_default_str();
-    command.add_option("--max-tris", options.settings.limits.maxTriangles, "Most triangles per cluster (meshlet, meshopt; kmeans target when --clusters is 0)")
+    command.add_option("--max-tris", options.settings.limits.maxTriangles, "Most triangles per cluster (optimized, meshlet, meshopt; kmeans target when --clusters is 0)")
         ->check(CLI::Range(size_t(1), size_t(1) << 20))
         ->capture_default_str();
-    command.add_option("--clusters", options.settings.clusterCount, "Number of clusters for kmeans (0 = triangles / max-tris)")
+    command.add_option("--clusters", options.settings.clusterCount, "Number of clusters for kmeans (0 = triangles / max-tris) and the optimized builder's budget (0 = its default)")
         ->check(CLI::NonNegativeNumber)
         ->capture_default_str();
     command.add_option("--cluster-file", options.settings.clusterFile,

@@ -15,6 +15,12 @@
 // because flatten inlines every one of them into runAvx2 (no call is left in its code).
 #pragma GCC diagnostic ignored "-Wpsabi"
 #include <immintrin.h>
+// clang refuses to pass __m256 through baseline-compiled templates even when they are inlined
+// into a target("avx2") function, so a clang build (the sanitizer build) stops at SSE2 unless it
+// targets AVX2 as a whole.
+#if !defined(__clang__) || defined(__AVX2__)
+#define CONESCOPE_BATCH_AVX2 1
+#endif
 #endif
 
 // Why the float tests are conservative (u = 2^-24, M = maxCoordinate + max |eye coordinate|, all
@@ -104,6 +110,7 @@ struct Sse2Lanes {
     static unsigned bits(M m) { return unsigned(_mm_movemask_ps(m)); }
 };
 
+#ifdef CONESCOPE_BATCH_AVX2
 // AVX2 code is compiled for that target only in these functions; the kernels below are plain
 // templates that the flattened AVX2 entry points inline, so no AVX instruction runs on a CPU
 // without it. No "fma" target: contracting a*b+c would change the rounding the scalar level has.
@@ -125,6 +132,7 @@ struct Avx2Lanes {
     CONESCOPE_AVX2 static M both(M a, M b) { return _mm256_and_ps(a, b); }
     CONESCOPE_AVX2 static unsigned bits(M m) { return unsigned(_mm256_movemask_ps(m)); }
 };
+#endif
 #endif
 
 // Bit k of `bits` is the decision for cluster first + k.
@@ -224,10 +232,12 @@ __attribute__((noinline, flatten)) void runSse2(Kernel kernel, const ClusterBatc
     runKernel<Sse2Lanes>(kernel, batch, eye, culled);
 }
 
+#ifdef CONESCOPE_BATCH_AVX2
 __attribute__((noinline, flatten, target("avx2"))) void runAvx2(Kernel kernel, const ClusterBatch& batch,
                                                                 const EyeConstants& eye, uint8_t* culled) {
     runKernel<Avx2Lanes>(kernel, batch, eye, culled);
 }
+#endif
 #endif
 
 void dispatch(Kernel kernel, const ClusterBatch& batch, const glm::dvec3& eye, uint8_t* culled, SimdLevel level) {
@@ -235,7 +245,9 @@ void dispatch(Kernel kernel, const ClusterBatch& batch, const glm::dvec3& eye, u
     const EyeConstants constants = eyeConstants(batch, eye);
     level = std::min(level, bestSimdLevel());
 #ifdef CONESCOPE_BATCH_X86
+#ifdef CONESCOPE_BATCH_AVX2
     if (level == SimdLevel::Avx2) return runAvx2(kernel, batch, constants, culled);
+#endif
     if (level == SimdLevel::Sse2) return runSse2(kernel, batch, constants, culled);
 #endif
     runScalar(kernel, batch, constants, culled);
@@ -283,7 +295,11 @@ ClusterBatch makeClusterBatch(const ClusterBounds& bounds) {
 
 SimdLevel bestSimdLevel() {
 #ifdef CONESCOPE_BATCH_X86
+#ifdef CONESCOPE_BATCH_AVX2
     static const SimdLevel best = __builtin_cpu_supports("avx2") ? SimdLevel::Avx2 : SimdLevel::Sse2;
+#else
+    static const SimdLevel best = SimdLevel::Sse2;
+#endif
     return best;
 #else
     return SimdLevel::Scalar;

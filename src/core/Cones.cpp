@@ -129,12 +129,7 @@ Cap welzlCap(std::vector<glm::dvec3>& points, size_t end, glm::dvec3* boundary, 
 ConeOfNormals minimalCone(const glm::dvec3* normals, size_t count) {
     std::vector<glm::dvec3> points = nonDegenerate(normals, count);
     if (points.empty()) return neverCullable();
-    // A fixed shuffle keeps Welzl's expected linear time and reproducible output.
-    uint64_t state = 0x2545F4914F6CDD1Dull;
-    for (size_t i = points.size(); i > 1; --i) {
-        state = state * 6364136223846793005ull + 1442695040888963407ull;
-        std::swap(points[i - 1], points[(state >> 33) % i]);
-    }
+    shuffleReproducibly(points, 0x2545F4914F6CDD1Dull);
     glm::dvec3 boundary[3];
     const Cap cap = welzlCap(points, points.size(), boundary, 0);
     ConeOfNormals cone = coneAroundAxis(cap.axis, normals, count);

@@ -11,7 +11,8 @@ using NameTable = std::vector<std::pair<Enum, const char*>>;
 
 const NameTable<Builder>& builderNames() {
     static const NameTable<Builder> names = {
-        {Builder::Meshlet, "meshlet"}, {Builder::KMeans, "kmeans"}, {Builder::Meshopt, "meshopt"}, {Builder::File, "file"}};
+        {Builder::Meshlet, "meshlet"}, {Builder::KMeans, "kmeans"}, {Builder::Meshopt, "meshopt"}, {Builder::File, "file"},
+        {Builder::Optimized, "optimized"}};
     return names;
 }
 const NameTable<ConeMethod>& coneNames() {

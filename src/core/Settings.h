@@ -14,17 +14,19 @@
 
 namespace conescope {
 
-enum class Builder { Meshlet, KMeans, Meshopt, File };
+enum class Builder { Meshlet, KMeans, Meshopt, File, Optimized };
 
 struct Settings {
-    Builder builder = Builder::Meshlet;
+    // Defaults are the best measured combination (docs/benchmarks.md): optimized clusters, exact
+    // minimal cones, the apex test.
+    Builder builder = Builder::Optimized;
     MeshletLimits limits;
-    size_t clusterCount = 0;          // kmeans target; 0 = triangles / maxTriangles
+    size_t clusterCount = 0;          // kmeans target (0 = triangles / maxTriangles); optimized budget (0 = defaultClusterBudget)
     std::string clusterFile;          // file builder: text file of ids; empty = the mesh's cluster_id array
     double normalWeight = 1.0;        // meshlet / kmeans preference for narrow cones
     float meshoptConeWeight = 1.0f;   // meshopt builder's cone_weight
     std::vector<ConeMethod> cones{ConeMethod::Minimal};
-    std::vector<CullTest> tests{CullTest::Vertices};
+    std::vector<CullTest> tests{CullTest::Apex};
     SphereMethod sphere = SphereMethod::Minimal;
     size_t views = 128;
     double distance = 3.0;

@@ -15,6 +15,14 @@ Sphere sphereAround(const glm::dvec3& center, const glm::dvec3* points, size_t c
     return {center, radius + scale * 1e-12};
 }
 
+void shuffleReproducibly(std::vector<glm::dvec3>& points, uint64_t seed) {
+    uint64_t state = seed;
+    for (size_t i = points.size(); i > 1; --i) {
+        state = state * 6364136223846793005ull + 1442695040888963407ull;  // 64-bit LCG
+        std::swap(points[i - 1], points[(state >> 33) % i]);
+    }
+}
+
 Sphere ritterSphere(const glm::dvec3* points, size_t count) {
     if (count == 0) return {};
     // Start from a far pair: the point farthest from p0, then the point farthest from that.
@@ -120,12 +128,7 @@ Ball welzl(std::vector<glm::dvec3>& points, size_t end, glm::dvec3* boundary, si
 Sphere minimalSphere(const glm::dvec3* points, size_t count) {
     if (count == 0) return {};
     std::vector<glm::dvec3> shuffled(points, points + count);
-    // A fixed pseudo-random order keeps results reproducible while avoiding the worst case of sorted input.
-    uint64_t state = 0x9E3779B97F4A7C15ull;
-    for (size_t i = count; i > 1; --i) {
-        state = state * 6364136223846793005ull + 1442695040888963407ull;
-        std::swap(shuffled[i - 1], shuffled[(state >> 33) % i]);
-    }
+    shuffleReproducibly(shuffled, 0x9E3779B97F4A7C15ull);
     glm::dvec3 boundary[4];
     const Ball ball = welzl(shuffled, shuffled.size(), boundary, 0);
     return sphereAround(ball.center, points, count);

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "ClusterOptimizer.h"
+
 namespace conescope {
 
 Partition buildPartition(const Mesh& mesh, const FaceGeometry& faces, const Settings& settings) {
@@ -16,6 +18,7 @@ Partition buildPartition(const Mesh& mesh, const FaceGeometry& faces, const Sett
             return buildKMeans(mesh, faces, target, settings.normalWeight);
         }
         case Builder::Meshopt: return buildMeshoptMeshlets(mesh, settings.limits, settings.meshoptConeWeight);
+        case Builder::Optimized: return buildOptimizedClusters(mesh, faces, settings.limits, settings.clusterCount);
         case Builder::File: {
             if (!settings.clusterFile.empty())
                 return partitionFromIds(readClusterIdFile(settings.clusterFile), mesh.faceCount(), settings.clusterFile);

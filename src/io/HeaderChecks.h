@@ -1,10 +1,14 @@
 // Structural checks run before a file reaches a VTK reader (internal to conescope_io).
 //
-// VTK's readers trust the files they read. vtkPLY indexes past its word list on short lines and
-// mallocs from negative list counts (crashes, seen in tests); the STL and legacy readers allocate
-// from the counts in the header, so a forged count in a tiny file asks for gigabytes; the XML
-// reader dereferences a missing element when a cell array is bad. These checks
-// reject such files first, with a message naming the file, so only well-formed data reaches VTK.
+// VTK 9.1's readers trust the files they read, and mutated copies of valid files crashed every one
+// of them except the STL reader: vtkPLY indexes past its word list on short lines and frees twice on
+// an early end; the legacy reader crashes on a file cut inside a cell list or holding a value its
+// type cannot hold, and zero-fills truncated attribute data; the XML reader dereferences a missing
+// <PointData> when a cell array is bad and trusts appended block tables; the OBJ reader crashes on
+// "1/". The STL and legacy readers also allocate from header counts, so a forged count in a tiny file
+// asks for gigabytes. These checks reject such files first, with a message naming the file (and
+// line, for text formats), so only well-formed data reaches VTK. tests/io/MutationTests.cpp keeps
+// them honest.
 #pragma once
 
 #include <string>
@@ -21,8 +25,9 @@ void checkPlyFile(const std::string& path);
 // if the triangle count in the header exceeds what the file holds, or if it holds no triangle.
 void checkStlFile(const std::string& path);
 
-// Legacy .vtk: the POINTS and cell-list sizes declared in the file must fit in its size (two bytes
-// per ASCII value, the type's size per binary value). Throws MeshReadError.
+// Legacy .vtk POLYDATA: walks every section as vtkPolyDataReader will (exact keywords, every
+// declared value present and representable in its type, cell lists consistent, attribute data
+// complete), streaming through the data without allocating from counts. Throws MeshReadError.
 void checkLegacyVtkFile(const std::string& path);
 
 // OBJ: every face/line/point corner is v, v/vt, v//vn or v/vt/vn with indices of elements that
@@ -30,7 +35,7 @@ void checkLegacyVtkFile(const std::string& path);
 void checkObjFile(const std::string& path);
 
 // .vtp: checks the XML header (known array types, sane component counts, piece counts that fit
-// the file) and returns the file's text with an empty <PointData/> added to pieces lacking one,
+// the file) and the block tables of raw appended data, and returns the file's text with an empty <PointData/> added to pieces lacking one,
 // which keeps vtkXMLPolyDataReader from crashing on a bad cell-data array. Throws MeshReadError.
 std::string prepareVtpForVtk(const std::string& path);
 

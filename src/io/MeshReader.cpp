@@ -42,8 +42,9 @@ std::string supportedExtensionList() {
     return list;
 }
 
-// The reader for a VTK-handled extension, with its file name set, after the cheap checks that must
-// run before VTK allocates anything from the header.
+// The reader for a VTK-handled extension, pointed at the file (for .vtp, at its patched text), after
+// the structural checks of HeaderChecks.h: VTK 9.1's readers trust their input and crash on some
+// damaged files, so each file is checked before VTK sees it.
 vtkSmartPointer<vtkAlgorithm> makeVtkReader(const std::string& path, const std::string& extension) {
     if (extension == ".ply") {
         checkPlyFile(path);

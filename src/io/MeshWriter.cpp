@@ -1,17 +1,18 @@
 #include "io/MeshWriter.h"
 
 #include <algorithm>
-#include <charconv>
 #include <cerrno>
+#include <charconv>
+#include <cstdint>
 #include <cstring>
 #include <fstream>
 
 #include <vtkExecutive.h>
+#include <vtkNew.h>
 #include <vtkPLYWriter.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataWriter.h>
 #include <vtkSmartPointer.h>
-#include <vtkNew.h>
 #include <vtkXMLPolyDataWriter.h>
 
 #include "io/ClassicLocale.h"

@@ -57,11 +57,12 @@ vtkStandardNewMacro(CapturingOutputWindow);
 // Puts a CapturingOutputWindow in place unless it already is; checked on every capture because the
 // GUI may install its own window later, which we then wrap in turn.
 void installCapturingOutputWindow() {
-    static std::mutex installMutex;
-    std::lock_guard<std::mutex> lock(installMutex);
     // vtkLogger prints errors to stderr on its own, before and besides the output window; with it
     // off, VTK output outside a capture still reaches the previous window (stderr by default).
-    vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
+    static std::once_flag loggerSilenced;
+    std::call_once(loggerSilenced, [] { vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF); });
+    static std::mutex installMutex;
+    std::lock_guard<std::mutex> lock(installMutex);
     vtkOutputWindow* current = vtkOutputWindow::GetInstance();
     if (CapturingOutputWindow::SafeDownCast(current)) return;
     vtkSmartPointer<CapturingOutputWindow> window = vtkSmartPointer<CapturingOutputWindow>::New();

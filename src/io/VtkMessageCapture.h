@@ -16,6 +16,9 @@ namespace conescope {
 // ErrorEvent/WarningEvent observers) or by anything else (through the global output window) are
 // recorded here instead of being printed. Outside any capture, the output window forwards to the
 // window that was installed before, so the rest of the program keeps VTK's usual behaviour.
+// The first capture also turns vtkLogger's own stderr output off for the whole process (it would
+// print every error a second time, bypassing the output window); VTK errors outside a capture
+// still reach the previous output window, which prints them to stderr by default.
 class VtkMessageCapture {
 public:
     VtkMessageCapture();

@@ -13,6 +13,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "io/FileChecks.h"
@@ -159,11 +160,10 @@ private:
     void checkAppendedData(const std::vector<XmlStartTag>& tags, size_t appendedTag) const {
         if (appendedTag == std::string::npos) return;
         const XmlStartTag* file = nullptr;
-        const XmlStartTag* appended = nullptr;
         for (const XmlStartTag& tag : tags)
             if (tag.name == "VTKFile") file = &tag;
-        for (const XmlStartTag& tag : startTags(std::string_view(bytes_).substr(appendedTag, 200)))
-            if (tag.name == "AppendedData") appended = &tag;
+        std::vector<XmlStartTag> appendedTags = startTags(std::string_view(bytes_).substr(appendedTag, 200));
+        const XmlStartTag* appended = appendedTags.empty() || appendedTags[0].name != "AppendedData" ? nullptr : &appendedTags[0];
         if (!file || !appended) return;
         std::optional<std::string_view> encoding = attributeValue(appended->attributes, "encoding");
         if (encoding && *encoding != "raw") return;  // base64 is decoded and length-checked by VTK
@@ -296,7 +296,7 @@ private:
     }
 
     // Inserts "<PointData/>" after the start tag of every non-empty piece that has no PointData.
-    std::string withPointDataInEveryPiece(const std::vector<XmlStartTag>& tags) const {
+    std::string withPointDataInEveryPiece(const std::vector<XmlStartTag>& tags) {
         std::string patched;
         size_t copied = 0;
         for (size_t t = 0; t < tags.size(); ++t) {
@@ -309,7 +309,7 @@ private:
             patched += "<PointData/>";
             copied = tags[t].end;
         }
-        if (copied == 0) return bytes_;
+        if (copied == 0) return std::move(bytes_);
         patched.append(bytes_, copied, std::string::npos);
         return patched;
     }

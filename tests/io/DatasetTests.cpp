@@ -46,6 +46,9 @@ struct Dataset {
     double volume;  // expected signed volume, 0 = only check the sign
 };
 
+// Names the file in test listings instead of dumping the struct's bytes.
+void PrintTo(const Dataset& dataset, std::ostream* out) { *out << dataset.file; }
+
 class BundledDataset : public ::testing::TestWithParam<Dataset> {};
 
 TEST_P(BundledDataset, LoadsWithDocumentedCountsAndOutwardWinding) {

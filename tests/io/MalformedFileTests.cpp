@@ -52,6 +52,9 @@ struct BadOff {
 
 std::string caseName(const ::testing::TestParamInfo<BadOff>& info) { return info.param.name; }
 
+// Names the case in test listings instead of dumping the whole file text.
+void PrintTo(const BadOff& bad, std::ostream* out) { *out << bad.name; }
+
 class MalformedOff : public ::testing::TestWithParam<BadOff> {};
 
 TEST_P(MalformedOff, ThrowsWithFileLineAndReason) {

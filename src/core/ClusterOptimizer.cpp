@@ -1,0 +1,1115 @@
+#include "ClusterOptimizer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <queue>
+#include <utility>
+#include <vector>
+
+#include "Cones.h"
+
+namespace conescope {
+
+namespace {
+constexpr uint32_t kNone = std::numeric_limits<uint32_t>::max();
+
+// Growth score = cone cost (objective lost per triangle) + these weights times the distance from
+// the cluster centre (in expected cluster radii) and the number of vertices the face adds.
+// Measured on the CGAL meshes: weighing added vertices against the cone, instead of ranking them
+// first as meshoptimizer does, lets clusters follow the normals (about 10% more culled after the
+// search); weight 1 keeps the pieces compact enough for the reduction to reach the budget.
+constexpr double kDistanceWeight = 0.05;
+constexpr double kVertexWeight = 1.0;
+// The default budget fills clusters to this fraction of what a round patch holds: at 64/124 that
+// is 84 triangles, about what meshoptimizer's builder reaches at cone weight 1 (84-87 on the CGAL
+// meshes) and a budget the reduction reaches on all of them.
+constexpr double kDefaultFill = 0.68;
+// Growth stops a cluster at this multiple of the budget's mean size (or the triangle limit). At
+// exactly the mean, every cluster ends up the same size and the reduction can get stuck a few
+// clusters above the budget on regular meshes; the margin lets some grow larger instead.
+constexpr double kGrowthCap = 1.25;
+// Annealing temperatures, in triangles of objective: a sweep takes a move whose gain exceeds
+// -T * Exp(1). Hot enough to cross the ridges single moves cannot, cooling to plain descent.
+constexpr double kStartTemperature = 1.0;
+constexpr double kEndTemperature = 0.15;
+// Sweeps over all faces: the most a small mesh gets, the fewest a large one gets, and the face
+// visits the budget allows in between (each visit costs well under a microsecond).
+constexpr size_t kMaxSweeps = 100;
+constexpr size_t kMinSweeps = 4;
+constexpr double kSweepFaceVisits = 5.0e6;
+// Greedy local search stops after this many passes over the faces near the last moves.
+constexpr size_t kRefinementPasses = 30;
+
+// ---------------------------------------------------------------------------------------------
+// Caps of unit normals: {x : x.axis >= cosRadius}. The builder's own minimal cone (Welzl on the
+// sphere), allocation-free and keeping the points that bound it, because the search evaluates it
+// millions of times and the bounding points give cheap lower bounds on a grown or shrunk cap.
+
+struct Cap {
+    glm::dvec3 axis{0.0, 0.0, 1.0};
+    double cosRadius = 2.0;  // > 1: no normals yet; <= 0: no cone (wider than a hemisphere)
+    glm::dvec3 support[3];   // normals on the boundary that determine the cap
+    uint32_t supportCount = 0;
+};
+
+constexpr double kContainSlack = 1e-10;
+
+bool contains(const Cap& cap, const glm::dvec3& normal) {
+    return glm::dot(normal, cap.axis) >= cap.cosRadius - kContainSlack;
+}
+
+Cap noCone(const glm::dvec3& axis) {
+    Cap cap;
+    cap.axis = axis;
+    cap.cosRadius = -1.0;
+    return cap;
+}
+
+Cap capThrough(const glm::dvec3& a) {
+    Cap cap;
+    cap.axis = a;
+    cap.cosRadius = 1.0;
+    cap.support[0] = a;
+    cap.supportCount = 1;
+    return cap;
+}
+
+Cap capThrough(const glm::dvec3& a, const glm::dvec3& b) {
+    const glm::dvec3 middle = a + b;
+    const double length = glm::length(middle);
+    if (!(length > 1e-300)) return noCone(a);  // antipodal
+    Cap cap;
+    cap.axis = middle / length;
+    cap.cosRadius = std::min(glm::dot(a, cap.axis), glm::dot(b, cap.axis));
+    cap.support[0] = a, cap.support[1] = b;
+    cap.supportCount = 2;
+    return cap;
+}
+
+// Smallest cap holding three points: a pair's cap when it holds the third point, else the circle
+// through all three. Checking the pairs first also covers points near one great circle, where the
+// circle's plane is ill-conditioned.
+Cap capThrough(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
+    Cap best;
+    bool found = false;
+    const Cap pairs[3] = {capThrough(a, b), capThrough(a, c), capThrough(b, c)};
+    const glm::dvec3* thirds[3] = {&c, &b, &a};
+    for (int i = 0; i < 3; ++i)
+        if (contains(pairs[i], *thirds[i]) && (!found || pairs[i].cosRadius > best.cosRadius)) best = pairs[i], found = true;
+    if (found) return best;
+    glm::dvec3 normal = glm::cross(b - a, c - a);
+    const double length = glm::length(normal);
+    if (!(length > 1e-300)) return noCone(a);
+    normal /= length;
+    if (glm::dot(a, normal) < 0.0) normal = -normal;  // the smaller of the two caps
+    Cap cap;
+    cap.axis = normal;
+    cap.cosRadius = std::min({glm::dot(a, normal), glm::dot(b, normal), glm::dot(c, normal)});
+    cap.support[0] = a, cap.support[1] = b, cap.support[2] = c;
+    cap.supportCount = 3;
+    return cap;
+}
+
+// Smallest cap holding points[0..end) with `first` (and `second`) on its boundary. `budget`
+// bounds the points looked at: on points wider than a hemisphere Welzl's steps mean nothing and
+// can take cubic time, so running out means "no cone".
+Cap capWithBoundary(const glm::dvec3* points, size_t end, const glm::dvec3& first, const glm::dvec3& second,
+                    size_t& budget) {
+    if (budget < end) return noCone(first);
+    budget -= end;
+    Cap cap = capThrough(first, second);
+    for (size_t k = 0; k < end && cap.cosRadius > 0.0; ++k)
+        if (!contains(cap, points[k])) cap = capThrough(first, second, points[k]);
+    return cap;
+}
+
+Cap capWithBoundary(const glm::dvec3* points, size_t end, const glm::dvec3& first, size_t& budget) {
+    Cap cap = capThrough(first);
+    for (size_t j = 0; j < end && cap.cosRadius > 0.0; ++j)
+        if (!contains(cap, points[j])) cap = capWithBoundary(points, j, first, points[j], budget);
+    return cap;
+}
+
+// A fixed shuffle keeps Welzl's expected linear time on points that arrive in surface order.
+void shuffle(glm::dvec3* points, size_t count) {
+    uint64_t state = 0x9E3779B97F4A7C15ull;
+    for (size_t i = count; i > 1; --i) {
+        state = state * 6364136223846793005ull + 1442695040888963407ull;
+        std::swap(points[i - 1], points[(state >> 33) % i]);
+    }
+}
+
+// Points all on the positive side of their mean lie in a hemisphere, where Welzl is exact and
+// fast; otherwise a small budget decides (such sets almost never have a cone).
+size_t welzlBudget(const glm::dvec3* points, size_t count) {
+    glm::dvec3 mean(0.0);
+    for (size_t i = 0; i < count; ++i) mean += points[i];
+    for (size_t i = 0; i < count; ++i)
+        if (!(glm::dot(points[i], mean) > 0.0)) return 4 * count + 64;
+    return std::numeric_limits<size_t>::max();
+}
+
+Cap checkedCap(const Cap& cap, const glm::dvec3* points, size_t count) {
+    if (!(cap.cosRadius > 0.0)) return noCone(cap.axis);
+    for (size_t i = 0; i < count; ++i)
+        if (!contains(cap, points[i])) return noCone(cap.axis);
+    return cap;
+}
+
+// Minimal cap of points (reordered in place); an empty cap for no points.
+Cap minimalCap(glm::dvec3* points, size_t count) {
+    if (count == 0) return Cap{};
+    shuffle(points, count);
+    size_t budget = welzlBudget(points, count);
+    Cap cap = capThrough(points[0]);
+    for (size_t i = 1; i < count && cap.cosRadius > 0.0; ++i)
+        if (!contains(cap, points[i])) cap = capWithBoundary(points, i, points[i], budget);
+    return checkedCap(cap, points, count);
+}
+
+// Minimal cap of points plus `added`, which lies outside the minimal cap of points.
+Cap minimalCapWith(glm::dvec3* points, size_t count, const glm::dvec3& added) {
+    shuffle(points, count);
+    size_t budget = welzlBudget(points, count);
+    const Cap cap = capWithBoundary(points, count, added, budget);
+    if (!(cap.cosRadius > 0.0) || !contains(cap, added)) return noCone(cap.axis);
+    return checkedCap(cap, points, count);
+}
+
+// Minimal cap of a cap's bounding points plus or minus one normal: a subset of the real points,
+// so its radius is a lower bound on the real cap's.
+Cap supportCapAdding(const Cap& cap, const glm::dvec3& added) {
+    glm::dvec3 points[4];
+    size_t count = 0;
+    for (uint32_t i = 0; i < cap.supportCount; ++i) points[count++] = cap.support[i];
+    points[count++] = added;
+    return minimalCap(points, count);
+}
+// With no bounding point left the bound is a single direction (radius 0).
+Cap supportCapRemoving(const Cap& cap, const glm::dvec3& removed) {
+    glm::dvec3 points[3];
+    size_t count = 0;
+    for (uint32_t i = 0; i < cap.supportCount; ++i)
+        if (cap.support[i] != removed) points[count++] = cap.support[i];
+    return count > 0 ? minimalCap(points, count) : capThrough(removed);
+}
+
+double sinOf(const Cap& cap) {
+    if (!(cap.cosRadius > 0.0) || cap.cosRadius > 1.0) return 1.0;  // no cone, or no normals
+    return std::sqrt(std::max(0.0, 1.0 - cap.cosRadius * cap.cosRadius));
+}
+
+// The objective's share of one cluster: T (1 - sin alpha).
+double valueOf(double triangles, const Cap& cap) { return triangles * (1.0 - sinOf(cap)); }
+
+// sin of the half-angle of the smallest cap holding `cap` and a normal at cos(theta) from its
+// axis: (alpha + theta) / 2 by half-angle formulas. An upper bound on the exact minimal cap.
+double sinAfterAdding(const Cap& cap, double cosTheta) {
+    if (cap.cosRadius > 1.0) return 0.0;
+    if (cosTheta >= cap.cosRadius) return sinOf(cap);
+    if (!(cap.cosRadius > 0.0)) return 1.0;
+    const double sinRadius = std::sqrt(std::max(0.0, 1.0 - cap.cosRadius * cap.cosRadius));
+    const double sinTheta = std::sqrt(std::max(0.0, 1.0 - cosTheta * cosTheta));
+    const double cosSum = cap.cosRadius * cosTheta - sinRadius * sinTheta;  // cos(alpha + theta)
+    if (cosSum <= -1.0 + 1e-15) return 1.0;
+    return std::sqrt(std::max(0.0, 0.5 * (1.0 - cosSum)));
+}
+
+// The smallest cap holding `cap` and `normal` (turned towards the normal by half the excess).
+// Contains every point the old cap did, so it is a valid if loose cap of the grown set.
+Cap growCap(const Cap& cap, const glm::dvec3& normal) {
+    if (cap.cosRadius > 1.0) return capThrough(normal);
+    if (!(cap.cosRadius > 0.0) || contains(cap, normal)) return cap;
+    const double radius = std::acos(std::clamp(cap.cosRadius, -1.0, 1.0));
+    const double theta = std::acos(std::clamp(glm::dot(normal, cap.axis), -1.0, 1.0));
+    const double grown = 0.5 * (radius + theta);
+    const double sinTheta = std::sin(theta);
+    if (grown >= M_PI / 2 || !(sinTheta > 1e-12)) return noCone(cap.axis);
+    const double turn = grown - radius;
+    Cap result;
+    result.axis = glm::normalize((std::sin(theta - turn) * cap.axis + std::sin(turn) * normal) / sinTheta);
+    result.cosRadius = std::cos(grown) - 1e-12;
+    result.support[0] = normal;  // only the new point is known to be on the boundary
+    result.supportCount = 1;
+    return result;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Adjacency in compressed rows.
+
+struct Rows {
+    std::vector<uint32_t> starts;
+    std::vector<uint32_t> items;
+    const uint32_t* begin(size_t i) const { return items.data() + starts[i]; }
+    const uint32_t* end(size_t i) const { return items.data() + starts[i + 1]; }
+};
+
+// Faces around each vertex; a face that repeats a vertex is listed once.
+Rows facesAroundVertices(const Mesh& mesh) {
+    Rows rows;
+    rows.starts.assign(mesh.positions.size() + 1, 0);
+    for (uint32_t v : mesh.faceVertices) ++rows.starts[v + 1];
+    for (size_t v = 0; v < mesh.positions.size(); ++v) rows.starts[v + 1] += rows.starts[v];
+    rows.items.resize(mesh.faceVertices.size());
+    std::vector<uint32_t> cursor(rows.starts.begin(), rows.starts.end() - 1);
+    for (size_t f = 0; f < mesh.faceCount(); ++f)
+        for (size_t k = 0; k < mesh.faceSize(f); ++k) {
+            const uint32_t v = mesh.faceBegin(f)[k];
+            if (cursor[v] > rows.starts[v] && rows.items[cursor[v] - 1] == f) continue;
+            rows.items[cursor[v]++] = uint32_t(f);
+        }
+    size_t write = 0;
+    for (size_t v = 0; v < mesh.positions.size(); ++v) {
+        const uint32_t start = rows.starts[v];
+        rows.starts[v] = uint32_t(write);
+        for (uint32_t i = start; i < cursor[v]; ++i) rows.items[write++] = rows.items[i];
+    }
+    rows.starts[mesh.positions.size()] = uint32_t(write);
+    rows.items.resize(write);
+    return rows;
+}
+
+bool faceHasVertex(const Mesh& mesh, uint32_t face, uint32_t vertex) {
+    const uint32_t* vertices = mesh.faceBegin(face);
+    for (size_t k = 0; k < mesh.faceSize(face); ++k)
+        if (vertices[k] == vertex) return true;
+    return false;
+}
+
+// Faces sharing a side (both of its end points) with each face.
+Rows facesAcrossEdges(const Mesh& mesh, const Rows& aroundVertex) {
+    Rows rows;
+    rows.starts.assign(mesh.faceCount() + 1, 0);
+    rows.items.reserve(mesh.faceVertices.size());
+    for (size_t f = 0; f < mesh.faceCount(); ++f) {
+        const uint32_t* vertices = mesh.faceBegin(f);
+        const size_t size = mesh.faceSize(f);
+        const size_t rowStart = rows.items.size();
+        for (size_t k = 0; k < size; ++k) {
+            const uint32_t a = vertices[k], b = vertices[(k + 1) % size];
+            if (a == b) continue;
+            for (const uint32_t* g = aroundVertex.begin(a); g != aroundVertex.end(a); ++g) {
+                if (*g == f || !faceHasVertex(mesh, *g, b)) continue;
+                if (std::find(rows.items.begin() + long(rowStart), rows.items.end(), *g) == rows.items.end())
+                    rows.items.push_back(*g);
+            }
+        }
+        rows.starts[f + 1] = uint32_t(rows.items.size());
+    }
+    return rows;
+}
+
+// ---------------------------------------------------------------------------------------------
+// The clustering being optimised.
+
+struct Cluster {
+    std::vector<uint32_t> faces;
+    uint32_t vertices = 0;
+    uint32_t triangles = 0;
+    Cap cap;
+};
+
+class Optimizer {
+public:
+    Optimizer(const Mesh& mesh, const FaceGeometry& geometry, const MeshletLimits& limits);
+
+    void grow(double triangleCap);
+    void clear();
+    void reduceTo(size_t target);
+    void refine();
+    void anneal(size_t sweeps);
+    size_t clusterCount() const { return liveClusters_; }
+    Partition result() const;
+
+private:
+    // --- membership -------------------------------------------------------------------------
+    bool clusterUsesVertex(uint32_t cluster, uint32_t vertex, uint32_t exceptFace = kNone) const {
+        for (const uint32_t* g = aroundVertex_.begin(vertex); g != aroundVertex_.end(vertex); ++g)
+            if (*g != exceptFace && clusterOf_[*g] == cluster) return true;
+        return false;
+    }
+    bool repeatsEarlierVertex(uint32_t face, size_t k) const {
+        const uint32_t* vertices = mesh_.faceBegin(face);
+        for (size_t j = 0; j < k; ++j)
+            if (vertices[j] == vertices[k]) return true;
+        return false;
+    }
+    // Vertices of `face` the cluster does not use yet.
+    uint32_t newVertices(uint32_t face, uint32_t cluster) const {
+        uint32_t added = 0;
+        for (size_t k = 0; k < mesh_.faceSize(face); ++k)
+            added += !repeatsEarlierVertex(face, k) && !clusterUsesVertex(cluster, mesh_.faceBegin(face)[k]);
+        return added;
+    }
+    // Vertices only `face` uses in its cluster.
+    uint32_t ownVertices(uint32_t face) const {
+        uint32_t own = 0;
+        for (size_t k = 0; k < mesh_.faceSize(face); ++k)
+            own += !repeatsEarlierVertex(face, k) && !clusterUsesVertex(clusterOf_[face], mesh_.faceBegin(face)[k], face);
+        return own;
+    }
+    bool fits(uint32_t face, uint32_t cluster) const {
+        const Cluster& target = clusters_[cluster];
+        return target.triangles + triangles_[face] <= limits_.maxTriangles &&
+               target.vertices + newVertices(face, cluster) <= limits_.maxVertices;
+    }
+    void attach(uint32_t face, uint32_t cluster) {
+        Cluster& target = clusters_[cluster];
+        target.vertices += newVertices(face, cluster);
+        target.triangles += triangles_[face];
+        clusterOf_[face] = cluster;
+        slotOf_[face] = uint32_t(target.faces.size());
+        target.faces.push_back(face);
+    }
+    void detach(uint32_t face) {
+        Cluster& source = clusters_[clusterOf_[face]];
+        source.vertices -= ownVertices(face);
+        source.triangles -= triangles_[face];
+        const uint32_t slot = slotOf_[face];
+        source.faces[slot] = source.faces.back();
+        slotOf_[source.faces[slot]] = slot;
+        source.faces.pop_back();
+        clusterOf_[face] = kNone;
+    }
+    void move(uint32_t face, uint32_t to) {
+        detach(face);
+        attach(face, to);
+    }
+    // Different clusters across the edges of `face`, at most 8.
+    size_t neighbourClusters(uint32_t face, uint32_t* out) const {
+        size_t count = 0;
+        const uint32_t own = clusterOf_[face];
+        for (const uint32_t* g = acrossEdge_.begin(face); g != acrossEdge_.end(face); ++g) {
+            const uint32_t c = clusterOf_[*g];
+            if (c != own && c != kNone && count < 8 && std::find(out, out + count, c) == out + count) out[count++] = c;
+        }
+        return count;
+    }
+
+    // --- cones ------------------------------------------------------------------------------
+    size_t gatherNormals(uint32_t cluster, uint32_t exceptFace) {
+        scratch_.clear();
+        for (uint32_t f : clusters_[cluster].faces)
+            if (f != exceptFace && usable_[f]) scratch_.push_back(geometry_.normals[f]);
+        return scratch_.size();
+    }
+    Cap exactCap(uint32_t cluster) { return minimalCap(scratch_.data(), gatherNormals(cluster, kNone)); }
+    // The cap once `face` joins `cluster`.
+    Cap capAdding(uint32_t cluster, uint32_t face) {
+        const Cap& current = clusters_[cluster].cap;
+        if (!usable_[face] || contains(current, geometry_.normals[face])) return current;
+        if (current.cosRadius > 1.0) return capThrough(geometry_.normals[face]);
+        if (!(current.cosRadius > 0.0)) return current;  // already no cone
+        const size_t count = gatherNormals(cluster, kNone);
+        return minimalCapWith(scratch_.data(), count, geometry_.normals[face]);
+    }
+    // Whether removing `face` can change its cluster's cap (its normal bounds the cap).
+    bool bindsCap(uint32_t face) const {
+        const Cap& current = clusters_[clusterOf_[face]].cap;
+        return usable_[face] && !(current.cosRadius > 0.0 && glm::dot(geometry_.normals[face], current.axis) > current.cosRadius + 1e-9);
+    }
+    // The cap once `face` leaves its cluster.
+    Cap capRemoving(uint32_t face) {
+        const uint32_t cluster = clusterOf_[face];
+        if (!bindsCap(face)) return clusters_[cluster].cap;
+        return minimalCap(scratch_.data(), gatherNormals(cluster, face));
+    }
+
+    // --- connectivity -----------------------------------------------------------------------
+    // True when the cluster of `face` stays edge-connected without it.
+    bool staysConnectedWithout(uint32_t face);
+
+    // --- moves ------------------------------------------------------------------------------
+    // Best move of `face` to a neighbouring cluster if its gain exceeds `threshold`.
+    bool tryMove(uint32_t face, double threshold);
+    bool dissolve(uint32_t cluster);
+    bool makeRoom(uint32_t face, uint32_t cluster, uint32_t from);
+    bool threeIntoTwo(uint32_t cluster);
+    size_t compact();
+    void mergeCheapest(size_t count);
+    double mergeLoss(uint32_t a, uint32_t b, Cap* merged);
+    void mergeInto(uint32_t into, uint32_t from, const Cap& merged);
+    std::vector<uint32_t> clustersBySize() const;
+
+    const Mesh& mesh_;
+    const FaceGeometry& geometry_;
+    MeshletLimits limits_;
+    size_t faceCount_;
+    Rows aroundVertex_, acrossEdge_;
+    std::vector<uint32_t> clusterOf_, slotOf_, triangles_;
+    std::vector<uint8_t> usable_;
+    std::vector<Cluster> clusters_;
+    size_t liveClusters_ = 0;
+    // Scratch, reused to keep the inner loops free of allocations.
+    std::vector<uint32_t> faceStamp_, vertexStamp_, faceMark_;
+    uint32_t stamp_ = 0;
+    std::vector<glm::dvec3> scratch_;
+    std::vector<uint32_t> walk_, queue_, members_, pool_, bestPool_, bestHalf_;
+    std::vector<std::pair<uint32_t, uint32_t>> undo_;
+};
+
+Optimizer::Optimizer(const Mesh& mesh, const FaceGeometry& geometry, const MeshletLimits& limits)
+    : mesh_(mesh), geometry_(geometry), limits_(limits), faceCount_(mesh.faceCount()) {
+    aroundVertex_ = facesAroundVertices(mesh);
+    acrossEdge_ = facesAcrossEdges(mesh, aroundVertex_);
+    clusterOf_.assign(faceCount_, kNone);
+    slotOf_.assign(faceCount_, 0);
+    faceStamp_.assign(faceCount_, 0);
+    faceMark_.assign(faceCount_, 0);
+    vertexStamp_.assign(mesh.positions.size(), 0);
+    triangles_.resize(faceCount_);
+    usable_.resize(faceCount_);
+    for (size_t f = 0; f < faceCount_; ++f) {
+        triangles_[f] = uint32_t(mesh.faceSize(f) - 2);
+        usable_[f] = !geometry.degenerate[f];
+    }
+}
+
+bool Optimizer::staysConnectedWithout(uint32_t face) {
+    const uint32_t cluster = clusterOf_[face];
+    uint32_t first = kNone, neighboursInCluster = 0;
+    for (const uint32_t* g = acrossEdge_.begin(face); g != acrossEdge_.end(face); ++g)
+        if (clusterOf_[*g] == cluster) {
+            ++neighboursInCluster;
+            if (first == kNone) first = *g;
+        }
+    if (neighboursInCluster <= 1) return true;
+    // Usually the cluster's faces around the corners of `face` already join its edge neighbours.
+    uint32_t ring[48];
+    size_t ringCount = 0;
+    for (size_t k = 0; k < mesh_.faceSize(face); ++k) {
+        const uint32_t v = mesh_.faceBegin(face)[k];
+        for (const uint32_t* g = aroundVertex_.begin(v); g != aroundVertex_.end(v); ++g)
+            if (*g != face && clusterOf_[*g] == cluster && ringCount < 48 && std::find(ring, ring + ringCount, *g) == ring + ringCount)
+                ring[ringCount++] = *g;
+    }
+    if (ringCount < 48) {
+        bool reachedRing[48] = {};
+        size_t stack[48], top = 0, reachedNeighbours = 1;
+        const size_t start = size_t(std::find(ring, ring + ringCount, first) - ring);
+        reachedRing[start] = true;
+        stack[top++] = start;
+        while (top > 0) {
+            const uint32_t f = ring[stack[--top]];
+            for (const uint32_t* g = acrossEdge_.begin(f); g != acrossEdge_.end(f); ++g) {
+                const size_t i = size_t(std::find(ring, ring + ringCount, *g) - ring);
+                if (i == ringCount || reachedRing[i]) continue;
+                reachedRing[i] = true;
+                stack[top++] = i;
+                for (const uint32_t* h = acrossEdge_.begin(face); h != acrossEdge_.end(face); ++h) reachedNeighbours += *h == *g;
+            }
+        }
+        if (reachedNeighbours == neighboursInCluster) return true;
+    }
+    // Walk the cluster from one neighbour without crossing `face`; every face must be reached.
+    ++stamp_;
+    faceStamp_[face] = stamp_;
+    faceStamp_[first] = stamp_;
+    walk_.assign(1, first);
+    size_t reached = 1;
+    while (!walk_.empty()) {
+        const uint32_t f = walk_.back();
+        walk_.pop_back();
+        for (const uint32_t* g = acrossEdge_.begin(f); g != acrossEdge_.end(f); ++g)
+            if (clusterOf_[*g] == cluster && faceStamp_[*g] != stamp_) {
+                faceStamp_[*g] = stamp_;
+                walk_.push_back(*g);
+                ++reached;
+            }
+    }
+    return reached + 1 == clusters_[cluster].faces.size();
+}
+
+// ---------------------------------------------------------------------------------------------
+// Growth: one cluster at a time over edge neighbours, taking the face with the lowest score until
+// none fits the limits or the triangle cap (kGrowthCap times the budget's mean size). Clusters end
+// where the normals turn, so growth makes more of them than the budget, many small; the
+// reduction then places those pieces.
+
+void Optimizer::grow(double triangleCap) {
+    std::vector<uint32_t> candidates, leftovers;
+    std::vector<uint32_t> candidateOf(faceCount_, kNone);
+    double totalArea = 0.0;
+    for (double area : geometry_.areas) totalArea += area;
+    const double facesPerCluster = std::min<double>(double(faceCount_), double(limits_.maxTriangles));
+    const double expectedRadius =
+        std::sqrt(std::max(totalArea / double(std::max<size_t>(faceCount_, 1)) * facesPerCluster / M_PI, 1e-300));
+    size_t nextUnassigned = 0;
+    // vertexStamp_[v] == cluster + 1: the growing cluster uses v (cluster ids only increase).
+    std::fill(vertexStamp_.begin(), vertexStamp_.end(), 0);
+
+    while (true) {
+        // Seed in the corner the last cluster left: the leftover face with the fewest free
+        // neighbours, so holes get filled before they close.
+        uint32_t seed = kNone, fewest = kNone;
+        for (uint32_t f : leftovers) {
+            if (clusterOf_[f] != kNone) continue;
+            uint32_t free = 0;
+            for (const uint32_t* g = acrossEdge_.begin(f); g != acrossEdge_.end(f); ++g) free += clusterOf_[*g] == kNone;
+            if (free < fewest) fewest = free, seed = f;
+        }
+        if (seed == kNone) {
+            while (nextUnassigned < faceCount_ && clusterOf_[nextUnassigned] != kNone) ++nextUnassigned;
+            if (nextUnassigned == faceCount_) break;
+            seed = uint32_t(nextUnassigned);
+        }
+        clusters_.emplace_back();
+        ++liveClusters_;
+        const uint32_t cluster = uint32_t(clusters_.size() - 1);
+        Cluster& grown = clusters_[cluster];
+        const uint32_t mark = cluster + 1;
+        candidates.clear();
+        glm::dvec3 centroidSum(0.0);
+        auto addedVertices = [&](uint32_t f) {
+            uint32_t added = 0;
+            for (size_t k = 0; k < mesh_.faceSize(f); ++k)
+                added += vertexStamp_[mesh_.faceBegin(f)[k]] != mark && !repeatsEarlierVertex(f, k);
+            return added;
+        };
+        auto add = [&](uint32_t f) {
+            grown.vertices += addedVertices(f);
+            grown.triangles += triangles_[f];
+            clusterOf_[f] = cluster;
+            slotOf_[f] = uint32_t(grown.faces.size());
+            grown.faces.push_back(f);
+            for (size_t k = 0; k < mesh_.faceSize(f); ++k) vertexStamp_[mesh_.faceBegin(f)[k]] = mark;
+            centroidSum += geometry_.centroids[f];
+            if (usable_[f] && !contains(grown.cap, geometry_.normals[f])) {
+                if (grown.cap.cosRadius > 1.0) grown.cap = capThrough(geometry_.normals[f]);
+                else if (grown.cap.cosRadius > 0.0) grown.cap = minimalCapWith(scratch_.data(), gatherNormals(cluster, f), geometry_.normals[f]);
+            }
+            for (const uint32_t* g = acrossEdge_.begin(f); g != acrossEdge_.end(f); ++g)
+                if (clusterOf_[*g] == kNone && candidateOf[*g] != cluster) candidateOf[*g] = cluster, candidates.push_back(*g);
+        };
+        add(seed);
+
+        while (true) {
+            const glm::dvec3 center = centroidSum / double(grown.faces.size());
+            const double sinNow = sinOf(grown.cap);
+            uint32_t chosen = kNone;
+            double bestScore = std::numeric_limits<double>::infinity();
+            for (size_t i = 0; i < candidates.size();) {
+                const uint32_t f = candidates[i];
+                if (clusterOf_[f] != kNone) {  // taken since it was listed
+                    candidates[i] = candidates.back();
+                    candidates.pop_back();
+                    continue;
+                }
+                ++i;
+                const uint32_t added = addedVertices(f);
+                if (grown.vertices + added > limits_.maxVertices || grown.triangles + triangles_[f] > triangleCap) continue;
+                // Objective lost: the cluster's triangles on the wider cone, and the face itself.
+                const double sinAfter = usable_[f] ? sinAfterAdding(grown.cap, glm::dot(geometry_.normals[f], grown.cap.axis)) : sinNow;
+                const double t = double(triangles_[f]);
+                const double coneCost = (double(grown.triangles) * (sinAfter - sinNow) + t * sinAfter) / t;
+                const double distance = glm::length(geometry_.centroids[f] - center) / expectedRadius;
+                const double score = coneCost + kDistanceWeight * distance + kVertexWeight * double(added);
+                if (score < bestScore) bestScore = score, chosen = f;
+            }
+            if (chosen == kNone) break;
+            add(chosen);
+        }
+        leftovers.swap(candidates);
+    }
+    std::fill(vertexStamp_.begin(), vertexStamp_.end(), 0);  // other passes stamp with stamp_
+}
+
+void Optimizer::clear() {
+    clusters_.clear();
+    std::fill(clusterOf_.begin(), clusterOf_.end(), kNone);
+    liveClusters_ = 0;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Reduction to the budget.
+
+std::vector<uint32_t> Optimizer::clustersBySize() const {
+    std::vector<uint32_t> order;
+    for (uint32_t c = 0; c < clusters_.size(); ++c)
+        if (!clusters_[c].faces.empty()) order.push_back(c);
+    std::stable_sort(order.begin(), order.end(),
+                     [&](uint32_t a, uint32_t b) { return clusters_[a].triangles < clusters_[b].triangles; });
+    return order;
+}
+
+// Frees room for `face` in `cluster` by passing one of the cluster's border faces on to a third
+// cluster (not `from`, where `face` comes from). Cheap tests first (would `face` fit without it,
+// does it fit elsewhere), the connectivity walk last. The move is recorded in undo_. (Chains of
+// two such hand-overs reached tight budgets slightly more often at twice the cost: not worth it.)
+bool Optimizer::makeRoom(uint32_t face, uint32_t cluster, uint32_t from) {
+    const Cluster& full = clusters_[cluster];
+    members_ = full.faces;
+    for (uint32_t g : members_) {
+        if (g == face || clusterOf_[g] != cluster || full.triangles - triangles_[g] + triangles_[face] > limits_.maxTriangles) continue;
+        // Vertices once g is gone: g's own ones leave, face's ones not used by the rest arrive.
+        uint32_t arriving = 0;
+        for (size_t k = 0; k < mesh_.faceSize(face); ++k)
+            arriving += !repeatsEarlierVertex(face, k) && !clusterUsesVertex(cluster, mesh_.faceBegin(face)[k], g);
+        if (full.vertices - ownVertices(g) + arriving > limits_.maxVertices) continue;
+        bool touches = false;  // `face` must still border the cluster without g
+        for (const uint32_t* k = acrossEdge_.begin(face); k != acrossEdge_.end(face); ++k) touches |= *k != g && clusterOf_[*k] == cluster;
+        if (!touches) continue;
+        uint32_t others[8];
+        const size_t otherCount = neighbourClusters(g, others);
+        for (size_t i = 0; i < otherCount; ++i) {
+            const uint32_t other = others[i];
+            if (other == from || !fits(g, other)) continue;
+            if (!staysConnectedWithout(g)) break;
+            move(g, other);
+            undo_.emplace_back(g, cluster);
+            if (usable_[g]) clusters_[other].cap = growCap(clusters_[other].cap, geometry_.normals[g]);
+            return true;
+        }
+    }
+    return false;
+}
+
+// Empties a cluster by handing each of its faces, from its border inwards, to the neighbouring
+// cluster where the objective loses least; a full neighbour first passes one of its own border
+// faces on. Caps are grown approximately on the way and recomputed at the end. Undone (returns
+// false) if some face finds no room.
+bool Optimizer::dissolve(uint32_t cluster) {
+    if (clusters_[cluster].faces.empty()) return false;
+    undo_.clear();
+    std::vector<uint32_t>& queue = queue_;
+    uint32_t queued = 0;  // faceStamp_ value of faces in the queue (other checks may overwrite some: harmless)
+    auto refill = [&]() {
+        queued = ++stamp_;
+        queue.clear();
+        for (uint32_t f : clusters_[cluster].faces)
+            for (const uint32_t* g = acrossEdge_.begin(f); g != acrossEdge_.end(f); ++g)
+                if (clusterOf_[*g] != cluster && faceStamp_[f] != queued) faceStamp_[f] = queued, queue.push_back(f);
+    };
+    refill();
+    for (int round = 0; round < 4 && !clusters_[cluster].faces.empty(); ++round) {
+        const bool pushing = round >= 2;  // plain moves everywhere first, then make room
+        for (size_t i = 0; i < queue.size(); ++i) {
+            const uint32_t face = queue[i];
+            if (clusterOf_[face] != cluster) continue;
+            uint32_t targets[8];
+            const size_t targetCount = neighbourClusters(face, targets);
+            double bestGain = -std::numeric_limits<double>::infinity();
+            uint32_t bestTarget = kNone;
+            for (size_t k = 0; k < targetCount; ++k) {
+                const uint32_t to = targets[k];
+                if (!fits(face, to)) continue;
+                const Cluster& target = clusters_[to];
+                const double sinAfter = usable_[face] ? sinAfterAdding(target.cap, glm::dot(geometry_.normals[face], target.cap.axis)) : sinOf(target.cap);
+                const double gain = (double(target.triangles) + triangles_[face]) * (1.0 - sinAfter) - valueOf(target.triangles, target.cap);
+                if (gain > bestGain) bestGain = gain, bestTarget = to;
+            }
+            for (size_t k = 0; k < targetCount && bestTarget == kNone && pushing; ++k)
+                if (makeRoom(face, targets[k], cluster)) bestTarget = targets[k];
+            if (bestTarget == kNone && round == 3) break;  // last round: one stuck face fails it all
+            if (bestTarget == kNone) continue;
+            undo_.emplace_back(face, cluster);
+            move(face, bestTarget);
+            if (usable_[face]) clusters_[bestTarget].cap = growCap(clusters_[bestTarget].cap, geometry_.normals[face]);
+            for (const uint32_t* g = acrossEdge_.begin(face); g != acrossEdge_.end(face); ++g)
+                if (clusterOf_[*g] == cluster && faceStamp_[*g] != queued) faceStamp_[*g] = queued, queue.push_back(*g);
+        }
+        refill();
+    }
+    const bool emptied = clusters_[cluster].faces.empty();
+    if (!emptied)
+        for (size_t i = undo_.size(); i-- > 0;) move(undo_[i].first, undo_[i].second);
+    // Exact caps for every cluster that changed.
+    members_.clear();
+    for (const auto& [face, from] : undo_) members_.push_back(from), members_.push_back(clusterOf_[face]);
+    std::sort(members_.begin(), members_.end());
+    members_.erase(std::unique(members_.begin(), members_.end()), members_.end());
+    for (uint32_t c : members_) clusters_[c].cap = clusters_[c].faces.empty() ? Cap{} : exactCap(c);
+    if (emptied) --liveClusters_;
+    return emptied;
+}
+
+// This cluster and two of its neighbours are cut again into two compact halves grown from their
+// two farthest faces; the count drops by one when both halves fit. For when no neighbour has
+// room to take the cluster face by face. The best pair by objective wins.
+bool Optimizer::threeIntoTwo(uint32_t cluster) {
+    uint32_t neighbours[64];
+    size_t neighbourCount = 0;
+    for (uint32_t f : clusters_[cluster].faces) {
+        uint32_t around[8];
+        const size_t count = neighbourClusters(f, around);
+        for (size_t i = 0; i < count; ++i)
+            if (neighbourCount < 64 && std::find(neighbours, neighbours + neighbourCount, around[i]) == neighbours + neighbourCount)
+                neighbours[neighbourCount++] = around[i];
+    }
+    std::sort(neighbours, neighbours + neighbourCount);
+    double bestValue = -std::numeric_limits<double>::infinity();
+    uint32_t bestPair[2] = {kNone, kNone};
+    struct Entry {
+        double distance;
+        uint32_t face, side;
+        bool operator<(const Entry& other) const {
+            if (distance != other.distance) return distance > other.distance;
+            return face > other.face;
+        }
+    };
+    std::priority_queue<Entry> heap;
+    for (size_t i = 0; i < neighbourCount; ++i)
+        for (size_t j = i + 1; j < neighbourCount; ++j) {
+            const uint32_t a = neighbours[i], b = neighbours[j];
+            const double total = double(clusters_[cluster].triangles) + clusters_[a].triangles + clusters_[b].triangles;
+            if (total > 2.0 * double(limits_.maxTriangles)) continue;
+            pool_ = clusters_[cluster].faces;
+            pool_.insert(pool_.end(), clusters_[a].faces.begin(), clusters_[a].faces.end());
+            pool_.insert(pool_.end(), clusters_[b].faces.begin(), clusters_[b].faces.end());
+            glm::dvec3 center(0.0);
+            for (uint32_t f : pool_) center += geometry_.centroids[f];
+            center /= double(pool_.size());
+            uint32_t seeds[2] = {pool_[0], pool_[0]};
+            double farthest = -1.0;
+            for (uint32_t f : pool_)
+                if (glm::length(geometry_.centroids[f] - center) > farthest) farthest = glm::length(geometry_.centroids[f] - center), seeds[0] = f;
+            farthest = -1.0;
+            for (uint32_t f : pool_) {
+                const double distance = glm::length(geometry_.centroids[f] - geometry_.centroids[seeds[0]]);
+                if (distance > farthest) farthest = distance, seeds[1] = f;
+            }
+            // Balanced flood: each half takes its nearest faces until it holds half the triangles.
+            ++stamp_;
+            const uint32_t member = stamp_;
+            for (uint32_t f : pool_) faceStamp_[f] = member;
+            ++stamp_;
+            const uint32_t taken = stamp_;
+            for (uint32_t s = 0; s < 2; ++s) heap.push({0.0, seeds[s], s});
+            double sideTriangles[2] = {0.0, 0.0};
+            size_t assigned = 0;
+            while (!heap.empty()) {
+                const Entry top = heap.top();
+                heap.pop();
+                if (faceStamp_[top.face] == taken) continue;
+                if (sideTriangles[top.side] + triangles_[top.face] > 0.5 * total + 2.0 && sideTriangles[1 - top.side] < 0.5 * total)
+                    continue;  // this half is full; the other may still reach the face
+                faceStamp_[top.face] = taken;
+                faceMark_[top.face] = top.side;
+                sideTriangles[top.side] += triangles_[top.face];
+                ++assigned;
+                for (const uint32_t* g = acrossEdge_.begin(top.face); g != acrossEdge_.end(top.face); ++g)
+                    if (faceStamp_[*g] == member)
+                        heap.push({glm::length(geometry_.centroids[*g] - geometry_.centroids[seeds[top.side]]), *g, top.side});
+            }
+            if (assigned != pool_.size()) continue;
+            double value = 0.0;
+            bool feasible = true;
+            for (uint32_t s = 0; s < 2 && feasible; ++s) {
+                ++stamp_;
+                uint32_t vertices = 0;
+                scratch_.clear();
+                for (uint32_t f : pool_) {
+                    if (faceMark_[f] != s) continue;
+                    if (usable_[f]) scratch_.push_back(geometry_.normals[f]);
+                    for (size_t k = 0; k < mesh_.faceSize(f); ++k) {
+                        const uint32_t v = mesh_.faceBegin(f)[k];
+                        if (vertexStamp_[v] != stamp_) vertexStamp_[v] = stamp_, ++vertices;
+                    }
+                }
+                feasible = vertices <= limits_.maxVertices && sideTriangles[s] <= double(limits_.maxTriangles);
+                if (feasible) value += valueOf(sideTriangles[s], minimalCap(scratch_.data(), scratch_.size()));
+            }
+            if (!feasible || value <= bestValue) continue;
+            bestValue = value;
+            bestPool_ = pool_;
+            bestHalf_.clear();
+            for (uint32_t f : pool_)
+                if (faceMark_[f] == 0) bestHalf_.push_back(f);
+            bestPair[0] = a, bestPair[1] = b;
+        }
+    if (bestPair[0] == kNone) return false;
+    // Half 0 goes to the first neighbour, half 1 to the second; this cluster empties.
+    ++stamp_;
+    for (uint32_t f : bestHalf_) faceStamp_[f] = stamp_;
+    for (uint32_t f : bestPool_) {
+        const uint32_t want = faceStamp_[f] == stamp_ ? bestPair[0] : bestPair[1];
+        if (clusterOf_[f] != want) move(f, want);
+    }
+    clusters_[bestPair[0]].cap = exactCap(bestPair[0]);
+    clusters_[bestPair[1]].cap = exactCap(bestPair[1]);
+    clusters_[cluster].cap = Cap{};
+    --liveClusters_;
+    return true;
+}
+
+double Optimizer::mergeLoss(uint32_t a, uint32_t b, Cap* merged) {
+    const Cluster& first = clusters_[a];
+    const Cluster& second = clusters_[b];
+    if (first.triangles + second.triangles > limits_.maxTriangles) return std::numeric_limits<double>::infinity();
+    ++stamp_;
+    uint32_t vertices = first.vertices;
+    for (uint32_t f : second.faces)
+        for (size_t k = 0; k < mesh_.faceSize(f); ++k) {
+            const uint32_t v = mesh_.faceBegin(f)[k];
+            if (vertexStamp_[v] == stamp_) continue;
+            vertexStamp_[v] = stamp_;
+            if (!clusterUsesVertex(a, v)) ++vertices;
+        }
+    if (vertices > limits_.maxVertices) return std::numeric_limits<double>::infinity();
+    scratch_.clear();
+    for (const Cluster* part : {&first, &second})
+        for (uint32_t f : part->faces)
+            if (usable_[f]) scratch_.push_back(geometry_.normals[f]);
+    *merged = minimalCap(scratch_.data(), scratch_.size());
+    return valueOf(first.triangles, first.cap) + valueOf(second.triangles, second.cap) -
+           valueOf(double(first.triangles) + double(second.triangles), *merged);
+}
+
+void Optimizer::mergeInto(uint32_t into, uint32_t from, const Cap& merged) {
+    members_ = clusters_[from].faces;
+    for (uint32_t f : members_) move(f, into);
+    clusters_[into].cap = merged;
+    clusters_[from].cap = Cap{};
+    --liveClusters_;
+}
+
+// Whole-cluster merges, cheapest objective loss first (lazy heap: an entry is stale once either
+// cluster changed since it was pushed).
+void Optimizer::mergeCheapest(size_t count) {
+    struct Entry {
+        double loss;
+        uint32_t a, b, versionA, versionB;
+        bool operator<(const Entry& other) const {
+            if (loss != other.loss) return loss > other.loss;
+            if (a != other.a) return a > other.a;
+            return b > other.b;
+        }
+    };
+    std::vector<uint32_t> version(clusters_.size(), 0);
+    std::priority_queue<Entry> heap;
+    std::vector<uint32_t> neighbours;
+    auto pushPairs = [&](uint32_t a) {
+        neighbours.clear();
+        for (uint32_t f : clusters_[a].faces) {
+            uint32_t around[8];
+            const size_t n = neighbourClusters(f, around);
+            for (size_t i = 0; i < n; ++i)
+                if (std::find(neighbours.begin(), neighbours.end(), around[i]) == neighbours.end()) neighbours.push_back(around[i]);
+        }
+        std::sort(neighbours.begin(), neighbours.end());
+        for (uint32_t b : neighbours) {
+            Cap merged;
+            const double loss = mergeLoss(a, b, &merged);
+            const uint32_t low = std::min(a, b), high = std::max(a, b);
+            if (std::isfinite(loss)) heap.push({loss, low, high, version[low], version[high]});
+        }
+    };
+    for (uint32_t a = 0; a < clusters_.size(); ++a)
+        if (!clusters_[a].faces.empty()) pushPairs(a);
+    size_t done = 0;
+    while (done < count && !heap.empty()) {
+        const Entry top = heap.top();
+        heap.pop();
+        if (version[top.a] != top.versionA || version[top.b] != top.versionB) continue;
+        if (clusters_[top.a].faces.empty() || clusters_[top.b].faces.empty()) continue;
+        Cap merged;
+        if (!std::isfinite(mergeLoss(top.a, top.b, &merged))) continue;
+        mergeInto(top.a, top.b, merged);
+        ++version[top.a];
+        ++version[top.b];
+        ++done;
+        pushPairs(top.a);
+    }
+}
+
+
+// Moves that save a vertex: a border face whose corners the neighbour already uses, and one of
+// which only it uses in its own cluster. Full clusters get room that way for the reduction.
+size_t Optimizer::compact() {
+    size_t moves = 0;
+    for (uint32_t face = 0; face < faceCount_; ++face) {
+        const uint32_t from = clusterOf_[face];
+        if (clusters_[from].faces.size() <= 1 || ownVertices(face) == 0) continue;
+        uint32_t targets[8];
+        const size_t targetCount = neighbourClusters(face, targets);
+        for (size_t i = 0; i < targetCount; ++i) {
+            const uint32_t to = targets[i];
+            if (newVertices(face, to) != 0 || clusters_[to].triangles + triangles_[face] > limits_.maxTriangles) continue;
+            if (!staysConnectedWithout(face)) break;
+            move(face, to);
+            if (usable_[face]) clusters_[to].cap = growCap(clusters_[to].cap, geometry_.normals[face]);
+            ++moves;
+            break;
+        }
+    }
+    if (moves > 0)
+        for (uint32_t c = 0; c < clusters_.size(); ++c)
+            if (!clusters_[c].faces.empty()) clusters_[c].cap = exactCap(c);
+    return moves;
+}
+
+void Optimizer::reduceTo(size_t target) {
+    auto dissolveSmallest = [&]() {
+        for (uint32_t c : clustersBySize()) {
+            if (liveClusters_ <= target) return;
+            dissolve(c);
+        }
+    };
+    dissolveSmallest();
+    if (liveClusters_ > target) mergeCheapest(liveClusters_ - target);
+    // Where every neighbour is full, three clusters become two, which frees room for more dissolving.
+    for (int round = 0; round < 4 && liveClusters_ > target; ++round) {
+        const size_t before = liveClusters_;
+        compact();
+        dissolveSmallest();
+        for (uint32_t c : clustersBySize()) {
+            if (liveClusters_ <= target) break;
+            if (!clusters_[c].faces.empty()) threeIntoTwo(c);
+        }
+        dissolveSmallest();
+        if (liveClusters_ == before) break;
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Local search on the objective.
+
+bool Optimizer::tryMove(uint32_t face, double threshold) {
+    const uint32_t from = clusterOf_[face];
+    const Cluster& source = clusters_[from];
+    if (source.faces.size() <= 1) return false;
+    uint32_t targets[8];
+    const size_t targetCount = neighbourClusters(face, targets);
+    if (targetCount == 0) return false;
+    const double t = double(triangles_[face]);
+    const double valueFrom = valueOf(source.triangles, source.cap);
+    const bool binds = bindsCap(face);
+    // Upper bound on what the source can gain: its cap shrinks at most to its other bounding points.
+    const double boundFrom = valueOf(double(source.triangles) - t, binds ? supportCapRemoving(source.cap, geometry_.normals[face]) : source.cap);
+    Cap capFrom{};
+    bool capFromKnown = !binds;
+    if (!binds) capFrom = source.cap;
+    double bestGain = threshold;
+    uint32_t bestTarget = kNone;
+    Cap bestCap{};
+    for (size_t i = 0; i < targetCount; ++i) {
+        const uint32_t to = targets[i];
+        const Cluster& target = clusters_[to];
+        if (!fits(face, to)) continue;
+        const double valueTo = valueOf(target.triangles, target.cap);
+        const bool inside = !usable_[face] || contains(target.cap, geometry_.normals[face]);
+        // Cheap bound first: the target's cap grows at least to hold its bounding points and the face.
+        if (target.cap.cosRadius > 1.0) {
+            // no normals yet: nothing cheap to bound with
+        } else if (!inside) {
+            const double bound = boundFrom + valueOf(double(target.triangles) + t, supportCapAdding(target.cap, geometry_.normals[face])) -
+                                 valueFrom - valueTo;
+            if (bound <= bestGain) continue;
+        } else if (boundFrom + valueOf(double(target.triangles) + t, target.cap) - valueFrom - valueTo <= bestGain) {
+            continue;
+        }
+        if (!capFromKnown) capFrom = capRemoving(face), capFromKnown = true;
+        const Cap capTo = capAdding(to, face);
+        const double gain = valueOf(double(source.triangles) - t, capFrom) + valueOf(double(target.triangles) + t, capTo) - valueFrom - valueTo;
+        if (gain > bestGain) bestGain = gain, bestTarget = to, bestCap = capTo;
+    }
+    if (bestTarget == kNone || !staysConnectedWithout(face)) return false;
+    move(face, bestTarget);
+    clusters_[from].cap = capFrom;
+    clusters_[bestTarget].cap = bestCap;
+    return true;
+}
+
+void Optimizer::refine() {
+    std::vector<uint32_t> work, next;
+    std::vector<uint8_t> queued(faceCount_, 0);
+    for (uint32_t f = 0; f < faceCount_; ++f) {
+        uint32_t around[8];
+        if (neighbourClusters(f, around) > 0) work.push_back(f), queued[f] = 1;
+    }
+    for (size_t pass = 0; pass < kRefinementPasses && !work.empty(); ++pass) {
+        next.clear();
+        for (uint32_t f : work) queued[f] = 0;
+        for (uint32_t f : work) {
+            if (!tryMove(f, 1e-9)) continue;
+            // The neighbourhood changed: its faces may now have a better place.
+            for (const uint32_t* g = acrossEdge_.begin(f); g != acrossEdge_.end(f); ++g)
+                if (!queued[*g]) queued[*g] = 1, next.push_back(*g);
+            if (!queued[f]) queued[f] = 1, next.push_back(f);
+        }
+        work.swap(next);
+    }
+}
+
+// Annealing in sweeps: every border face in turn is offered its best move, taken when the gain
+// beats -T * Exp(1), with T falling geometrically from sweep to sweep. It crosses the ridges
+// where a group of faces must move together but each single move loses. Walking faces in order
+// keeps memory access local; the generator is fixed, so the result is deterministic.
+void Optimizer::anneal(size_t sweeps) {
+    uint64_t state = 0x853C49E6748FEA9Bull;
+    auto uniform = [&]() {
+        state = state * 6364136223846793005ull + 1442695040888963407ull;
+        return (double(state >> 11) + 0.5) / 9007199254740992.0;  // (0, 1)
+    };
+    for (size_t sweep = 0; sweep < sweeps; ++sweep) {
+        const double progress = sweeps > 1 ? double(sweep) / double(sweeps - 1) : 1.0;
+        const double temperature = kStartTemperature * std::pow(kEndTemperature / kStartTemperature, progress);
+        for (uint32_t face = 0; face < faceCount_; ++face) {
+            const uint32_t own = clusterOf_[face];
+            bool border = false;
+            for (const uint32_t* g = acrossEdge_.begin(face); g != acrossEdge_.end(face) && !border; ++g) border = clusterOf_[*g] != own;
+            if (border) tryMove(face, temperature * std::log(uniform()));
+        }
+    }
+}
+
+Partition Optimizer::result() const {
+    std::vector<uint32_t> renumber(clusters_.size(), kNone);
+    Partition partition;
+    partition.clusterOfFace.resize(faceCount_);
+    for (size_t f = 0; f < faceCount_; ++f) {
+        uint32_t& id = renumber[clusterOf_[f]];
+        if (id == kNone) id = partition.clusterCount++;
+        partition.clusterOfFace[f] = id;
+    }
+    return partition;
+}
+
+}  // namespace
+
+double expectedCullRate(const Mesh& mesh, const FaceGeometry& faces, const Partition& partition) {
+    const ClusterFaces rows = facesByCluster(partition);
+    std::vector<glm::dvec3> normals;
+    double culled = 0.0, total = 0.0;
+    for (uint32_t c = 0; c < partition.clusterCount; ++c) {
+        normals.clear();
+        double triangles = 0.0;
+        for (uint32_t i = rows.starts[c]; i < rows.starts[c + 1]; ++i) {
+            normals.push_back(faces.normals[rows.faces[i]]);
+            triangles += double(mesh.faceSize(rows.faces[i]) - 2);
+        }
+        const ConeOfNormals cone = minimalCone(normals.data(), normals.size());
+        if (cone.cullable) culled += triangles * (1.0 - cone.sinHalfAngle);
+        total += triangles;
+    }
+    return total > 0.0 ? culled / total : 0.0;
+}
+
+size_t defaultClusterBudget(const Mesh& mesh, const MeshletLimits& limits) {
+    const double roundPatch = double(std::min(limits.maxTriangles, 2 * limits.maxVertices));
+    const double perCluster = std::max(1.0, kDefaultFill * roundPatch);
+    return std::max<size_t>(1, size_t(std::ceil(double(triangleCount(mesh)) / perCluster)));
+}
+
+Partition buildOptimizedClusters(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits,
+                                 size_t targetClusters) {
+    const size_t faceCount = mesh.faceCount();
+    if (faceCount == 0) return {};
+    const size_t target = targetClusters > 0 ? targetClusters : defaultClusterBudget(mesh, limits);
+    Optimizer optimizer(mesh, faces, limits);
+    const double triangles = double(triangleCount(mesh));
+    optimizer.grow(std::min(double(limits.maxTriangles), kGrowthCap * triangles / double(target)));
+    if (optimizer.clusterCount() < target) {  // a generous budget: grow again at its mean size
+        optimizer.clear();
+        optimizer.grow(std::min(double(limits.maxTriangles), triangles / double(target)));
+    }
+    optimizer.reduceTo(target);
+    optimizer.refine();
+    const size_t sweeps = std::clamp<size_t>(size_t(kSweepFaceVisits / double(faceCount)), kMinSweeps, kMaxSweeps);
+    optimizer.anneal(sweeps);
+    optimizer.refine();
+    return optimizer.result();
+}
+
+}  // namespace conescope

@@ -1,0 +1,35 @@
+// A cluster builder that maximises the expected cull rate directly, at a given cluster budget.
+#pragma once
+
+#include <cstddef>
+
+#include "Mesh.h"
+#include "Partition.h"
+
+namespace conescope {
+
+// Seen from a uniformly random far direction, a cluster whose minimal normal cone has half-angle
+// alpha is culled with probability (1 - sin alpha) / 2, and half of all triangles face away, so
+// sum_c T_c (1 - sin alpha_c) / T estimates the fraction of back-facing triangles culled. Exact
+// minimal cones (minimalCone); a cluster with no cone narrower than a hemisphere counts 0.
+double expectedCullRate(const Mesh& mesh, const FaceGeometry& faces, const Partition& partition);
+
+// The budget used when none is given: clusters 68% full, min(maxTriangles, 2 maxVertices) being
+// what a round patch within both limits can hold; at 64/124 about the count meshoptimizer's
+// builder reaches with cone weight 1.
+size_t defaultClusterBudget(const Mesh& mesh, const MeshletLimits& limits);
+
+// Optimises expectedCullRate under the vertex/triangle limits with clusters that stay connected
+// across edges (wherever the mesh is):
+//  1. growth of small clusters of like normals (cone first, a little locality and vertex economy),
+//  2. reduction to the budget: clusters are dissolved face by face into neighbours with room
+//     (a full neighbour first passes one of its own faces on), or three are cut into two,
+//  3. local search: border faces move to the neighbouring cluster where the objective gains,
+//     first greedily, then in annealing sweeps that accept a shrinking random loss, then greedily.
+// targetClusters = 0 uses defaultClusterBudget. The result has at most targetClusters clusters
+// whenever the reduction gets there (it stops a few above on meshes that do not allow it).
+// Deterministic: the same input gives the same partition.
+Partition buildOptimizedClusters(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits,
+                                 size_t targetClusters = 0);
+
+}  // namespace conescope
