@@ -19,6 +19,7 @@ namespace conescope {
 namespace {
 
 using text::LineCursor;
+using text::isFiniteFloat;
 using text::splitWords;
 
 // vtkOBJReader reads lines into a fixed buffer; longer ones would be cut.
@@ -48,7 +49,10 @@ public:
             if (line.size() > longestObjLine) fail(lines.lineNumber(), "line is too long for VTK's OBJ reader");
             std::vector<std::string_view> words = splitWords(line);
             if (words.empty()) continue;
-            if (words[0] == "v") ++seen.positions;
+            if (words[0] == "v") {
+                ++seen.positions;
+                checkPosition(words, seen.positions, lines.lineNumber());
+            }
             if (words[0] == "vt") ++seen.textureCoordinates;
             if (words[0] == "vn") ++seen.normals;
             if (words[0] == "f" || words[0] == "l" || words[0] == "p")
@@ -59,6 +63,15 @@ public:
 private:
     [[noreturn]] void fail(size_t lineNumber, const std::string& what) const {
         throw MeshReadError(path_ + ":" + std::to_string(lineNumber) + ": " + what);
+    }
+
+    // "v x y z [w | r g b]": VTK's reader would read a missing or unreadable coordinate as 0.
+    void checkPosition(const std::vector<std::string_view>& words, size_t number, size_t lineNumber) const {
+        if (words.size() < 4) fail(lineNumber, "vertex " + std::to_string(number) + " has fewer than 3 coordinates");
+        for (size_t k = 1; k < 4; ++k)
+            if (!isFiniteFloat(words[k]))
+                fail(lineNumber, "vertex " + std::to_string(number) + " has a coordinate that is not a finite number: " +
+                                     quotedForMessage(std::string(words[k])));
     }
 
     // A corner is v, v/vt, v//vn or v/vt/vn. Relative (negative) indices count back from the

@@ -137,10 +137,26 @@ public:
         mesh.faceVertices.reserve(counts.faces * 3);
         for (uint64_t v = 0; v < counts.vertices; ++v) mesh.positions.push_back(parseVertex(v, counts.vertices));
         for (uint64_t f = 0; f < counts.faces; ++f) parseFace(f, counts, mesh);
+        // Edge lines may follow the faces and are ignored, but another face means the header's face
+        // count is too small: stopping there would drop faces without a word.
+        while (std::optional<OffLine> extra = lines_.next())
+            if (looksLikeFace(extra->content))
+                fail(extra->number, "a face after the " + std::to_string(counts.faces) +
+                                        " faces the header declares (is the face count in the header too small?)");
         return mesh;
     }
 
 private:
+    // "n i1 .. in" with n >= 3: the shape of a face line (an edge line has n = 2).
+    static bool looksLikeFace(std::string_view content) {
+        TokenReader tokens(content);
+        std::optional<int64_t> size = parseInteger(tokens.next());
+        if (!size || *size < 3) return false;
+        for (int64_t k = 0; k < *size; ++k)
+            if (!parseInteger(tokens.next())) return false;
+        return true;
+    }
+
     [[noreturn]] void fail(size_t lineNumber, const std::string& what) const {
         throw MeshReadError(sourceName_ + ":" + std::to_string(lineNumber) + ": " + what);
     }

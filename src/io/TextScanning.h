@@ -2,6 +2,8 @@
 #pragma once
 
 #include <charconv>
+#include <cmath>
+#include <limits>
 #include <cstdint>
 #include <optional>
 #include <string_view>
@@ -29,6 +31,16 @@ inline std::optional<int64_t> parseInteger(std::string_view word) {
     auto [end, error] = std::from_chars(word.data(), word.data() + word.size(), value);
     if (word.empty() || error != std::errc() || end != word.data() + word.size()) return std::nullopt;
     return value;
+}
+
+// A finite number that a float can hold: what a coordinate must be. VTK's text readers turn
+// anything else (nan, inf, 1e39, "abc") into 0 or FLT_MAX without a word, so the checks reject it first.
+inline bool isFiniteFloat(std::string_view word) {
+    if (!word.empty() && word.front() == '+') word.remove_prefix(1);
+    double value = 0.0;
+    auto [end, error] = std::from_chars(word.data(), word.data() + word.size(), value);
+    return !word.empty() && error == std::errc() && end == word.data() + word.size() && std::isfinite(value) &&
+           std::abs(value) <= double(std::numeric_limits<float>::max());
 }
 
 inline bool isNumber(std::string_view word) {

@@ -100,6 +100,8 @@ INSTANTIATE_TEST_SUITE_P(
                ":4: vertex 1 has 2 coordinates, expected 3"},
         BadOff{"vertex_text", "OFF\n4 1 0\n" + v0 + v1 + "0.000000 one 0.000000\n" + v3 + "3 0 1 2\n",
                ":5: vertex 2: expected a coordinate, found 'one'"},
+        BadOff{"faces_after_declared", "OFF\n4 1 0\n" + v0 + v1 + v2 + v3 + "3 0 1 2\n3 0 2 3\n",
+               ":8: a face after the 1 faces the header declares"},
         BadOff{"vertex_nan", "OFF\n4 1 0\n" + v0 + "nan 0.000000 0.000000\n" + v2 + v3 + "3 0 1 2\n",
                ":4: vertex 1 has a non-finite coordinate 'nan'"},
         BadOff{"vertex_inf", "OFF\n4 1 0\n" + v0 + v1 + v2 + "0.000000 -inf 0.000000\n" + "3 0 1 2\n",
@@ -337,6 +339,20 @@ TEST(MalformedStl, AsciiSolidWithoutFacets) {
 TEST(MalformedObj, IndexOutOfRange) {
     ScratchDirectory scratch;
     EXPECT_READ_ERROR(scratch.writeFile("index.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n"), ": ");
+}
+
+// VTK's OBJ reader reads these as 0 (or FLT_MAX) without a word; each would move a vertex.
+TEST(MalformedObj, CoordinatesThatAreNotFiniteNumbers) {
+    ScratchDirectory scratch;
+    const std::string faces = "v 1 0 0\nv 0 1 0\nf 1 2 3\n";
+    EXPECT_READ_ERROR(scratch.writeFile("nan.obj", "v nan 0 0\n" + faces), ":1: vertex 1 has a coordinate that is not a finite number: 'nan'");
+    EXPECT_READ_ERROR(scratch.writeFile("inf.obj", "v 0 -inf 0\n" + faces), ":1: vertex 1 has a coordinate that is not a finite number: '-inf'");
+    EXPECT_READ_ERROR(scratch.writeFile("huge.obj", "v 0 0 1e39\n" + faces), ":1: vertex 1 has a coordinate that is not a finite number: '1e39'");
+    EXPECT_READ_ERROR(scratch.writeFile("text.obj", "v 0.5 x 0.5\n" + faces), ":1: vertex 1 has a coordinate that is not a finite number: 'x'");
+    EXPECT_READ_ERROR(scratch.writeFile("two.obj", "v 0 0 0\nv 1 2\nv 0 1 0\nf 1 2 3\n"), ":2: vertex 2 has fewer than 3 coordinates");
+    // A w or an RGB colour after the coordinates is allowed.
+    ScratchDirectory good;
+    EXPECT_EQ(readMesh(good.writeFile("colour.obj", "v 0 0 0 1 0 0\nv 1 0 0 0 1 0\nv 0 1 0 0 0 1\nf 1 2 3\n")).faceCount(), 1u);
 }
 
 TEST(MalformedObj, VerticesOnly) {
