@@ -7,6 +7,9 @@
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 seconds=${1:-60}
+# CONESCOPE_FUZZ_SEED fixes libFuzzer's random seed (the test command uses 1, so CI is repeatable);
+# 0, the default, lets libFuzzer pick one.
+seed=${CONESCOPE_FUZZ_SEED:-0}
 build=${CONESCOPE_SANITIZE_BUILD_DIR:-$root/build-sanitize}
 "$root/scripts/install-dependencies.sh"
 CC=clang CXX=clang++ cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCONESCOPE_FUZZ=ON \
@@ -31,10 +34,17 @@ for target in "${targets[@]}"; do
         done < <(find "$root/datasets" "$root/tests/data" -name "*.$extension" -size -200k -print0)
         index=$((index + 1))
       done ;;
-    fuzz_mesh_ingestion) head -c 4096 /dev/urandom > "$corpus/random.seed" ;;
+    fuzz_mesh_ingestion)
+      # The target reads raw bytes as counts, floats and indices: the first 4 KB of each bundled
+      # mesh make varied, reproducible seeds.
+      for file in "$root"/datasets/*.off "$root"/datasets/*.vtp; do
+        head -c 4096 "$file" > "$corpus/$(basename "$file").seed"
+      done ;;
   esac
+  # Inputs that once crashed a target stay in its corpus, so every run replays them first.
+  find "$root/fuzz/regressions" -name "$target-*" -exec cp {} "$corpus/" \;
   echo "conescope: fuzzing $target for ${seconds}s"
-  if ! (cd "$out/$target" && "$build/fuzz/$target" -max_total_time="$seconds" -rss_limit_mb=2048 -timeout=20 \
+  if ! (cd "$out/$target" && "$build/fuzz/$target" -max_total_time="$seconds" -rss_limit_mb=2048 -timeout=20 -seed="$seed" \
          -max_len=65536 -print_final_stats=1 "$corpus" 2>"$out/$target/log.txt"); then
     echo "conescope: $target found a problem; see $out/$target/log.txt and the crash-* files there" >&2
     tail -40 "$out/$target/log.txt" >&2

@@ -60,10 +60,28 @@ MeshoptCluster meshoptBounds(const Mesh& mesh, const std::vector<glm::vec3>& wor
     }
     MeshoptCluster result;
     if (indices.empty() || indices.size() / 3 > 512) return result;  // meshoptimizer's own limit
+    // meshoptimizer squares coordinates in float: at 1e19 and beyond that overflows to a NaN normal
+    // and trips its internal assertion (found by fuzzing). It gets the cluster's own vertices moved
+    // to their box centre and scaled by a power of two to unit size instead; centre and apex are
+    // mapped back. Normals and the cone do not change under this similarity.
+    std::vector<uint32_t> local(indices);
+    std::sort(local.begin(), local.end());
+    local.erase(std::unique(local.begin(), local.end()), local.end());
+    glm::dvec3 low(world[local.front()]), high(low);
+    for (uint32_t v : local) low = glm::min(low, glm::dvec3(world[v])), high = glm::max(high, glm::dvec3(world[v]));
+    const glm::dvec3 middle = 0.5 * (low + high);
+    const double extent = std::max({high.x - low.x, high.y - low.y, high.z - low.z});
+    int exponent = 0;
+    if (extent > 0.0) std::frexp(extent, &exponent);
+    const double scale = std::ldexp(1.0, -exponent);
+    std::vector<glm::vec3> scaled(local.size());
+    for (size_t i = 0; i < local.size(); ++i) scaled[i] = glm::vec3((glm::dvec3(world[local[i]]) - middle) * scale);
+    for (uint32_t& index : indices)
+        index = uint32_t(std::lower_bound(local.begin(), local.end(), index) - local.begin());
     const meshopt_Bounds bounds =
-        meshopt_computeClusterBounds(indices.data(), indices.size(), &world[0].x, world.size(), sizeof(glm::vec3));
-    result.center = glm::dvec3(bounds.center[0], bounds.center[1], bounds.center[2]);
-    result.apex = glm::dvec3(bounds.cone_apex[0], bounds.cone_apex[1], bounds.cone_apex[2]);
+        meshopt_computeClusterBounds(indices.data(), indices.size(), &scaled[0].x, scaled.size(), sizeof(glm::vec3));
+    result.center = middle + glm::dvec3(bounds.center[0], bounds.center[1], bounds.center[2]) / scale;
+    result.apex = middle + glm::dvec3(bounds.cone_apex[0], bounds.cone_apex[1], bounds.cone_apex[2]) / scale;
     if (bounds.cone_cutoff >= 1.0f) return result;  // meshoptimizer: wider than a hemisphere
     const glm::dvec3 axis(bounds.cone_axis[0], bounds.cone_axis[1], bounds.cone_axis[2]);
     ConeOfNormals cone = coneAroundAxis(axis, normals.data(), normals.size());

@@ -394,7 +394,11 @@ private:
             if (f != exceptFace && usable_[f]) scratch_.push_back(geometry_.normals[f]);
         return scratch_.size();
     }
-    Cap exactCap(uint32_t cluster) { return minimalCap(scratch_.data(), gatherNormals(cluster, kNone)); }
+    // gatherNormals fills scratch_ first: its data() is only valid after that call.
+    Cap exactCap(uint32_t cluster) {
+        const size_t count = gatherNormals(cluster, kNone);
+        return minimalCap(scratch_.data(), count);
+    }
     // The cap once `face` joins `cluster`.
     Cap capAdding(uint32_t cluster, uint32_t face) {
         const Cap& current = clusters_[cluster].cap;
@@ -413,7 +417,8 @@ private:
     Cap capRemoving(uint32_t face) {
         const uint32_t cluster = clusterOf_[face];
         if (!bindsCap(face)) return clusters_[cluster].cap;
-        return minimalCap(scratch_.data(), gatherNormals(cluster, face));
+        const size_t count = gatherNormals(cluster, face);
+        return minimalCap(scratch_.data(), count);
     }
 
     // --- connectivity -----------------------------------------------------------------------
@@ -577,7 +582,10 @@ void Optimizer::grow(double triangleCap) {
             centroidSum += geometry_.centroids[f];
             if (usable_[f] && !contains(grown.cap, geometry_.normals[f])) {
                 if (grown.cap.cosRadius > 1.0) grown.cap = capThrough(geometry_.normals[f]);
-                else if (grown.cap.cosRadius > 0.0) grown.cap = minimalCapWith(scratch_.data(), gatherNormals(cluster, f), geometry_.normals[f]);
+                else if (grown.cap.cosRadius > 0.0) {
+                    const size_t count = gatherNormals(cluster, f);
+                    grown.cap = minimalCapWith(scratch_.data(), count, geometry_.normals[f]);
+                }
             }
             for (const uint32_t* g = acrossEdge_.begin(f); g != acrossEdge_.end(f); ++g)
                 if (clusterOf_[*g] == kNone && candidateOf[*g] != cluster) candidateOf[*g] = cluster, candidates.push_back(*g);

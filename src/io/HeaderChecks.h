@@ -12,6 +12,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 namespace conescope {
 
@@ -19,7 +20,9 @@ namespace conescope {
 // fixed sizes and list counts in binary): every element present and complete, list counts
 // non-negative, face indices within the vertex count, ASCII lines short enough for vtkPLY's line
 // buffer. Throws MeshReadError ("path:line: what" for ASCII).
-void checkPlyFile(const std::string& path);
+// Returns the values of a scalar face property named cluster_id (empty when there is none):
+// vtkPLYReader drops it, and it is how a partition made elsewhere reaches the file builder.
+std::vector<double> checkPlyFile(const std::string& path);
 
 // For files VTK will read as binary STL: throws MeshReadError if shorter than the 84-byte header,
 // if the triangle count in the header exceeds what the file holds, or if it holds no triangle.

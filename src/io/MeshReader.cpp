@@ -1,7 +1,9 @@
 #include "io/MeshReader.h"
 
 #include <algorithm>
+#include <map>
 #include <new>
+#include <vector>
 
 #include <vtkAlgorithm.h>
 #include <vtkErrorCode.h>
@@ -45,9 +47,12 @@ std::string supportedExtensionList() {
 // The reader for a VTK-handled extension, pointed at the file (for .vtp, at its patched text), after
 // the structural checks of HeaderChecks.h: VTK 9.1's readers trust their input and crash on some
 // damaged files, so each file is checked before VTK sees it.
-vtkSmartPointer<vtkAlgorithm> makeVtkReader(const std::string& path, const std::string& extension) {
+// Per-face arrays the VTK reader drops are returned in `droppedFaceArrays`.
+vtkSmartPointer<vtkAlgorithm> makeVtkReader(const std::string& path, const std::string& extension,
+                                            std::map<std::string, std::vector<double>>& droppedFaceArrays) {
     if (extension == ".ply") {
-        checkPlyFile(path);
+        std::vector<double> clusterIds = checkPlyFile(path);
+        if (!clusterIds.empty()) droppedFaceArrays["cluster_id"] = std::move(clusterIds);
         vtkSmartPointer<vtkPLYReader> reader = vtkSmartPointer<vtkPLYReader>::New();
         reader->SetFileName(path.c_str());
         return reader;
@@ -90,7 +95,8 @@ std::string describeFailure(const VtkMessageCapture& capture, vtkAlgorithm* read
 Mesh readWithVtk(const std::string& path, const std::string& extension) {
     ScopedClassicNumericLocale classicNumbers;
     VtkMessageCapture capture;
-    vtkSmartPointer<vtkAlgorithm> reader = makeVtkReader(path, extension);
+    std::map<std::string, std::vector<double>> droppedFaceArrays;
+    vtkSmartPointer<vtkAlgorithm> reader = makeVtkReader(path, extension, droppedFaceArrays);
     if (capture.hasErrors()) throw MeshReadError(path + ": " + describeFailure(capture, reader));
     capture.watch(reader);
     capture.watch(reader->GetExecutive());
@@ -106,7 +112,9 @@ Mesh readWithVtk(const std::string& path, const std::string& extension) {
         throw MeshReadError(path + ": no faces (" + std::to_string(polyData->GetNumberOfPoints()) + " points, " +
                             std::to_string(polyData->GetNumberOfLines()) + " lines, no polygons)");
     try {
-        return meshFromPolyData(polyData);
+        Mesh mesh = meshFromPolyData(polyData);
+        for (auto& [name, values] : droppedFaceArrays) mesh.faceArrays.emplace(name, std::move(values));
+        return mesh;
     } catch (const std::runtime_error& error) {
         throw MeshReadError(path + ": " + error.what());
     }

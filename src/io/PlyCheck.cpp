@@ -1,7 +1,9 @@
 // checkPlyFile: a full structural walk of a PLY file before vtkPLYReader sees it.
 #include "io/HeaderChecks.h"
 
+#include <charconv>
 #include <cstdint>
+#include <cstring>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -66,6 +68,9 @@ struct PlyHeader {
 class PlyChecker {
 public:
     PlyChecker(const std::string& path, std::string_view bytes) : path_(path), bytes_(bytes) {}
+
+    // The face element's cluster_id values, gathered by check().
+    std::vector<double> clusterIds;
 
     void check() {
         PlyHeader header = parseHeader();
@@ -234,8 +239,12 @@ private:
         }
     }
 
+    static bool isClusterId(const PlyElement& element, const PlyProperty& property) {
+        return element.name == "face" && !property.isList && property.name == "cluster_id";
+    }
+
     void checkAsciiElement(const PlyElement& element, uint64_t elementIndex, const std::vector<std::string_view>& words,
-                           size_t lineNumber) const {
+                           size_t lineNumber) {
         std::string elementName = "PLY " + element.name + " " + std::to_string(elementIndex);
         size_t word = 0;
         for (const PlyProperty& property : element.properties) {
@@ -243,6 +252,13 @@ private:
             if (!property.isList) {
                 if (!isNumber(words[word]))
                     fail(lineNumber, elementName + ": expected a number, found " + quotedForMessage(std::string(words[word])));
+                if (isClusterId(element, property)) {
+                    std::string_view digits = words[word];
+                    if (digits.front() == '+') digits.remove_prefix(1);
+                    double value = 0.0;
+                    std::from_chars(digits.data(), digits.data() + digits.size(), value);
+                    clusterIds.push_back(value);
+                }
                 ++word;
                 continue;
             }
@@ -277,6 +293,21 @@ private:
         return static_cast<int64_t>(raw);
     }
 
+    // Reads one number of any PLY type at position (the caller checked the bytes are there).
+    double binaryNumber(size_t position, const PlyType& type, bool bigEndian) const {
+        if (type.isInteger) return double(binaryInteger(position, type, bigEndian));
+        const uint64_t raw = uint64_t(binaryInteger(position, PlyType{type.size, true, false}, bigEndian));
+        if (type.size == 4) {
+            const uint32_t bits = uint32_t(raw);
+            float value = 0.0f;
+            std::memcpy(&value, &bits, 4);
+            return value;
+        }
+        double value = 0.0;
+        std::memcpy(&value, &raw, 8);
+        return value;
+    }
+
     void checkBinaryBody(const PlyHeader& header) {
         bool bigEndian = header.format == PlyFormat::BinaryBigEndian;
         size_t position = header.bodyOffset;
@@ -290,6 +321,7 @@ private:
                 for (const PlyProperty& property : element.properties) {
                     if (!property.isList) {
                         require(property.valueType.size, element, i);
+                        if (isClusterId(element, property)) clusterIds.push_back(binaryNumber(position, property.valueType, bigEndian));
                         position += property.valueType.size;
                         continue;
                     }
@@ -318,9 +350,11 @@ private:
 
 }  // namespace
 
-void checkPlyFile(const std::string& path) {
+std::vector<double> checkPlyFile(const std::string& path) {
     std::string bytes = readFileBytes(path);
-    PlyChecker(path, bytes).check();
+    PlyChecker checker(path, bytes);
+    checker.check();
+    return std::move(checker.clusterIds);
 }
 
 }  // namespace conescope

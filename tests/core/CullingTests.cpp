@@ -104,3 +104,26 @@ TEST(Culling, ExplanationMatchesTheDecision) {
             if (test == CullTest::Vertices) EXPECT_EQ(why.culled, why.pointsTested > 0 && why.pointsBack == why.pointsTested);
         }
 }
+
+// meshoptimizer squares coordinates in float; at 1e30 that overflowed to a NaN normal and aborted
+// inside meshopt_computeClusterBounds (found by fuzz_mesh_ingestion). The meshopt cone must work at
+// any scale a float holds, and cull the same way at every scale.
+TEST(Culling, MeshoptConeWorksAtExtremeScales) {
+    for (double scale : {1e-30, 1e-6, 1.0, 1e6, 1e30}) {
+        Mesh mesh;
+        const float s = float(scale);
+        mesh.positions = {{0, 0, 0}, {s, 0, 0}, {s, s, 0.2f * s}, {0, s, 0}};
+        mesh.addFace({0, 1, 2});
+        mesh.addFace({0, 2, 3});
+        const std::vector<glm::vec3> world = worldPositions(mesh);
+        const FaceGeometry faces = computeFaceGeometry(mesh);
+        const Partition partition{{0, 0}, 1};
+        const ClusterBounds bounds = computeClusterBounds(mesh, world, faces, partition, ConeMethod::Meshopt);
+        ASSERT_TRUE(bounds.cones[0].cullable) << scale;
+        const CullingInput input{mesh, world, faces, bounds};
+        for (CullTest test : {CullTest::Apex, CullTest::MeshoptSphere, CullTest::Sphere}) {
+            EXPECT_TRUE(cullCluster(input, 0, Eye::perspective(glm::dvec3(0.5, 0.5, -10) * scale), test)) << scale << " " << toString(test);
+            EXPECT_FALSE(cullCluster(input, 0, Eye::perspective(glm::dvec3(0.5, 0.5, 10) * scale), test)) << scale << " " << toString(test);
+        }
+    }
+}

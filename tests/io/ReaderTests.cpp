@@ -1,5 +1,7 @@
 // Good files in every format: counts, face sizes, orientation and per-face arrays come through.
 #include <algorithm>
+#include <array>
+#include <cstring>
 #include <cmath>
 #include <set>
 
@@ -222,6 +224,42 @@ TEST(PolyDataConversion, NegativePointIdThrows) {
     vtkIdType bad[] = {0, 1, -5};
     polyData->GetPolys()->InsertNextCell(3, bad);
     EXPECT_THROW(meshFromPolyData(polyData), std::runtime_error);
+}
+
+// vtkPLYReader drops face properties; cluster_id is read by the PLY check so that a partition made
+// elsewhere reaches the file builder, in ASCII and in binary of either byte order.
+TEST(PlyFile, FaceClusterIdsComeThrough) {
+    testing::ScratchDirectory scratch;
+    const std::string header = "element vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+                               "element face 2\nproperty list uchar int vertex_indices\nproperty int cluster_id\nend_header\n";
+    const Mesh ascii = readMesh(scratch.writeFile(
+        "ascii.ply", "ply\nformat ascii 1.0\n" + header + "0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2 7\n3 0 2 3 -2\n"));
+    ASSERT_EQ(ascii.faceArrays.count("cluster_id"), 1u);
+    EXPECT_EQ(ascii.faceArrays.at("cluster_id"), (std::vector<double>{7, -2}));
+
+    for (bool bigEndian : {false, true}) {
+        auto putInteger = [&](std::string& out, uint32_t value, int bytes) {
+            for (int k = 0; k < bytes; ++k) {
+                const int shift = bigEndian ? 8 * (bytes - 1 - k) : 8 * k;
+                out.push_back(char((value >> shift) & 0xff));
+            }
+        };
+        auto putFloat = [&](std::string& out, float value) {
+            uint32_t bits = 0;
+            std::memcpy(&bits, &value, 4);
+            putInteger(out, bits, 4);
+        };
+        std::string body;
+        for (float coordinate : {0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 1.f, 1.f, 0.f, 0.f, 1.f, 0.f}) putFloat(body, coordinate);
+        for (auto [a, b, c, id] : {std::array<uint32_t, 4>{0, 1, 2, 3}, std::array<uint32_t, 4>{0, 2, 3, 40000}}) {
+            body.push_back(char(3));
+            putInteger(body, a, 4), putInteger(body, b, 4), putInteger(body, c, 4), putInteger(body, id, 4);
+        }
+        const std::string format = bigEndian ? "binary_big_endian" : "binary_little_endian";
+        const Mesh binary = readMesh(scratch.writeFile(format + ".ply", "ply\nformat " + format + " 1.0\n" + header + body));
+        ASSERT_EQ(binary.faceArrays.count("cluster_id"), 1u) << format;
+        EXPECT_EQ(binary.faceArrays.at("cluster_id"), (std::vector<double>{3, 40000})) << format;
+    }
 }
 
 }  // namespace
