@@ -142,6 +142,8 @@ QString testSection(const ClusterReportInput& input) {
                 table.row(QStringLiteral("rule"), QStringLiteral("culled iff v&middot;V1 &gt; sin &alpha; for v = (apex &minus; e)/|apex &minus; e|: "
                                                                  "the apex lies behind every face plane"))
                     .row(QStringLiteral("apex"), vector3(why.apex))
+                    .row(QStringLiteral("v"), vector3(why.view))
+                    .row(QStringLiteral("v&middot;V1"), number(why.viewDotAxis))
                     .row(QStringLiteral("threshold sin &alpha; (+ margin)"), number(why.threshold));
                 break;
             case CullTest::MeshoptSphere:

@@ -102,7 +102,7 @@ CommandLineResult parseCommandLine(const QStringList& arguments) {
         QStringLiteral("name"));
     const QCommandLineOption eye(QStringLiteral("eye"), QStringLiteral("Cull eye position."), QStringLiteral("x,y,z"));
     const QCommandLineOption builder(QStringLiteral("builder"),
-                                     QStringLiteral("meshlet, kmeans, meshopt or file (default %1).")
+                                     QStringLiteral("optimized, meshlet, kmeans, meshopt or file (default %1).")
                                          .arg(QString::fromStdString(toString(defaults.builder))),
                                      QStringLiteral("name"));
     const QCommandLineOption maxVertices(QStringLiteral("max-verts"), QStringLiteral("Meshlet vertex limit."), QStringLiteral("n"));

@@ -133,6 +133,13 @@ CullExplanation explainCull(const CullingInput& input, uint32_t cluster, const E
     why.viewDotAxis = glm::dot(why.view, cone.axis);
     why.eyeInsideSphere = !eye.orthographic && !(why.distance > sphere.radius);
     why.sphereAngleDegrees = why.eyeInsideSphere ? 90.0 : glm::degrees(std::asin(sphere.radius / why.distance));
+    // The apex test's view vector runs from the eye to the apex, not to the sphere's centre.
+    if (test == CullTest::Apex && !eye.orthographic) {
+        const glm::dvec3 toApex = why.apex - eye.position;
+        const double length = glm::length(toApex);
+        why.view = length > 0.0 ? toApex / length : glm::dvec3(0.0);
+        why.viewDotAxis = glm::dot(why.view, cone.axis);
+    }
     if (test == CullTest::Sphere && !why.eyeInsideSphere && !eye.orthographic)
         why.threshold = std::cos(glm::radians(why.angleBDegrees - why.sphereAngleDegrees)) + kCullMargin;
     why.corners = aabbCorners(bounds.boxes[cluster]);

@@ -102,6 +102,8 @@ TEST(Culling, ExplanationMatchesTheDecision) {
             if (why.culled) EXPECT_EQ(why.frontFaces, 0u);
             if (test == CullTest::Aabb) EXPECT_EQ(why.culled, why.pointsBack == 8);
             if (test == CullTest::Vertices) EXPECT_EQ(why.culled, why.pointsTested > 0 && why.pointsBack == why.pointsTested);
+            // What the picking panel shows for the default test: v·V1 against sin α decides.
+            if (test == CullTest::Apex && why.cullable) EXPECT_EQ(why.culled, why.viewDotAxis > why.threshold) << c;
         }
 }
 

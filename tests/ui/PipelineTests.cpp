@@ -181,7 +181,7 @@ private slots:
         const PreparedMesh prepared = loadMesh(datasetPath("icosphere.off").toStdString(), false);
         const ClusterSet clusters = buildClusters(prepared, Settings{});
         const Eye eye = Eye::perspective({0.0, 0.0, 3.0});
-        for (CullTest test : {CullTest::Sphere, CullTest::Aabb}) {
+        for (CullTest test : {CullTest::Sphere, CullTest::Aabb, CullTest::Apex}) {
             ClusterReportInput input;
             input.cluster = 1;
             input.bounds = &clusters.bounds;
@@ -191,7 +191,9 @@ private slots:
             const QString html = clusterReportHtml(input);
             QVERIFY(html.contains(QStringLiteral("Cluster 1")));
             QVERIFY(html.contains(QString::number(input.explanation.threshold, 'g', 7)));
-            QVERIFY(html.contains(QString::number(input.explanation.viewDotAxis, 'g', 7)) || test != CullTest::Sphere);
+            // v·V1 against the threshold is the decision of the sphere and (the default) apex tests.
+            QVERIFY(html.contains(QString::number(input.explanation.viewDotAxis, 'g', 7)) || test == CullTest::Aabb);
+            if (test == CullTest::Apex) QVERIFY(html.contains(QStringLiteral("v&middot;V1")));
             if (test == CullTest::Sphere) QVERIFY(html.contains(QStringLiteral("asin(r/d)")));
             if (test == CullTest::Aabb)
                 for (int corner = 0; corner < 8; ++corner)
