@@ -284,8 +284,9 @@ void MainWindow::createActions() {
         const QKeySequence key = number <= 9 ? QKeySequence(Qt::Key_0 + number) : QKeySequence();
         QAction* action = addAction(layers, tr("Show %1").arg(QString::fromStdString(toString(layer))), key);
         action->setCheckable(true);
-        // The scene's defaults: everything but normals, boxes and spheres.
-        action->setChecked(layer != Layer::Normals && layer != Layer::Boxes && layer != Layer::Spheres);
+        // A first look shows clusters, cones and boxes; normals and spheres crowd the view, so
+        // they wait for their keys. Every new scene takes these states when it is shown.
+        action->setChecked(layer != Layer::Normals && layer != Layer::Spheres);
         connect(action, &QAction::toggled, this, [this, layer](bool visible) {
             if (scene_) scene_->setLayerVisible(layer, visible);
             render();

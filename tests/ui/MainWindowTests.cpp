@@ -162,6 +162,11 @@ private slots:
         QCOMPARE(shown.views, defaults.views);
         QCOMPARE(shown.distance, defaults.distance);
         QCOMPARE(shown.orthographic, defaults.orthographic);
+        // A first look shows the clusters with their cones and boxes.
+        for (Layer layer : {Layer::Faces, Layer::Borders, Layer::Cones, Layer::Boxes, Layer::Eye})
+            QVERIFY2(fresh.layerVisible(layer), toString(layer).c_str());
+        QVERIFY(!fresh.layerVisible(Layer::Normals));
+        QVERIFY(!fresh.layerVisible(Layer::Spheres));
     }
 
     void settingsWidgetsRecompute() {
