@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <map>
 
 #include <nlohmann/json.hpp>
@@ -16,6 +17,7 @@ namespace {
 
 using clitest::CliRun;
 using clitest::dataset;
+using clitest::datasetsDir;
 using clitest::readTextFile;
 using clitest::runCli;
 using clitest::ScratchDirectory;
@@ -147,6 +149,27 @@ TEST(CliStats, NoFalseCullsForAnyConeAndTest) {
             for (const nlohmann::json& cluster : result["clusters"]) EXPECT_EQ(cluster["false_culls"], 0);
         }
     }
+}
+
+// Every bundled mesh, every builder that takes it, every cone and every test: no false cull.
+TEST(CliStats, NoFalseCullsOnAnyBundledMeshWithAnyBuilder) {
+    size_t runs = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(datasetsDir())) {
+        const std::string extension = entry.path().extension().string();
+        if (extension != ".off" && extension != ".vtp") continue;
+        std::vector<std::string> builders = {"optimized", "meshlet", "kmeans", "meshopt"};
+        if (extension == ".vtp") builders.push_back("file");  // the bundled .vtp carries cluster_id
+        for (const std::string& builder : builders) {
+            SCOPED_TRACE(entry.path().filename().string() + " " + builder);
+            const nlohmann::json json = runStatsJson({entry.path().string(), "--builder", builder, "--cone", "all",
+                                                      "--test", "all", "--views", "8", "--no-per-view", "--no-per-cluster"});
+            ASSERT_EQ(json["results"].size(), allConeMethods().size() * allCullTests().size());
+            for (const nlohmann::json& result : json["results"])
+                EXPECT_EQ(result["false_culls"], 0) << result["cone"] << "/" << result["test"];
+            ++runs;
+        }
+    }
+    EXPECT_GE(runs, 30u);  // 8 bundled meshes
 }
 
 TEST(CliStats, CsvHasThreeSectionsWithOneRowPerViewAndCluster) {
