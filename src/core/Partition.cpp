@@ -159,10 +159,12 @@ Partition buildKMeans(const Mesh& mesh, const FaceGeometry& faces, size_t cluste
         glm::dvec3 low = centerPositions[0], high = centerPositions[0];
         for (const glm::dvec3& c : centerPositions) low = glm::min(low, c), high = glm::max(high, c);
         const double cell = 1.0;
-        const glm::ivec3 dims = glm::clamp(glm::ivec3(glm::floor((high - low) / cell)) + 1, 1, 256);
+        // Clamped in double before converting: a double beyond int's range converts to nothing defined.
+        const glm::ivec3 dims(glm::clamp(glm::floor((high - low) / cell) + 1.0, 1.0, 256.0));
         const glm::dvec3 cellSize = glm::max((high - low) / glm::dvec3(dims), glm::dvec3(1e-300));
         auto cellOf = [&](const glm::dvec3& p) {
-            return glm::clamp(glm::ivec3(glm::floor((p - low) / cellSize)), glm::ivec3(0), dims - 1);
+            // On a flat axis cellSize is 1e-300 and the quotient is huge: clamp before converting.
+            return glm::ivec3(glm::clamp(glm::floor((p - low) / cellSize), glm::dvec3(0.0), glm::dvec3(dims - 1)));
         };
         const size_t cellCount = size_t(dims.x) * dims.y * dims.z;
         std::vector<uint32_t> cellStarts(cellCount + 1, 0), cellCenters(clusterCount);

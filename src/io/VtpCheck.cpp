@@ -151,6 +151,29 @@ private:
         }
         count(array, "NumberOfTuples");
         count(array, "offset");
+        checkAsciiOffsets(array);
+    }
+
+    // VTK sizes a cell section's connectivity by its last offset before reading it, so a forged
+    // offset (4294967295 in a 1 kB file) is a 32 GB allocation. Offsets are connectivity indices:
+    // no larger than the number of values the file can hold.
+    void checkAsciiOffsets(const XmlStartTag& array) const {
+        if (array.selfClosing || attributeValue(array.attributes, "Name") != std::optional<std::string_view>("offsets")) return;
+        std::optional<std::string_view> format = attributeValue(array.attributes, "format");
+        if (format && *format != "ascii") return;
+        std::string_view rest = std::string_view(bytes_).substr(array.end);
+        std::string_view content = rest.substr(0, rest.find('<'));
+        size_t index = 0;
+        text::LineCursor lines(content, 0, 0);
+        while (!lines.atEnd())
+            for (std::string_view word : text::splitWords(lines.next())) {
+                std::optional<int64_t> value = text::parseInteger(word);
+                if (!value) continue;  // VTK reports non-numbers itself
+                if (*value < 0 || static_cast<uint64_t>(*value) > countLimit_)
+                    fail("offsets value " + std::to_string(index) + " is " + std::to_string(*value) +
+                         ", more connectivity than the file can hold (forged offset or truncated file)");
+                ++index;
+            }
     }
 
     // Raw appended data: each array starts with a header of UInt32 or UInt64 words giving its byte

@@ -420,6 +420,16 @@ TEST(MalformedVtp, ConnectivityOutOfRange) {
     EXPECT_READ_ERROR(scratch.writeFile("index.vtp", text), "uses vertex 99");
 }
 
+// VTK sizes the connectivity by the last offset before reading it: a forged offset was a 32 GB
+// allocation (found by fuzz_mesh_readers).
+TEST(MalformedVtp, ForgedOffsetIsRejectedBeforeVtkAllocates) {
+    ScratchDirectory scratch;
+    std::string text = fileBytes(formatSamplesDir() / "cube.vtp");
+    ASSERT_NE(text.find(">4 8 12 16 20 24<"), std::string::npos);
+    replaceFirst(text, ">4 8 12 16 20 24<", ">4 8 12 16 20\n4294967295<");
+    EXPECT_READ_ERROR(scratch.writeFile("offset.vtp", text), "is 4294967295, more connectivity than the file can hold");
+}
+
 TEST(MalformedVtp, NoPolygons) {
     ScratchDirectory scratch;
     std::string text = "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"1.0\">\n<PolyData>\n"
