@@ -46,11 +46,9 @@ size_t legacyTypeSize(const std::string& type) {
 bool isFloatingType(const std::string& type) { return type == "float" || type == "double"; }
 
 bool fitsFloatingType(std::string_view token, const std::string& type) {
-    if (!token.empty() && token.front() == '+') token.remove_prefix(1);
-    double value = 0.0;
-    auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
-    if (token.empty() || error != std::errc() || end != token.data() + token.size() || !std::isfinite(value)) return false;
-    return type == "double" || std::abs(value) <= std::numeric_limits<float>::max();
+    if (type != "double") return text::isFiniteFloat(token);
+    std::optional<double> value = text::parseNumber(token);
+    return value && std::isfinite(*value);
 }
 
 bool fitsIntegerType(int64_t value, const std::string& type) {

@@ -1,7 +1,6 @@
 // checkPlyFile: a full structural walk of a PLY file before vtkPLYReader sees it.
 #include "io/HeaderChecks.h"
 
-#include <charconv>
 #include <cstdint>
 #include <cstring>
 #include <optional>
@@ -252,13 +251,7 @@ private:
             if (!property.isList) {
                 if (!isNumber(words[word]))
                     fail(lineNumber, elementName + ": expected a number, found " + quotedForMessage(std::string(words[word])));
-                if (isClusterId(element, property)) {
-                    std::string_view digits = words[word];
-                    if (digits.front() == '+') digits.remove_prefix(1);
-                    double value = 0.0;
-                    std::from_chars(digits.data(), digits.data() + digits.size(), value);
-                    clusterIds.push_back(value);
-                }
+                if (isClusterId(element, property)) clusterIds.push_back(*text::parseNumber(words[word]));
                 ++word;
                 continue;
             }

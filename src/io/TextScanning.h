@@ -3,8 +3,8 @@
 
 #include <charconv>
 #include <cmath>
-#include <limits>
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <string_view>
 #include <vector>
@@ -33,21 +33,22 @@ inline std::optional<int64_t> parseInteger(std::string_view word) {
     return value;
 }
 
-// A finite number that a float can hold: what a coordinate must be. VTK's text readers turn
-// anything else (nan, inf, 1e39, "abc") into 0 or FLT_MAX without a word, so the checks reject it first.
-inline bool isFiniteFloat(std::string_view word) {
+// The whole word as a number (a leading '+' allowed), or nothing.
+inline std::optional<double> parseNumber(std::string_view word) {
     if (!word.empty() && word.front() == '+') word.remove_prefix(1);
     double value = 0.0;
     auto [end, error] = std::from_chars(word.data(), word.data() + word.size(), value);
-    return !word.empty() && error == std::errc() && end == word.data() + word.size() && std::isfinite(value) &&
-           std::abs(value) <= double(std::numeric_limits<float>::max());
+    if (word.empty() || error != std::errc() || end != word.data() + word.size()) return std::nullopt;
+    return value;
 }
 
-inline bool isNumber(std::string_view word) {
-    if (!word.empty() && word.front() == '+') word.remove_prefix(1);
-    double value = 0;
-    auto [end, error] = std::from_chars(word.data(), word.data() + word.size(), value);
-    return !word.empty() && error == std::errc() && end == word.data() + word.size();
+inline bool isNumber(std::string_view word) { return parseNumber(word).has_value(); }
+
+// A finite number that a float can hold: what a coordinate must be. VTK's text readers turn
+// anything else (nan, inf, 1e39, "abc") into 0 or FLT_MAX without a word, so the checks reject it first.
+inline bool isFiniteFloat(std::string_view word) {
+    std::optional<double> value = parseNumber(word);
+    return value && std::isfinite(*value) && std::abs(*value) <= double(std::numeric_limits<float>::max());
 }
 
 // Splits text into lines one at a time, remembering 1-based line numbers.
