@@ -76,7 +76,11 @@ SettingsPanel::SettingsPanel(QWidget* parent) : QWidget(parent) {
     maxVertices_ = countBox(3, 255, this);
     maxTriangles_ = countBox(1, 512, this);
     clusterCount_ = countBox(0, 10000000, this);
-    clusterCount_->setSpecialValueText(tr("auto (triangles / max triangles)"));
+    // 0 leaves the count to the builder (Settings::clusterCount), which differs per builder.
+    clusterCount_->setSpecialValueText(tr("auto (the builder's default)"));
+    clusterCount_->setToolTip(tr("Cluster budget. Auto: the optimized builder aims at about the count meshoptimizer "
+                                 "reaches at these limits; k-means uses triangles / max triangles; the meshlet and "
+                                 "meshopt builders always choose their own count."));
     clusterFile_ = new QLineEdit(this);
     clusterFile_->setPlaceholderText(tr("the mesh's cluster_id array"));
     clusterFile_->setClearButtonEnabled(true);
