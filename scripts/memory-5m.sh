@@ -11,6 +11,7 @@ set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build=${CONESCOPE_BENCH_BUILD_DIR:-$root/build-bench}
 mesh=$build/torus-5m.off
+"$root/scripts/install-dependencies.sh"  # GNU time and python3 among them
 if [[ ! -x "$build/src/cli/conescope-cli" ]]; then
   cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DCONESCOPE_BUILD_GUI=OFF >/dev/null
   cmake --build "$build" -j"$(nproc)" --target conescope-cli
