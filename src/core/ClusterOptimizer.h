@@ -26,9 +26,12 @@ size_t defaultClusterBudget(const Mesh& mesh, const MeshletLimits& limits);
 //     (a full neighbour first passes one of its own faces on), or three are cut into two,
 //  3. local search: border faces move to the neighbouring cluster where the objective gains,
 //     first greedily, then in annealing sweeps that accept a shrinking random loss, then greedily.
+// Annealing gets a fixed budget of face visits; a mesh too large for a few slow-cooling sweeps
+// gets none. A mesh of more than 2^17 faces is cut at median centroids into parts of at most that
+// many, which share the budget by triangles and are optimised independently, on all cores.
 // targetClusters = 0 uses defaultClusterBudget. The result has at most targetClusters clusters
 // whenever the reduction gets there (it stops a few above on meshes that do not allow it).
-// Deterministic: the same input gives the same partition.
+// Deterministic: the same input gives the same partition, on any number of cores.
 Partition buildOptimizedClusters(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits,
                                  size_t targetClusters = 0);
 
