@@ -34,6 +34,17 @@ std::string fileBytes(const std::filesystem::path& path) {
     return std::string(std::istreambuf_iterator<char>(input), std::istreambuf_iterator<char>());
 }
 
+// Reading a sample of tests/data/formats with the first `from` replaced by `to` must fail with a
+// message naming the file and holding `fragment`.
+void expectErrorWhenReplaced(const std::string& sample, const std::string& from, const std::string& to,
+                             const std::string& fragment) {
+    SCOPED_TRACE(sample + ": '" + from + "' -> '" + to + "'");
+    std::string text = fileBytes(formatSamplesDir() / sample);
+    replaceFirst(text, from, to);
+    ScratchDirectory scratch;
+    EXPECT_READ_ERROR(scratch.writeFile(sample, text), fragment);
+}
+
 // Deterministic noise with NUL bytes and high bytes: the "binary garbage" case for every format.
 std::string garbageBytes(size_t size, unsigned seed) {
     std::mt19937 generator(seed);
@@ -296,6 +307,30 @@ TEST(MalformedPly, NegativeListLengthInBinary) {
     std::string face = std::string("\xff\xff\xff\xff", 4) + body.substr(8 * 12 + 1, 12);
     std::string bodyWithIntCounts = body.substr(0, 8 * 12) + face;
     EXPECT_READ_ERROR(scratch.writeFile("negative.ply", header + bodyWithIntCounts), "has negative list length -1");
+}
+
+// vtkPLY reads only the elements the header declares: a count too small dropped the rest.
+TEST(MalformedPly, FaceCountSmallerThanTheFaces) {
+    expectErrorWhenReplaced("cube.ply", "element face 6", "element face 5",
+                            ":24: data after the last element the header declares (8 vertex, 5 face): is a count in the header too small?");
+}
+
+TEST(MalformedPly, VertexCountSmallerThanTheVertices) {
+    // With integer coordinates the last vertex line reads as a face without indices, and the faces
+    // shift by one line: only the line left over at the end shows the count is wrong.
+    ScratchDirectory scratch;
+    std::string text = "ply\nformat ascii 1.0\nelement vertex 3\nproperty int x\nproperty int y\nproperty int z\n"
+                       "element face 1\nproperty list uchar int vertex_indices\nend_header\n"
+                       "0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2\n";
+    EXPECT_READ_ERROR(scratch.writeFile("vertices.ply", text), ":14: data after the last element the header declares (3 vertex, 1 face)");
+    replaceFirst(text, "element vertex 3", "element vertex 4");
+    EXPECT_EQ(readMesh(scratch.writeFile("right.ply", text)).faceCount(), 1u);
+}
+
+TEST(MalformedPly, BlankLinesAfterTheDataAreFine) {
+    ScratchDirectory scratch;
+    std::string text = fileBytes(formatSamplesDir() / "cube.ply") + "\n  \r\n\n";
+    EXPECT_EQ(readMesh(scratch.writeFile("blank.ply", text)).faceCount(), 6u);
 }
 
 TEST(MalformedPly, CrlfLineEndsAreFine) {
