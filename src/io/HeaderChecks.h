@@ -25,8 +25,9 @@ namespace conescope {
 // vtkPLYReader drops it, and it is how a partition made elsewhere reaches the file builder.
 std::vector<double> checkPlyFile(const std::string& path);
 
-// For files VTK will read as binary STL: throws MeshReadError if shorter than the 84-byte header,
-// if the triangle count in the header exceeds what the file holds, or if it holds no triangle.
+// For files VTK will read as binary STL, and text files without ASCII STL's 'solid': throws
+// MeshReadError if shorter than the 84-byte header, if the triangle count in the header differs
+// from the whole triangles the file holds (a remainder under 50 bytes is allowed), or if it is 0.
 void checkStlFile(const std::string& path);
 
 // Legacy .vtk POLYDATA: walks every section as vtkPolyDataReader will (exact keywords, every

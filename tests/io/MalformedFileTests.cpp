@@ -349,12 +349,42 @@ TEST(MalformedStl, ForgedTriangleCount) {
     EXPECT_READ_ERROR(scratch.writeFile("forged.stl", bytes), "declares 2147483647 triangles but the file holds only 12");
 }
 
+// A short binary file with a text comment sniffs as text, and VTK then reported "Expecting 'solid'".
 TEST(MalformedStl, HeaderOnly) {
     ScratchDirectory scratch;
     std::string bytes = fileBytes(formatSamplesDir() / "cube-binary.stl").substr(0, 84);
     bytes.replace(80, 4, std::string(4, '\0'));
-    // 84 mostly-text bytes: VTK's sniffing calls this ASCII, so the message is a parse error.
-    EXPECT_READ_ERROR(scratch.writeFile("header.stl", bytes), ": ");
+    EXPECT_READ_ERROR(scratch.writeFile("header.stl", bytes),
+                      ": neither ASCII STL (it does not start with 'solid') nor binary STL: header declares 0 triangles "
+                      "(no faces; the file is 84 bytes)");
+}
+
+TEST(MalformedStl, ShorterThanTheHeader) {
+    ScratchDirectory scratch;
+    std::string bytes = fileBytes(formatSamplesDir() / "cube-binary.stl");
+    EXPECT_READ_ERROR(scratch.writeFile("text40.stl", bytes.substr(0, 40)),
+                      ": neither ASCII STL (it does not start with 'solid') nor binary STL: the file is 40 bytes, "
+                      "shorter than the 84-byte header");
+    EXPECT_READ_ERROR(scratch.writeFile("zero40.stl", std::string(40, '\0')),
+                      ": binary STL: the file is 40 bytes, shorter than the 84-byte header");
+    EXPECT_READ_ERROR(scratch.writeFile("cut84.stl", bytes.substr(0, 84)),
+                      "nor binary STL: header declares 12 triangles but the file holds only 0");
+}
+
+// vtkSTLReader reads only the triangles the header declares: a count too small dropped the rest.
+TEST(MalformedStl, TriangleCountSmallerThanTheTriangles) {
+    ScratchDirectory scratch;
+    std::string bytes = fileBytes(formatSamplesDir() / "cube-binary.stl");
+    bytes.replace(80, 4, std::string("\x0b\0\0\0", 4));
+    EXPECT_READ_ERROR(scratch.writeFile("count.stl", bytes),
+                      ": binary STL: header declares 11 triangles but the file's 684 bytes hold 12 (84 + 50 per triangle");
+}
+
+TEST(MalformedStl, PaddingShorterThanATriangleIsFine) {
+    ScratchDirectory scratch;
+    std::string bytes = fileBytes(formatSamplesDir() / "cube-binary.stl") + std::string(49, '\0');
+    EXPECT_EQ(readMesh(scratch.writeFile("padded.stl", bytes)).faceCount(), 12u);
+    EXPECT_READ_ERROR(scratch.writeFile("triangle.stl", bytes + '\0'), "declares 12 triangles but the file's 734 bytes hold 13");
 }
 
 TEST(MalformedStl, AsciiWithBrokenFacet) {
