@@ -31,8 +31,9 @@ std::vector<double> checkPlyFile(const std::string& path);
 void checkStlFile(const std::string& path);
 
 // Legacy .vtk POLYDATA: walks every section as vtkPolyDataReader will (exact keywords, every
-// declared value present and representable in its type, cell lists consistent, attribute data
-// complete), streaming through the data without allocating from counts. Throws MeshReadError.
+// declared value present and representable in its type, cell lists consistent with their counts,
+// attribute data complete, no values beyond a declared count), streaming through the data without
+// allocating from counts. Throws MeshReadError.
 void checkLegacyVtkFile(const std::string& path);
 
 // OBJ: every face/line/point corner is v, v/vt, v//vn or v/vt/vn with indices of elements that

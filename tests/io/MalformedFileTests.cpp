@@ -601,6 +601,21 @@ TEST(MalformedLegacyVtk, TruncatedCellDataIsAnErrorNotZeros) {
     EXPECT_READ_ERROR(scratch.writeFile("cut.vtk", text), "SCALARS: file ends after 4 of 6 values");
 }
 
+// VTK 4.x builds the polygons from the size alone; a count that disagrees is an inconsistent header.
+TEST(MalformedLegacyVtk, PolygonCountDisagreesWithTheCells) {
+    expectErrorWhenReplaced("cube.vtk", "POLYGONS 6 30", "POLYGONS 5 30", "POLYGONS: header declares 5 cells but its 30 values hold 6");
+    expectErrorWhenReplaced("cube.vtk", "POLYGONS 6 30", "POLYGONS 7 30", "POLYGONS: header declares 7 cells but its 30 values hold 6");
+}
+
+// VTK reads the values a header declares and takes the next word as a keyword: it stopped at the
+// sixth polygon's "4", and a too-small POINTS or CELL_DATA count is the same case.
+TEST(MalformedLegacyVtk, CountSmallerThanTheValues) {
+    expectErrorWhenReplaced("cube.vtk", "POLYGONS 6 30", "POLYGONS 5 25",
+                            ":20: POLYGONS: value '4' after the 25 values its header declares (is a count in the header too small?)");
+    expectErrorWhenReplaced("cube.vtk", "POINTS 8", "POINTS 7", ":13: POINTS: value '0.5' after the 21 values its header declares");
+    expectErrorWhenReplaced("cube.vtk", "CELL_DATA 6", "CELL_DATA 5", ":29: SCALARS: value '2' after the 5 values its header declares");
+}
+
 TEST(MalformedLegacyVtk, KeywordWithTrailingGarbage) {
     // VTK matches "POLYGONSx" as POLYGONS by prefix and then crashed on what followed.
     ScratchDirectory scratch;
