@@ -41,8 +41,12 @@ void checkLegacyVtkFile(const std::string& path);
 void checkObjFile(const std::string& path);
 
 // .vtp: checks the XML header (known array types, sane component counts, piece counts that fit
-// the file) and the block tables of raw appended data, and returns the file's text with an empty <PointData/> added to pieces lacking one,
-// which keeps vtkXMLPolyDataReader from crashing on a bad cell-data array. Throws MeshReadError.
+// the file) and every array in every encoding (ASCII, inline base64, raw or base64 appended,
+// compressed or not): no more values than the piece counts give (for binary arrays, exactly as
+// many), binary headers and block tables that fit the data in the file, and each cell section's
+// last offset equal to the length of its connectivity. Returns the file's text with an empty
+// <PointData/> added to pieces lacking one, which keeps vtkXMLPolyDataReader from crashing on a
+// bad cell-data array. Throws MeshReadError.
 std::string prepareVtpForVtk(const std::string& path);
 
 }  // namespace conescope

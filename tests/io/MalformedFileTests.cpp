@@ -492,7 +492,21 @@ TEST(MalformedVtp, ForgedOffsetIsRejectedBeforeVtkAllocates) {
     std::string text = fileBytes(formatSamplesDir() / "cube.vtp");
     ASSERT_NE(text.find(">4 8 12 16 20 24<"), std::string::npos);
     replaceFirst(text, ">4 8 12 16 20 24<", ">4 8 12 16 20\n4294967295<");
-    EXPECT_READ_ERROR(scratch.writeFile("offset.vtp", text), "is 4294967295, more connectivity than the file can hold");
+    EXPECT_READ_ERROR(scratch.writeFile("offset.vtp", text), "the last offset is 4294967295 but the connectivity array holds 24 values");
+}
+
+// VTK reads as many values as the piece counts give and ignores the rest: each of these read as a
+// smaller or wrong mesh without a word. tests/io/VtpEncodingTests.cpp has the binary encodings.
+TEST(MalformedVtp, MoreAsciiValuesThanTheCountsGive) {
+    expectErrorWhenReplaced("cube.vtp", "NumberOfPolys=\"6\"", "NumberOfPolys=\"5\"",
+                            ": DataArray 'cluster_id' in CellData of piece 0 holds 6 values but the piece's 5 cells gives 5 "
+                            "(is a count or NumberOfComponents too small?)");
+    expectErrorWhenReplaced("cube.vtp", "NumberOfPoints=\"8\"", "NumberOfPoints=\"7\"",
+                            ": DataArray in Points of piece 0 holds 24 values but NumberOfPoints=7 times 3 components gives 21");
+    expectErrorWhenReplaced("cube.vtp", ">4 8 12 16 20 24<", ">0 4 8 12 16 20 24<",
+                            ": DataArray 'offsets' in Polys of piece 0 holds 7 values but NumberOfPolys=6 gives 6");
+    expectErrorWhenReplaced("cube.vtp", "1 3 7 5<", "1 3 7 5 0 1 2 3<",
+                            ": Polys of piece 0: the last offset is 24 but the connectivity array holds 28 values");
 }
 
 TEST(MalformedVtp, NoPolygons) {
