@@ -19,18 +19,21 @@ namespace conescope {
 // Parses the PLY header and walks the whole body as vtkPLY will (one element per line in ASCII,
 // fixed sizes and list counts in binary): every element present and complete, list counts
 // non-negative, face indices within the vertex count, ASCII lines short enough for vtkPLY's line
-// buffer. Throws MeshReadError ("path:line: what" for ASCII).
+// buffer, and no ASCII data after the declared elements (a count too small would drop it).
+// Throws MeshReadError ("path:line: what" for ASCII).
 // Returns the values of a scalar face property named cluster_id (empty when there is none):
 // vtkPLYReader drops it, and it is how a partition made elsewhere reaches the file builder.
 std::vector<double> checkPlyFile(const std::string& path);
 
-// For files VTK will read as binary STL: throws MeshReadError if shorter than the 84-byte header,
-// if the triangle count in the header exceeds what the file holds, or if it holds no triangle.
+// For files VTK will read as binary STL, and text files without ASCII STL's 'solid': throws
+// MeshReadError if shorter than the 84-byte header, if the triangle count in the header differs
+// from the whole triangles the file holds (a remainder under 50 bytes is allowed), or if it is 0.
 void checkStlFile(const std::string& path);
 
 // Legacy .vtk POLYDATA: walks every section as vtkPolyDataReader will (exact keywords, every
-// declared value present and representable in its type, cell lists consistent, attribute data
-// complete), streaming through the data without allocating from counts. Throws MeshReadError.
+// declared value present and representable in its type, cell lists consistent with their counts,
+// attribute data complete, no values beyond a declared count), streaming through the data without
+// allocating from counts. Throws MeshReadError.
 void checkLegacyVtkFile(const std::string& path);
 
 // OBJ: every face/line/point corner is v, v/vt, v//vn or v/vt/vn with indices of elements that
@@ -38,8 +41,12 @@ void checkLegacyVtkFile(const std::string& path);
 void checkObjFile(const std::string& path);
 
 // .vtp: checks the XML header (known array types, sane component counts, piece counts that fit
-// the file) and the block tables of raw appended data, and returns the file's text with an empty <PointData/> added to pieces lacking one,
-// which keeps vtkXMLPolyDataReader from crashing on a bad cell-data array. Throws MeshReadError.
+// the file) and every array in every encoding (ASCII, inline base64, raw or base64 appended,
+// compressed or not): no more values than the piece counts give (for binary arrays, exactly as
+// many), binary headers and block tables that fit the data in the file, and each cell section's
+// last offset equal to the length of its connectivity. Returns the file's text with an empty
+// <PointData/> added to pieces lacking one, which keeps vtkXMLPolyDataReader from crashing on a
+// bad cell-data array. Throws MeshReadError.
 std::string prepareVtpForVtk(const std::string& path);
 
 }  // namespace conescope

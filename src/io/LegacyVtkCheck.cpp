@@ -80,13 +80,22 @@ public:
             else
                 // VTK matches keywords by prefix ("POINTSxyz" counts as POINTS) and then trusts
                 // what follows, so anything but the exact keywords is refused here.
-                fail("unexpected keyword " + quotedForMessage(keyword));
+                failUnexpectedKeyword(keyword, "");
         }
     }
 
 private:
     [[noreturn]] void fail(const std::string& what) const {
         throw MeshReadError(path_ + ":" + std::to_string(lineOfLastToken_) + ": " + what);
+    }
+
+    // VTK reads exactly the values a section's header declares; a number where the next keyword
+    // belongs means that count was too small, and the values after it would be lost or misread.
+    [[noreturn]] void failUnexpectedKeyword(const std::string& keyword, const std::string& where) const {
+        if (text::isNumber(keyword) && !lastSection_.empty())
+            fail(lastSection_ + ": value " + quotedForMessage(keyword) + " after the " + std::to_string(lastSectionValues_) +
+                 " values its header declares (is a count in the header too small?)");
+        fail("unexpected keyword " + quotedForMessage(keyword) + where);
     }
 
     std::string_view nextLine() {
@@ -167,6 +176,8 @@ private:
         size_t size = legacyTypeSize(type);
         if (type.empty()) fail(section + ": file ends before the value type (truncated file)");
         if (size == 0) fail(section + ": unsupported value type " + quotedForMessage(type));
+        lastSection_ = section;
+        lastSectionValues_ = count;
         if (binary_) {
             skipToLineEnd();
             if (count > (bytes_.size() - position_) / size)
@@ -290,7 +301,7 @@ private:
             } else if (keyword == "field") {
                 walkField();
             } else {
-                fail("unexpected keyword " + quotedForMessage(keyword) + " in attribute data");
+                failUnexpectedKeyword(keyword, " in attribute data");
             }
         }
     }
@@ -320,12 +331,13 @@ private:
         if (usesOffsetsAndConnectivity_)
             walkOffsetsAndConnectivity(section, first, second);
         else
-            walkCountPrefixedCells(section, second);
+            walkCountPrefixedCells(section, first, second);
     }
 
-    // 4.x: `size` integers, each cell as "n id_1 .. id_n".
-    void walkCountPrefixedCells(const std::string& section, int64_t size) {
-        int64_t idsLeftInCell = 0;
+    // 4.x: `size` integers, each cell as "n id_1 .. id_n". VTK builds the cells from the size
+    // alone, so a cell count that disagrees with them is an inconsistent header.
+    void walkCountPrefixedCells(const std::string& section, int64_t cellCount, int64_t size) {
+        int64_t idsLeftInCell = 0, cellsFound = 0;
         walkValues(section, static_cast<uint64_t>(size), "int", [&](int64_t value) {
             if (idsLeftInCell > 0) {
                 --idsLeftInCell;
@@ -333,8 +345,12 @@ private:
             }
             if (value < 0) fail(section + ": negative cell size " + std::to_string(value));
             idsLeftInCell = value;
+            ++cellsFound;
         });
         if (idsLeftInCell > 0) fail(section + ": the last cell runs past the declared size " + std::to_string(size));
+        if (cellsFound != cellCount)
+            fail(section + ": header declares " + std::to_string(cellCount) + " cells but its " + std::to_string(size) +
+                 " values hold " + std::to_string(cellsFound) + " (wrong cell count or size)");
     }
 
     // 5.x: "OFFSETS type" with `offsetCount` values from 0 up to `connectivityCount`, then
@@ -367,6 +383,8 @@ private:
     size_t lineOfLastToken_ = 1;  // 1-based line of the token or line read last, for messages
     bool binary_ = false;
     bool usesOffsetsAndConnectivity_ = false;
+    std::string lastSection_;         // the section whose values were walked last, for messages
+    uint64_t lastSectionValues_ = 0;  // how many values its header declared
 };
 
 }  // namespace

@@ -236,6 +236,20 @@ private:
                 checkAsciiElement(element, i, splitWords(line), lines.lineNumber());
             }
         }
+        checkNothingAfterLastElement(header, lines);
+    }
+
+    // vtkPLY stops reading after the counts the header declares, so a count that is too small would
+    // drop the elements after it without a word. Blank lines at the end are harmless.
+    void checkNothingAfterLastElement(const PlyHeader& header, LineCursor& lines) const {
+        while (!lines.atEnd()) {
+            if (splitWords(lines.next()).empty()) continue;
+            std::string counts;
+            for (const PlyElement& element : header.elements)
+                counts += (counts.empty() ? "" : ", ") + std::to_string(element.count) + " " + element.name;
+            fail(lines.lineNumber(), "data after the last element the header declares (" + counts +
+                                         "): is a count in the header too small?");
+        }
     }
 
     static bool isClusterId(const PlyElement& element, const PlyProperty& property) {

@@ -74,6 +74,21 @@ const std::vector<Column<ClusterStatistics>>& clusterColumns() {
     return columns;
 }
 
+// The mesh check before culling: mesh.report in JSON, and columns of every CSV totals row, where
+// (like clusters and views) they repeat the run's values so each row stands alone.
+const std::vector<Column<MeshReport>>& reportColumns() {
+    static const std::vector<Column<MeshReport>> columns = {
+        {"open_edges", [](const MeshReport& m) -> Cell { return m.openEdges; }},
+        {"non_manifold_edges", [](const MeshReport& m) -> Cell { return m.nonManifoldEdges; }},
+        {"inconsistent_edges", [](const MeshReport& m) -> Cell { return m.inconsistentEdges; }},
+        {"duplicate_faces", [](const MeshReport& m) -> Cell { return m.duplicateFaces; }},
+        {"degenerate_faces", [](const MeshReport& m) -> Cell { return m.degenerateFaces; }},
+        {"components", [](const MeshReport& m) -> Cell { return m.components; }},
+        {"orientable", [](const MeshReport& m) -> Cell { return m.orientable; }},
+    };
+    return columns;
+}
+
 nlohmann::json cellToJson(const Cell& cell) {
     return std::visit([](auto value) { return nlohmann::json(value); }, cell);
 }
@@ -156,13 +171,9 @@ void writeCells(std::ostream& out, const std::vector<Column<Row>>& columns, cons
 }  // namespace
 
 nlohmann::json meshReportToJson(const MeshReport& report) {
-    return {{"open_edges", report.openEdges},
-            {"non_manifold_edges", report.nonManifoldEdges},
-            {"inconsistent_edges", report.inconsistentEdges},
-            {"duplicate_faces", report.duplicateFaces},
-            {"degenerate_faces", report.degenerateFaces},
-            {"components", report.components},
-            {"orientable", report.orientable}};
+    nlohmann::json object = nlohmann::json::object();
+    addCells(object, reportColumns(), report);
+    return object;
 }
 
 nlohmann::json settingsToJson(const Settings& settings) {
@@ -208,11 +219,13 @@ void writeStatisticsJson(const RunStatistics& run, std::ostream& out, const Stat
 void writeStatisticsCsv(const RunStatistics& run, std::ostream& out, const StatisticsDetail& detail) {
     out << "# section: totals\ncone,test,clusters,views";
     writeHeader(out, totalColumns());
-    out << '\n';
+    writeHeader(out, reportColumns());
+    out << ",winding_fixed_faces\n";
     for (const TestStatistics& result : run.results) {
         out << toString(result.cone) << ',' << toString(result.test) << ',' << run.clusters << ',' << run.viewCount;
         writeCells(out, totalColumns(), result);
-        out << '\n';
+        writeCells(out, reportColumns(), run.meshReport);
+        out << ',' << run.windingFixedFaces << '\n';
     }
     if (detail.views) {
         out << "# section: views\ncone,test,view,eye_x,eye_y,eye_z,direction_x,direction_y,direction_z";

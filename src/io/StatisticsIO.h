@@ -36,7 +36,8 @@ nlohmann::json statisticsToJson(const RunStatistics& run, const StatisticsDetail
 void writeStatisticsJson(const RunStatistics& run, std::ostream& out, const StatisticsDetail& detail = {});
 
 // "# section: totals", "# section: views", "# section: clusters", each followed by a header row and
-// its rows. Numbers use the shortest text that reads back to the same value, whatever the locale.
+// its rows; the totals rows end with the run's mesh report and winding_fixed_faces. Numbers use the
+// shortest text that reads back to the same value, whatever the locale.
 void writeStatisticsCsv(const RunStatistics& run, std::ostream& out, const StatisticsDetail& detail = {});
 
 }  // namespace conescope

@@ -25,9 +25,12 @@ inline std::vector<std::string_view> splitWords(std::string_view line) {
     return words;
 }
 
-inline std::optional<int64_t> parseInteger(std::string_view word) {
+// The whole word as an integer of type Integer (a leading '+' allowed), or nothing when it is not
+// one or the type cannot hold it.
+template <typename Integer = int64_t>
+std::optional<Integer> parseInteger(std::string_view word) {
     if (!word.empty() && word.front() == '+') word.remove_prefix(1);
-    int64_t value = 0;
+    Integer value = 0;
     auto [end, error] = std::from_chars(word.data(), word.data() + word.size(), value);
     if (word.empty() || error != std::errc() || end != word.data() + word.size()) return std::nullopt;
     return value;

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <map>
+#include <sstream>
 
 #include <nlohmann/json.hpp>
 
@@ -390,6 +391,40 @@ TEST(CliCheck, ReportsAndRepairsWinding) {
     run = runCli({"check", output});
     ASSERT_EQ(run.exitCode, 0) << run.err;
     EXPECT_EQ(nlohmann::json::parse(run.out)["report"]["inconsistent_edges"], 0);
+}
+
+// The CSV has no mesh object: its totals rows carry the mesh check and the winding repair instead,
+// with the JSON's values.
+TEST(CliStats, CsvTotalsCarryTheMeshReport) {
+    ScratchDirectory scratch;
+    const std::string input = scratch.writeFile("tetrahedron.off", kMisWoundTetrahedron);
+    const std::vector<std::string> arguments = {input, "--fix-winding", "--views", "3", "--cone", "average,minimal"};
+    const nlohmann::json mesh = runStatsJson(arguments)["mesh"];
+    std::vector<std::string> command = {"stats", "--quiet", "--format", "csv", "--no-per-view", "--no-per-cluster"};
+    command.insert(command.end(), arguments.begin(), arguments.end());
+    const CliRun run = runCli(command);
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const std::vector<std::string> lines = splitLines(run.out);
+    ASSERT_EQ(lines.size(), 4u) << run.out;  // section, header, one row per cone
+
+    auto cells = [](const std::string& line) {
+        std::vector<std::string> values;
+        std::istringstream stream(line);
+        for (std::string value; std::getline(stream, value, ',');) values.push_back(value);
+        return values;
+    };
+    const std::vector<std::string> header = cells(lines[1]);
+    for (size_t row = 2; row < lines.size(); ++row) {
+        const std::vector<std::string> values = cells(lines[row]);
+        ASSERT_EQ(values.size(), header.size()) << lines[row];
+        std::map<std::string, std::string> byColumn;
+        for (size_t c = 0; c < header.size(); ++c) byColumn[header[c]] = values[c];
+        EXPECT_EQ(byColumn["inconsistent_edges"], "3");
+        EXPECT_EQ(byColumn["winding_fixed_faces"], "1");
+        for (const auto& [key, value] : mesh["report"].items())
+            EXPECT_EQ(byColumn.at(key), value.is_boolean() ? (value.get<bool>() ? "1" : "0") : value.dump()) << key;
+        EXPECT_EQ(byColumn["winding_fixed_faces"], mesh["winding_fixed_faces"].dump());
+    }
 }
 
 TEST(CliCheck, CleanMeshHasNoProblems) {

@@ -53,8 +53,9 @@ RunStatistics smallRun() {
     run.faces = 2;
     run.triangles = 3;
     run.meshReport.openEdges = 5;
+    run.meshReport.inconsistentEdges = 4;
     run.meshReport.components = 1;
-    run.windingFixedFaces = 0;
+    run.windingFixedFaces = 3;
     run.clusters = 2;
     run.viewCount = 2;
 
@@ -183,8 +184,9 @@ TEST(StatisticsCsv, ExactText) {
     const std::string expected =
         "# section: totals\n"
         "cone,test,clusters,views,clusters_culled,triangles_culled,back_facing_triangles,missed_clusters,false_culls,"
-        "efficiency,expected_efficiency,uncullable_clusters,ns_per_cluster\n"
-        "average,sphere,2,2,1,2,6,1,0,0.3333333333333333,0.25,1,12.5\n"
+        "efficiency,expected_efficiency,uncullable_clusters,ns_per_cluster,open_edges,non_manifold_edges,inconsistent_edges,"
+        "duplicate_faces,degenerate_faces,components,orientable,winding_fixed_faces\n"
+        "average,sphere,2,2,1,2,6,1,0,0.3333333333333333,0.25,1,12.5,5,0,4,0,0,1,1,3\n"
         "# section: views\n"
         "cone,test,view,eye_x,eye_y,eye_z,direction_x,direction_y,direction_z,orthographic,clusters_culled,"
         "triangles_culled,back_facing_triangles,front_facing_triangles,back_facing_clusters,missed_clusters,false_culls,"
@@ -227,6 +229,9 @@ TEST(StatisticsCsv, ColumnsAreTheJsonKeys) {
     totals.erase("views");
     totals.erase("clusters");
     totals.insert({"clusters", "views"});  // the run's counts, repeated on every row
+    std::set<std::string> report = keysOf(statisticsToJson(run)["mesh"]["report"]);
+    totals.insert(report.begin(), report.end());  // the run's mesh check, repeated on every row
+    totals.insert("winding_fixed_faces");
     EXPECT_EQ(headers[0], totals);
 
     std::set<std::string> views = keysOf(result["views"][0]);

@@ -34,6 +34,17 @@ std::string fileBytes(const std::filesystem::path& path) {
     return std::string(std::istreambuf_iterator<char>(input), std::istreambuf_iterator<char>());
 }
 
+// Reading a sample of tests/data/formats with the first `from` replaced by `to` must fail with a
+// message naming the file and holding `fragment`.
+void expectErrorWhenReplaced(const std::string& sample, const std::string& from, const std::string& to,
+                             const std::string& fragment) {
+    SCOPED_TRACE(sample + ": '" + from + "' -> '" + to + "'");
+    std::string text = fileBytes(formatSamplesDir() / sample);
+    replaceFirst(text, from, to);
+    ScratchDirectory scratch;
+    EXPECT_READ_ERROR(scratch.writeFile(sample, text), fragment);
+}
+
 // Deterministic noise with NUL bytes and high bytes: the "binary garbage" case for every format.
 std::string garbageBytes(size_t size, unsigned seed) {
     std::mt19937 generator(seed);
@@ -298,6 +309,30 @@ TEST(MalformedPly, NegativeListLengthInBinary) {
     EXPECT_READ_ERROR(scratch.writeFile("negative.ply", header + bodyWithIntCounts), "has negative list length -1");
 }
 
+// vtkPLY reads only the elements the header declares: a count too small dropped the rest.
+TEST(MalformedPly, FaceCountSmallerThanTheFaces) {
+    expectErrorWhenReplaced("cube.ply", "element face 6", "element face 5",
+                            ":24: data after the last element the header declares (8 vertex, 5 face): is a count in the header too small?");
+}
+
+TEST(MalformedPly, VertexCountSmallerThanTheVertices) {
+    // With integer coordinates the last vertex line reads as a face without indices, and the faces
+    // shift by one line: only the line left over at the end shows the count is wrong.
+    ScratchDirectory scratch;
+    std::string text = "ply\nformat ascii 1.0\nelement vertex 3\nproperty int x\nproperty int y\nproperty int z\n"
+                       "element face 1\nproperty list uchar int vertex_indices\nend_header\n"
+                       "0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2\n";
+    EXPECT_READ_ERROR(scratch.writeFile("vertices.ply", text), ":14: data after the last element the header declares (3 vertex, 1 face)");
+    replaceFirst(text, "element vertex 3", "element vertex 4");
+    EXPECT_EQ(readMesh(scratch.writeFile("right.ply", text)).faceCount(), 1u);
+}
+
+TEST(MalformedPly, BlankLinesAfterTheDataAreFine) {
+    ScratchDirectory scratch;
+    std::string text = fileBytes(formatSamplesDir() / "cube.ply") + "\n  \r\n\n";
+    EXPECT_EQ(readMesh(scratch.writeFile("blank.ply", text)).faceCount(), 6u);
+}
+
 TEST(MalformedPly, CrlfLineEndsAreFine) {
     ScratchDirectory scratch;
     std::string text = fileBytes(formatSamplesDir() / "cube.ply"), crlf;
@@ -314,12 +349,42 @@ TEST(MalformedStl, ForgedTriangleCount) {
     EXPECT_READ_ERROR(scratch.writeFile("forged.stl", bytes), "declares 2147483647 triangles but the file holds only 12");
 }
 
+// A short binary file with a text comment sniffs as text, and VTK then reported "Expecting 'solid'".
 TEST(MalformedStl, HeaderOnly) {
     ScratchDirectory scratch;
     std::string bytes = fileBytes(formatSamplesDir() / "cube-binary.stl").substr(0, 84);
     bytes.replace(80, 4, std::string(4, '\0'));
-    // 84 mostly-text bytes: VTK's sniffing calls this ASCII, so the message is a parse error.
-    EXPECT_READ_ERROR(scratch.writeFile("header.stl", bytes), ": ");
+    EXPECT_READ_ERROR(scratch.writeFile("header.stl", bytes),
+                      ": neither ASCII STL (it does not start with 'solid') nor binary STL: header declares 0 triangles "
+                      "(no faces; the file is 84 bytes)");
+}
+
+TEST(MalformedStl, ShorterThanTheHeader) {
+    ScratchDirectory scratch;
+    std::string bytes = fileBytes(formatSamplesDir() / "cube-binary.stl");
+    EXPECT_READ_ERROR(scratch.writeFile("text40.stl", bytes.substr(0, 40)),
+                      ": neither ASCII STL (it does not start with 'solid') nor binary STL: the file is 40 bytes, "
+                      "shorter than the 84-byte header");
+    EXPECT_READ_ERROR(scratch.writeFile("zero40.stl", std::string(40, '\0')),
+                      ": binary STL: the file is 40 bytes, shorter than the 84-byte header");
+    EXPECT_READ_ERROR(scratch.writeFile("cut84.stl", bytes.substr(0, 84)),
+                      "nor binary STL: header declares 12 triangles but the file holds only 0");
+}
+
+// vtkSTLReader reads only the triangles the header declares: a count too small dropped the rest.
+TEST(MalformedStl, TriangleCountSmallerThanTheTriangles) {
+    ScratchDirectory scratch;
+    std::string bytes = fileBytes(formatSamplesDir() / "cube-binary.stl");
+    bytes.replace(80, 4, std::string("\x0b\0\0\0", 4));
+    EXPECT_READ_ERROR(scratch.writeFile("count.stl", bytes),
+                      ": binary STL: header declares 11 triangles but the file's 684 bytes hold 12 (84 + 50 per triangle");
+}
+
+TEST(MalformedStl, PaddingShorterThanATriangleIsFine) {
+    ScratchDirectory scratch;
+    std::string bytes = fileBytes(formatSamplesDir() / "cube-binary.stl") + std::string(49, '\0');
+    EXPECT_EQ(readMesh(scratch.writeFile("padded.stl", bytes)).faceCount(), 12u);
+    EXPECT_READ_ERROR(scratch.writeFile("triangle.stl", bytes + '\0'), "declares 12 triangles but the file's 734 bytes hold 13");
 }
 
 TEST(MalformedStl, AsciiWithBrokenFacet) {
@@ -427,7 +492,21 @@ TEST(MalformedVtp, ForgedOffsetIsRejectedBeforeVtkAllocates) {
     std::string text = fileBytes(formatSamplesDir() / "cube.vtp");
     ASSERT_NE(text.find(">4 8 12 16 20 24<"), std::string::npos);
     replaceFirst(text, ">4 8 12 16 20 24<", ">4 8 12 16 20\n4294967295<");
-    EXPECT_READ_ERROR(scratch.writeFile("offset.vtp", text), "is 4294967295, more connectivity than the file can hold");
+    EXPECT_READ_ERROR(scratch.writeFile("offset.vtp", text), "the last offset is 4294967295 but the connectivity array holds 24 values");
+}
+
+// VTK reads as many values as the piece counts give and ignores the rest: each of these read as a
+// smaller or wrong mesh without a word. tests/io/VtpEncodingTests.cpp has the binary encodings.
+TEST(MalformedVtp, MoreAsciiValuesThanTheCountsGive) {
+    expectErrorWhenReplaced("cube.vtp", "NumberOfPolys=\"6\"", "NumberOfPolys=\"5\"",
+                            ": DataArray 'cluster_id' in CellData of piece 0 holds 6 values but the piece's 5 cells gives 5 "
+                            "(is a count or NumberOfComponents too small?)");
+    expectErrorWhenReplaced("cube.vtp", "NumberOfPoints=\"8\"", "NumberOfPoints=\"7\"",
+                            ": DataArray in Points of piece 0 holds 24 values but NumberOfPoints=7 times 3 components gives 21");
+    expectErrorWhenReplaced("cube.vtp", ">4 8 12 16 20 24<", ">0 4 8 12 16 20 24<",
+                            ": DataArray 'offsets' in Polys of piece 0 holds 7 values but NumberOfPolys=6 gives 6");
+    expectErrorWhenReplaced("cube.vtp", "1 3 7 5<", "1 3 7 5 0 1 2 3<",
+                            ": Polys of piece 0: the last offset is 24 but the connectivity array holds 28 values");
 }
 
 TEST(MalformedVtp, NoPolygons) {
@@ -534,6 +613,21 @@ TEST(MalformedLegacyVtk, TruncatedCellDataIsAnErrorNotZeros) {
     std::string text = fileBytes(formatSamplesDir() / "cube.vtk");
     text.resize(text.size() - 4);  // drops the last two cluster ids
     EXPECT_READ_ERROR(scratch.writeFile("cut.vtk", text), "SCALARS: file ends after 4 of 6 values");
+}
+
+// VTK 4.x builds the polygons from the size alone; a count that disagrees is an inconsistent header.
+TEST(MalformedLegacyVtk, PolygonCountDisagreesWithTheCells) {
+    expectErrorWhenReplaced("cube.vtk", "POLYGONS 6 30", "POLYGONS 5 30", "POLYGONS: header declares 5 cells but its 30 values hold 6");
+    expectErrorWhenReplaced("cube.vtk", "POLYGONS 6 30", "POLYGONS 7 30", "POLYGONS: header declares 7 cells but its 30 values hold 6");
+}
+
+// VTK reads the values a header declares and takes the next word as a keyword: it stopped at the
+// sixth polygon's "4", and a too-small POINTS or CELL_DATA count is the same case.
+TEST(MalformedLegacyVtk, CountSmallerThanTheValues) {
+    expectErrorWhenReplaced("cube.vtk", "POLYGONS 6 30", "POLYGONS 5 25",
+                            ":20: POLYGONS: value '4' after the 25 values its header declares (is a count in the header too small?)");
+    expectErrorWhenReplaced("cube.vtk", "POINTS 8", "POINTS 7", ":13: POINTS: value '0.5' after the 21 values its header declares");
+    expectErrorWhenReplaced("cube.vtk", "CELL_DATA 6", "CELL_DATA 5", ":29: SCALARS: value '2' after the 5 values its header declares");
 }
 
 TEST(MalformedLegacyVtk, KeywordWithTrailingGarbage) {
