@@ -1,6 +1,7 @@
 #include "IoTestSupport.h"
 
 #include <clocale>
+#include <cstring>
 #include <cstdlib>
 #include <fstream>
 #include <limits>
@@ -14,6 +15,19 @@ namespace conescope::testing {
 std::filesystem::path datasetsDir() { return CONESCOPE_DATASETS_DIR; }
 
 std::filesystem::path formatSamplesDir() { return std::filesystem::path(CONESCOPE_TESTDATA_DIR) / "formats"; }
+
+void appendBinaryInteger(std::string& out, uint32_t value, int bytes, bool bigEndian) {
+    for (int k = 0; k < bytes; ++k) {
+        const int shift = bigEndian ? 8 * (bytes - 1 - k) : 8 * k;
+        out.push_back(char((value >> shift) & 0xff));
+    }
+}
+
+void appendBinaryFloat(std::string& out, float value, bool bigEndian) {
+    uint32_t bits = 0;
+    std::memcpy(&bits, &value, 4);
+    appendBinaryInteger(out, bits, 4, bigEndian);
+}
 
 ScratchDirectory::ScratchDirectory() {
     std::string pattern = (std::filesystem::temp_directory_path() / "conescope-io-XXXXXX").string();

@@ -1,6 +1,7 @@
 // Helpers shared by the io tests: data folders, a scratch directory, and checks on read errors.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <locale>
 #include <string>
@@ -45,6 +46,11 @@ private:
     std::locale previousGlobal_;
     std::string previousC_;
 };
+
+// Appends value as a `bytes`-byte integer (a float's bits for appendBinaryFloat) in the chosen byte
+// order: how tests write binary PLY bodies of either endianness.
+void appendBinaryInteger(std::string& out, uint32_t value, int bytes, bool bigEndian);
+void appendBinaryFloat(std::string& out, float value, bool bigEndian);
 
 // The message of the MeshReadError readMesh(path) throws; fails the test (and returns "") when it
 // throws nothing or another type.

@@ -1,7 +1,6 @@
 // Good files in every format: counts, face sizes, orientation and per-face arrays come through.
 #include <algorithm>
 #include <array>
-#include <cstring>
 #include <cmath>
 #include <set>
 
@@ -238,22 +237,12 @@ TEST(PlyFile, FaceClusterIdsComeThrough) {
     EXPECT_EQ(ascii.faceArrays.at("cluster_id"), (std::vector<double>{7, -2}));
 
     for (bool bigEndian : {false, true}) {
-        auto putInteger = [&](std::string& out, uint32_t value, int bytes) {
-            for (int k = 0; k < bytes; ++k) {
-                const int shift = bigEndian ? 8 * (bytes - 1 - k) : 8 * k;
-                out.push_back(char((value >> shift) & 0xff));
-            }
-        };
-        auto putFloat = [&](std::string& out, float value) {
-            uint32_t bits = 0;
-            std::memcpy(&bits, &value, 4);
-            putInteger(out, bits, 4);
-        };
         std::string body;
-        for (float coordinate : {0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 1.f, 1.f, 0.f, 0.f, 1.f, 0.f}) putFloat(body, coordinate);
-        for (auto [a, b, c, id] : {std::array<uint32_t, 4>{0, 1, 2, 3}, std::array<uint32_t, 4>{0, 2, 3, 40000}}) {
+        for (float coordinate : {0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 1.f, 1.f, 0.f, 0.f, 1.f, 0.f})
+            testing::appendBinaryFloat(body, coordinate, bigEndian);
+        for (const std::array<uint32_t, 4>& face : {std::array<uint32_t, 4>{0, 1, 2, 3}, std::array<uint32_t, 4>{0, 2, 3, 40000}}) {
             body.push_back(char(3));
-            putInteger(body, a, 4), putInteger(body, b, 4), putInteger(body, c, 4), putInteger(body, id, 4);
+            for (uint32_t value : face) testing::appendBinaryInteger(body, value, 4, bigEndian);
         }
         const std::string format = bigEndian ? "binary_big_endian" : "binary_little_endian";
         const Mesh binary = readMesh(scratch.writeFile(format + ".ply", "ply\nformat " + format + " 1.0\n" + header + body));
