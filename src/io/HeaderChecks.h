@@ -19,7 +19,8 @@ namespace conescope {
 // Parses the PLY header and walks the whole body as vtkPLY will (one element per line in ASCII,
 // fixed sizes and list counts in binary): every element present and complete, list counts
 // non-negative, face indices within the vertex count, ASCII lines short enough for vtkPLY's line
-// buffer, and no ASCII data after the declared elements (a count too small would drop it).
+// buffer, and no data after the declared elements (a count too small would drop it; blank lines in
+// ASCII and whitespace bytes in binary are allowed, since exporters end files with a newline).
 // Throws MeshReadError ("path:line: what" for ASCII).
 // Returns the values of a scalar face property named cluster_id (empty when there is none):
 // vtkPLYReader drops it, and it is how a partition made elsewhere reaches the file builder.

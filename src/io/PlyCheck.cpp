@@ -239,17 +239,36 @@ private:
         checkNothingAfterLastElement(header, lines);
     }
 
+    // "8 vertex, 5 face": the counts a message about data beyond them quotes.
+    static std::string declaredCounts(const PlyHeader& header) {
+        std::string counts;
+        for (const PlyElement& element : header.elements)
+            counts += (counts.empty() ? "" : ", ") + std::to_string(element.count) + " " + element.name;
+        return counts;
+    }
+
     // vtkPLY stops reading after the counts the header declares, so a count that is too small would
     // drop the elements after it without a word. Blank lines at the end are harmless.
     void checkNothingAfterLastElement(const PlyHeader& header, LineCursor& lines) const {
         while (!lines.atEnd()) {
             if (splitWords(lines.next()).empty()) continue;
-            std::string counts;
-            for (const PlyElement& element : header.elements)
-                counts += (counts.empty() ? "" : ", ") + std::to_string(element.count) + " " + element.name;
-            fail(lines.lineNumber(), "data after the last element the header declares (" + counts +
+            fail(lines.lineNumber(), "data after the last element the header declares (" + declaredCounts(header) +
                                          "): is a count in the header too small?");
         }
+    }
+
+    // The binary counterpart: vtkPLY stops after the declared elements here too. Only space, tab,
+    // CR and LF may follow them, as some exporters end even a binary file with a newline. Any other
+    // byte counts as lost data, however few: a face with an empty list is a single count byte, and
+    // a remainder too short for any element still means the counts and the data disagree. Bytes
+    // that are all whitespace could in principle be an element too, but its values would be absurd
+    // (a list of 10 or 32 indices, each 0x0a0a0a0a or 0x20202020, or coordinates near 1e-19), so
+    // padding is the reading taken.
+    void checkNothingAfterLastBinaryElement(const PlyHeader& header, size_t declaredEnd) const {
+        if (bytes_.find_first_not_of(" \t\r\n", declaredEnd) == std::string_view::npos) return;
+        fail("data after the last element the header declares (" + declaredCounts(header) +
+             "): " + std::to_string(bytes_.size() - declaredEnd) + " bytes from offset " + std::to_string(declaredEnd) +
+             " to the end of the " + std::to_string(bytes_.size()) + "-byte file; is a count in the header too small?");
     }
 
     static bool isClusterId(const PlyElement& element, const PlyProperty& property) {
@@ -348,6 +367,7 @@ private:
                 }
             }
         }
+        checkNothingAfterLastBinaryElement(header, position);
     }
 
     const std::string& path_;

@@ -1,5 +1,6 @@
 // Bad input of every kind must end in MeshReadError naming the file (and for OFF the line), never in
 // a crash, a huge allocation, a silently empty mesh, or VTK chatter on stderr.
+#include <array>
 #include <fstream>
 #include <limits>
 #include <random>
@@ -325,6 +326,58 @@ TEST(MalformedPly, VertexCountSmallerThanTheVertices) {
     EXPECT_READ_ERROR(scratch.writeFile("vertices.ply", text), ":14: data after the last element the header declares (3 vertex, 1 face)");
     replaceFirst(text, "element vertex 3", "element vertex 4");
     EXPECT_EQ(readMesh(scratch.writeFile("right.ply", text)).faceCount(), 1u);
+}
+
+// A binary PLY square: 4 vertices and 2 triangles in the body, whatever the header declares.
+std::string binarySquarePly(bool bigEndian, int declaredFaces) {
+    const std::string format = bigEndian ? "binary_big_endian" : "binary_little_endian";
+    std::string bytes = "ply\nformat " + format + " 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+                        "property float z\nelement face " + std::to_string(declaredFaces) +
+                        "\nproperty list uchar int vertex_indices\nend_header\n";
+    for (float coordinate : {0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 1.f, 1.f, 0.f, 0.f, 1.f, 0.f})
+        testing::appendBinaryFloat(bytes, coordinate, bigEndian);
+    for (const std::array<uint32_t, 3>& face : {std::array<uint32_t, 3>{0, 1, 2}, std::array<uint32_t, 3>{0, 2, 3}}) {
+        bytes.push_back(char(3));
+        for (uint32_t index : face) testing::appendBinaryInteger(bytes, index, 4, bigEndian);
+    }
+    return bytes;
+}
+
+// vtkPLY reads only the elements the header declares in binary too: the face it was not told of
+// (13 bytes: a count byte and three ints) was dropped.
+TEST(MalformedPly, BinaryFaceCountSmallerThanTheFaces) {
+    ScratchDirectory scratch;
+    for (bool bigEndian : {false, true}) {
+        SCOPED_TRACE(bigEndian ? "big endian" : "little endian");
+        const std::string bytes = binarySquarePly(bigEndian, 1);
+        const size_t declaredEnd = bytes.size() - 13;
+        EXPECT_READ_ERROR(scratch.writeFile("faces.ply", bytes),
+                          ": data after the last element the header declares (4 vertex, 1 face): 13 bytes from offset " +
+                              std::to_string(declaredEnd) + " to the end of the " + std::to_string(bytes.size()) +
+                              "-byte file; is a count in the header too small?");
+        EXPECT_EQ(readMesh(scratch.writeFile("right.ply", binarySquarePly(bigEndian, 2))).faceCount(), 2u);
+    }
+}
+
+// One stray byte is too short for a triangle, but could be a face with an empty list: rejected.
+TEST(MalformedPly, BinaryStrayByteAfterTheDataIsAnError) {
+    ScratchDirectory scratch;
+    for (bool bigEndian : {false, true}) {
+        const std::string bytes = binarySquarePly(bigEndian, 2);
+        EXPECT_READ_ERROR(scratch.writeFile("stray.ply", bytes + '\0'),
+                          "(4 vertex, 2 face): 1 bytes from offset " + std::to_string(bytes.size()));
+        EXPECT_READ_ERROR(scratch.writeFile("late.ply", bytes + "\n\n\x01"), "3 bytes from offset");
+    }
+}
+
+// Some exporters end a binary file with a newline; whitespace bytes after the data are padding.
+TEST(MalformedPly, BinaryTrailingNewlineIsFine) {
+    ScratchDirectory scratch;
+    for (bool bigEndian : {false, true}) {
+        const std::string bytes = binarySquarePly(bigEndian, 2);
+        EXPECT_EQ(readMesh(scratch.writeFile("newline.ply", bytes + "\n")).faceCount(), 2u);
+        EXPECT_EQ(readMesh(scratch.writeFile("crlf.ply", bytes + "\r\n \t")).faceCount(), 2u);
+    }
 }
 
 TEST(MalformedPly, BlankLinesAfterTheDataAreFine) {
