@@ -437,6 +437,32 @@ TEST(CliCheck, CleanMeshHasNoProblems) {
     EXPECT_EQ(report["orientable"], true);
 }
 
+// A tetrahedron in ASCII STL plus a triangle with two equal corners, which VTK's STL reader used to
+// drop: the check and the statistics must count it.
+constexpr const char* kStlWithDegenerateTriangle =
+    "solid t\n"
+    "facet normal 0 0 0\nouter loop\nvertex 0 0 0\nvertex 0 1 0\nvertex 1 0 0\nendloop\nendfacet\n"
+    "facet normal 0 0 0\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 0 1\nendloop\nendfacet\n"
+    "facet normal 0 0 0\nouter loop\nvertex 0 0 0\nvertex 0 0 1\nvertex 0 1 0\nendloop\nendfacet\n"
+    "facet normal 0 0 0\nouter loop\nvertex 1 0 0\nvertex 0 1 0\nvertex 0 0 1\nendloop\nendfacet\n"
+    "facet normal 0 0 0\nouter loop\nvertex 1 0 0\nvertex 1 0 0\nvertex 0 0 1\nendloop\nendfacet\n"
+    "endsolid t\n";
+
+TEST(CliCheck, CountsTheDegenerateTrianglesOfAnStl) {
+    ScratchDirectory scratch;
+    const std::string input = scratch.writeFile("degenerate.stl", kStlWithDegenerateTriangle);
+    const CliRun run = runCli({"check", input});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const nlohmann::json report = nlohmann::json::parse(run.out);
+    EXPECT_EQ(report["mesh"]["faces"], 5);
+    EXPECT_EQ(report["report"]["degenerate_faces"], 1);
+
+    const nlohmann::json mesh = runStatsJson({input, "--views", "3"})["mesh"];
+    EXPECT_EQ(mesh["faces"], 5);
+    EXPECT_EQ(mesh["degenerate_faces"], 1);
+    EXPECT_EQ(mesh["report"]["degenerate_faces"], 1);
+}
+
 TEST(CliCheck, MissingFileFails) {
     const CliRun run = runCli({"check", "/nonexistent/mesh.ply"});
     EXPECT_EQ(run.exitCode, 1);

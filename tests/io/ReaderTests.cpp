@@ -16,6 +16,7 @@
 #include <vtkStringArray.h>
 
 #include "IoTestSupport.h"
+#include "core/MeshChecks.h"
 #include "io/MeshReader.h"
 #include "io/PolyDataConversion.h"
 
@@ -248,6 +249,52 @@ TEST(PlyFile, FaceClusterIdsComeThrough) {
         const Mesh binary = readMesh(scratch.writeFile(format + ".ply", "ply\nformat " + format + " 1.0\n" + header + body));
         ASSERT_EQ(binary.faceArrays.count("cluster_id"), 1u) << format;
         EXPECT_EQ(binary.faceArrays.at("cluster_id"), (std::vector<double>{3, 40000})) << format;
+    }
+}
+
+// STL triangles as corner coordinates, written in ASCII or binary STL.
+using StlTriangle = std::array<glm::vec3, 3>;
+
+std::string asciiStl(const std::vector<StlTriangle>& triangles) {
+    std::string text = "solid test\n";
+    for (const StlTriangle& triangle : triangles) {
+        text += "facet normal 0 0 0\nouter loop\n";
+        for (const glm::vec3& corner : triangle)
+            text += "vertex " + std::to_string(corner.x) + " " + std::to_string(corner.y) + " " + std::to_string(corner.z) + "\n";
+        text += "endloop\nendfacet\n";
+    }
+    return text + "endsolid test\n";
+}
+
+std::string binaryStl(const std::vector<StlTriangle>& triangles) {
+    std::string bytes(80, '\0');
+    testing::appendBinaryInteger(bytes, uint32_t(triangles.size()), 4, false);
+    for (const StlTriangle& triangle : triangles) {
+        for (int k = 0; k < 3; ++k) testing::appendBinaryFloat(bytes, 0.0f, false);  // normal
+        for (const glm::vec3& corner : triangle)
+            for (int k = 0; k < 3; ++k) testing::appendBinaryFloat(bytes, corner[k], false);
+        bytes += std::string(2, '\0');  // attribute byte count
+    }
+    return bytes;
+}
+
+// vtkSTLReader's point merging dropped triangles with repeated corners, so they never reached the
+// mesh report; they must stay faces, counted as degenerate with the collinear one VTK always kept.
+TEST(StlFile, DegenerateTrianglesAreKeptAndCounted) {
+    const glm::vec3 a(0, 0, 0), b(1, 0, 0), c(0, 1, 0), d(0, 0, 1), middle(0.5f, 0, 0);
+    const std::vector<StlTriangle> triangles = {{a, c, b}, {a, b, d}, {a, d, c}, {b, c, d},
+                                                {a, a, b}, {c, c, c}, {a, middle, b}, {-a, a, d}};
+    testing::ScratchDirectory scratch;
+    for (const std::string& path : {scratch.writeFile("ascii.stl", asciiStl(triangles)),
+                                    scratch.writeFile("binary.stl", binaryStl(triangles))}) {
+        SCOPED_TRACE(path);
+        const Mesh mesh = readMesh(path);
+        EXPECT_EQ(mesh.faceCount(), 8u);
+        EXPECT_EQ(mesh.positions.size(), 5u) << "equal corners (and -0, +0) are one point";
+        const FaceGeometry faces = computeFaceGeometry(mesh);
+        EXPECT_EQ(faces.degenerateCount, 4u);
+        EXPECT_EQ(checkMesh(mesh, faces).degenerateFaces, 4u);
+        EXPECT_EQ(std::vector<uint32_t>(mesh.faceBegin(4), mesh.faceBegin(5)), (std::vector<uint32_t>{0, 0, 2}));
     }
 }
 
