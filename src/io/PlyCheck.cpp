@@ -266,8 +266,9 @@ private:
     // padding is the reading taken.
     void checkNothingAfterLastBinaryElement(const PlyHeader& header, size_t declaredEnd) const {
         if (bytes_.find_first_not_of(" \t\r\n", declaredEnd) == std::string_view::npos) return;
-        fail("data after the last element the header declares (" + declaredCounts(header) +
-             "): " + std::to_string(bytes_.size() - declaredEnd) + " bytes from offset " + std::to_string(declaredEnd) +
+        const size_t extra = bytes_.size() - declaredEnd;
+        fail("data after the last element the header declares (" + declaredCounts(header) + "): " + std::to_string(extra) +
+             (extra == 1 ? " byte" : " bytes") + " from offset " + std::to_string(declaredEnd) +
              " to the end of the " + std::to_string(bytes_.size()) + "-byte file; is a count in the header too small?");
     }
 

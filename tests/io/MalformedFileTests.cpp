@@ -365,7 +365,7 @@ TEST(MalformedPly, BinaryStrayByteAfterTheDataIsAnError) {
     for (bool bigEndian : {false, true}) {
         const std::string bytes = binarySquarePly(bigEndian, 2);
         EXPECT_READ_ERROR(scratch.writeFile("stray.ply", bytes + '\0'),
-                          "(4 vertex, 2 face): 1 bytes from offset " + std::to_string(bytes.size()));
+                          "(4 vertex, 2 face): 1 byte from offset " + std::to_string(bytes.size()));
         EXPECT_READ_ERROR(scratch.writeFile("late.ply", bytes + "\n\n\x01"), "3 bytes from offset");
     }
 }
