@@ -51,6 +51,9 @@ xvfb-run -a -s "-screen 0 1600x1000x24" "$bin/conescope-bench-plot" "$output/sum
     echo
     echo "Preparation time and peak memory, each in its own child process:"
     "$bin/conescope-bench-prepare"
+    echo
+    echo "The same at the next size up from 1M triangles on another mesh:"
+    "$bin/conescope-bench-prepare" --mesh "$root/datasets/cgal/bunny00.off" --only optimized --only meshlet --only meshoptimizer
   fi
 } > "$output/speed.txt" 2>&1
 echo "bench-report: wrote $output/{report.csv,report.md,summary.csv,efficiency.png,speed.txt} in $(( $(date +%s) - start )) s" >&2
