@@ -1189,8 +1189,7 @@ MeshPart extractPart(const Mesh& mesh, const FaceGeometry& faces, const std::vec
     return part;
 }
 
-// The faces on either side of their median centroid along their box's longest axis, each half in
-// the mesh's own order.
+// The faces on either side of their median centroid along their box's longest axis.
 std::array<std::vector<uint32_t>, 2> splitAtMedian(const FaceGeometry& faces, std::vector<uint32_t> order) {
     glm::dvec3 low(std::numeric_limits<double>::infinity()), high(-std::numeric_limits<double>::infinity());
     for (uint32_t f : order) low = glm::min(low, faces.centroids[f]), high = glm::max(high, faces.centroids[f]);
@@ -1201,9 +1200,7 @@ std::array<std::vector<uint32_t>, 2> splitAtMedian(const FaceGeometry& faces, st
         const double ca = faces.centroids[a][axis], cb = faces.centroids[b][axis];
         return ca < cb || (ca == cb && a < b);
     });
-    std::array<std::vector<uint32_t>, 2> halves{std::vector<uint32_t>(order.begin(), middle), std::vector<uint32_t>(middle, order.end())};
-    for (auto& half : halves) std::sort(half.begin(), half.end());
-    return halves;
+    return {std::vector<uint32_t>(order.begin(), middle), std::vector<uint32_t>(middle, order.end())};
 }
 
 // Halves of halves until every part has at most kPartFaces faces (and a part still gets a few
@@ -1217,6 +1214,9 @@ std::vector<std::vector<uint32_t>> splitIntoParts(const FaceGeometry& faces, siz
             for (std::vector<uint32_t>& half : splitAtMedian(faces, std::move(part))) finer.push_back(std::move(half));
         parts.swap(finer);
     }
+    // Ties broken by face index make each half the same set whatever order it arrived in, so
+    // only the final parts need the mesh's own order back.
+    for (std::vector<uint32_t>& part : parts) std::sort(part.begin(), part.end());
     return parts;
 }
 
