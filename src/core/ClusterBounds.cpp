@@ -6,6 +6,8 @@
 #include <cmath>
 #include <limits>
 
+#include "Parallel.h"
+
 namespace conescope {
 
 glm::dvec3 coneApex(const ConeOfNormals& cone, const glm::dvec3& center, const Mesh& mesh,
@@ -108,48 +110,60 @@ ClusterBounds computeClusterBounds(const Mesh& mesh, const std::vector<glm::vec3
     bounds.boxes.resize(clusterCount);
     bounds.spheres.resize(clusterCount);
     bounds.apexes.resize(clusterCount);
-    std::vector<uint32_t> seen(world.size(), std::numeric_limits<uint32_t>::max());
-    std::vector<glm::dvec3> normals, points;
-    for (uint32_t c = 0; c < clusterCount; ++c) {
-        const uint32_t* clusterFaces = bounds.faces.faces.data() + bounds.faces.starts[c];
-        const size_t faceCount = bounds.faces.starts[c + 1] - bounds.faces.starts[c];
-        normals.clear();
-        points.clear();
-        Aabb box;
-        box.min = glm::vec3(std::numeric_limits<float>::max());
-        box.max = glm::vec3(-std::numeric_limits<float>::max());
-        for (size_t i = 0; i < faceCount; ++i) {
-            const uint32_t f = clusterFaces[i];
-            normals.push_back(faces.normals[f]);
-            bounds.triangles[c] += uint32_t(mesh.faceSize(f) - 2);
-            for (size_t k = 0; k < mesh.faceSize(f); ++k) {
-                const uint32_t v = mesh.faceBegin(f)[k];
-                if (seen[v] == c) continue;
-                seen[v] = c;
-                bounds.vertexIds.push_back(v);
-                points.emplace_back(world[v]);
-                box.min = glm::min(box.min, world[v]);
-                box.max = glm::max(box.max, world[v]);
+    // Clusters are bounded independently, in consecutive pieces on all cores; each piece lists its
+    // clusters' vertices on its own, and the lists are joined in cluster order afterwards.
+    const size_t pieces = piecesFor(clusterCount, 1024);
+    std::vector<std::vector<uint32_t>> pieceVertexIds(pieces);
+    forEachInParallel(pieces, [&](size_t piece, size_t) {
+        const size_t begin = pieceBegin(clusterCount, pieces, piece), end = pieceBegin(clusterCount, pieces, piece + 1);
+        std::vector<uint32_t>& vertexIds = pieceVertexIds[piece];
+        std::vector<uint32_t> seen(world.size(), std::numeric_limits<uint32_t>::max());
+        std::vector<glm::dvec3> normals, points;
+        for (uint32_t c = uint32_t(begin); c < end; ++c) {
+            const size_t before = vertexIds.size();
+            const uint32_t* clusterFaces = bounds.faces.faces.data() + bounds.faces.starts[c];
+            const size_t faceCount = bounds.faces.starts[c + 1] - bounds.faces.starts[c];
+            normals.clear();
+            points.clear();
+            Aabb box;
+            box.min = glm::vec3(std::numeric_limits<float>::max());
+            box.max = glm::vec3(-std::numeric_limits<float>::max());
+            for (size_t i = 0; i < faceCount; ++i) {
+                const uint32_t f = clusterFaces[i];
+                normals.push_back(faces.normals[f]);
+                bounds.triangles[c] += uint32_t(mesh.faceSize(f) - 2);
+                for (size_t k = 0; k < mesh.faceSize(f); ++k) {
+                    const uint32_t v = mesh.faceBegin(f)[k];
+                    if (seen[v] == c) continue;
+                    seen[v] = c;
+                    vertexIds.push_back(v);
+                    points.emplace_back(world[v]);
+                    box.min = glm::min(box.min, world[v]);
+                    box.max = glm::max(box.max, world[v]);
+                }
             }
-        }
-        bounds.vertexStarts[c + 1] = uint32_t(bounds.vertexIds.size());
-        bounds.boxes[c] = box;
-        bounds.spheres[c] = sphereMethod == SphereMethod::Minimal ? minimalSphere(points.data(), points.size())
-                                                                  : ritterSphere(points.data(), points.size());
-        if (coneMethod == ConeMethod::Meshopt) {
-            const MeshoptCluster meshopt = meshoptBounds(mesh, world, clusterFaces, faceCount, normals);
-            bounds.cones[c] = meshopt.cone;  // not cullable unless meshoptimizer gave a cone
-            if (meshopt.usable) {
-                bounds.spheres[c] = sphereAround(meshopt.center, points.data(), points.size());
-                bounds.apexes[c] = coneApex(meshopt.cone, meshopt.apex, mesh, world, faces, clusterFaces, faceCount);
-            } else {
-                bounds.apexes[c] = bounds.spheres[c].center;
+            bounds.vertexStarts[c + 1] = uint32_t(vertexIds.size() - before);
+            bounds.boxes[c] = box;
+            bounds.spheres[c] = sphereMethod == SphereMethod::Minimal ? minimalSphere(points.data(), points.size())
+                                                                      : ritterSphere(points.data(), points.size());
+            if (coneMethod == ConeMethod::Meshopt) {
+                const MeshoptCluster meshopt = meshoptBounds(mesh, world, clusterFaces, faceCount, normals);
+                bounds.cones[c] = meshopt.cone;  // not cullable unless meshoptimizer gave a cone
+                if (meshopt.usable) {
+                    bounds.spheres[c] = sphereAround(meshopt.center, points.data(), points.size());
+                    bounds.apexes[c] = coneApex(meshopt.cone, meshopt.apex, mesh, world, faces, clusterFaces, faceCount);
+                } else {
+                    bounds.apexes[c] = bounds.spheres[c].center;
+                }
+                continue;
             }
-            continue;
+            bounds.cones[c] = coneByMethod(coneMethod, normals);
+            bounds.apexes[c] = coneApex(bounds.cones[c], bounds.spheres[c].center, mesh, world, faces, clusterFaces, faceCount);
         }
-        bounds.cones[c] = coneByMethod(coneMethod, normals);
-        bounds.apexes[c] = coneApex(bounds.cones[c], bounds.spheres[c].center, mesh, world, faces, clusterFaces, faceCount);
-    }
+    });
+    for (size_t c = 0; c < clusterCount; ++c) bounds.vertexStarts[c + 1] += bounds.vertexStarts[c];
+    bounds.vertexIds.reserve(bounds.vertexStarts.back());
+    for (const std::vector<uint32_t>& vertexIds : pieceVertexIds) bounds.vertexIds.insert(bounds.vertexIds.end(), vertexIds.begin(), vertexIds.end());
     return bounds;
 }
 

@@ -1,18 +1,15 @@
 #include "ClusterOptimizer.h"
 
 #include <algorithm>
-#include <array>
-#include <atomic>
 #include <cmath>
-#include <future>
 #include <limits>
 #include <queue>
 #include <type_traits>
-#include <thread>
 #include <utility>
 #include <vector>
 
 #include "Cones.h"
+#include "Parallel.h"
 
 namespace conescope {
 
@@ -1158,26 +1155,26 @@ struct MeshPart {
 };
 
 // newIndex: one kNone per mesh vertex, left so again, reused from part to part.
-MeshPart extractPart(const Mesh& mesh, const FaceGeometry& faces, const std::vector<uint32_t>& faceIds,
+MeshPart extractPart(const Mesh& mesh, const FaceGeometry& faces, const uint32_t* faceIds, size_t faceCount,
                      std::vector<uint32_t>& newIndex) {
     MeshPart part;
-    part.mesh.faceStarts.reserve(faceIds.size() + 1);
-    part.mesh.faceVertices.reserve(3 * faceIds.size());
-    part.mesh.positions.reserve(faceIds.size() / 2 + 16);
-    for (uint32_t f : faceIds) {
-        const uint32_t* vertices = mesh.faceBegin(f);
-        for (size_t k = 0; k < mesh.faceSize(f); ++k) {
+    part.mesh.faceStarts.reserve(faceCount + 1);
+    part.mesh.faceVertices.reserve(3 * faceCount);
+    part.mesh.positions.reserve(faceCount / 2 + 16);
+    for (const uint32_t* face = faceIds; face != faceIds + faceCount; ++face) {
+        const uint32_t* vertices = mesh.faceBegin(*face);
+        for (size_t k = 0; k < mesh.faceSize(*face); ++k) {
             uint32_t& index = newIndex[vertices[k]];
             if (index == kNone) index = uint32_t(part.mesh.positions.size()), part.mesh.positions.push_back(mesh.positions[vertices[k]]);
             part.mesh.faceVertices.push_back(index);
         }
         part.mesh.faceStarts.push_back(uint32_t(part.mesh.faceVertices.size()));
     }
-    for (uint32_t f : faceIds)
-        for (size_t k = 0; k < mesh.faceSize(f); ++k) newIndex[mesh.faceBegin(f)[k]] = kNone;
+    for (const uint32_t* face = faceIds; face != faceIds + faceCount; ++face)
+        for (size_t k = 0; k < mesh.faceSize(*face); ++k) newIndex[mesh.faceBegin(*face)[k]] = kNone;
     auto pick = [&](const auto& values) {
-        std::remove_const_t<std::remove_reference_t<decltype(values)>> picked(faceIds.size());
-        for (size_t i = 0; i < faceIds.size(); ++i) picked[i] = values[faceIds[i]];
+        std::remove_const_t<std::remove_reference_t<decltype(values)>> picked(faceCount);
+        for (size_t i = 0; i < faceCount; ++i) picked[i] = values[faceIds[i]];
         return picked;
     };
     part.faces.normals = pick(faces.normals);
@@ -1189,34 +1186,54 @@ MeshPart extractPart(const Mesh& mesh, const FaceGeometry& faces, const std::vec
     return part;
 }
 
-// The faces on either side of their median centroid along their box's longest axis.
-std::array<std::vector<uint32_t>, 2> splitAtMedian(const FaceGeometry& faces, std::vector<uint32_t> order) {
+// Splits faces [begin, end) in place at their median centroid along their box's longest axis.
+// Ties go by face index, so the halves are the same sets whatever order the faces came in.
+uint32_t* splitAtMedian(const FaceGeometry& faces, uint32_t* begin, uint32_t* end) {
     glm::dvec3 low(std::numeric_limits<double>::infinity()), high(-std::numeric_limits<double>::infinity());
-    for (uint32_t f : order) low = glm::min(low, faces.centroids[f]), high = glm::max(high, faces.centroids[f]);
+    for (const uint32_t* f = begin; f != end; ++f) low = glm::min(low, faces.centroids[*f]), high = glm::max(high, faces.centroids[*f]);
     const glm::dvec3 extent = high - low;
     const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
-    const auto middle = order.begin() + long(order.size() / 2);
-    std::nth_element(order.begin(), middle, order.end(), [&](uint32_t a, uint32_t b) {
+    uint32_t* middle = begin + (end - begin) / 2;
+    std::nth_element(begin, middle, end, [&](uint32_t a, uint32_t b) {
         const double ca = faces.centroids[a][axis], cb = faces.centroids[b][axis];
         return ca < cb || (ca == cb && a < b);
     });
-    return {std::vector<uint32_t>(order.begin(), middle), std::vector<uint32_t>(middle, order.end())};
+    return middle;
 }
 
+// Faces of each part in one array: part i is faces[starts[i], starts[i + 1]), in mesh order.
+struct Parts {
+    std::vector<uint32_t> faces, starts;
+    size_t count() const { return starts.size() - 1; }
+    size_t size(size_t i) const { return starts[i + 1] - starts[i]; }
+    const uint32_t* begin(size_t i) const { return faces.data() + starts[i]; }
+};
+
 // Halves of halves until every part has at most kPartFaces faces (and a part still gets a few
-// clusters of the budget).
-std::vector<std::vector<uint32_t>> splitIntoParts(const FaceGeometry& faces, size_t target) {
-    std::vector<std::vector<uint32_t>> parts(1, std::vector<uint32_t>(faces.centroids.size()));
-    for (uint32_t f = 0; f < parts[0].size(); ++f) parts[0][f] = f;
-    while (parts.front().size() > kPartFaces && target >= 2 * parts.size() * kMinPartClusters) {
-        std::vector<std::vector<uint32_t>> finer;
-        for (std::vector<uint32_t>& part : parts)
-            for (std::vector<uint32_t>& half : splitAtMedian(faces, std::move(part))) finer.push_back(std::move(half));
-        parts.swap(finer);
+// clusters of the budget). The halving runs in place, the parts of one level at once; part 2i and
+// 2i + 1 of a level are the halves of part i of the level before.
+Parts splitIntoParts(const FaceGeometry& faces, size_t target) {
+    Parts parts;
+    parts.faces.resize(faces.centroids.size());
+    for (uint32_t f = 0; f < parts.faces.size(); ++f) parts.faces[f] = f;
+    parts.starts = {0, uint32_t(parts.faces.size())};
+    while (parts.size(0) > kPartFaces && target >= 2 * parts.count() * kMinPartClusters) {
+        std::vector<uint32_t> middles(parts.count());
+        forEachInParallel(parts.count(), [&](size_t i, size_t) {
+            uint32_t* begin = parts.faces.data() + parts.starts[i];
+            middles[i] = uint32_t(splitAtMedian(faces, begin, begin + parts.size(i)) - parts.faces.data());
+        });
+        std::vector<uint32_t> finer(1, 0);
+        for (size_t i = 0; i < parts.count(); ++i) finer.push_back(middles[i]), finer.push_back(parts.starts[i + 1]);
+        parts.starts.swap(finer);
     }
-    // Ties broken by face index make each half the same set whatever order it arrived in, so
-    // only the final parts need the mesh's own order back.
-    for (std::vector<uint32_t>& part : parts) std::sort(part.begin(), part.end());
+    // Only the final parts need the mesh's own order back: one counting pass over part labels,
+    // cheaper than sorting each part.
+    std::vector<uint32_t> partOf(parts.faces.size());
+    for (uint32_t i = 0; i < parts.count(); ++i)
+        for (size_t k = 0; k < parts.size(i); ++k) partOf[parts.begin(i)[k]] = i;
+    std::vector<uint32_t> next(parts.starts.begin(), parts.starts.end() - 1);
+    for (uint32_t f = 0; f < partOf.size(); ++f) parts.faces[next[partOf[f]]++] = f;
     return parts;
 }
 
@@ -1230,41 +1247,34 @@ Partition buildOptimizedClusters(const Mesh& mesh, const FaceGeometry& faces, co
     // The face-visit budget buys annealing sweeps; too few to cool slowly are not worth their time.
     size_t sweeps = std::min<size_t>(size_t(kSweepFaceVisits / double(faceCount)), kMaxSweeps);
     if (sweeps < kMinSweeps) sweeps = 0;
-    const std::vector<std::vector<uint32_t>> parts = splitIntoParts(faces, target);
-    if (parts.size() == 1) return optimizeClusters(mesh, faces, limits, target, sweeps);
+    const Parts parts = splitIntoParts(faces, target);
+    if (parts.count() == 1) return optimizeClusters(mesh, faces, limits, target, sweeps);
 
     // Parts are optimised independently, as many at once as the machine has cores; the result does
     // not depend on that number. The budget is shared by triangles (rounded cumulatively, so the
     // shares add up to it), and no cluster crosses a cut.
-    std::vector<size_t> targets(parts.size());
+    std::vector<size_t> targets(parts.count());
     const double triangles = double(triangleCount(mesh));
     double before = 0.0;
-    for (size_t i = 0; i < parts.size(); ++i) {
+    for (size_t i = 0; i < parts.count(); ++i) {
         double partTriangles = 0.0;
-        for (uint32_t f : parts[i]) partTriangles += double(mesh.faceSize(f) - 2);
+        for (size_t k = 0; k < parts.size(i); ++k) partTriangles += double(mesh.faceSize(parts.begin(i)[k]) - 2);
         const auto share = [&](double t) { return size_t(std::llround(double(target) * t / triangles)); };
         targets[i] = std::max<size_t>(1, share(before + partTriangles) - share(before));
         before += partTriangles;
     }
-    std::vector<Partition> results(parts.size());
-    std::atomic<size_t> next{0};
-    auto work = [&]() {
-        std::vector<uint32_t> newIndex(mesh.positions.size(), kNone);
-        for (size_t i; (i = next++) < parts.size();) {
-            const MeshPart part = extractPart(mesh, faces, parts[i], newIndex);
-            results[i] = optimizeClusters(part.mesh, part.faces, limits, targets[i], sweeps);
-        }
-    };
-    const size_t threadCount = std::min<size_t>(parts.size(), std::max(1u, std::thread::hardware_concurrency()));
-    std::vector<std::future<void>> helpers;
-    for (size_t t = 1; t < threadCount; ++t) helpers.push_back(std::async(std::launch::async, work));
-    work();
-    for (std::future<void>& helper : helpers) helper.get();  // rethrows what a part threw
+    std::vector<Partition> results(parts.count());
+    std::vector<std::vector<uint32_t>> newIndex(threadsFor(parts.count()));  // per thread: kNone per mesh vertex
+    forEachInParallel(parts.count(), [&](size_t i, size_t worker) {
+        if (newIndex[worker].empty()) newIndex[worker].assign(mesh.positions.size(), kNone);
+        const MeshPart part = extractPart(mesh, faces, parts.begin(i), parts.size(i), newIndex[worker]);
+        results[i] = optimizeClusters(part.mesh, part.faces, limits, targets[i], sweeps);
+    });
 
     Partition partition;
     partition.clusterOfFace.resize(faceCount);
-    for (size_t i = 0; i < parts.size(); ++i) {
-        for (size_t k = 0; k < parts[i].size(); ++k) partition.clusterOfFace[parts[i][k]] = partition.clusterCount + results[i].clusterOfFace[k];
+    for (size_t i = 0; i < parts.count(); ++i) {
+        for (size_t k = 0; k < parts.size(i); ++k) partition.clusterOfFace[parts.begin(i)[k]] = partition.clusterCount + results[i].clusterOfFace[k];
         partition.clusterCount += results[i].clusterCount;
     }
     return partition;

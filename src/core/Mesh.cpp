@@ -1,9 +1,14 @@
 #include "Mesh.h"
 
+#include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
+
+#include "LargeArrays.h"
+#include "Parallel.h"
 
 namespace conescope {
 
@@ -56,8 +61,12 @@ size_t triangleCount(const Mesh& mesh) {
 static bool isIdentity(const glm::dmat4& m) { return m == glm::dmat4(1.0); }
 
 std::vector<glm::vec3> worldPositions(const Mesh& mesh) {
-    if (isIdentity(mesh.model)) return mesh.positions;
-    std::vector<glm::vec3> world(mesh.positions.size());
+    std::vector<glm::vec3> world;
+    resizeLarge(world, mesh.positions.size());
+    if (isIdentity(mesh.model)) {
+        std::copy(mesh.positions.begin(), mesh.positions.end(), world.begin());
+        return world;
+    }
     for (size_t i = 0; i < world.size(); ++i)
         world[i] = glm::vec3(mesh.model * glm::dvec4(glm::dvec3(mesh.positions[i]), 1.0));
     return world;
@@ -92,39 +101,57 @@ glm::dvec4 transformPlane(const glm::dvec4& plane, const glm::dmat4& model) {
 FaceGeometry computeFaceGeometry(const Mesh& mesh) {
     const size_t faceCount = mesh.faceCount();
     FaceGeometry geometry;
-    geometry.normals.resize(faceCount);
-    geometry.planeOffsets.resize(faceCount);
-    geometry.centroids.resize(faceCount);
-    geometry.areas.resize(faceCount);
-    geometry.degenerate.resize(faceCount);
+    // Fresh memory costs more to touch the first time than the loop below costs (a page fault per
+    // 4 KiB), so large meshes get their arrays sized on two threads, half the bytes each, and
+    // filled on all cores.
+    constexpr size_t kFacesPerThread = size_t(1) << 16;
+    auto sizeHalf = [&](size_t half) {
+        if (half == 0) {
+            resizeLarge(geometry.normals, faceCount);
+            resizeLarge(geometry.areas, faceCount);
+            resizeLarge(geometry.degenerate, faceCount);
+        } else {
+            resizeLarge(geometry.centroids, faceCount);
+            resizeLarge(geometry.planeOffsets, faceCount);
+        }
+    };
+    if (faceCount < 2 * kFacesPerThread) sizeHalf(0), sizeHalf(1);
+    else forEachInParallel(2, [&](size_t half, size_t) { sizeHalf(half); });
     const bool transformed = !isIdentity(mesh.model);
     const glm::dmat4 normalMatrix = glm::transpose(glm::inverse(mesh.model));
     const double orientation = glm::determinant(mesh.model) < 0.0 ? -1.0 : 1.0;
-    for (size_t f = 0; f < faceCount; ++f) {
-        const uint32_t* face = mesh.faceBegin(f);
-        const size_t count = mesh.faceSize(f);
-        glm::dvec3 mean(0.0);
-        for (size_t i = 0; i < count; ++i) mean += glm::dvec3(mesh.positions[face[i]]);
-        mean /= double(count);
-        glm::dvec3 normal = newellNormal(mesh.positions.data(), face, count);
-        double length = glm::length(normal);
-        if (transformed) {
-            // Seed 003: the plane [n, -n.p_mean] goes through (M^-1)^T, flipped when det M < 0.
-            glm::dvec4 plane = orientation * (normalMatrix * glm::dvec4(normal, -glm::dot(normal, mean)));
-            normal = glm::dvec3(plane);
-            mean = glm::dvec3(mesh.model * glm::dvec4(mean, 1.0));
-            // Area in world space: the cofactor matrix scales the Newell vector by |det M| along n.
-            length = glm::length(normal) * std::abs(glm::determinant(glm::dmat3(mesh.model)));
+    const double areaScale = std::abs(glm::determinant(glm::dmat3(mesh.model)));
+    std::atomic<size_t> degenerateCount{0};
+    forRangesInParallel(faceCount, kFacesPerThread, [&](size_t begin, size_t end) {
+        size_t degenerateHere = 0;
+        for (size_t f = begin; f < end; ++f) {
+            const uint32_t* face = mesh.faceBegin(f);
+            const size_t count = mesh.faceSize(f);
+            glm::dvec3 mean(0.0);
+            for (size_t i = 0; i < count; ++i) mean += glm::dvec3(mesh.positions[face[i]]);
+            mean /= double(count);
+            glm::dvec3 normal = newellNormal(mesh.positions.data(), face, count);
+            double length = glm::length(normal);
+            if (transformed) {
+                // Seed 003: the plane [n, -n.p_mean] goes through (M^-1)^T, flipped when det M < 0.
+                glm::dvec4 plane = orientation * (normalMatrix * glm::dvec4(normal, -glm::dot(normal, mean)));
+                normal = glm::dvec3(plane);
+                mean = glm::dvec3(mesh.model * glm::dvec4(mean, 1.0));
+                // Area in world space: the cofactor matrix scales the Newell vector by |det M| along n.
+                length = glm::length(normal) * areaScale;
+            }
+            const double normalLength = glm::length(normal);
+            const bool degenerate = !(normalLength > 0.0) || !std::isfinite(normalLength);
+            geometry.degenerate[f] = degenerate ? 1 : 0;
+            degenerateHere += degenerate ? 1 : 0;
+            geometry.normals[f] = degenerate ? glm::dvec3(0.0) : normal / normalLength;
+            geometry.centroids[f] = mean;
+            geometry.planeOffsets[f] = -glm::dot(geometry.normals[f], mean);
+            geometry.areas[f] = degenerate ? 0.0 : 0.5 * length;
         }
-        const double normalLength = glm::length(normal);
-        const bool degenerate = !(normalLength > 0.0) || !std::isfinite(normalLength);
-        geometry.degenerate[f] = degenerate ? 1 : 0;
-        geometry.degenerateCount += degenerate ? 1 : 0;
-        geometry.normals[f] = degenerate ? glm::dvec3(0.0) : normal / normalLength;
-        geometry.centroids[f] = mean;
-        geometry.planeOffsets[f] = -glm::dot(geometry.normals[f], mean);
-        geometry.areas[f] = degenerate ? 0.0 : 0.5 * length;
-    }
+        degenerateCount += degenerateHere;
+    });
+    geometry.degenerateCount = degenerateCount;
     return geometry;
 }
 

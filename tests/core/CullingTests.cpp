@@ -129,3 +129,40 @@ TEST(Culling, MeshoptConeWorksAtExtremeScales) {
         }
     }
 }
+
+TEST(ClusterBounds, ManyClustersAreBoundedOnAllCoresTheSameAsOneByOne) {
+    // 4,096 clusters: enough for the clusters to be bounded in pieces on several threads. Each
+    // cluster's bounds, vertex list and triangle count must be what it gets as the only cluster.
+    const Mesh mesh = testmesh::torus(1.0, 0.3, 256, 64);
+    const std::vector<glm::vec3> world = worldPositions(mesh);
+    const FaceGeometry faces = computeFaceGeometry(mesh);
+    Partition partition;
+    partition.clusterCount = 4096;
+    for (uint32_t f = 0; f < mesh.faceCount(); ++f) partition.clusterOfFace.push_back(f / 8);
+    for (ConeMethod cone : {ConeMethod::Minimal, ConeMethod::Meshopt}) {
+        const ClusterBounds bounds = computeClusterBounds(mesh, world, faces, partition, cone);
+        ASSERT_EQ(bounds.count(), 4096u);
+        ASSERT_EQ(bounds.vertexStarts.back(), bounds.vertexIds.size());
+        for (uint32_t c = 0; c < bounds.count(); c += 127) {
+            Mesh single;
+            single.positions = mesh.positions;
+            for (uint32_t i = bounds.faces.starts[c]; i < bounds.faces.starts[c + 1]; ++i) {
+                const uint32_t f = bounds.faces.faces[i];
+                single.addFace(mesh.faceBegin(f), mesh.faceSize(f));
+            }
+            const Partition alone{std::vector<uint32_t>(single.faceCount(), 0), 1};
+            const ClusterBounds one = computeClusterBounds(single, world, computeFaceGeometry(single), alone, cone);
+            EXPECT_EQ(std::vector<uint32_t>(bounds.vertexIds.begin() + bounds.vertexStarts[c], bounds.vertexIds.begin() + bounds.vertexStarts[c + 1]),
+                      one.vertexIds) << "cluster " << c;
+            EXPECT_EQ(bounds.triangles[c], one.triangles[0]);
+            EXPECT_EQ(bounds.cones[c].axis, one.cones[0].axis);
+            EXPECT_EQ(bounds.cones[c].sinHalfAngle, one.cones[0].sinHalfAngle);
+            EXPECT_EQ(bounds.cones[c].cullable, one.cones[0].cullable);
+            EXPECT_EQ(bounds.boxes[c].min, one.boxes[0].min);
+            EXPECT_EQ(bounds.boxes[c].max, one.boxes[0].max);
+            EXPECT_EQ(bounds.spheres[c].center, one.spheres[0].center);
+            EXPECT_EQ(bounds.spheres[c].radius, one.spheres[0].radius);
+            EXPECT_EQ(bounds.apexes[c], one.apexes[0]);
+        }
+    }
+}
