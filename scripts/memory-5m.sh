@@ -12,10 +12,9 @@ root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build=${CONESCOPE_BENCH_BUILD_DIR:-$root/build-bench}
 mesh=$build/torus-5m.off
 "$root/scripts/install-dependencies.sh"  # GNU time and python3 among them
-if [[ ! -x "$build/src/cli/conescope-cli" ]]; then
-  cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DCONESCOPE_BUILD_GUI=OFF >/dev/null
-  cmake --build "$build" -j"$(nproc)" --target conescope-cli
-fi
+# Always brought up to date (a no-op when it is), so the figures are those of the current source.
+cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DCONESCOPE_BUILD_GUI=OFF >/dev/null
+cmake --build "$build" -j"$(nproc)" --target conescope-cli >/dev/null
 if [[ ! -s "$mesh" ]]; then
   echo "memory-5m: writing $mesh" >&2
   python3 - "$mesh" <<'EOF'
