@@ -139,8 +139,10 @@ EyeMeasurement measureEye(const PreparedMesh& prepared, const ClusterSet& cluste
     const CullingInput input = cullingInput(prepared, clusters);
     EyeMeasurement measurement;
     measurement.eye = eye;
-    measurement.culled = cullClusters(input, eye, test);
+    // One cull: the statistics of a single view already hold each cluster's decision.
     measurement.statistics = measureCulling(input, {eye}, test);
+    measurement.culled.resize(measurement.statistics.clusters.size());
+    for (size_t c = 0; c < measurement.culled.size(); ++c) measurement.culled[c] = measurement.statistics.clusters[c].timesCulled > 0;
     return measurement;
 }
 

@@ -54,6 +54,7 @@ private slots:
                     size_t culled = 0;
                     for (uint8_t flag : measured.culled) culled += flag;
                     QCOMPARE(culled, expected.clustersCulled);
+                    QVERIFY(measured.culled == cullClusters(cullingInput(prepared, clusters), measured.eye, test));
                 }
             }
         }
