@@ -48,6 +48,17 @@ FaceColoring parseFaceColoring(const QString& text) {
                                 names.join(QStringLiteral(", ")).toStdString() + ")");
 }
 
+Layer parseLayer(const QString& text) {
+    QStringList names;
+    for (Layer layer : allLayers()) {
+        const QString name = QString::fromStdString(toString(layer));
+        if (text == name) return layer;
+        names << name;
+    }
+    throw std::invalid_argument("unknown layer '" + text.toStdString() + "' (expected some of: " +
+                                names.join(QStringLiteral(", ")).toStdString() + ")");
+}
+
 namespace {
 
 // Names separated by commas, through the core's parse function; the first is the one displayed.
@@ -124,8 +135,13 @@ CommandLineResult parseCommandLine(const QStringList& arguments) {
                                       QStringLiteral("d"));
     const QCommandLineOption orthographic(QStringLiteral("ortho"), QStringLiteral("Orthographic cull eye."));
     const QCommandLineOption fixWinding(QStringLiteral("fix-winding"), QStringLiteral("Repair inconsistent face winding."));
+    const QCommandLineOption layers(
+        QStringLiteral("layers"),
+        QStringLiteral("Layers shown, comma separated; all others are hidden (faces, borders, cones, normals, boxes, "
+                       "spheres, eye, highlight, legend). In the window, keys 1-9 still switch them."),
+        QStringLiteral("names"));
     parser.addOptions({screenshot, size, fromEye, coloring, eye, builder, maxVertices, maxTriangles, clusters, clusterFile,
-                       normalWeight, coneWeight, cone, test, sphere, views, distance, orthographic, fixWinding});
+                       normalWeight, coneWeight, cone, test, sphere, views, distance, orthographic, fixWinding, layers});
     parser.addPositionalArgument(QStringLiteral("MESH"), QStringLiteral("Mesh file (.off .ply .obj .stl .vtp .vtk)."),
                                  QStringLiteral("[MESH]"));
 
@@ -184,6 +200,8 @@ CommandLineResult parseCommandLine(const QStringList& arguments) {
         }
         options.fromEye = parser.isSet(fromEye);
         if (parser.isSet(coloring)) options.coloring = parseFaceColoring(parser.value(coloring));
+        if (parser.isSet(layers))
+            options.layers = parseNameList<Layer>(parser.value(layers), [](const std::string& name) { return parseLayer(QString::fromStdString(name)); });
         if (options.screenshot.isEmpty() && (parser.isSet(size) || options.fromEye))
             throw std::invalid_argument("--size and --from-eye only apply to --screenshot");
     } catch (const std::exception& error) {
@@ -207,6 +225,8 @@ int runHeadlessScreenshot(const AppOptions& options) {
         showMeasurement(scene, prepared, measurement);
         scene.setFaceColoring(options.coloring);
         if (options.coloring == FaceColoring::FaceFacing) showFaceFacing(scene, prepared, measurement.eye);
+        if (options.layers)
+            for (Layer layer : allLayers()) scene.setLayerVisible(layer, std::count(options.layers->begin(), options.layers->end(), layer) > 0);
         RenderOptions render;
         render.width = options.size.width();
         render.height = options.size.height();

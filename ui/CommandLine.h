@@ -3,6 +3,7 @@
 #pragma once
 
 #include <optional>
+#include <vector>
 
 #include <QSize>
 #include <QString>
@@ -23,7 +24,11 @@ struct AppOptions {
     QSize size{1280, 800};            // --size WxH of the screenshot
     bool fromEye = false;             // --from-eye: the screenshot shows what the cull eye sees
     FaceColoring coloring = FaceColoring::CullDecision;  // --coloring, as the window starts
+    std::optional<std::vector<Layer>> layers;  // --layers: the layers shown, all others hidden
 };
+
+// The scene's names (toString(Layer)). Throws std::invalid_argument.
+Layer parseLayer(const QString& text);
 
 // The scene's names (toString(FaceColoring)). Throws std::invalid_argument.
 FaceColoring parseFaceColoring(const QString& text);

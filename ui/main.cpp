@@ -1,4 +1,5 @@
 // conescope: the viewer, or with --screenshot a headless render of one frame.
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 
@@ -56,6 +57,8 @@ int main(int argc, char** argv) {
     window.setSettings(options.settings);
     window.setFaceColoring(options.coloring);
     if (options.eye) window.setInitialEye(*options.eye);
+    if (options.layers)
+        for (Layer layer : allLayers()) window.setLayerVisible(layer, std::count(options.layers->begin(), options.layers->end(), layer) > 0);
     window.show();
     const QString mesh = options.mesh.isEmpty() ? defaultMeshPath() : options.mesh;
     if (!mesh.isEmpty()) window.openMesh(mesh);

@@ -140,6 +140,16 @@ private slots:
         QCOMPARE(options.mesh, QStringLiteral("mesh.off"));
         // Untouched fields keep Settings{}.
         QCOMPARE(options.settings.limits.maxTriangles, Settings{}.limits.maxTriangles);
+        QVERIFY(!options.layers);
+        const CommandLineResult layered =
+            parseCommandLine({QStringLiteral("conescope"), QStringLiteral("--layers"), QStringLiteral("boxes, spheres,faces")});
+        QCOMPARE(int(layered.action), int(CommandLineResult::Action::Run));
+        QVERIFY((layered.options.layers == std::vector<Layer>{Layer::Boxes, Layer::Spheres, Layer::Faces}));
+        const CommandLineResult unknownLayer =
+            parseCommandLine({QStringLiteral("conescope"), QStringLiteral("--layers"), QStringLiteral("faces,clouds")});
+        QCOMPARE(int(unknownLayer.action), int(CommandLineResult::Action::ExitFailure));
+        QVERIFY(unknownLayer.message.contains(QStringLiteral("clouds")));
+        QVERIFY(unknownLayer.message.contains(QStringLiteral("spheres")));
 
         for (const QStringList& bad :
              {QStringList{QStringLiteral("conescope"), QStringLiteral("--builder"), QStringLiteral("nope")},
@@ -227,6 +237,24 @@ private slots:
                                  QStringLiteral("meshopt"), datasetPath("torus.off")}),
                  0);
         QCOMPARE(QImage(fromEye).size(), QSize(200, 150));
+
+        // --layers: only the layers named are drawn, so each set gives its own image, and none is
+        // the default set (faces, borders, cones, eye, highlight, legend).
+        auto shot = [&](const QString& name, const QStringList& layers) {
+            const QString file = temporary_.filePath(name);
+            QStringList arguments{QStringLiteral("--screenshot"), file, QStringLiteral("--size"), QStringLiteral("240x180"),
+                                  QStringLiteral("--eye=0,0,3"), datasetPath("torus.off")};
+            if (!layers.isEmpty()) arguments << QStringLiteral("--layers") << layers.join(QLatin1Char(','));
+            return runApplication(arguments) == 0 ? QImage(file) : QImage();
+        };
+        const QImage defaults = shot(QStringLiteral("defaults.png"), {});
+        const QImage faces = shot(QStringLiteral("faces.png"), {QStringLiteral("faces")});
+        const QImage facesAndBoxes = shot(QStringLiteral("faces-boxes.png"), {QStringLiteral("faces"), QStringLiteral("boxes")});
+        const QImage boxes = shot(QStringLiteral("boxes.png"), {QStringLiteral("boxes")});
+        QVERIFY(!defaults.isNull() && !faces.isNull() && !facesAndBoxes.isNull() && !boxes.isNull());
+        QVERIFY(faces != facesAndBoxes && faces != boxes && boxes != facesAndBoxes);
+        QVERIFY(defaults != faces && defaults != facesAndBoxes && defaults != boxes);
+        QCOMPARE(shot(QStringLiteral("faces-again.png"), {QStringLiteral("faces")}), faces);
     }
 
     void headlessScreenshotErrors() {
