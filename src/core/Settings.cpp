@@ -87,7 +87,9 @@ std::vector<Eye> viewsFor(const Settings& settings, const Aabb& worldBox) {
         // An orthographic eye given as a point looks from there towards the mesh centre.
         const glm::dvec3 direction = glm::dvec3(worldBox.center()) - *settings.eye;
         if (!(glm::length(direction) > 0.0)) throw std::invalid_argument("orthographic eye is at the mesh centre: no direction");
-        return {Eye::orthographicAlong(direction)};
+        Eye eye = Eye::orthographicAlong(direction);
+        eye.position = *settings.eye;  // reported with the view, as orbit views report theirs
+        return {eye};
     }
     return orbitViews(worldBox, settings.views, settings.distance, settings.orthographic);
 }

@@ -11,7 +11,8 @@
 namespace conescope {
 
 struct Eye {
-    // Perspective: the eye point. Orthographic: unused.
+    // Perspective: the eye point. Orthographic: the point the direction was taken from (the orbit
+    // point or the given eye), reported with the view; culling does not use it.
     glm::dvec3 position{0.0};
     // Orthographic: the unit direction the eye looks along (from the eye into the scene).
     glm::dvec3 direction{0.0, 0.0, -1.0};

@@ -5,6 +5,7 @@
 
 #include "TestMeshes.h"
 #include "core/Mesh.h"
+#include "core/Settings.h"
 #include "core/Views.h"
 
 using namespace conescope;
@@ -170,5 +171,28 @@ TEST(Views, OrbitFollowsTheDocumentedFormula) {
         EXPECT_TRUE(eye.orthographic);
         EXPECT_NEAR(glm::length(eye.direction), 1.0, 1e-12);
         EXPECT_NEAR(glm::dot(eye.direction, glm::normalize(glm::dvec3(1, 0, -1) - eye.position)), 1.0, 1e-9);
+    }
+}
+
+TEST(Views, OrthographicViewsReportThePointTheirDirectionCameFrom) {
+    const Aabb box{glm::vec3(-1.0f), glm::vec3(1.0f)};
+    Settings settings;
+    settings.orthographic = true;
+    settings.eye = glm::dvec3(0.0, 0.0, 4.0);
+    const std::vector<Eye> single = viewsFor(settings, box);
+    ASSERT_EQ(single.size(), 1u);
+    EXPECT_TRUE(single[0].orthographic);
+    EXPECT_EQ(single[0].position, glm::dvec3(0.0, 0.0, 4.0));
+    EXPECT_EQ(single[0].direction, glm::dvec3(0.0, 0.0, -1.0));
+    // Orbit views: the same points as the perspective orbit, looking at the centre.
+    settings.eye.reset();
+    settings.views = 8;
+    const std::vector<Eye> orbit = viewsFor(settings, box);
+    const std::vector<Eye> perspective = orbitViews(box, 8, settings.distance);
+    ASSERT_EQ(orbit.size(), 8u);
+    for (size_t i = 0; i < orbit.size(); ++i) {
+        EXPECT_TRUE(orbit[i].orthographic);
+        EXPECT_EQ(orbit[i].position, perspective[i].position);
+        EXPECT_NEAR(glm::dot(orbit[i].direction, glm::normalize(-perspective[i].position)), 1.0, 1e-12);
     }
 }
