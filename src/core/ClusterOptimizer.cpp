@@ -609,6 +609,12 @@ void Optimizer::grow(double triangleCap) {
         while (true) {
             const glm::dvec3 center = centroidSum / double(grown.faces.size());
             const double sinNow = sinOf(grown.cap);
+            // The least cone cost any face can have. Adding a normal to a cap of half-angle at
+            // most 60 degrees (or to no cone) never lowers sinAfterAdding below sinNow, and the
+            // cost is then at least sinNow (less a margin for rounding in its division by t).
+            // Wider caps and caps without normals can give lower, even negative, costs: no floor.
+            const bool costAtLeastSinNow = grown.cap.cosRadius <= 1.0 && !(grown.cap.cosRadius > 0.0 && grown.cap.cosRadius < 0.5);
+            const double coneCostFloor = costAtLeastSinNow ? sinNow * (1.0 - 1e-9) : -std::numeric_limits<double>::infinity();
             uint32_t chosen = kNone;
             double bestScore = std::numeric_limits<double>::infinity();
             for (size_t i = 0; i < candidates.size();) {
@@ -621,6 +627,8 @@ void Optimizer::grow(double triangleCap) {
                 ++i;
                 const uint32_t added = addedVertices(f);
                 if (grown.vertices + added > limits_.maxVertices || grown.triangles + triangles_[f] > triangleCap) continue;
+                // A face whose added vertices alone lose to the best so far is skipped unscored.
+                if (kVertexWeight * double(added) + coneCostFloor >= bestScore) continue;
                 // Objective lost: the cluster's triangles on the wider cone, and the face itself.
                 const double sinAfter = usable_[f] ? sinAfterAdding(grown.cap, glm::dot(geometry_.normals[f], grown.cap.axis)) : sinNow;
                 const double t = double(triangles_[f]);
