@@ -214,6 +214,8 @@ double valueOf(double triangles, const Cap& cap) { return triangles * (1.0 - sin
 
 // sin of the half-angle of the smallest cap holding `cap` and a normal at cos(theta) from its
 // axis: (alpha + theta) / 2 by half-angle formulas. An upper bound on the exact minimal cap.
+// When alpha + theta passes 180 degrees the cap is wider than a hemisphere (no cone): sin 1, not
+// the smaller |sin((alpha + theta) / 2)| the half-angle formula alone would give.
 double sinAfterAdding(const Cap& cap, double cosTheta) {
     if (cap.cosRadius > 1.0) return 0.0;
     if (cosTheta >= cap.cosRadius) return sinOf(cap);
@@ -221,7 +223,8 @@ double sinAfterAdding(const Cap& cap, double cosTheta) {
     const double sinRadius = std::sqrt(std::max(0.0, 1.0 - cap.cosRadius * cap.cosRadius));
     const double sinTheta = std::sqrt(std::max(0.0, 1.0 - cosTheta * cosTheta));
     const double cosSum = cap.cosRadius * cosTheta - sinRadius * sinTheta;  // cos(alpha + theta)
-    if (cosSum <= -1.0 + 1e-15) return 1.0;
+    const double sinSum = sinRadius * cosTheta + cap.cosRadius * sinTheta;  // sin(alpha + theta)
+    if (cosSum <= -1.0 + 1e-15 || sinSum < 0.0) return 1.0;
     return std::sqrt(std::max(0.0, 0.5 * (1.0 - cosSum)));
 }
 
