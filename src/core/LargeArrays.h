@@ -17,12 +17,18 @@ constexpr size_t kLargeArrayBytes = size_t(4) << 20;
 // backed by huge pages. A hint only: nothing changes when the system ignores it.
 void adviseHugePages(void* data, size_t bytes);
 
+// reserve(count), with the hint when the new storage is large.
 template <typename T>
-void resizeLarge(std::vector<T>& values, size_t count) {
+void reserveLarge(std::vector<T>& values, size_t count) {
     if (count * sizeof(T) >= kLargeArrayBytes && values.capacity() < count) {
         values.reserve(count);
         adviseHugePages(values.data(), count * sizeof(T));
     }
+}
+
+template <typename T>
+void resizeLarge(std::vector<T>& values, size_t count) {
+    reserveLarge(values, count);
     values.resize(count);
 }
 

@@ -1,8 +1,10 @@
 #include "MeshChecks.h"
 
 #include <algorithm>
-#include <unordered_set>
+#include <cstdint>
 #include <vector>
+
+#include "LargeArrays.h"
 
 namespace conescope {
 
@@ -16,7 +18,7 @@ struct HalfEdge {
 
 std::vector<HalfEdge> sortedHalfEdges(const Mesh& mesh) {
     std::vector<HalfEdge> edges;
-    edges.reserve(mesh.faceVertices.size());
+    reserveLarge(edges, mesh.faceVertices.size());
     for (size_t f = 0; f < mesh.faceCount(); ++f) {
         const uint32_t* face = mesh.faceBegin(f);
         const size_t count = mesh.faceSize(f);
@@ -42,18 +44,26 @@ struct Orientation {
 
 Orientation orientFaces(const Mesh& mesh, const std::vector<HalfEdge>& edges) {
     const size_t faceCount = mesh.faceCount();
-    // Neighbours across manifold edges: (other face, same direction?).
-    std::vector<std::vector<std::pair<uint32_t, bool>>> neighbours(faceCount);
-    for (size_t i = 0; i < edges.size();) {
-        size_t j = i;
-        while (j < edges.size() && edges[j].key == edges[i].key) ++j;
-        if (j - i == 2 && edges[i].face != edges[i + 1].face) {
-            const bool same = edges[i].forward == edges[i + 1].forward;
-            neighbours[edges[i].face].push_back({edges[i + 1].face, same});
-            neighbours[edges[i + 1].face].push_back({edges[i].face, same});
+    // Neighbours across manifold edges, (other face, same direction?), in rows per face: counted
+    // first, then filled, so millions of faces do not mean millions of small vectors.
+    std::vector<uint32_t> starts(faceCount + 1, 0);
+    auto forEachManifoldPair = [&](auto visit) {
+        for (size_t i = 0; i < edges.size();) {
+            size_t j = i;
+            while (j < edges.size() && edges[j].key == edges[i].key) ++j;
+            if (j - i == 2 && edges[i].face != edges[i + 1].face) visit(edges[i], edges[i + 1]);
+            i = j;
         }
-        i = j;
-    }
+    };
+    forEachManifoldPair([&](const HalfEdge& a, const HalfEdge& b) { ++starts[a.face + 1], ++starts[b.face + 1]; });
+    for (size_t f = 0; f < faceCount; ++f) starts[f + 1] += starts[f];
+    std::vector<std::pair<uint32_t, bool>> neighbours(starts[faceCount]);
+    std::vector<uint32_t> cursor(starts.begin(), starts.end() - 1);
+    forEachManifoldPair([&](const HalfEdge& a, const HalfEdge& b) {
+        const bool same = a.forward == b.forward;
+        neighbours[cursor[a.face]++] = {b.face, same};
+        neighbours[cursor[b.face]++] = {a.face, same};
+    });
     Orientation result;
     result.flip.assign(faceCount, 0);
     const uint32_t unvisited = ~0u;
@@ -67,7 +77,8 @@ Orientation orientFaces(const Mesh& mesh, const std::vector<HalfEdge>& edges) {
         while (!queue.empty()) {
             const uint32_t f = queue.back();
             queue.pop_back();
-            for (const auto& [g, same] : neighbours[f]) {
+            for (uint32_t n = starts[f]; n < starts[f + 1]; ++n) {
+                const auto [g, same] = neighbours[n];
                 // Two faces running a shared edge the same way disagree: one of them must flip.
                 const uint8_t wanted = result.flip[f] ^ uint8_t(same);
                 if (result.component[g] == unvisited) {
@@ -81,6 +92,50 @@ Orientation orientFaces(const Mesh& mesh, const std::vector<HalfEdge>& edges) {
         }
     }
     return result;
+}
+
+// A face's vertex set: its vertices sorted, so any rotation or winding of a face gives the same.
+void sortedVertices(const Mesh& mesh, size_t face, std::vector<uint32_t>& out) {
+    out.assign(mesh.faceBegin(face), mesh.faceBegin(face) + mesh.faceSize(face));
+    std::sort(out.begin(), out.end());
+}
+
+uint32_t hashOf(const std::vector<uint32_t>& vertices) {
+    uint64_t hash = vertices.size();
+    for (uint32_t v : vertices) hash = (hash ^ v) * 0x9E3779B97F4A7C15ull;
+    return uint32_t(hash >> 32);
+}
+
+// Faces whose vertex set an earlier face already has. An open-addressing table of (hash, face)
+// holds one entry per distinct set; equal hashes are compared exactly. A node-based hash set of
+// strings cost a heap allocation per face and most of the check's time on millions of faces.
+size_t countDuplicateFaces(const Mesh& mesh) {
+    const size_t faceCount = mesh.faceCount();
+    size_t capacity = 16;
+    while (capacity < faceCount + faceCount / 3) capacity *= 2;  // load at most 3/4
+    constexpr uint64_t kEmpty = ~uint64_t(0);
+    std::vector<uint64_t> slots;  // hash << 32 | face
+    reserveLarge(slots, capacity);
+    slots.assign(capacity, kEmpty);
+    std::vector<uint32_t> vertices, other;
+    size_t duplicates = 0;
+    for (size_t f = 0; f < faceCount; ++f) {
+        sortedVertices(mesh, f, vertices);
+        const uint32_t hash = hashOf(vertices);
+        for (size_t i = hash & (capacity - 1);; i = (i + 1) & (capacity - 1)) {
+            if (slots[i] == kEmpty) {
+                slots[i] = uint64_t(hash) << 32 | f;
+                break;
+            }
+            if (uint32_t(slots[i] >> 32) != hash) continue;
+            sortedVertices(mesh, uint32_t(slots[i]), other);
+            if (other == vertices) {
+                ++duplicates;
+                break;
+            }
+        }
+    }
+    return duplicates;
 }
 
 }  // namespace
@@ -100,14 +155,7 @@ MeshReport checkMesh(const Mesh& mesh, const FaceGeometry& faces) {
     const Orientation orientation = orientFaces(mesh, edges);
     report.components = orientation.components;
     report.orientable = orientation.orientable;
-    std::unordered_set<std::string> seen;
-    std::vector<uint32_t> sorted;
-    for (size_t f = 0; f < mesh.faceCount(); ++f) {
-        sorted.assign(mesh.faceBegin(f), mesh.faceBegin(f) + mesh.faceSize(f));
-        std::sort(sorted.begin(), sorted.end());
-        if (!seen.emplace(reinterpret_cast<const char*>(sorted.data()), sorted.size() * sizeof(uint32_t)).second)
-            ++report.duplicateFaces;
-    }
+    report.duplicateFaces = countDuplicateFaces(mesh);
     return report;
 }
 

@@ -1,5 +1,10 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <random>
+#include <set>
+#include <vector>
+
 #include "TestMeshes.h"
 #include "core/MeshChecks.h"
 
@@ -39,4 +44,39 @@ TEST(MeshChecks, OpenNonManifoldAndDuplicateFaces) {
     EXPECT_EQ(report.nonManifoldEdges, 1u);
     EXPECT_GT(report.openEdges, 0u);
     EXPECT_EQ(report.duplicateFaces, 1u);
+}
+
+TEST(MeshChecks, DuplicateFacesCountedAsABruteForceSetWould) {
+    // Thousands of faces of 3-5 vertices over few vertices, many repeating an earlier face's
+    // vertex set in another rotation or winding: the count is faces minus distinct vertex sets.
+    std::mt19937_64 random(7);
+    for (int round = 0; round < 5; ++round) {
+        Mesh mesh;
+        for (int v = 0; v < 40; ++v) mesh.positions.emplace_back(float(v), float(v * v % 7), float(v % 5));
+        std::vector<std::vector<uint32_t>> faces;
+        for (int f = 0; f < 6000; ++f) {
+            std::vector<uint32_t> face;
+            if (!faces.empty() && random() % 3 == 0) {
+                face = faces[random() % faces.size()];
+                std::rotate(face.begin(), face.begin() + long(random() % face.size()), face.end());
+                if (random() % 2) std::reverse(face.begin(), face.end());
+            } else {
+                const size_t size = 3 + random() % 3;
+                while (face.size() < size) {
+                    const uint32_t v = uint32_t(random() % 40);
+                    if (std::find(face.begin(), face.end(), v) == face.end()) face.push_back(v);
+                }
+            }
+            faces.push_back(face);
+            mesh.addFace(face.data(), face.size());
+        }
+        std::set<std::vector<uint32_t>> distinct;
+        for (std::vector<uint32_t> face : faces) {
+            std::sort(face.begin(), face.end());
+            distinct.insert(face);
+        }
+        const MeshReport report = checkMesh(mesh, computeFaceGeometry(mesh));
+        EXPECT_EQ(report.duplicateFaces, faces.size() - distinct.size());
+        EXPECT_GT(report.duplicateFaces, 1000u);
+    }
 }
