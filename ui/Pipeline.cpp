@@ -105,9 +105,13 @@ ClusterSet buildClusters(const PreparedMesh& prepared, const Settings& settings,
         clusters.partition = previous->partition;
         clusters.partitionSeconds = previous->partitionSeconds;
     } else {
-        report(progress, 0.0, "clusters (" + toString(settings.builder) + ")");
+        const std::string stage = "clusters (" + toString(settings.builder) + ")";
+        report(progress, 0.0, stage);
         const auto start = std::chrono::steady_clock::now();
-        clusters.partition = buildPartition(prepared.mesh(), prepared.faces, settings);
+        // The builder's own progress (parts done) fills the stage's share, under the stage's name.
+        ProgressCallback withinStage;
+        if (progress) withinStage = [&](double fraction, const std::string&) { return progress(0.6 * fraction, stage); };
+        clusters.partition = buildPartition(prepared.mesh(), prepared.faces, settings, withinStage);
         clusters.partitionSeconds = secondsSince(start);
     }
     report(progress, 0.6, "bounds (" + toString(displayedCone(settings)) + ")");

@@ -15,10 +15,14 @@ namespace conescope::cli {
 namespace {
 
 // Stage names on stderr, so a long run shows it is alive while stdout stays clean for the data.
+// A line only when the percentage or the stage changes: the builder reports every part it finishes.
 ProgressCallback stderrProgress(bool quiet) {
     if (quiet) return {};
-    return [](double fraction, const std::string& stage) {
-        std::cerr << "conescope-cli: " << int(fraction * 100.0 + 0.5) << "% " << stage << std::endl;
+    return [lastPercent = -1, lastStage = std::string()](double fraction, const std::string& stage) mutable {
+        const int percent = int(fraction * 100.0 + 0.5);
+        if (percent == lastPercent && stage == lastStage) return true;
+        lastPercent = percent, lastStage = stage;
+        std::cerr << "conescope-cli: " << percent << "% " << stage << std::endl;
         return true;
     };
 }
@@ -86,7 +90,7 @@ void runPartition(const PartitionOptions& options) {
     note(options.quiet, "reading " + options.mesh);
     const Mesh mesh = readMesh(options.mesh);
     note(options.quiet, "building clusters (" + toString(settings.builder) + ")");
-    const Partition partition = buildPartition(mesh, computeFaceGeometry(mesh), settings);
+    const Partition partition = buildPartition(mesh, computeFaceGeometry(mesh), settings, stderrProgress(options.quiet));
     const std::vector<double> ids(partition.clusterOfFace.begin(), partition.clusterOfFace.end());
     replaceFileAtomically(options.output, [&](const std::string& temporary) {
         writePolyData(mesh, temporary, {{"cluster_id", ids}});

@@ -1,6 +1,7 @@
 #include "ClusterOptimizer.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <queue>
@@ -1251,7 +1252,7 @@ Parts splitIntoParts(const FaceGeometry& faces, size_t target) {
 }  // namespace
 
 Partition buildOptimizedClusters(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits,
-                                 size_t targetClusters) {
+                                 size_t targetClusters, const ProgressCallback& progress) {
     const size_t faceCount = mesh.faceCount();
     if (faceCount == 0) return {};
     const size_t target = targetClusters > 0 ? targetClusters : defaultClusterBudget(mesh, limits);
@@ -1259,7 +1260,11 @@ Partition buildOptimizedClusters(const Mesh& mesh, const FaceGeometry& faces, co
     size_t sweeps = std::min<size_t>(size_t(kSweepFaceVisits / double(faceCount)), kMaxSweeps);
     if (sweeps < kMinSweeps) sweeps = 0;
     const Parts parts = splitIntoParts(faces, target);
-    if (parts.count() == 1) return optimizeClusters(mesh, faces, limits, target, sweeps);
+    if (parts.count() == 1) {
+        Partition whole = optimizeClusters(mesh, faces, limits, target, sweeps);
+        if (progress && !progress(1.0, "clusters")) throw OperationCancelled();
+        return whole;
+    }
 
     // Parts are optimised independently, as many at once as the machine has cores; the result does
     // not depend on that number. The budget is shared by triangles (rounded cumulatively, so the
@@ -1276,11 +1281,19 @@ Partition buildOptimizedClusters(const Mesh& mesh, const FaceGeometry& faces, co
     }
     std::vector<Partition> results(parts.count());
     std::vector<std::vector<uint32_t>> newIndex(threadsFor(parts.count()));  // per thread: kNone per mesh vertex
+    // Progress is reported by the calling thread (worker 0) only, so the callback needs no lock; a
+    // cancel stops the parts not yet started.
+    std::atomic<size_t> partsDone{0};
+    std::atomic<bool> cancelled{false};
     forEachInParallel(parts.count(), [&](size_t i, size_t worker) {
+        if (cancelled) return;
         if (newIndex[worker].empty()) newIndex[worker].assign(mesh.positions.size(), kNone);
         const MeshPart part = extractPart(mesh, faces, parts.begin(i), parts.size(i), newIndex[worker]);
         results[i] = optimizeClusters(part.mesh, part.faces, limits, targets[i], sweeps);
+        const size_t done = ++partsDone;
+        if (worker == 0 && progress && !progress(double(done) / double(parts.count()), "clusters")) cancelled = true;
     });
+    if (cancelled || (progress && !progress(1.0, "clusters"))) throw OperationCancelled();
 
     Partition partition;
     partition.clusterOfFace.resize(faceCount);

@@ -5,6 +5,7 @@
 
 #include "Mesh.h"
 #include "Partition.h"
+#include "Progress.h"
 
 namespace conescope {
 
@@ -32,7 +33,9 @@ size_t defaultClusterBudget(const Mesh& mesh, const MeshletLimits& limits);
 // targetClusters = 0 uses defaultClusterBudget. The result has at most targetClusters clusters
 // whenever the reduction gets there (it stops a few above on meshes that do not allow it).
 // Deterministic: the same input gives the same partition, on any number of cores.
+// `progress` hears (parts done / parts, "clusters") as parts finish, on the calling thread;
+// returning false stops the parts not yet started and throws OperationCancelled.
 Partition buildOptimizedClusters(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits,
-                                 size_t targetClusters = 0);
+                                 size_t targetClusters = 0, const ProgressCallback& progress = {});
 
 }  // namespace conescope

@@ -8,7 +8,8 @@
 
 namespace conescope {
 
-Partition buildPartition(const Mesh& mesh, const FaceGeometry& faces, const Settings& settings) {
+Partition buildPartition(const Mesh& mesh, const FaceGeometry& faces, const Settings& settings,
+                         const ProgressCallback& progress) {
     switch (settings.builder) {
         case Builder::Meshlet: return buildMeshlets(mesh, faces, settings.limits, settings.normalWeight);
         case Builder::KMeans: {
@@ -18,7 +19,7 @@ Partition buildPartition(const Mesh& mesh, const FaceGeometry& faces, const Sett
             return buildKMeans(mesh, faces, target, settings.normalWeight);
         }
         case Builder::Meshopt: return buildMeshoptMeshlets(mesh, settings.limits, settings.meshoptConeWeight);
-        case Builder::Optimized: return buildOptimizedClusters(mesh, faces, settings.limits, settings.clusterCount);
+        case Builder::Optimized: return buildOptimizedClusters(mesh, faces, settings.limits, settings.clusterCount, progress);
         case Builder::File: {
             if (!settings.clusterFile.empty())
                 return partitionFromIds(readClusterIdFile(settings.clusterFile), mesh.faceCount(), settings.clusterFile);
@@ -150,7 +151,7 @@ RunStatistics runStatistics(const Mesh& inputMesh, const Settings& settings, con
     const std::vector<glm::vec3> world = worldPositions(mesh);
     run.degenerateFaces = faces.degenerateCount;
     report(0.05, "clusters");
-    const Partition partition = buildPartition(mesh, faces, settings);
+    const Partition partition = buildPartition(mesh, faces, settings, progressWithin(progress, 0.05, 0.1));
     run.clusters = partition.clusterCount;
     const std::vector<Eye> views = viewsFor(settings, computeAabb(world));
     run.viewCount = views.size();

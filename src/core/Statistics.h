@@ -8,6 +8,7 @@
 
 #include "Culling.h"
 #include "MeshChecks.h"
+#include "Progress.h"
 #include "Settings.h"
 
 namespace conescope {
@@ -68,14 +69,10 @@ struct RunStatistics {
     std::vector<TestStatistics> results;
 };
 
-// Progress in [0, 1]; returning false cancels (the function then throws OperationCancelled).
-using ProgressCallback = std::function<bool(double fraction, const std::string& stage)>;
-struct OperationCancelled : std::exception {
-    const char* what() const noexcept override { return "operation cancelled"; }
-};
-
-// Builds the partition the settings ask for.
-Partition buildPartition(const Mesh& mesh, const FaceGeometry& faces, const Settings& settings);
+// Builds the partition the settings ask for. The optimized builder reports its progress through
+// `progress` (stage "clusters") and can be cancelled there; the others report nothing.
+Partition buildPartition(const Mesh& mesh, const FaceGeometry& faces, const Settings& settings,
+                         const ProgressCallback& progress = {});
 
 // Statistics for one (cone, test) over the given views from prepared bounds.
 TestStatistics measureCulling(const CullingInput& input, const std::vector<Eye>& views, CullTest test);

@@ -4,6 +4,8 @@
 #include <map>
 #include <random>
 #include <set>
+#include <string>
+#include <thread>
 
 #include "TestMeshes.h"
 #include "core/ClusterOptimizer.h"
@@ -214,10 +216,41 @@ TEST(ClusterOptimizer, LargeMeshesAreOptimisedInPartsAndStayValid) {
     // above it, cut or not (2016 here, 2023 in one piece), well within the 5% of a fair comparison.
     EXPECT_GE(partition.clusterCount, budget);
     EXPECT_LE(double(partition.clusterCount), 1.05 * double(budget));
-    // Same input, same partition, whatever order the parts finished in.
-    EXPECT_EQ(buildOptimizedClusters(mesh, faces, limits).clusterOfFace, partition.clusterOfFace);
+    // Same input, same partition, whatever order the parts finished in; progress is heard as
+    // parts finish, rising to 1, on the calling thread.
+    std::vector<double> fractions;
+    const std::thread::id caller = std::this_thread::get_id();
+    const ProgressCallback progress = [&](double fraction, const std::string& stage) {
+        EXPECT_EQ(stage, "clusters");
+        EXPECT_EQ(std::this_thread::get_id(), caller);
+        fractions.push_back(fraction);
+        return true;
+    };
+    EXPECT_EQ(buildOptimizedClusters(mesh, faces, limits, 0, progress).clusterOfFace, partition.clusterOfFace);
+    ASSERT_FALSE(fractions.empty());
+    EXPECT_TRUE(std::is_sorted(fractions.begin(), fractions.end()));
+    EXPECT_GT(fractions.front(), 0.0);
+    EXPECT_EQ(fractions.back(), 1.0);
     // The cut costs little: still far above the greedy meshlet builder at its own (larger) count.
     const Partition meshlets = buildMeshlets(mesh, faces, limits);
     EXPECT_GT(meshlets.clusterCount, partition.clusterCount);
     EXPECT_GT(expectedCullRate(mesh, faces, partition), expectedCullRate(mesh, faces, meshlets));
+}
+
+TEST(ClusterOptimizer, ProgressCanCancelTheBuild) {
+    // 327,680 faces: four parts. Returning false stops the parts not yet started and throws.
+    const Mesh mesh = testmesh::torus(1.0, 0.3, 1024, 160);
+    const FaceGeometry faces = computeFaceGeometry(mesh);
+    size_t calls = 0;
+    const ProgressCallback cancel = [&](double, const std::string&) {
+        ++calls;
+        return false;
+    };
+    EXPECT_THROW(buildOptimizedClusters(mesh, faces, MeshletLimits{64, 124}, 0, cancel), OperationCancelled);
+    EXPECT_EQ(calls, 1u);
+    // A small mesh is one part: it reports once, when done, and can still be cancelled then.
+    const Mesh small = testmesh::icosphere(2);
+    calls = 0;
+    EXPECT_THROW(buildOptimizedClusters(small, computeFaceGeometry(small), MeshletLimits{64, 124}, 0, cancel), OperationCancelled);
+    EXPECT_EQ(calls, 1u);
 }

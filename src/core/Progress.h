@@ -1,0 +1,25 @@
+// Progress reports and cancellation for long work.
+#pragma once
+
+#include <exception>
+#include <functional>
+#include <string>
+
+namespace conescope {
+
+// Progress in [0, 1]; returning false cancels (the function then throws OperationCancelled).
+using ProgressCallback = std::function<bool(double fraction, const std::string& stage)>;
+struct OperationCancelled : std::exception {
+    const char* what() const noexcept override { return "operation cancelled"; }
+};
+
+// Reports `fraction` of [0, 1] as the same point of [begin, end] of the caller's progress, so a
+// step can report within its share of a longer run. Empty when `progress` is.
+inline ProgressCallback progressWithin(const ProgressCallback& progress, double begin, double end) {
+    if (!progress) return {};
+    return [progress, begin, end](double fraction, const std::string& stage) {
+        return progress(begin + (end - begin) * fraction, stage);
+    };
+}
+
+}  // namespace conescope
