@@ -163,8 +163,27 @@ private:
 
     OffLine requireLine(const std::string& expected) {
         std::optional<OffLine> line = lines_.next();
-        if (!line) fail(lines_.lastLineNumber(), "file ends early: expected " + expected + " (truncated file?)");
+        if (!line) {
+            // Several vertices on one line read as one vertex with extras, and the file then
+            // seems short: say so rather than only "truncated".
+            std::string why = " (truncated file?)";
+            if (crowdedLine_ > 0)
+                why = " (line " + std::to_string(crowdedLine_) + " holds " + std::to_string(crowdedCount_) +
+                      " numbers: are several vertices on one line? OFF puts one vertex per line)";
+            fail(lines_.lastLineNumber(), "file ends early: expected " + expected + why);
+        }
         return *line;
+    }
+
+    // Remembers the first vertex line holding at least two vertices' worth of numbers.
+    void noteCrowdedLine(const OffLine& line, TokenReader rest, size_t coordinateCount) {
+        if (crowdedLine_ > 0) return;
+        size_t numbers = coordinateCount;
+        for (std::string_view token = rest.next(); !token.empty(); token = rest.next()) {
+            if (!parseReal(token)) return;
+            ++numbers;
+        }
+        if (numbers >= 2 * coordinateCount) crowdedLine_ = line.number, crowdedCount_ = numbers;
     }
 
     OffCounts parseHeader() {
@@ -261,6 +280,7 @@ private:
             if (!std::isfinite(*value)) fail(line.number, vertexName + " has a non-finite coordinate " + asText(token));
             coordinates[k] = *value;
         }
+        noteCrowdedLine(line, tokens, coordinateCount);
         if (coordinates[3] == 0.0) fail(line.number, vertexName + " has homogeneous coordinate w = 0");
         glm::dvec3 position = glm::dvec3(coordinates[0], coordinates[1], coordinates[2]) / coordinates[3];
         glm::vec3 single(position);
@@ -300,6 +320,7 @@ private:
     OffLineReader lines_;
     const std::string& sourceName_;
     OffKeyword keyword_;
+    size_t crowdedLine_ = 0, crowdedCount_ = 0;
 };
 
 }  // namespace
