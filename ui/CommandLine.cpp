@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <iostream>
 #include <stdexcept>
 
@@ -37,27 +38,30 @@ QSize parseSizeText(const QString& text) {
     return {width, height};
 }
 
-FaceColoring parseFaceColoring(const QString& text) {
+namespace {
+
+// One of `values` by its scene name (toString), or an error that lists them all.
+template <typename Enum, typename Values>
+Enum parseSceneName(const QString& text, const Values& values, const char* what) {
     QStringList names;
-    for (FaceColoring coloring : {FaceColoring::Cluster, FaceColoring::CullDecision, FaceColoring::FaceFacing}) {
-        const QString name = QString::fromStdString(toString(coloring));
-        if (text == name) return coloring;
+    for (Enum value : values) {
+        const QString name = QString::fromStdString(toString(value));
+        if (text == name) return value;
         names << name;
     }
-    throw std::invalid_argument("unknown colouring '" + text.toStdString() + "' (expected one of: " +
+    throw std::invalid_argument(std::string("unknown ") + what + " '" + text.toStdString() + "' (expected one of: " +
                                 names.join(QStringLiteral(", ")).toStdString() + ")");
 }
 
-Layer parseLayer(const QString& text) {
-    QStringList names;
-    for (Layer layer : allLayers()) {
-        const QString name = QString::fromStdString(toString(layer));
-        if (text == name) return layer;
-        names << name;
-    }
-    throw std::invalid_argument("unknown layer '" + text.toStdString() + "' (expected some of: " +
-                                names.join(QStringLiteral(", ")).toStdString() + ")");
+}  // namespace
+
+FaceColoring parseFaceColoring(const QString& text) {
+    return parseSceneName<FaceColoring>(
+        text, std::initializer_list<FaceColoring>{FaceColoring::Cluster, FaceColoring::CullDecision, FaceColoring::FaceFacing},
+        "colouring");
 }
+
+Layer parseLayer(const QString& text) { return parseSceneName<Layer>(text, allLayers(), "layer"); }
 
 namespace {
 
@@ -225,8 +229,7 @@ int runHeadlessScreenshot(const AppOptions& options) {
         showMeasurement(scene, prepared, measurement);
         scene.setFaceColoring(options.coloring);
         if (options.coloring == FaceColoring::FaceFacing) showFaceFacing(scene, prepared, measurement.eye);
-        if (options.layers)
-            for (Layer layer : allLayers()) scene.setLayerVisible(layer, std::count(options.layers->begin(), options.layers->end(), layer) > 0);
+        if (options.layers) showOnly(*options.layers, scene);
         RenderOptions render;
         render.width = options.size.width();
         render.height = options.size.height();

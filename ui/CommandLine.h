@@ -2,6 +2,7 @@
 // headless `--screenshot OUT.png` mode that renders one frame and exits without a window.
 #pragma once
 
+#include <algorithm>
 #include <optional>
 #include <vector>
 
@@ -29,6 +30,12 @@ struct AppOptions {
 
 // The scene's names (toString(Layer)). Throws std::invalid_argument.
 Layer parseLayer(const QString& text);
+
+// --layers applied to a scene or a window: the layers listed shown, every other one hidden.
+template <typename Target>
+void showOnly(const std::vector<Layer>& shown, Target& target) {
+    for (Layer layer : allLayers()) target.setLayerVisible(layer, std::find(shown.begin(), shown.end(), layer) != shown.end());
+}
 
 // The scene's names (toString(FaceColoring)). Throws std::invalid_argument.
 FaceColoring parseFaceColoring(const QString& text);

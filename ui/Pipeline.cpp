@@ -109,9 +109,7 @@ ClusterSet buildClusters(const PreparedMesh& prepared, const Settings& settings,
         report(progress, 0.0, stage);
         const auto start = std::chrono::steady_clock::now();
         // The builder's own progress (parts done) fills the stage's share, under the stage's name.
-        ProgressCallback withinStage;
-        if (progress) withinStage = [&](double fraction, const std::string&) { return progress(0.6 * fraction, stage); };
-        clusters.partition = buildPartition(prepared.mesh(), prepared.faces, settings, withinStage);
+        clusters.partition = buildPartition(prepared.mesh(), prepared.faces, settings, progressWithin(progress, 0.0, 0.6, stage));
         clusters.partitionSeconds = secondsSince(start);
     }
     report(progress, 0.6, "bounds (" + toString(displayedCone(settings)) + ")");

@@ -1,5 +1,4 @@
 // conescope: the viewer, or with --screenshot a headless render of one frame.
-#include <algorithm>
 #include <cstdio>
 #include <iostream>
 
@@ -57,8 +56,7 @@ int main(int argc, char** argv) {
     window.setSettings(options.settings);
     window.setFaceColoring(options.coloring);
     if (options.eye) window.setInitialEye(*options.eye);
-    if (options.layers)
-        for (Layer layer : allLayers()) window.setLayerVisible(layer, std::count(options.layers->begin(), options.layers->end(), layer) > 0);
+    if (options.layers) showOnly(*options.layers, window);
     window.show();
     const QString mesh = options.mesh.isEmpty() ? defaultMeshPath() : options.mesh;
     if (!mesh.isEmpty()) window.openMesh(mesh);

@@ -1,6 +1,5 @@
 #include "Mesh.h"
 
-#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <limits>
@@ -62,13 +61,13 @@ static bool isIdentity(const glm::dmat4& m) { return m == glm::dmat4(1.0); }
 
 std::vector<glm::vec3> worldPositions(const Mesh& mesh) {
     std::vector<glm::vec3> world;
-    resizeLarge(world, mesh.positions.size());
+    reserveLarge(world, mesh.positions.size());  // written once, not zeroed first
     if (isIdentity(mesh.model)) {
-        std::copy(mesh.positions.begin(), mesh.positions.end(), world.begin());
+        world.assign(mesh.positions.begin(), mesh.positions.end());
         return world;
     }
-    for (size_t i = 0; i < world.size(); ++i)
-        world[i] = glm::vec3(mesh.model * glm::dvec4(glm::dvec3(mesh.positions[i]), 1.0));
+    for (const glm::vec3& position : mesh.positions)
+        world.push_back(glm::vec3(mesh.model * glm::dvec4(glm::dvec3(position), 1.0)));
     return world;
 }
 

@@ -14,11 +14,13 @@ struct OperationCancelled : std::exception {
 };
 
 // Reports `fraction` of [0, 1] as the same point of [begin, end] of the caller's progress, so a
-// step can report within its share of a longer run. Empty when `progress` is.
-inline ProgressCallback progressWithin(const ProgressCallback& progress, double begin, double end) {
+// step can report within its share of a longer run; under the caller's `stage` name when one is
+// given, else the step's own. Empty when `progress` is.
+inline ProgressCallback progressWithin(const ProgressCallback& progress, double begin, double end,
+                                       const std::string& stage = {}) {
     if (!progress) return {};
-    return [progress, begin, end](double fraction, const std::string& stage) {
-        return progress(begin + (end - begin) * fraction, stage);
+    return [progress, begin, end, stage](double fraction, const std::string& stepStage) {
+        return progress(begin + (end - begin) * fraction, stage.empty() ? stepStage : stage);
     };
 }
 
