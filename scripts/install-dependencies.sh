@@ -6,6 +6,7 @@ packages=(
   cmake g++ make pkg-config
   libvtk9-dev libvtk9-qt-dev qtbase5-dev libglm-dev libmeshoptimizer-dev
   libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev nlohmann-json3-dev
+  libassimp-dev assimp-testmodels
   xvfb xauth clang libclang-rt-14-dev
   time python3
 )

@@ -165,24 +165,36 @@ Mesh readWithVtk(const std::string& path, const std::string& extension) {
     }
 }
 
-Mesh readByExtension(const std::string& path, const std::string& extension) {
+// What a reader gets besides the path: where to leave notes and whom to tell its progress.
+struct ReadContext {
+    std::vector<std::string>& notes;
+    const ProgressCallback& progress;
+};
+
+Mesh readByExtension(const std::string& path, const std::string& extension, ReadContext&) {
     if (extension == ".off") return readOff(path);
     return readWithVtk(path, extension);
 }
 
 }  // namespace
 
-Mesh readMesh(const std::string& path) {
+Mesh readMesh(const std::string& path) { return readMeshFile(path).mesh; }
+
+MeshFile readMeshFile(const std::string& path, const ProgressCallback& progress) {
     std::string extension = lowerCaseExtension(path);
     if (!hasSupportedMeshExtension(path))
         throw MeshReadError(path + ": unsupported file extension " +
                             (extension.empty() ? std::string("(none)") : quotedForMessage(extension)) +
                             "; supported: " + supportedExtensionList());
     requireReadableFile(path);
-    Mesh mesh;
+    MeshFile file;
+    Mesh& mesh = file.mesh;
+    ReadContext context{file.notes, progress};
     try {
-        mesh = readByExtension(path, extension);
+        mesh = readByExtension(path, extension, context);
     } catch (const MeshReadError&) {
+        throw;
+    } catch (const OperationCancelled&) {
         throw;
     } catch (const std::bad_alloc&) {
         throw MeshReadError(path + ": out of memory while reading (corrupt counts or a very large file)");
@@ -195,7 +207,7 @@ Mesh readMesh(const std::string& path) {
     } catch (const std::runtime_error& error) {
         throw MeshReadError(path + ": " + error.what());
     }
-    return mesh;
+    return file;
 }
 
 std::vector<std::string> supportedMeshExtensions() {

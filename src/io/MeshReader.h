@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/Mesh.h"
+#include "core/Progress.h"
 
 namespace conescope {
 
@@ -24,6 +25,17 @@ public:
 // arrays of VTK files (e.g. "cluster_id") land in Mesh::faceArrays. VTK's own messages are
 // captured into the exception instead of being printed. Throws MeshReadError.
 Mesh readMesh(const std::string& path);
+
+// A mesh with what its reader noticed but did not refuse, for the user to see: parts that are not
+// faces (points, lines) and were skipped, encodings converted, and the like. One sentence each.
+struct MeshFile {
+    Mesh mesh;
+    std::vector<std::string> notes;
+};
+
+// readMesh with the reader's notes. Readers of formats that can be large report progress through
+// `progress`; when it returns false the read stops with OperationCancelled (core/Progress.h).
+MeshFile readMeshFile(const std::string& path, const ProgressCallback& progress = {});
 
 // Lower-case extensions readMesh accepts, with the dot: {".off", ".ply", ...}.
 std::vector<std::string> supportedMeshExtensions();
