@@ -443,6 +443,8 @@ void MainWindow::openMesh(const QString& path) {
         },
         [this, path](SceneResult& result) {
             showSceneResult(result, true);
+            const std::string message = loadMessage(*prepared_);
+            if (!message.empty()) statusBar()->showMessage(QString::fromStdString(message), 30000);
             addRecentFile(QFileInfo(path).absoluteFilePath());
             setWindowTitle(tr("ConeScope - %1").arg(QFileInfo(path).fileName()));
             emit meshShown(path);
@@ -476,9 +478,12 @@ void MainWindow::requestClusters(bool reprepare) {
         clustersGroup, tr("Building clusters"),
         [prepared, previous, settings, reprepare](const ProgressCallback& progress) {
             SceneResult result;
-            result.prepared = reprepare ? std::make_shared<PreparedMesh>(prepareMesh(prepared->original, prepared->path,
-                                                                                     settings.fixWinding, scaled(progress, 0.0, 0.3)))
-                                        : prepared;
+            result.prepared = prepared;
+            if (reprepare) {
+                PreparedMesh again = prepareMesh(prepared->original, prepared->path, settings.fixWinding, scaled(progress, 0.0, 0.3));
+                again.readerNotes = prepared->readerNotes;
+                result.prepared = std::make_shared<PreparedMesh>(std::move(again));
+            }
             auto clusters = std::make_shared<ClusterSet>(
                 buildClusters(*result.prepared, settings, previous.get(), scaled(progress, reprepare ? 0.3 : 0.0, 0.9)));
             progress(0.9, "scene");

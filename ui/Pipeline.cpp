@@ -70,7 +70,7 @@ PreparedMesh prepareMesh(std::shared_ptr<const Mesh> mesh, const std::string& pa
     report(progress, 0.5, "mesh checks");
     prepared.report = checkMesh(*mesh, prepared.faces);
     // The same repair runStatistics makes, so the window culls the mesh an export would.
-    if (fixWinding && prepared.report.inconsistentEdges > 0) {
+    if (fixWinding && windingNeedsFixing(prepared.report)) {
         report(progress, 0.6, "winding repair");
         auto repaired = std::make_shared<Mesh>(*mesh);
         prepared.windingFixedFaces = conescope::fixWinding(*repaired);
@@ -90,11 +90,24 @@ PreparedMesh prepareMesh(std::shared_ptr<const Mesh> mesh, const std::string& pa
 PreparedMesh loadMesh(const std::string& path, bool fixWinding, const ProgressCallback& progress) {
     report(progress, 0.0, "reading " + std::filesystem::path(path).filename().string());
     const auto start = std::chrono::steady_clock::now();
-    auto mesh = std::make_shared<const Mesh>(readMesh(path));
+    MeshFile file = readMeshFile(path, progressWithin(progress, 0.0, 0.3));
+    auto mesh = std::make_shared<const Mesh>(std::move(file.mesh));
     const double readSeconds = secondsSince(start);
     PreparedMesh prepared = prepareMesh(mesh, path, fixWinding, progress);
     prepared.prepareSeconds += readSeconds;
+    prepared.readerNotes = std::move(file.notes);
     return prepared;
+}
+
+std::string loadMessage(const PreparedMesh& prepared) {
+    std::string message;
+    for (const std::string& note : prepared.readerNotes) message += (message.empty() ? "" : "; ") + note;
+    const std::string warning = windingWarning(prepared.report);
+    if (!warning.empty())
+        message += (message.empty() ? "Warning: " : "; warning: ") + warning +
+                   (prepared.windingFixedFaces > 0 ? " (repaired: " + std::to_string(prepared.windingFixedFaces) + " faces flipped)"
+                                                   : "; tick 'Fix winding' in Settings to repair");
+    return message;
 }
 
 ClusterSet buildClusters(const PreparedMesh& prepared, const Settings& settings, const ClusterSet* previous,

@@ -32,6 +32,7 @@ struct PreparedMesh {
     MeshReport report;
     bool fixWindingAsked = false;     // the settings.fixWinding it was prepared with
     size_t windingFixedFaces = 0;
+    std::vector<std::string> readerNotes;  // what the reader noticed (MeshFile::notes)
     size_t triangles = 0;
     double prepareSeconds = 0.0;
 };
@@ -60,7 +61,7 @@ bool boundsChanged(const Settings& before, const Settings& after);
 PreparedMesh prepareMesh(std::shared_ptr<const Mesh> mesh, const std::string& path, bool fixWinding,
                          const ProgressCallback& progress = {});
 
-// Reads the file (readMesh, throws MeshReadError) and prepares it.
+// Reads the file (readMeshFile, throws MeshReadError) and prepares it.
 PreparedMesh loadMesh(const std::string& path, bool fixWinding, const ProgressCallback& progress = {});
 
 // Partition (buildPartition) then bounds for the displayed cone (computeClusterBounds). Reuses
@@ -104,6 +105,10 @@ std::vector<ViewStatistics> measureOrbit(const PreparedMesh& prepared, const Clu
 // The settings for a statistics export: the current settings with the eye set (current eye) or
 // cleared (orbit).
 Settings exportSettings(const Settings& settings, const std::optional<glm::dvec3>& eye);
+
+// What the user should know about a loaded mesh, in one line for the status bar: the reader's notes
+// and the winding warning (with how to repair it, or what was repaired). Empty when nothing.
+std::string loadMessage(const PreparedMesh& prepared);
 
 // Per-face arrays describing the partition for writePolyData: cluster_id plus each cluster's cone
 // and bounds spread to its faces (cone_half_angle_deg, cone_axis_x/y/z, cone_cullable,

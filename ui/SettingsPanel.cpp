@@ -96,7 +96,7 @@ SettingsPanel::SettingsPanel(QWidget* parent) : QWidget(parent) {
     projection_ = new QComboBox(this);
     projection_->addItem(tr("perspective"), false);
     projection_->addItem(tr("orthographic"), true);
-    fixWinding_ = new QCheckBox(tr("Fix inconsistent winding"), this);
+    fixWinding_ = new QCheckBox(tr("Fix winding (inconsistent or inside out)"), this);
     views_ = countBox(1, 100000, this);
     distance_ = weightBox(1000.0, 0.25, this);
     distance_->setMinimum(0.01);

@@ -34,6 +34,7 @@ public:
     QSpinBox* maxVerticesBox() const { return maxVertices_; }
     QSpinBox* maxTrianglesBox() const { return maxTriangles_; }
     QSpinBox* clusterCountBox() const { return clusterCount_; }
+    QCheckBox* fixWindingBox() const { return fixWinding_; }
 
 signals:
     void settingsChanged(const conescope::Settings& settings);

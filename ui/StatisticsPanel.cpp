@@ -55,6 +55,7 @@ void StatisticsPanel::showClusters(const PreparedMesh& prepared, const ClusterSe
     if (report.openEdges) problems << tr("%1 open edges").arg(report.openEdges);
     if (report.nonManifoldEdges) problems << tr("%1 non-manifold edges").arg(report.nonManifoldEdges);
     if (report.inconsistentEdges) problems << tr("%1 inconsistently wound edges").arg(report.inconsistentEdges);
+    if (report.insideOutComponents) problems << tr("%1 inside-out components").arg(report.insideOutComponents);
     if (report.duplicateFaces) problems << tr("%1 duplicate faces").arg(report.duplicateFaces);
     if (prepared.windingFixedFaces) problems << tr("%1 faces flipped").arg(prepared.windingFixedFaces);
     values_["mesh problems"]->setText(problems.isEmpty() ? tr("none") : problems.join(QStringLiteral(", ")));

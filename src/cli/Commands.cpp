@@ -33,6 +33,28 @@ void note(bool quiet, const std::string& message) {
 
 std::string fileName(const std::string& path) { return std::filesystem::path(path).filename().string(); }
 
+// Warnings are for every run, --quiet or not: they say the numbers on stdout may be wrong.
+void warn(const std::string& message) { std::cerr << "conescope-cli: warning: " << message << std::endl; }
+
+// The mesh, with what its reader noticed (skipped points and lines, a converted encoding) on stderr
+// even when quiet: it says what the numbers are about.
+Mesh readMeshNoting(const std::string& path, bool quiet) {
+    note(quiet, "reading " + path);
+    MeshFile file = readMeshFile(path, stderrProgress(quiet));
+    for (const std::string& readerNote : file.notes) note(false, fileName(path) + ": " + readerNote);
+    return std::move(file.mesh);
+}
+
+// Inconsistent or inside-out winding makes every number after it wrong without looking wrong.
+void warnAboutWinding(const RunStatistics& run, bool quiet) {
+    const std::string warning = windingWarning(run.meshReport);
+    if (warning.empty()) return;
+    if (run.settings.fixWinding)
+        note(quiet, "--fix-winding flipped " + std::to_string(run.windingFixedFaces) + " faces (" + warning + ")");
+    else
+        warn(warning + "; repair with --fix-winding");
+}
+
 std::string outputFormat(const StatsOptions& options) {
     if (!options.format.empty()) return options.format;
     return hasExtension(options.output, {".csv"}) ? "csv" : "json";
@@ -58,9 +80,9 @@ nlohmann::json meshSummary(const std::string& path, const Mesh& mesh) {
 
 void runStats(const StatsOptions& options) {
     const Settings settings = options.run.toSettings();
-    note(options.quiet, "reading " + options.mesh);
-    const Mesh mesh = readMesh(options.mesh);
+    const Mesh mesh = readMeshNoting(options.mesh, options.quiet);
     const RunStatistics run = runStatistics(mesh, settings, fileName(options.mesh), stderrProgress(options.quiet));
+    warnAboutWinding(run, options.quiet);
     // The whole text is made before anything is written, so stdout never gets half a document.
     std::ostringstream text;
     if (outputFormat(options) == "csv")
@@ -72,7 +94,7 @@ void runStats(const StatsOptions& options) {
 }
 
 void runCheck(const CheckOptions& options) {
-    Mesh mesh = readMesh(options.mesh);
+    Mesh mesh = readMeshNoting(options.mesh, true);
     nlohmann::json result = {{"mesh", meshSummary(options.mesh, mesh)},
                              {"report", meshReportToJson(checkMesh(mesh, computeFaceGeometry(mesh)))}};
     if (options.fixWinding) {
@@ -87,8 +109,7 @@ void runCheck(const CheckOptions& options) {
 
 void runPartition(const PartitionOptions& options) {
     const Settings settings = options.run.toSettings();
-    note(options.quiet, "reading " + options.mesh);
-    const Mesh mesh = readMesh(options.mesh);
+    const Mesh mesh = readMeshNoting(options.mesh, options.quiet);
     note(options.quiet, "building clusters (" + toString(settings.builder) + ")");
     const Partition partition = buildPartition(mesh, computeFaceGeometry(mesh), settings, stderrProgress(options.quiet));
     const std::vector<double> ids(partition.clusterOfFace.begin(), partition.clusterOfFace.end());

@@ -1,7 +1,9 @@
 #include "MeshChecks.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "LargeArrays.h"
@@ -138,6 +140,73 @@ size_t countDuplicateFaces(const Mesh& mesh) {
     return duplicates;
 }
 
+// Per component, judged with the faces flipped as `flip` says: closed (every edge of its faces
+// shared by exactly two faces) and consistently wound (no shared edge run twice the same way).
+struct ComponentEdges {
+    std::vector<uint8_t> closed, consistent;
+};
+
+ComponentEdges componentEdges(const std::vector<HalfEdge>& edges, const Orientation& orientation,
+                              const std::vector<uint8_t>& flip) {
+    ComponentEdges result{std::vector<uint8_t>(orientation.components, 1), std::vector<uint8_t>(orientation.components, 1)};
+    for (size_t i = 0; i < edges.size();) {
+        size_t j = i;
+        while (j < edges.size() && edges[j].key == edges[i].key) ++j;
+        const HalfEdge& a = edges[i];
+        if (j - i != 2 || a.face == edges[i + 1].face) {
+            for (size_t k = i; k < j; ++k) result.closed[orientation.component[edges[k].face]] = 0;
+        } else {
+            const HalfEdge& b = edges[i + 1];
+            if ((a.forward != bool(flip[a.face])) == (b.forward != bool(flip[b.face])))
+                result.consistent[orientation.component[a.face]] = 0;
+        }
+        i = j;
+    }
+    return result;
+}
+
+// Six times the volume each component encloses, by the divergence theorem over the faces' fan
+// triangles with `flip` applied, in world orientation (a mirroring model matrix turns it over).
+// Each term is measured from the component's first vertex, which keeps the terms small; the sum of
+// their magnitudes tells a real sign from rounding.
+struct ComponentVolumes {
+    std::vector<double> signedVolume, magnitude;
+};
+
+ComponentVolumes componentVolumes(const Mesh& mesh, const Orientation& orientation, const std::vector<uint8_t>& flip) {
+    ComponentVolumes result{std::vector<double>(orientation.components, 0.0), std::vector<double>(orientation.components, 0.0)};
+    const uint32_t unset = ~0u;
+    std::vector<uint32_t> origin(orientation.components, unset);
+    const double mirror = glm::determinant(mesh.model) < 0.0 ? -1.0 : 1.0;
+    for (size_t f = 0; f < mesh.faceCount(); ++f) {
+        const uint32_t c = orientation.component[f];
+        const uint32_t* face = mesh.faceBegin(f);
+        if (origin[c] == unset) origin[c] = face[0];
+        const glm::dvec3 o(mesh.positions[origin[c]]);
+        const glm::dvec3 first = glm::dvec3(mesh.positions[face[0]]) - o;
+        for (size_t k = 1; k + 1 < mesh.faceSize(f); ++k) {
+            const glm::dvec3 b = glm::dvec3(mesh.positions[face[k]]) - o;
+            const glm::dvec3 d = glm::dvec3(mesh.positions[face[k + 1]]) - o;
+            const double term = glm::dot(first, glm::cross(b, d));
+            result.signedVolume[c] += flip[f] ? -term : term;
+            result.magnitude[c] += std::abs(term);
+        }
+    }
+    for (double& volume : result.signedVolume) volume *= mirror;
+    return result;
+}
+
+// Closed, consistently wound components whose volume is clearly negative: their normals point in.
+std::vector<uint8_t> insideOutComponents(const Mesh& mesh, const std::vector<HalfEdge>& edges,
+                                         const Orientation& orientation, const std::vector<uint8_t>& flip) {
+    const ComponentEdges shape = componentEdges(edges, orientation, flip);
+    const ComponentVolumes volumes = componentVolumes(mesh, orientation, flip);
+    std::vector<uint8_t> insideOut(orientation.components, 0);
+    for (size_t c = 0; c < orientation.components; ++c)
+        insideOut[c] = shape.closed[c] && shape.consistent[c] && volumes.signedVolume[c] < -1e-6 * volumes.magnitude[c];
+    return insideOut;
+}
+
 }  // namespace
 
 MeshReport checkMesh(const Mesh& mesh, const FaceGeometry& faces) {
@@ -156,27 +225,49 @@ MeshReport checkMesh(const Mesh& mesh, const FaceGeometry& faces) {
     report.components = orientation.components;
     report.orientable = orientation.orientable;
     report.duplicateFaces = countDuplicateFaces(mesh);
+    const std::vector<uint8_t> asTheyStand(mesh.faceCount(), 0);
+    for (uint8_t insideOut : insideOutComponents(mesh, edges, orientation, asTheyStand)) report.insideOutComponents += insideOut;
     return report;
 }
 
 size_t fixWinding(Mesh& mesh) {
-    Orientation orientation = orientFaces(mesh, sortedHalfEdges(mesh));
+    const std::vector<HalfEdge> edges = sortedHalfEdges(mesh);
+    const Orientation orientation = orientFaces(mesh, edges);
     // Keep the winding most faces of each component already have.
     std::vector<size_t> flips(orientation.components, 0), sizes(orientation.components, 0);
     for (size_t f = 0; f < mesh.faceCount(); ++f) {
         flips[orientation.component[f]] += orientation.flip[f];
         ++sizes[orientation.component[f]];
     }
-    size_t flipped = 0;
+    std::vector<uint8_t> flip(mesh.faceCount());
     for (size_t f = 0; f < mesh.faceCount(); ++f) {
         const uint32_t c = orientation.component[f];
-        const bool invert = 2 * flips[c] > sizes[c];
-        if (bool(orientation.flip[f]) != invert) {
-            std::reverse(mesh.faceVertices.begin() + mesh.faceStarts[f], mesh.faceVertices.begin() + mesh.faceStarts[f + 1]);
-            ++flipped;
-        }
+        flip[f] = bool(orientation.flip[f]) != (2 * flips[c] > sizes[c]);
+    }
+    // Then turn over, whole, each closed component that the agreed winding leaves inside out.
+    const std::vector<uint8_t> insideOut = insideOutComponents(mesh, edges, orientation, flip);
+    size_t flipped = 0;
+    for (size_t f = 0; f < mesh.faceCount(); ++f) {
+        if (insideOut[orientation.component[f]]) flip[f] ^= 1;
+        if (!flip[f]) continue;
+        std::reverse(mesh.faceVertices.begin() + mesh.faceStarts[f], mesh.faceVertices.begin() + mesh.faceStarts[f + 1]);
+        ++flipped;
     }
     return flipped;
+}
+
+bool windingNeedsFixing(const MeshReport& report) { return report.inconsistentEdges > 0 || report.insideOutComponents > 0; }
+
+std::string windingWarning(const MeshReport& report) {
+    if (!windingNeedsFixing(report)) return {};
+    std::string found;
+    if (report.inconsistentEdges > 0)
+        found = std::to_string(report.inconsistentEdges) + " edge" + (report.inconsistentEdges == 1 ? "" : "s") +
+                " whose two faces are wound against each other";
+    if (report.insideOutComponents > 0)
+        found += (found.empty() ? "" : " and ") + std::to_string(report.insideOutComponents) + " closed component" +
+                 (report.insideOutComponents == 1 ? "" : "s") + " turned inside out";
+    return "the mesh has " + found + ": some face normals point inwards, so the culling numbers are wrong for those faces";
 }
 
 }  // namespace conescope

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstddef>
+#include <string>
 
 #include "Mesh.h"
 
@@ -17,13 +18,22 @@ struct MeshReport {
     size_t degenerateFaces = 0;
     size_t components = 0;           // edge-connected pieces
     bool orientable = true;          // winding can be made consistent on every component
+    size_t insideOutComponents = 0;  // closed, consistently wound components enclosing negative volume
 };
 
 MeshReport checkMesh(const Mesh& mesh, const FaceGeometry& faces);
 
 // Flips faces so neighbours across manifold edges agree; in each component the winding most faces
-// already have wins. Returns how many faces were flipped. Non-orientable components are left with
-// the fewest conflicts a breadth-first walk finds.
+// already have wins. Then every closed component that encloses negative volume (inside out: its
+// normals point in) is turned over whole. Returns how many faces were flipped. Non-orientable
+// components are left with the fewest conflicts a breadth-first walk finds.
 size_t fixWinding(Mesh& mesh);
+
+// True when fixWinding would change something the report found.
+bool windingNeedsFixing(const MeshReport& report);
+
+// One sentence for the user when the report finds what makes culling wrong (inconsistent winding,
+// inside-out components), naming the counts; empty when there is none. Callers add how to repair.
+std::string windingWarning(const MeshReport& report);
 
 }  // namespace conescope

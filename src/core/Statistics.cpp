@@ -136,7 +136,7 @@ RunStatistics runStatistics(const Mesh& inputMesh, const Settings& settings, con
     FaceGeometry faces = computeFaceGeometry(inputMesh);
     run.meshReport = checkMesh(inputMesh, faces);
     Mesh repaired;
-    if (settings.fixWinding && run.meshReport.inconsistentEdges > 0) {
+    if (settings.fixWinding && windingNeedsFixing(run.meshReport)) {
         repaired = inputMesh;
         run.windingFixedFaces = fixWinding(repaired);
         if (run.windingFixedFaces > 0) faces = computeFaceGeometry(repaired);

@@ -173,6 +173,8 @@ void writeCells(std::ostream& out, const std::vector<Column<Row>>& columns, cons
 nlohmann::json meshReportToJson(const MeshReport& report) {
     nlohmann::json object = nlohmann::json::object();
     addCells(object, reportColumns(), report);
+    // Added after the others; the CSV writes it last so columns keep their positions.
+    object["inside_out_components"] = report.insideOutComponents;
     return object;
 }
 
@@ -220,12 +222,12 @@ void writeStatisticsCsv(const RunStatistics& run, std::ostream& out, const Stati
     out << "# section: totals\ncone,test,clusters,views";
     writeHeader(out, totalColumns());
     writeHeader(out, reportColumns());
-    out << ",winding_fixed_faces\n";
+    out << ",winding_fixed_faces,inside_out_components\n";
     for (const TestStatistics& result : run.results) {
         out << toString(result.cone) << ',' << toString(result.test) << ',' << run.clusters << ',' << run.viewCount;
         writeCells(out, totalColumns(), result);
         writeCells(out, reportColumns(), run.meshReport);
-        out << ',' << run.windingFixedFaces << '\n';
+        out << ',' << run.windingFixedFaces << ',' << run.meshReport.insideOutComponents << '\n';
     }
     if (detail.views) {
         out << "# section: views\ncone,test,view,eye_x,eye_y,eye_z,direction_x,direction_y,direction_z";

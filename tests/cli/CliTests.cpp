@@ -471,3 +471,54 @@ TEST(CliCheck, MissingFileFails) {
 
 }  // namespace
 }  // namespace conescope
+
+namespace conescope {
+namespace {
+
+// A bundled mesh with every face turned over: consistent winding, every normal pointing in.
+std::string insideOut(const ScratchDirectory& scratch, const std::string& name) {
+    const Mesh mesh = readMesh(dataset(name));
+    std::ostringstream text;
+    text << "OFF\n" << mesh.positions.size() << ' ' << mesh.faceCount() << " 0\n";
+    for (const glm::vec3& p : mesh.positions) text << p.x << ' ' << p.y << ' ' << p.z << '\n';
+    for (size_t f = 0; f < mesh.faceCount(); ++f) {
+        text << mesh.faceSize(f);
+        for (size_t k = mesh.faceSize(f); k-- > 0;) text << ' ' << mesh.faceBegin(f)[k];
+        text << '\n';
+    }
+    return scratch.writeFile("inside-out-" + name, text.str());
+}
+
+TEST(CliStats, InsideOutMeshIsWarnedAboutEvenWhenQuietAndFixedOnRequest) {
+    ScratchDirectory scratch;
+    const std::string mesh = insideOut(scratch, "icosphere.off");
+    CliRun run = runCli({"stats", mesh, "--views", "4", "--quiet"});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_NE(run.err.find("conescope-cli: warning: the mesh has 1 closed component turned inside out"), std::string::npos)
+        << run.err;
+    EXPECT_NE(run.err.find("--fix-winding"), std::string::npos) << run.err;
+    nlohmann::json json = nlohmann::json::parse(run.out);
+    EXPECT_EQ(json["mesh"]["report"]["inside_out_components"], 1);
+    EXPECT_EQ(json["mesh"]["winding_fixed_faces"], 0);
+
+    run = runCli({"stats", mesh, "--views", "4", "--quiet", "--fix-winding"});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_EQ(run.err, "");
+    json = nlohmann::json::parse(run.out);
+    EXPECT_EQ(json["mesh"]["winding_fixed_faces"], json["mesh"]["faces"]);
+    EXPECT_EQ(json["mesh"]["report"]["inside_out_components"], 1) << "the report describes the file as read";
+
+    run = runCli({"stats", mesh, "--views", "4", "--quiet", "--format", "csv", "--no-per-view", "--no-per-cluster"});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const std::vector<std::string> lines = splitLines(run.out);
+    ASSERT_GE(lines.size(), 3u);
+    EXPECT_EQ(lines[1].substr(lines[1].rfind(',') + 1), "inside_out_components");
+    EXPECT_EQ(lines[2].substr(lines[2].rfind(',') + 1), "1");
+
+    run = runCli({"check", mesh});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_EQ(nlohmann::json::parse(run.out)["report"]["inside_out_components"], 1);
+}
+
+}  // namespace
+}  // namespace conescope

@@ -5,6 +5,8 @@
 #include <set>
 #include <vector>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "TestMeshes.h"
 #include "core/MeshChecks.h"
 
@@ -79,4 +81,84 @@ TEST(MeshChecks, DuplicateFacesCountedAsABruteForceSetWould) {
         EXPECT_EQ(report.duplicateFaces, faces.size() - distinct.size());
         EXPECT_GT(report.duplicateFaces, 1000u);
     }
+}
+
+namespace {
+
+void turnOver(Mesh& mesh, size_t firstFace, size_t endFace) {
+    for (size_t f = firstFace; f < endFace; ++f)
+        std::reverse(mesh.faceVertices.begin() + mesh.faceStarts[f], mesh.faceVertices.begin() + mesh.faceStarts[f + 1]);
+}
+
+// `b` appended to `a` as a second component, moved by `offset`.
+Mesh withSecondComponent(Mesh a, const Mesh& b, glm::vec3 offset) {
+    const uint32_t base = uint32_t(a.positions.size());
+    for (const glm::vec3& p : b.positions) a.positions.push_back(p + offset);
+    for (size_t f = 0; f < b.faceCount(); ++f) {
+        std::vector<uint32_t> face(b.faceBegin(f), b.faceBegin(f) + b.faceSize(f));
+        for (uint32_t& v : face) v += base;
+        a.addFace(face.data(), face.size());
+    }
+    return a;
+}
+
+// The share of faces whose normal points away from `centre`, the centre of a convex component.
+double outwardShare(const Mesh& mesh, glm::dvec3 centre, size_t firstFace, size_t endFace) {
+    const FaceGeometry faces = computeFaceGeometry(mesh);
+    size_t outward = 0;
+    for (size_t f = firstFace; f < endFace; ++f) outward += glm::dot(faces.normals[f], faces.centroids[f] - centre) > 0.0;
+    return double(outward) / double(endFace - firstFace);
+}
+
+}  // namespace
+
+TEST(MeshChecks, InsideOutClosedComponentsAreCountedAndTurnedOver) {
+    const Mesh cube = testmesh::quadCube();
+    // Two cubes, the second turned inside out: consistent winding, but its normals all point in.
+    Mesh mesh = withSecondComponent(cube, cube, {3.0f, 0.0f, 0.0f});
+    const size_t cubeFaces = cube.faceCount();
+    turnOver(mesh, cubeFaces, 2 * cubeFaces);
+    MeshReport report = checkMesh(mesh, computeFaceGeometry(mesh));
+    EXPECT_EQ(report.components, 2u);
+    EXPECT_EQ(report.inconsistentEdges, 0u);
+    EXPECT_EQ(report.insideOutComponents, 1u);
+    EXPECT_TRUE(windingNeedsFixing(report));
+    EXPECT_NE(windingWarning(report).find("1 closed component turned inside out"), std::string::npos) << windingWarning(report);
+
+    EXPECT_EQ(fixWinding(mesh), cubeFaces);
+    report = checkMesh(mesh, computeFaceGeometry(mesh));
+    EXPECT_EQ(report.insideOutComponents, 0u);
+    EXPECT_FALSE(windingNeedsFixing(report));
+    EXPECT_TRUE(windingWarning(report).empty());
+    const glm::dvec3 cubeCentre(computeAabb(cube.positions).center());
+    EXPECT_EQ(outwardShare(mesh, cubeCentre, 0, cubeFaces), 1.0);
+    EXPECT_EQ(outwardShare(mesh, cubeCentre + glm::dvec3(3, 0, 0), cubeFaces, 2 * cubeFaces), 1.0);
+}
+
+TEST(MeshChecks, MostlyInwardWindingIsMadeConsistentThenOutward) {
+    // 75 of 80 faces inside out: agreeing with the majority alone would turn the 5 good ones over too.
+    Mesh mesh = testmesh::icosphere(1);
+    turnOver(mesh, 5, mesh.faceCount());
+    const MeshReport report = checkMesh(mesh, computeFaceGeometry(mesh));
+    EXPECT_GT(report.inconsistentEdges, 0u);
+    EXPECT_EQ(report.insideOutComponents, 0u) << "inconsistent components have no inside";
+    EXPECT_EQ(fixWinding(mesh), mesh.faceCount() - 5);
+    EXPECT_EQ(outwardShare(mesh, glm::dvec3(0.0), 0, mesh.faceCount()), 1.0);
+}
+
+TEST(MeshChecks, InsideOutIsJudgedInWorldSpaceAndOnlyForClosedComponents) {
+    Mesh mirrored = testmesh::icosphere(1);
+    mirrored.model = glm::scale(glm::dmat4(1.0), glm::dvec3(-1.0, 1.0, 1.0));
+    // An outward sphere seen through a mirror winds clockwise: its world normals point in.
+    EXPECT_EQ(checkMesh(mirrored, computeFaceGeometry(mirrored)).insideOutComponents, 1u);
+    turnOver(mirrored, 0, mirrored.faceCount());
+    EXPECT_EQ(checkMesh(mirrored, computeFaceGeometry(mirrored)).insideOutComponents, 0u);
+
+    // An open cap has no inside: never counted, never turned over.
+    Mesh cap = testmesh::icosphere(1);
+    cap.faceStarts.resize(cap.faceStarts.size() - 10);
+    cap.faceVertices.resize(cap.faceStarts.back());
+    turnOver(cap, 0, cap.faceCount());
+    EXPECT_EQ(checkMesh(cap, computeFaceGeometry(cap)).insideOutComponents, 0u);
+    EXPECT_EQ(fixWinding(cap), 0u);
 }

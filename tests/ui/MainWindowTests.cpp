@@ -19,6 +19,7 @@
 #include <QSignalSpy>
 #include <QSpinBox>
 #include <QStandardPaths>
+#include <QStatusBar>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -495,6 +496,38 @@ private slots:
         QVERIFY(!window_->openMeshBlocking(temporary_.filePath(QStringLiteral("missing.off"))));
         QCOMPARE(errors.count(), 2);
         QCOMPARE(window_->preparedMesh()->path, before);
+    }
+
+    void insideOutMeshIsWarnedAboutAndRepairedOnRequest() {
+        // The bundled icosphere with every face turned over: consistent, but every normal points in.
+        const Mesh sphere = readMesh(datasetPath("icosphere.off").toStdString());
+        QString text = QStringLiteral("OFF\n%1 %2 0\n").arg(sphere.positions.size()).arg(sphere.faceCount());
+        for (const glm::vec3& p : sphere.positions) text += QStringLiteral("%1 %2 %3\n").arg(p.x, 0, 'g', 9).arg(p.y, 0, 'g', 9).arg(p.z, 0, 'g', 9);
+        for (size_t f = 0; f < sphere.faceCount(); ++f)
+            text += QStringLiteral("3 %1 %2 %3\n").arg(sphere.faceBegin(f)[2]).arg(sphere.faceBegin(f)[1]).arg(sphere.faceBegin(f)[0]);
+        const QString path = temporary_.filePath(QStringLiteral("inside-out.off"));
+        QFile file(path);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write(text.toUtf8());
+        file.close();
+        QCheckBox* fix = window_->settingsPanel()->fixWindingBox();
+        fix->setChecked(false);
+        window_->waitUntilIdle();
+
+        QVERIFY(window_->openMeshBlocking(path));
+        QVERIFY2(window_->statusBar()->currentMessage().contains(QStringLiteral("1 closed component turned inside out")),
+                 qPrintable(window_->statusBar()->currentMessage()));
+        QVERIFY(window_->statusBar()->currentMessage().contains(QStringLiteral("Fix winding")));
+        QVERIFY(window_->statisticsPanel()->value(QStringLiteral("mesh problems")).contains(QStringLiteral("1 inside-out components")));
+
+        fix->setChecked(true);
+        window_->waitUntilIdle();
+        QCOMPARE(window_->preparedMesh()->windingFixedFaces, sphere.faceCount());
+        QVERIFY(window_->statisticsPanel()->value(QStringLiteral("mesh problems")).contains(QStringLiteral("1280 faces flipped")));
+        const FaceGeometry& faces = window_->preparedMesh()->faces;
+        for (size_t f = 0; f < sphere.faceCount(); ++f) QVERIFY(glm::dot(faces.normals[f], faces.centroids[f]) > 0.0);
+        fix->setChecked(false);
+        window_->waitUntilIdle();
     }
 
     void cancelledLoadKeepsTheMesh() {
