@@ -12,21 +12,11 @@
 #include "Datasets.h"
 #include "Pipeline.h"
 #include "SceneBinding.h"
+#include "core/SettingsSchema.h"
+#include "io/MeshReader.h"
 #include "scene/SceneRendering.h"
 
 namespace conescope {
-
-glm::dvec3 parseEyeText(const QString& text) {
-    const QStringList parts = text.split(QLatin1Char(','));
-    glm::dvec3 eye(0.0);
-    bool valid = parts.size() == 3;
-    for (int axis = 0; valid && axis < 3; ++axis) {
-        eye[axis] = parts[axis].trimmed().toDouble(&valid);
-        valid = valid && std::isfinite(eye[axis]);
-    }
-    if (!valid) throw std::invalid_argument("eye '" + text.toStdString() + "' is not x,y,z (three numbers)");
-    return eye;
-}
 
 QSize parseSizeText(const QString& text) {
     const QStringList parts = text.toLower().split(QLatin1Char('x'));
@@ -77,21 +67,6 @@ std::vector<Enum> parseNameList(const QString& text, Parse parse) {
     return values;
 }
 
-size_t positiveCount(const QString& text, const char* what) {
-    bool valid = false;
-    const qulonglong value = text.toULongLong(&valid);
-    if (!valid) throw std::invalid_argument(std::string(what) + " '" + text.toStdString() + "' is not a count");
-    return size_t(value);
-}
-
-double finiteNumber(const QString& text, const char* what) {
-    bool valid = false;
-    const double value = text.toDouble(&valid);
-    if (!valid || !std::isfinite(value))
-        throw std::invalid_argument(std::string(what) + " '" + text.toStdString() + "' is not a number");
-    return value;
-}
-
 }  // namespace
 
 CommandLineResult parseCommandLine(const QStringList& arguments) {
@@ -115,38 +90,27 @@ CommandLineResult parseCommandLine(const QStringList& arguments) {
                  QString::fromStdString(toString(FaceColoring::CullDecision)),
                  QString::fromStdString(toString(FaceColoring::FaceFacing))),
         QStringLiteral("name"));
-    const QCommandLineOption eye(QStringLiteral("eye"), QStringLiteral("Cull eye position."), QStringLiteral("x,y,z"));
-    const QCommandLineOption builder(QStringLiteral("builder"),
-                                     QStringLiteral("optimized, meshlet, kmeans, meshopt or file (default %1).")
-                                         .arg(QString::fromStdString(toString(defaults.builder))),
-                                     QStringLiteral("name"));
-    const QCommandLineOption maxVertices(QStringLiteral("max-verts"), QStringLiteral("Meshlet vertex limit."), QStringLiteral("n"));
-    const QCommandLineOption maxTriangles(QStringLiteral("max-tris"), QStringLiteral("Meshlet triangle limit."), QStringLiteral("n"));
-    const QCommandLineOption clusters(QStringLiteral("clusters"), QStringLiteral("kmeans cluster count (0 = auto)."), QStringLiteral("K"));
-    const QCommandLineOption clusterFile(QStringLiteral("cluster-file"), QStringLiteral("file builder: ids, one per face."),
-                                        QStringLiteral("path"));
-    const QCommandLineOption normalWeight(QStringLiteral("normal-weight"), QStringLiteral("meshlet / kmeans normal weight."),
-                                          QStringLiteral("w"));
-    const QCommandLineOption coneWeight(QStringLiteral("cone-weight"), QStringLiteral("meshopt builder cone weight."),
-                                        QStringLiteral("w"));
-    const QCommandLineOption cone(QStringLiteral("cone"), QStringLiteral("Cone method(s), comma separated; the first is shown."),
-                                  QStringLiteral("names"));
-    const QCommandLineOption test(QStringLiteral("test"), QStringLiteral("Cull test(s), comma separated; the first is shown."),
-                                  QStringLiteral("names"));
-    const QCommandLineOption sphere(QStringLiteral("sphere"), QStringLiteral("ritter or minimal."), QStringLiteral("name"));
-    const QCommandLineOption views(QStringLiteral("views"), QStringLiteral("Orbit views."), QStringLiteral("n"));
-    const QCommandLineOption distance(QStringLiteral("distance"), QStringLiteral("Orbit distance in half AABB diagonals."),
-                                      QStringLiteral("d"));
-    const QCommandLineOption orthographic(QStringLiteral("ortho"), QStringLiteral("Orthographic cull eye."));
-    const QCommandLineOption fixWinding(QStringLiteral("fix-winding"), QStringLiteral("Repair inconsistent face winding."));
+    // The run settings, one option per field of the schema (core/SettingsSchema.h), as the CLI has them.
+    std::vector<std::pair<const SettingField*, QCommandLineOption>> settingOptions;
+    for (const SettingField& field : settingFields()) {
+        // Here --eye places the window's cull eye; the orbit is measured as well.
+        QString help = field.key == "eye" ? QStringLiteral("Cull eye position x,y,z") : QString::fromStdString(settingHelp(field));
+        const std::string defaultText = settingText(field, defaults);
+        if (field.kind != SettingKind::Flag && !defaultText.empty()) help += QStringLiteral(" (default %1)").arg(QString::fromStdString(defaultText));
+        QCommandLineOption option(QString::fromStdString(field.flag), help + QLatin1Char('.'));
+        if (field.kind != SettingKind::Flag) option.setValueName(QString::fromStdString(field.valueName));
+        settingOptions.emplace_back(&field, option);
+    }
     const QCommandLineOption layers(
         QStringLiteral("layers"),
         QStringLiteral("Layers shown, comma separated; all others are hidden (faces, borders, cones, normals, boxes, "
                        "spheres, eye, highlight, legend). In the window, keys 1-9 still switch them."),
         QStringLiteral("names"));
-    parser.addOptions({screenshot, size, fromEye, coloring, eye, builder, maxVertices, maxTriangles, clusters, clusterFile,
-                       normalWeight, coneWeight, cone, test, sphere, views, distance, orthographic, fixWinding, layers});
-    parser.addPositionalArgument(QStringLiteral("MESH"), QStringLiteral("Mesh file (.off .ply .obj .stl .vtp .vtk)."),
+    parser.addOptions({screenshot, size, fromEye, coloring, layers});
+    for (const auto& [field, option] : settingOptions) parser.addOption(option);
+    QStringList extensions;
+    for (const std::string& extension : supportedMeshExtensions()) extensions << QString::fromStdString(extension);
+    parser.addPositionalArgument(QStringLiteral("MESH"), QStringLiteral("Mesh file (%1).").arg(extensions.join(QLatin1Char(' '))),
                                  QStringLiteral("[MESH]"));
 
     CommandLineResult result;
@@ -181,22 +145,14 @@ CommandLineResult parseCommandLine(const QStringList& arguments) {
         if (positional.size() > 1) throw std::invalid_argument("more than one mesh given");
         if (!positional.isEmpty()) options.mesh = positional.front();
         Settings& settings = options.settings;
-        if (parser.isSet(builder)) settings.builder = parseBuilder(parser.value(builder).toStdString());
-        if (parser.isSet(maxVertices)) settings.limits.maxVertices = positiveCount(parser.value(maxVertices), "max-verts");
-        if (parser.isSet(maxTriangles)) settings.limits.maxTriangles = positiveCount(parser.value(maxTriangles), "max-tris");
-        if (parser.isSet(clusters)) settings.clusterCount = positiveCount(parser.value(clusters), "clusters");
-        if (parser.isSet(clusterFile)) settings.clusterFile = parser.value(clusterFile).toStdString();
-        if (parser.isSet(normalWeight)) settings.normalWeight = finiteNumber(parser.value(normalWeight), "normal-weight");
-        if (parser.isSet(coneWeight)) settings.meshoptConeWeight = float(finiteNumber(parser.value(coneWeight), "cone-weight"));
-        if (parser.isSet(cone)) settings.cones = parseNameList<ConeMethod>(parser.value(cone), parseConeMethod);
-        if (parser.isSet(test)) settings.tests = parseNameList<CullTest>(parser.value(test), parseCullTest);
-        if (parser.isSet(sphere)) settings.sphere = parseSphereMethod(parser.value(sphere).toStdString());
-        if (parser.isSet(views)) settings.views = positiveCount(parser.value(views), "views");
-        if (parser.isSet(distance)) settings.distance = finiteNumber(parser.value(distance), "distance");
-        settings.orthographic = settings.orthographic || parser.isSet(orthographic);
-        settings.fixWinding = settings.fixWinding || parser.isSet(fixWinding);
-        if (settings.views == 0) throw std::invalid_argument("views must be at least 1");
-        if (parser.isSet(eye)) options.eye = parseEyeText(parser.value(eye));
+        for (const auto& [field, option] : settingOptions) {
+            if (!parser.isSet(option)) continue;
+            // A list option given twice adds to the list, as in the CLI.
+            const QStringList values = field->kind == SettingKind::Flag ? QStringList{QStringLiteral("true")} : parser.values(option);
+            parseSetting(*field, values.join(QLatin1Char(',')).toStdString(), settings);
+        }
+        options.eye = settings.eye;
+        settings.eye.reset();
         if (parser.isSet(size)) options.size = parseSizeText(parser.value(size));
         if (parser.isSet(screenshot)) {
             options.screenshot = parser.value(screenshot);

@@ -49,8 +49,6 @@ struct CommandLineResult {
 // Parses the arguments (args[0] is the program). Never exits the process itself.
 CommandLineResult parseCommandLine(const QStringList& arguments);
 
-// "x,y,z" as three finite numbers. Throws std::invalid_argument.
-glm::dvec3 parseEyeText(const QString& text);
 // "WxH" with both in [16, 16384]. Throws std::invalid_argument.
 QSize parseSizeText(const QString& text);
 

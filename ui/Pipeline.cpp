@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "core/SettingsSchema.h"
 #include "io/MeshReader.h"
 
 namespace conescope {
@@ -31,29 +32,13 @@ CullTest displayedTest(const Settings& settings) {
 }
 
 bool partitionChanged(const Settings& before, const Settings& after) {
-    if (before.builder != after.builder) return true;
-    switch (after.builder) {
-        case Builder::Meshlet:
-            return before.limits.maxVertices != after.limits.maxVertices ||
-                   before.limits.maxTriangles != after.limits.maxTriangles || before.normalWeight != after.normalWeight;
-        case Builder::KMeans:
-            return before.clusterCount != after.clusterCount || before.normalWeight != after.normalWeight ||
-                   (after.clusterCount == 0 && before.limits.maxTriangles != after.limits.maxTriangles);
-        case Builder::Meshopt:
-            return before.limits.maxVertices != after.limits.maxVertices ||
-                   before.limits.maxTriangles != after.limits.maxTriangles ||
-                   before.meshoptConeWeight != after.meshoptConeWeight;
-        case Builder::Optimized:
-            return before.limits.maxVertices != after.limits.maxVertices ||
-                   before.limits.maxTriangles != after.limits.maxTriangles || before.clusterCount != after.clusterCount;
-        case Builder::File: return before.clusterFile != after.clusterFile;
-    }
-    return true;
+    const std::optional<Stage> stale = firstStaleStage(before, after);
+    return stale && *stale <= Stage::Clusters;
 }
 
 bool boundsChanged(const Settings& before, const Settings& after) {
-    return partitionChanged(before, after) || displayedCone(before) != displayedCone(after) ||
-           before.sphere != after.sphere;
+    const std::optional<Stage> stale = firstStaleStage(before, after);
+    return stale && *stale <= Stage::Bounds;
 }
 
 PreparedMesh prepareMesh(std::shared_ptr<const Mesh> mesh, const std::string& path, bool fixWinding,

@@ -15,6 +15,8 @@
 #include <QSpinBox>
 #include <QVBoxLayout>
 
+#include "core/SettingsSchema.h"
+
 namespace conescope {
 
 namespace {
@@ -60,11 +62,6 @@ std::vector<Enum> withFirst(std::vector<Enum> list, Enum value) {
     list.erase(std::remove(list.begin(), list.end(), value), list.end());
     list.insert(list.begin(), value);
     return list;
-}
-
-const std::vector<SphereMethod>& allSphereMethods() {
-    static const std::vector<SphereMethod> all{SphereMethod::Ritter, SphereMethod::Minimal};
-    return all;
 }
 
 }  // namespace
@@ -201,16 +198,14 @@ void SettingsPanel::emitChanged() {
 }
 
 void SettingsPanel::enableForBuilder() {
-    const Builder builder = enumOf<Builder>(builder_);
-    const bool meshletLimits = builder == Builder::Meshlet || builder == Builder::Meshopt || builder == Builder::Optimized;
-    maxVertices_->setEnabled(meshletLimits);
-    // kmeans derives its default cluster count from the triangle limit.
-    maxTriangles_->setEnabled(meshletLimits || (builder == Builder::KMeans && clusterCount_->value() == 0));
-    clusterCount_->setEnabled(builder == Builder::KMeans || builder == Builder::Optimized);
-    clusterFile_->setEnabled(builder == Builder::File);
-    browseClusterFile_->setEnabled(builder == Builder::File);
-    normalWeight_->setEnabled(builder == Builder::Meshlet || builder == Builder::KMeans);
-    coneWeight_->setEnabled(builder == Builder::Meshopt);
+    // Which builder uses which field is the schema's to say; the panel only maps fields to widgets.
+    const Settings current = settings();
+    const std::pair<const char*, std::vector<QWidget*>> widgetsOfField[] = {
+        {"max_vertices", {maxVertices_}},   {"max_triangles", {maxTriangles_}},
+        {"clusters_target", {clusterCount_}}, {"cluster_file", {clusterFile_, browseClusterFile_}},
+        {"normal_weight", {normalWeight_}}, {"cone_weight", {coneWeight_}}};
+    for (const auto& [key, widgets] : widgetsOfField)
+        for (QWidget* widget : widgets) widget->setEnabled(fieldMatters(settingField(key), current));
 }
 
 void SettingsPanel::browseClusterFile() {

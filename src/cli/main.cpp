@@ -7,6 +7,7 @@
 
 #include "cli/Commands.h"
 #include "cli/OutputFiles.h"
+#include "io/MeshReader.h"
 #include "io/MeshWriter.h"
 
 namespace {
@@ -44,9 +45,13 @@ int main(int argc, char** argv) {
         return "conescope-cli: error: " + std::string(error.what()) + "\nRun with --help for more information.\n";
     });
 
+    // The formats readMesh takes, from the reader's own table.
+    std::string meshFileHelp = "Mesh file (";
+    for (const std::string& extension : conescope::supportedMeshExtensions()) meshFileHelp += extension + (extension == conescope::supportedMeshExtensions().back() ? ")" : " ");
+
     StatsOptions stats;
     CLI::App* statsCommand = app.add_subcommand("stats", "Culling statistics over a set of views, as JSON or CSV");
-    statsCommand->add_option("mesh", stats.mesh, "Mesh file (.off .ply .obj .stl .vtp .vtk)")->required();
+    statsCommand->add_option("mesh", stats.mesh, meshFileHelp)->required();
     addBuilderOptions(*statsCommand, stats.run);
     addCullingOptions(*statsCommand, stats.run);
     statsCommand->add_option("--format", stats.format, "Output format (default: csv for a .csv output, else json)")
@@ -59,9 +64,9 @@ int main(int argc, char** argv) {
 
     CheckOptions check;
     CLI::App* checkCommand = app.add_subcommand("check", "Mesh problems that make culling wrong, as JSON");
-    checkCommand->add_option("mesh", check.mesh, "Mesh file")->required();
+    checkCommand->add_option("mesh", check.mesh, meshFileHelp)->required();
     CLI::Option* fixWinding =
-        checkCommand->add_flag("--fix-winding", check.fixWinding, "Make face winding consistent (reports the faces flipped)");
+        checkCommand->add_flag("--fix-winding", check.fixWinding, "Make face winding consistent and inside-out closed parts face outward (reports the faces flipped)");
     checkCommand->add_option("-o,--output", check.output, "Write the repaired mesh here (.vtp .vtk .ply .off)")
         ->check(meshOutputValidator(conescope::writableMeshExtensions()))
         ->needs(fixWinding);
@@ -69,7 +74,7 @@ int main(int argc, char** argv) {
     PartitionOptions partition;
     CLI::App* partitionCommand =
         app.add_subcommand("partition", "Write the mesh with a per-face cluster_id array (read back by --builder file)");
-    partitionCommand->add_option("mesh", partition.mesh, "Mesh file")->required();
+    partitionCommand->add_option("mesh", partition.mesh, meshFileHelp)->required();
     addBuilderOptions(*partitionCommand, partition.run);
     partitionCommand->add_option("-o,--output", partition.output, "Output mesh (.vtp or .vtk keep the cluster_id array)")
         ->required()

@@ -80,6 +80,10 @@ const std::vector<Builder>& allBuilders() {
     static const std::vector<Builder> all = entriesOf(builderNames());
     return all;
 }
+const std::vector<SphereMethod>& allSphereMethods() {
+    static const std::vector<SphereMethod> all = entriesOf(sphereNames());
+    return all;
+}
 
 std::vector<Eye> viewsFor(const Settings& settings, const Aabb& worldBox) {
     if (settings.eye) {

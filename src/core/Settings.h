@@ -47,6 +47,7 @@ SphereMethod parseSphereMethod(const std::string&);
 const std::vector<ConeMethod>& allConeMethods();
 const std::vector<CullTest>& allCullTests();
 const std::vector<Builder>& allBuilders();
+const std::vector<SphereMethod>& allSphereMethods();
 
 // The views a run uses: the single eye if set, else the standard orbit around the world AABB.
 std::vector<Eye> viewsFor(const Settings& settings, const Aabb& worldBox);

@@ -1,5 +1,7 @@
 #include "io/StatisticsIO.h"
 
+#include "core/SettingsSchema.h"
+
 #include <array>
 #include <charconv>
 #include <string>
@@ -98,16 +100,6 @@ void addCells(nlohmann::json& object, const std::vector<Column<Row>>& columns, c
     for (const Column<Row>& column : columns) object[column.name] = cellToJson(column.value(row));
 }
 
-// A float setting as the double with the same shortest text, so 0.3f is written as 0.3 and not as
-// 0.30000001192092896; it still reads back to the same float.
-double floatAsShortestDouble(float value) {
-    std::array<char, 32> buffer{};
-    const auto end = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value).ptr;
-    double result = 0.0;
-    std::from_chars(buffer.data(), end, result);
-    return result;
-}
-
 nlohmann::json vectorToJson(const glm::dvec3& v) { return nlohmann::json::array({v.x, v.y, v.z}); }
 
 nlohmann::json viewToJson(const ViewStatistics& view) {
@@ -137,11 +129,16 @@ nlohmann::json resultToJson(const TestStatistics& result, const StatisticsDetail
     return object;
 }
 
-template <typename Enum>
-nlohmann::json namesToJson(const std::vector<Enum>& values) {
-    nlohmann::json names = nlohmann::json::array();
-    for (Enum value : values) names.push_back(toString(value));
-    return names;
+// A schema value as JSON; an unset point and an empty path are null.
+nlohmann::json settingToJson(const SettingField& field, const SettingValue& value) {
+    if (const auto* point = std::get_if<std::optional<glm::dvec3>>(&value))
+        return *point ? vectorToJson(**point) : nlohmann::json(nullptr);
+    if (const auto* text = std::get_if<std::string>(&value))
+        return field.kind == SettingKind::Path && text->empty() ? nlohmann::json(nullptr) : nlohmann::json(*text);
+    if (const auto* names = std::get_if<std::vector<std::string>>(&value)) return nlohmann::json(*names);
+    if (const size_t* count = std::get_if<size_t>(&value)) return nlohmann::json(*count);
+    if (const double* number = std::get_if<double>(&value)) return nlohmann::json(*number);
+    return nlohmann::json(std::get<bool>(value));
 }
 
 // CSV text of a number: shortest round-trip form from to_chars, which ignores the C locale (a
@@ -179,21 +176,9 @@ nlohmann::json meshReportToJson(const MeshReport& report) {
 }
 
 nlohmann::json settingsToJson(const Settings& settings) {
-    return {{"builder", toString(settings.builder)},
-            {"max_vertices", settings.limits.maxVertices},
-            {"max_triangles", settings.limits.maxTriangles},
-            {"clusters_target", settings.clusterCount},
-            {"cluster_file", settings.clusterFile.empty() ? nlohmann::json(nullptr) : nlohmann::json(settings.clusterFile)},
-            {"normal_weight", settings.normalWeight},
-            {"cone_weight", floatAsShortestDouble(settings.meshoptConeWeight)},
-            {"cones", namesToJson(settings.cones)},
-            {"tests", namesToJson(settings.tests)},
-            {"sphere", toString(settings.sphere)},
-            {"views", settings.views},
-            {"distance", settings.distance},
-            {"orthographic", settings.orthographic},
-            {"eye", settings.eye ? vectorToJson(*settings.eye) : nlohmann::json(nullptr)},
-            {"fix_winding", settings.fixWinding}};
+    nlohmann::json object = nlohmann::json::object();
+    for (const SettingField& field : settingFields()) object[field.key] = settingToJson(field, field.value(settings));
+    return object;
 }
 
 nlohmann::json statisticsToJson(const RunStatistics& run, const StatisticsDetail& detail) {

@@ -141,6 +141,13 @@ private slots:
         // Untouched fields keep Settings{}.
         QCOMPARE(options.settings.limits.maxTriangles, Settings{}.limits.maxTriangles);
         QVERIFY(!options.layers);
+        // `all` and repeated list options, as the CLI takes them.
+        const CommandLineResult all = parseCommandLine({QStringLiteral("conescope"), QStringLiteral("--cone"), QStringLiteral("all"),
+                                                        QStringLiteral("--test"), QStringLiteral("sphere"), QStringLiteral("--test"),
+                                                        QStringLiteral("apex")});
+        QCOMPARE(int(all.action), int(CommandLineResult::Action::Run));
+        QVERIFY(all.options.settings.cones == allConeMethods());
+        QVERIFY((all.options.settings.tests == std::vector<CullTest>{CullTest::Sphere, CullTest::Apex}));
         const CommandLineResult layered =
             parseCommandLine({QStringLiteral("conescope"), QStringLiteral("--layers"), QStringLiteral("boxes, spheres,faces")});
         QCOMPARE(int(layered.action), int(CommandLineResult::Action::Run));
@@ -157,6 +164,10 @@ private slots:
               QStringList{QStringLiteral("conescope"), QStringLiteral("--screenshot"), QStringLiteral("a.png"), QStringLiteral("--size"),
                           QStringLiteral("12")},
               QStringList{QStringLiteral("conescope"), QStringLiteral("--unknown")},
+              // The CLI's domains (the settings schema): a cluster needs 3 vertices, an orbit a view.
+              QStringList{QStringLiteral("conescope"), QStringLiteral("--max-verts"), QStringLiteral("0")},
+              QStringList{QStringLiteral("conescope"), QStringLiteral("--views"), QStringLiteral("0")},
+              QStringList{QStringLiteral("conescope"), QStringLiteral("--distance"), QStringLiteral("-1")},
               QStringList{QStringLiteral("conescope"), QStringLiteral("a.off"), QStringLiteral("b.off")}}) {
             const CommandLineResult failed = parseCommandLine(bad);
             QCOMPARE(int(failed.action), int(CommandLineResult::Action::ExitFailure));
