@@ -10,7 +10,8 @@
 #include <QCoreApplication>
 
 #include "Datasets.h"
-#include "Pipeline.h"
+#include "core/Pipeline.h"
+#include "MeshLoading.h"
 #include "SceneBinding.h"
 #include "core/SettingsSchema.h"
 #include "io/MeshReader.h"

@@ -22,10 +22,9 @@ StatisticsFormat statisticsFormatOf(const std::string& path) {
     return extension == ".csv" ? StatisticsFormat::Csv : StatisticsFormat::Json;
 }
 
-RunStatistics exportStatistics(const PreparedMesh& prepared, const Settings& settings, const std::string& path,
-                               StatisticsFormat format, const ProgressCallback& progress) {
-    // From the mesh as read: runStatistics repairs the winding itself when the settings ask, as the CLI does.
-    RunStatistics run = runStatistics(*prepared.original, settings, prepared.name, progress);
+RunStatistics exportStatistics(const PreparedMesh& prepared, const ClusterSet& clusters, const Settings& settings,
+                               const std::string& path, StatisticsFormat format, const ProgressCallback& progress) {
+    RunStatistics run = measureRun(prepared, clusters, settings, progress);
     std::ofstream out(path, std::ios::binary);
     if (!out) throw std::runtime_error(path + ": cannot open for writing");
     if (format == StatisticsFormat::Csv)

@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "Pipeline.h"
+#include "core/Pipeline.h"
 
 class vtkRenderWindow;
 
@@ -16,11 +16,12 @@ enum class StatisticsFormat { Json, Csv };
 // ".csv" (any case) is CSV, everything else JSON, like `conescope-cli stats -o`.
 StatisticsFormat statisticsFormatOf(const std::string& path);
 
-// runStatistics on the mesh as read with `settings` (their eye set for one eye, unset for the
-// orbit), written as `format`. Throws std::runtime_error naming the path when it cannot be written,
-// OperationCancelled when `progress` cancels.
-RunStatistics exportStatistics(const PreparedMesh& prepared, const Settings& settings, const std::string& path,
-                               StatisticsFormat format, const ProgressCallback& progress = {});
+// The run's statistics from the window's stages (measureRun) with `settings` (their eye set for one
+// eye, unset for the orbit), written as `format`: what runStatistics on the mesh as read would give.
+// Throws std::runtime_error naming the path when it cannot be written, OperationCancelled when
+// `progress` cancels.
+RunStatistics exportStatistics(const PreparedMesh& prepared, const ClusterSet& clusters, const Settings& settings,
+                               const std::string& path, StatisticsFormat format, const ProgressCallback& progress = {});
 
 // The culled mesh with cluster_id and the per-cluster cone and bound arrays per face
 // (partitionFaceArrays), through writePolyData: .vtp or .vtk keep the arrays, and the `file`

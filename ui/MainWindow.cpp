@@ -1,4 +1,5 @@
 #include "MainWindow.h"
+#include "MeshLoading.h"
 
 #include <algorithm>
 #include <chrono>
@@ -901,12 +902,13 @@ void MainWindow::startStatisticsExport(const QString& path, StatisticsFormat for
         return;
     }
     const std::shared_ptr<const PreparedMesh> prepared = prepared_;
+    const std::shared_ptr<const ClusterSet> clusters = clusters_;
     const Settings settings = exportSettings(settings_, orbit ? std::nullopt : std::optional<glm::dvec3>(eyePosition_));
     const std::string file = path.toStdString();
     runner_.run<RunStatistics>(
         exportGroup, tr("Exporting statistics"),
-        [prepared, settings, file, format](const ProgressCallback& progress) {
-            return conescope::exportStatistics(*prepared, settings, file, format, progress);
+        [prepared, clusters, settings, file, format](const ProgressCallback& progress) {
+            return conescope::exportStatistics(*prepared, *clusters, settings, file, format, progress);
         },
         [this, path, finished](RunStatistics& run) {
             statusBar()->showMessage(tr("Wrote %1 (%2 views)").arg(path).arg(run.viewCount), 6000);

@@ -21,7 +21,7 @@
 #include <vtkSmartPointer.h>
 
 #include "Exports.h"
-#include "Pipeline.h"
+#include "core/Pipeline.h"
 #include "TaskRunner.h"
 #include "scene/ClusterScene.h"
 

@@ -4,7 +4,7 @@
 
 #include <memory>
 
-#include "Pipeline.h"
+#include "core/Pipeline.h"
 #include "scene/ClusterScene.h"
 
 namespace conescope {

@@ -5,7 +5,7 @@
 
 #include <QWidget>
 
-#include "Pipeline.h"
+#include "core/Pipeline.h"
 
 class QFormLayout;
 class QLabel;

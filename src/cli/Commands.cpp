@@ -6,7 +6,7 @@
 
 #include "cli/OutputFiles.h"
 #include "core/MeshChecks.h"
-#include "core/Statistics.h"
+#include "core/Pipeline.h"
 #include "io/MeshReader.h"
 #include "io/MeshWriter.h"
 

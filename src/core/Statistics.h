@@ -77,8 +77,4 @@ Partition buildPartition(const Mesh& mesh, const FaceGeometry& faces, const Sett
 // Statistics for one (cone, test) over the given views from prepared bounds.
 TestStatistics measureCulling(const CullingInput& input, const std::vector<Eye>& views, CullTest test);
 
-// The whole run: partition, every requested cone and test, every view.
-RunStatistics runStatistics(const Mesh& mesh, const Settings& settings, const std::string& meshName = {},
-                            const ProgressCallback& progress = {});
-
 }  // namespace conescope

@@ -9,7 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "CliTestSupport.h"
-#include "core/Statistics.h"
+#include "core/Pipeline.h"
 #include "io/MeshReader.h"
 #include "io/StatisticsIO.h"
 

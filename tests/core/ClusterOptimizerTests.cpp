@@ -9,7 +9,7 @@
 
 #include "TestMeshes.h"
 #include "core/ClusterOptimizer.h"
-#include "core/Statistics.h"
+#include "core/Pipeline.h"
 
 using namespace conescope;
 

@@ -3,7 +3,7 @@
 #include <meshoptimizer.h>
 
 #include "TestMeshes.h"
-#include "core/Statistics.h"
+#include "core/Pipeline.h"
 
 using namespace conescope;
 

@@ -10,7 +10,8 @@
 #include "ClusterReport.h"
 #include "CommandLine.h"
 #include "Datasets.h"
-#include "Pipeline.h"
+#include "core/Pipeline.h"
+#include "MeshLoading.h"
 #include "UiTestSupport.h"
 #include "scene/Charts.h"
 

@@ -9,7 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/Statistics.h"
+#include "core/Pipeline.h"
 
 namespace conescope::testing {
 

@@ -5,8 +5,7 @@
 #include <filesystem>
 #include <stdexcept>
 
-#include "core/SettingsSchema.h"
-#include "io/MeshReader.h"
+#include "SettingsSchema.h"
 
 namespace conescope {
 
@@ -70,29 +69,6 @@ PreparedMesh prepareMesh(std::shared_ptr<const Mesh> mesh, const std::string& pa
     prepared.triangles = triangleCount(prepared.mesh());
     prepared.prepareSeconds = secondsSince(start);
     return prepared;
-}
-
-PreparedMesh loadMesh(const std::string& path, bool fixWinding, const ProgressCallback& progress) {
-    report(progress, 0.0, "reading " + std::filesystem::path(path).filename().string());
-    const auto start = std::chrono::steady_clock::now();
-    MeshFile file = readMeshFile(path, progressWithin(progress, 0.0, 0.3));
-    auto mesh = std::make_shared<const Mesh>(std::move(file.mesh));
-    const double readSeconds = secondsSince(start);
-    PreparedMesh prepared = prepareMesh(mesh, path, fixWinding, progress);
-    prepared.prepareSeconds += readSeconds;
-    prepared.readerNotes = std::move(file.notes);
-    return prepared;
-}
-
-std::string loadMessage(const PreparedMesh& prepared) {
-    std::string message;
-    for (const std::string& note : prepared.readerNotes) message += (message.empty() ? "" : "; ") + note;
-    const std::string warning = windingWarning(prepared.report);
-    if (!warning.empty())
-        message += (message.empty() ? "Warning: " : "; warning: ") + warning +
-                   (prepared.windingFixedFaces > 0 ? " (repaired: " + std::to_string(prepared.windingFixedFaces) + " faces flipped)"
-                                                   : "; tick 'Fix winding' in Settings to repair");
-    return message;
 }
 
 ClusterSet buildClusters(const PreparedMesh& prepared, const Settings& settings, const ClusterSet* previous,
@@ -180,6 +156,59 @@ Settings exportSettings(const Settings& settings, const std::optional<glm::dvec3
     Settings result = settings;
     result.eye = eye;
     return result;
+}
+
+RunStatistics measureRun(const PreparedMesh& prepared, const ClusterSet& clusters, const Settings& settings,
+                         const ProgressCallback& progress) {
+    // Stages the settings make stale are built again; the rest is reused.
+    if (prepared.fixWindingAsked != settings.fixWinding) {
+        PreparedMesh again = prepareMesh(prepared.original, prepared.path, settings.fixWinding);
+        again.name = prepared.name;
+        return measureRun(again, buildClusters(again, settings), settings, progress);
+    }
+    if (partitionChanged(clusters.settings, settings))
+        return measureRun(prepared, buildClusters(prepared, settings, &clusters), settings, progress);
+    RunStatistics run;
+    run.settings = settings;
+    run.meshName = prepared.name;
+    run.meshReport = prepared.report;
+    run.windingFixedFaces = prepared.windingFixedFaces;
+    run.vertices = prepared.mesh().positions.size();
+    run.faces = prepared.mesh().faceCount();
+    run.triangles = prepared.triangles;
+    run.degenerateFaces = prepared.faces.degenerateCount;
+    run.clusters = clusters.partition.clusterCount;
+    const std::vector<Eye> views = viewsFor(settings, prepared.box);
+    run.viewCount = views.size();
+    const size_t steps = settings.cones.size() * settings.tests.size();
+    size_t step = 0;
+    for (ConeMethod cone : settings.cones) {
+        report(progress, double(step) / double(steps), "bounds (" + toString(cone) + ")");
+        // The displayed cone's bounds are built already; the other cones get theirs for the same partition.
+        const bool built = cone == displayedCone(clusters.settings) && settings.sphere == clusters.settings.sphere;
+        const ClusterBounds bounds = built ? ClusterBounds()
+                                           : computeClusterBounds(prepared.mesh(), prepared.world, prepared.faces,
+                                                                  clusters.partition, cone, settings.sphere);
+        const CullingInput input{prepared.mesh(), prepared.world, prepared.faces, built ? clusters.bounds : bounds};
+        for (CullTest test : settings.tests) {
+            report(progress, double(step) / double(steps), "culling (" + toString(cone) + ", " + toString(test) + ")");
+            run.results.push_back(measureCulling(input, views, test));
+            ++step;
+        }
+    }
+    report(progress, 1.0, "done");
+    return run;
+}
+
+RunStatistics runStatistics(const Mesh& mesh, const Settings& settings, const std::string& meshName,
+                            const ProgressCallback& progress) {
+    validateMesh(mesh);
+    // Borrowed for the call: the stages keep the mesh by shared pointer, and this one outlives them.
+    const std::shared_ptr<const Mesh> borrowed(&mesh, [](const Mesh*) {});
+    PreparedMesh prepared = prepareMesh(borrowed, meshName, settings.fixWinding, progressWithin(progress, 0.0, 0.05));
+    prepared.name = meshName;
+    const ClusterSet clusters = buildClusters(prepared, settings, nullptr, progressWithin(progress, 0.05, 0.1));
+    return measureRun(prepared, clusters, settings, progressWithin(progress, 0.1, 1.0));
 }
 
 std::map<std::string, std::vector<double>> partitionFaceArrays(const PreparedMesh& prepared, const ClusterSet& clusters) {

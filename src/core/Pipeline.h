@@ -1,8 +1,10 @@
-// The stages the application runs, as plain functions over core types: prepare a loaded mesh,
-// build its clusters, measure one eye, measure the orbit. Each stage makes exactly the core calls
-// runStatistics makes, in the same order, so what the window shows and what an export (or the CLI)
-// writes for the same Settings agree number for number. No Qt widgets and no VTK here: the headless
-// screenshot path and the window share them.
+// The pipeline as stages, each a value built by one function from the one before and the settings:
+//   Mesh -> PreparedMesh (face geometry, checks, winding repair, world positions)
+//        -> ClusterSet (partition + bounds for the displayed cone)
+//        -> measurements (per-view decisions and statistics: one eye, the orbit, a whole run).
+// runStatistics (the CLI), the window, the headless screenshot and the exports all go through these,
+// so what each shows or writes for the same Settings agrees number for number, and nothing is
+// prepared twice. A change of settings makes stale the stages core/SettingsSchema.h says.
 #pragma once
 
 #include <map>
@@ -11,10 +13,10 @@
 #include <string>
 #include <vector>
 
-#include "core/Culling.h"
-#include "core/MeshChecks.h"
-#include "core/Settings.h"
-#include "core/Statistics.h"
+#include "Culling.h"
+#include "MeshChecks.h"
+#include "Settings.h"
+#include "Statistics.h"
 
 namespace conescope {
 
@@ -32,7 +34,7 @@ struct PreparedMesh {
     MeshReport report;
     bool fixWindingAsked = false;     // the settings.fixWinding it was prepared with
     size_t windingFixedFaces = 0;
-    std::vector<std::string> readerNotes;  // what the reader noticed (MeshFile::notes)
+    std::vector<std::string> readerNotes;  // what the file's reader noticed (io's MeshFile::notes)
     size_t triangles = 0;
     double prepareSeconds = 0.0;
 };
@@ -60,9 +62,6 @@ bool boundsChanged(const Settings& before, const Settings& after);
 // `progress` may cancel between stages (it then throws OperationCancelled).
 PreparedMesh prepareMesh(std::shared_ptr<const Mesh> mesh, const std::string& path, bool fixWinding,
                          const ProgressCallback& progress = {});
-
-// Reads the file (readMeshFile, throws MeshReadError) and prepares it.
-PreparedMesh loadMesh(const std::string& path, bool fixWinding, const ProgressCallback& progress = {});
 
 // Partition (buildPartition) then bounds for the displayed cone (computeClusterBounds). Reuses
 // `previous` partition when only the cone or sphere changed.
@@ -106,9 +105,16 @@ std::vector<ViewStatistics> measureOrbit(const PreparedMesh& prepared, const Clu
 // cleared (orbit).
 Settings exportSettings(const Settings& settings, const std::optional<glm::dvec3>& eye);
 
-// What the user should know about a loaded mesh, in one line for the status bar: the reader's notes
-// and the winding warning (with how to repair it, or what was repaired). Empty when nothing.
-std::string loadMessage(const PreparedMesh& prepared);
+// The statistics of a whole run from the stages: every cone and test of `settings` over its views
+// (the single eye or the orbit), the displayed cone's bounds taken from `clusters`, the others
+// computed for the same partition. When `settings` make a stage stale (another winding repair,
+// another partition), that stage is built again from the one before it.
+RunStatistics measureRun(const PreparedMesh& prepared, const ClusterSet& clusters, const Settings& settings,
+                         const ProgressCallback& progress = {});
+
+// The whole run from a mesh: prepareMesh, buildClusters, measureRun. What `conescope-cli stats` writes.
+RunStatistics runStatistics(const Mesh& mesh, const Settings& settings, const std::string& meshName = {},
+                            const ProgressCallback& progress = {});
 
 // Per-face arrays describing the partition for writePolyData: cluster_id plus each cluster's cone
 // and bounds spread to its faces (cone_half_angle_deg, cone_axis_x/y/z, cone_cullable,

@@ -1,0 +1,33 @@
+#include "MeshLoading.h"
+
+#include <chrono>
+#include <filesystem>
+
+#include "io/MeshReader.h"
+
+namespace conescope {
+
+PreparedMesh loadMesh(const std::string& path, bool fixWinding, const ProgressCallback& progress) {
+    if (progress && !progress(0.0, "reading " + std::filesystem::path(path).filename().string())) throw OperationCancelled();
+    const auto start = std::chrono::steady_clock::now();
+    MeshFile file = readMeshFile(path, progressWithin(progress, 0.0, 0.3));
+    auto mesh = std::make_shared<const Mesh>(std::move(file.mesh));
+    const double readSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    PreparedMesh prepared = prepareMesh(mesh, path, fixWinding, progress);
+    prepared.prepareSeconds += readSeconds;
+    prepared.readerNotes = std::move(file.notes);
+    return prepared;
+}
+
+std::string loadMessage(const PreparedMesh& prepared) {
+    std::string message;
+    for (const std::string& note : prepared.readerNotes) message += (message.empty() ? "" : "; ") + note;
+    const std::string warning = windingWarning(prepared.report);
+    if (!warning.empty())
+        message += (message.empty() ? "Warning: " : "; warning: ") + warning +
+                   (prepared.windingFixedFaces > 0 ? " (repaired: " + std::to_string(prepared.windingFixedFaces) + " faces flipped)"
+                                                   : "; tick 'Fix winding' in Settings to repair");
+    return message;
+}
+
+}  // namespace conescope
