@@ -4,11 +4,15 @@
 #include <iostream>
 #include <sstream>
 
+#include <unistd.h>
+
 #include "cli/OutputFiles.h"
+#include "core/ClusterRanking.h"
 #include "core/MeshChecks.h"
 #include "core/Pipeline.h"
 #include "io/MeshReader.h"
 #include "io/MeshWriter.h"
+#include "io/StatisticsText.h"
 
 namespace conescope::cli {
 
@@ -55,9 +59,14 @@ void warnAboutWinding(const RunStatistics& run, bool quiet) {
         warn(warning + "; repair with --fix-winding");
 }
 
-std::string outputFormat(const StatsOptions& options) {
-    if (!options.format.empty()) return options.format;
-    return hasExtension(options.output, {".csv"}) ? "csv" : "json";
+// The format asked for, else the output file's (.csv, .json, .txt), else text for a person at a
+// terminal and `otherwise` for a pipe or file.
+std::string outputFormat(const std::string& format, const std::string& output, const std::string& otherwise) {
+    if (!format.empty()) return format;
+    if (hasExtension(output, {".csv"})) return "csv";
+    if (hasExtension(output, {".json"})) return "json";
+    if (hasExtension(output, {".txt"})) return "text";
+    return output.empty() && isatty(fileno(stdout)) ? "text" : otherwise;
 }
 
 void writeText(const std::string& output, const std::string& text) {
@@ -85,10 +94,48 @@ void runStats(const StatsOptions& options) {
     warnAboutWinding(run, options.quiet);
     // The whole text is made before anything is written, so stdout never gets half a document.
     std::ostringstream text;
-    if (outputFormat(options) == "csv")
+    const std::string format = outputFormat(options.format, options.output, "json");
+    if (format == "csv")
         writeStatisticsCsv(run, text, options.detail);
+    else if (format == "text")
+        writeStatisticsText(run, text);
     else
         writeStatisticsJson(run, text, options.detail);
+    writeText(options.output, text.str());
+    if (!options.output.empty()) note(options.quiet, "wrote " + options.output);
+}
+
+void runClusters(const ClustersOptions& options) {
+    Settings settings = options.run.toSettings();
+    // The table is about one (cone, test): the displayed ones.
+    settings.cones.resize(1);
+    settings.tests.resize(1);
+    const ClusterSortKey key = parseClusterSortKey(options.sort);
+    const Mesh mesh = readMeshNoting(options.mesh, options.quiet);
+    const RunStatistics run = runStatistics(mesh, settings, fileName(options.mesh), stderrProgress(options.quiet));
+    warnAboutWinding(run, options.quiet);
+    const TestStatistics& result = run.results.front();
+    const std::vector<uint32_t> order = rankClusters(result, key, options.top);
+    std::ostringstream text;
+    const std::string format = outputFormat(options.format, options.output, "text");
+    if (format == "csv") {
+        writeClusterRowsCsv(result, order, text);
+    } else if (format == "json") {
+        text << nlohmann::json{{"mesh", meshSummary(options.mesh, mesh)},
+                               {"settings", settingsToJson(settings)},
+                               {"clusters", run.clusters},
+                               {"view_count", run.viewCount},
+                               {"cone", toString(result.cone)},
+                               {"test", toString(result.test)},
+                               {"sort", toString(key)},
+                               {"rows", clusterRowsToJson(result, order)}}
+                    .dump(2)
+             << '\n';
+    } else {
+        writeStatisticsText(run, text, 0);
+        text << "\nclusters by " << toString(key) << " (alpha* = never cullable):\n";
+        writeClusterTableText(result, order, text);
+    }
     writeText(options.output, text.str());
     if (!options.output.empty()) note(options.quiet, "wrote " + options.output);
 }

@@ -1,4 +1,4 @@
-// The three subcommands, each taking what its options parsed. They throw on failure; main turns
+// The subcommands, each taking what its options parsed. They throw on failure; main turns
 // the exception into a message and an exit code.
 #pragma once
 
@@ -12,9 +12,20 @@ namespace conescope::cli {
 struct StatsOptions {
     std::string mesh;
     SettingsOptions run;
-    std::string format;                // "json", "csv" or empty: from the output's extension, else json
+    std::string format;                // "json", "csv", "text" or empty: from the output's extension, else text
+                                       // on a terminal and json otherwise
     std::string output;                // empty = stdout
     StatisticsDetail detail;
+    bool quiet = false;
+};
+
+struct ClustersOptions {
+    std::string mesh;
+    SettingsOptions run;
+    std::string sort = "test-loss";    // a ClusterSortKey name
+    size_t top = 20;                   // 0 = every cluster
+    std::string format;                // "text", "json" or "csv"; empty: from the output's extension, else text
+    std::string output;                // empty = stdout
     bool quiet = false;
 };
 
@@ -31,8 +42,11 @@ struct PartitionOptions {
     bool quiet = false;
 };
 
-// Culling statistics for every requested (cone, test) as JSON or CSV.
+// Culling statistics for every requested (cone, test) as JSON, CSV or a short text summary.
 void runStats(const StatsOptions& options);
+
+// The worst clusters of the displayed (first) cone and test, ranked by options.sort.
+void runClusters(const ClustersOptions& options);
 
 // Mesh problems as JSON on stdout; with fixWinding also the repaired mesh.
 void runCheck(const CheckOptions& options);

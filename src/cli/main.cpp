@@ -7,6 +7,7 @@
 
 #include "cli/Commands.h"
 #include "cli/OutputFiles.h"
+#include "core/ClusterRanking.h"
 #include "io/MeshReader.h"
 #include "io/MeshWriter.h"
 
@@ -54,13 +55,38 @@ int main(int argc, char** argv) {
     statsCommand->add_option("mesh", stats.mesh, meshFileHelp)->required();
     addBuilderOptions(*statsCommand, stats.run);
     addCullingOptions(*statsCommand, stats.run);
-    statsCommand->add_option("--format", stats.format, "Output format (default: csv for a .csv output, else json)")
-        ->check(CLI::IsMember({"json", "csv"}));
+    statsCommand->add_option("--format", stats.format,
+                             "Output format (default: from the output's extension; on a terminal text, else json)")
+        ->check(CLI::IsMember({"json", "csv", "text"}));
     statsCommand->add_option("-o,--output", stats.output, "Output file, replaced only when the run succeeds (default: stdout)");
     statsCommand->add_flag_callback("--no-per-view", [&stats] { stats.detail.views = false; }, "Leave out the per-view table");
     statsCommand->add_flag_callback("--no-per-cluster", [&stats] { stats.detail.clusters = false; },
                                     "Leave out the per-cluster table");
     statsCommand->add_flag("-q,--quiet", stats.quiet, "No progress messages on stderr");
+
+    ClustersOptions clusters;
+    CLI::App* clustersCommand = app.add_subcommand(
+        "clusters", "The clusters that cost the most: a table of the displayed cone and test, worst first");
+    clustersCommand->add_option("mesh", clusters.mesh, meshFileHelp)->required();
+    addBuilderOptions(*clustersCommand, clusters.run);
+    addCullingOptions(*clustersCommand, clusters.run);
+    std::string sortKeys;
+    for (conescope::ClusterSortKey key : conescope::allClusterSortKeys()) sortKeys += (sortKeys.empty() ? "" : ",") + conescope::toString(key);
+    clustersCommand->add_option("--sort", clusters.sort, "Rank by: " + sortKeys + " (losses and sizes largest first, fractions and culled smallest first)")
+        ->check([](const std::string& text) -> std::string {
+            try {
+                conescope::parseClusterSortKey(text);
+                return {};
+            } catch (const std::invalid_argument& error) {
+                return error.what();
+            }
+        })
+        ->capture_default_str();
+    clustersCommand->add_option("--top", clusters.top, "How many clusters (0 = all)")->capture_default_str();
+    clustersCommand->add_option("--format", clusters.format, "text, json or csv (default: from the output's extension, else text)")
+        ->check(CLI::IsMember({"json", "csv", "text"}));
+    clustersCommand->add_option("-o,--output", clusters.output, "Output file, replaced only when the run succeeds (default: stdout)");
+    clustersCommand->add_flag("-q,--quiet", clusters.quiet, "No progress messages on stderr");
 
     CheckOptions check;
     CLI::App* checkCommand = app.add_subcommand("check", "Mesh problems that make culling wrong, as JSON");
@@ -90,6 +116,7 @@ int main(int argc, char** argv) {
 
     try {
         if (statsCommand->parsed()) runStats(stats);
+        if (clustersCommand->parsed()) runClusters(clusters);
         if (checkCommand->parsed()) runCheck(check);
         if (partitionCommand->parsed()) runPartition(partition);
     } catch (const std::invalid_argument& error) {

@@ -190,9 +190,12 @@ RunStatistics measureRun(const PreparedMesh& prepared, const ClusterSet& cluster
                                            : computeClusterBounds(prepared.mesh(), prepared.world, prepared.faces,
                                                                   clusters.partition, cone, settings.sphere);
         const CullingInput input{prepared.mesh(), prepared.world, prepared.faces, built ? clusters.bounds : bounds};
+        report(progress, double(step) / double(steps), "cull map (" + toString(cone) + ")");
+        const CullMap map = computeCullMap(prepared.faces, input.bounds);
         for (CullTest test : settings.tests) {
             report(progress, double(step) / double(steps), "culling (" + toString(cone) + ", " + toString(test) + ")");
             run.results.push_back(measureCulling(input, views, test));
+            addCullMap(run.results.back(), map);
             ++step;
         }
     }

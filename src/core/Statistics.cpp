@@ -1,5 +1,6 @@
 #include "Statistics.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
@@ -73,12 +74,22 @@ TestStatistics measureCulling(const CullingInput& input, const std::vector<Eye>&
         cluster.triangles = bounds.triangles[c];
         cluster.vertices = bounds.vertexStarts[c + 1] - bounds.vertexStarts[c];
         cluster.cullable = bounds.cones[c].cullable;
+        cluster.sphereRadius = bounds.spheres[c].radius;
         cluster.halfAngleDegrees = cluster.cullable ? glm::degrees(bounds.cones[c].halfAngle()) : 90.0;
         result.uncullableClusters += cluster.cullable ? 0 : 1;
         totalTriangles += cluster.triangles;
         if (cluster.cullable) expected += double(cluster.triangles) * (1.0 - bounds.cones[c].sinHalfAngle);
+        result.meanClusterTriangles += double(cluster.triangles);
+        result.meanClusterVertices += double(cluster.vertices);
+        result.meanSphereRadius += cluster.sphereRadius;
+        result.maxSphereRadius = std::max(result.maxSphereRadius, cluster.sphereRadius);
     }
     result.expectedEfficiency = totalTriangles ? expected / double(totalTriangles) : 0.0;
+    if (clusterCount > 0) {
+        result.meanClusterTriangles /= double(clusterCount);
+        result.meanClusterVertices /= double(clusterCount);
+        result.meanSphereRadius /= double(clusterCount);
+    }
 
     double totalNanoseconds = 0.0;
     for (size_t v = 0; v < views.size(); ++v) {
@@ -106,11 +117,21 @@ TestStatistics measureCulling(const CullingInput& input, const std::vector<Eye>&
                 ++cluster.timesCulled;
                 view.trianglesCulled += truth.backTriangles[c];
                 if (truth.frontFaces[c] > 0) ++view.falseCulls, ++cluster.falseCulls;
-            } else if (backFacing) {
-                ++view.missedClusters;
+            } else if (truth.frontFaces[c] == 0) {
+                // Every face away (or degenerate), yet drawn: the test's loss.
+                view.missedClusters += backFacing;
+                cluster.timesMissed += backFacing;
+                view.testLossTriangles += truth.backTriangles[c];
+                cluster.testLossTriangles += truth.backTriangles[c];
+            } else {
+                view.partitionLossTriangles += truth.backTriangles[c];
+                cluster.partitionLossTriangles += truth.backTriangles[c];
             }
         }
         view.efficiency = ratio(view.trianglesCulled, view.backFacingTriangles);
+        result.meanViewEfficiency += view.efficiency / double(views.size());
+        result.testLossTriangles += view.testLossTriangles;
+        result.partitionLossTriangles += view.partitionLossTriangles;
         result.clustersCulled += view.clustersCulled;
         result.trianglesCulled += view.trianglesCulled;
         result.backFacingTriangles += view.backFacingTriangles;
@@ -122,6 +143,19 @@ TestStatistics measureCulling(const CullingInput& input, const std::vector<Eye>&
     result.nanosecondsPerCluster =
         clusterCount && !views.empty() ? totalNanoseconds / double(clusterCount * views.size()) : 0.0;
     return result;
+}
+
+void addCullMap(TestStatistics& statistics, const CullMap& map) {
+    double cull = 0.0, oracle = 0.0, triangles = 0.0;
+    for (ClusterStatistics& cluster : statistics.clusters) {
+        cluster.cullFraction = cullFraction(map, cluster.cluster, statistics.test);
+        cluster.oracleFraction = map.oracleFraction[cluster.cluster];
+        cull += double(cluster.triangles) * cluster.cullFraction;
+        oracle += double(cluster.triangles) * cluster.oracleFraction;
+        triangles += double(cluster.triangles);
+    }
+    statistics.cullFraction = triangles > 0.0 ? cull / triangles : 0.0;
+    statistics.oracleFraction = triangles > 0.0 ? oracle / triangles : 0.0;
 }
 
 }  // namespace conescope

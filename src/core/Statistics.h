@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "CullMap.h"
 #include "Culling.h"
 #include "MeshChecks.h"
 #include "Progress.h"
@@ -23,6 +24,10 @@ struct ViewStatistics {
     size_t backFacingClusters = 0;    // clusters whose faces are all back-facing
     size_t missedClusters = 0;        // back-facing clusters the test drew
     size_t falseCulls = 0;            // culled clusters holding a front-facing face: must be 0
+    // The back-facing triangles not culled, by why: trianglesCulled + testLossTriangles +
+    // partitionLossTriangles = backFacingTriangles. Degenerate faces are in none of them.
+    size_t testLossTriangles = 0;       // in back-facing clusters the test drew (a better test could cull them)
+    size_t partitionLossTriangles = 0;  // in clusters holding a visible face (no conservative test could)
     double efficiency = 0.0;          // trianglesCulled / backFacingTriangles (1 when none face away)
     double nanosecondsPerCluster = 0.0;
 };
@@ -36,7 +41,13 @@ struct ClusterStatistics {
     bool cullable = false;
     size_t timesCulled = 0;
     size_t timesBackFacing = 0;       // views from which every face was back-facing
+    size_t timesMissed = 0;           // of those, views from which the test drew it
     size_t falseCulls = 0;
+    size_t testLossTriangles = 0;     // summed over the views, as in ViewStatistics
+    size_t partitionLossTriangles = 0;
+    double sphereRadius = 0.0;        // the bounding sphere's
+    double cullFraction = 0.0;        // share of directions at infinity the test culls it from (CullMap.h)
+    double oracleFraction = 0.0;      // share from which every face faces away
 };
 
 struct TestStatistics {
@@ -47,10 +58,18 @@ struct TestStatistics {
     size_t backFacingTriangles = 0;
     size_t missedClusters = 0;
     size_t falseCulls = 0;
+    size_t testLossTriangles = 0;
+    size_t partitionLossTriangles = 0;
     double efficiency = 0.0;
     double nanosecondsPerCluster = 0.0;
     size_t uncullableClusters = 0;
     double expectedEfficiency = 0.0;  // sum T_c (1 - sin alpha_c) / T: random-direction estimate
+    // The partition's summary, view-independent apart from the first.
+    double meanViewEfficiency = 0.0;  // the views' efficiencies averaged (each view weighs the same)
+    double meanClusterTriangles = 0.0, meanClusterVertices = 0.0;  // fill of the limits
+    double meanSphereRadius = 0.0, maxSphereRadius = 0.0;  // sprawl: what frustum and occlusion culling see
+    double cullFraction = 0.0;        // triangle-weighted mean of the clusters' cullFraction (0 before addCullMap)
+    double oracleFraction = 0.0;      // triangle-weighted mean of the clusters' oracleFraction
     std::vector<ViewStatistics> views;
     std::vector<ClusterStatistics> clusters;
 };
@@ -76,5 +95,10 @@ Partition buildPartition(const Mesh& mesh, const FaceGeometry& faces, const Sett
 
 // Statistics for one (cone, test) over the given views from prepared bounds.
 TestStatistics measureCulling(const CullingInput& input, const std::vector<Eye>& views, CullTest test);
+
+// Fills the clusters' cullFraction / oracleFraction and their triangle-weighted means from a cull
+// map of the same bounds (computeCullMap, CullMap.h): kept apart from measureCulling, which the
+// window calls at every eye move.
+void addCullMap(TestStatistics& statistics, const CullMap& map);
 
 }  // namespace conescope

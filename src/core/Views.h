@@ -22,6 +22,10 @@ struct Eye {
     static Eye orthographicAlong(const glm::dvec3& direction);
 };
 
+// N unit directions spread evenly over the sphere (the golden-angle spiral): for i = 0..N-1,
+// y = 1 - 2(i + 0.5)/N, r = sqrt(1 - y^2), phi = i*pi*(3 - sqrt 5), d = (cos(phi) r, y, sin(phi) r).
+std::vector<glm::dvec3> spiralDirections(size_t count);
+
 // The standard orbit: for i = 0..N-1, y = 1 - 2(i + 0.5)/N, r = sqrt(1 - y^2), phi = i*pi*(3 - sqrt 5),
 // eye = c + D*R*(cos(phi) r, y, sin(phi) r), c the AABB centre and R half its diagonal.
 // Orthographic views look from the same points towards c.

@@ -44,6 +44,23 @@ const std::vector<Column<TestStatistics>>& totalColumns() {
     return columns;
 }
 
+// Totals added later: the loss breakdown and the partition summary. The CSV writes them after the
+// mesh report, so older columns keep their positions.
+const std::vector<Column<TestStatistics>>& laterTotalColumns() {
+    static const std::vector<Column<TestStatistics>> columns = {
+        {"test_loss_triangles", [](const TestStatistics& r) -> Cell { return r.testLossTriangles; }},
+        {"partition_loss_triangles", [](const TestStatistics& r) -> Cell { return r.partitionLossTriangles; }},
+        {"mean_view_efficiency", [](const TestStatistics& r) -> Cell { return r.meanViewEfficiency; }},
+        {"mean_cluster_triangles", [](const TestStatistics& r) -> Cell { return r.meanClusterTriangles; }},
+        {"mean_cluster_vertices", [](const TestStatistics& r) -> Cell { return r.meanClusterVertices; }},
+        {"mean_sphere_radius", [](const TestStatistics& r) -> Cell { return r.meanSphereRadius; }},
+        {"max_sphere_radius", [](const TestStatistics& r) -> Cell { return r.maxSphereRadius; }},
+        {"cull_fraction", [](const TestStatistics& r) -> Cell { return r.cullFraction; }},
+        {"oracle_fraction", [](const TestStatistics& r) -> Cell { return r.oracleFraction; }},
+    };
+    return columns;
+}
+
 // Per view, after "view" and the eye; the eye is an array in JSON and three columns in CSV.
 const std::vector<Column<ViewStatistics>>& viewColumns() {
     static const std::vector<Column<ViewStatistics>> columns = {
@@ -57,6 +74,8 @@ const std::vector<Column<ViewStatistics>>& viewColumns() {
         {"false_culls", [](const ViewStatistics& v) -> Cell { return v.falseCulls; }},
         {"efficiency", [](const ViewStatistics& v) -> Cell { return v.efficiency; }},
         {"ns_per_cluster", [](const ViewStatistics& v) -> Cell { return v.nanosecondsPerCluster; }},
+        {"test_loss_triangles", [](const ViewStatistics& v) -> Cell { return v.testLossTriangles; }},
+        {"partition_loss_triangles", [](const ViewStatistics& v) -> Cell { return v.partitionLossTriangles; }},
     };
     return columns;
 }
@@ -72,6 +91,12 @@ const std::vector<Column<ClusterStatistics>>& clusterColumns() {
         {"times_culled", [](const ClusterStatistics& c) -> Cell { return c.timesCulled; }},
         {"times_back_facing", [](const ClusterStatistics& c) -> Cell { return c.timesBackFacing; }},
         {"false_culls", [](const ClusterStatistics& c) -> Cell { return c.falseCulls; }},
+        {"times_missed", [](const ClusterStatistics& c) -> Cell { return c.timesMissed; }},
+        {"test_loss_triangles", [](const ClusterStatistics& c) -> Cell { return c.testLossTriangles; }},
+        {"partition_loss_triangles", [](const ClusterStatistics& c) -> Cell { return c.partitionLossTriangles; }},
+        {"sphere_radius", [](const ClusterStatistics& c) -> Cell { return c.sphereRadius; }},
+        {"cull_fraction", [](const ClusterStatistics& c) -> Cell { return c.cullFraction; }},
+        {"oracle_fraction", [](const ClusterStatistics& c) -> Cell { return c.oracleFraction; }},
     };
     return columns;
 }
@@ -112,19 +137,16 @@ nlohmann::json viewToJson(const ViewStatistics& view) {
 nlohmann::json resultToJson(const TestStatistics& result, const StatisticsDetail& detail) {
     nlohmann::json object = {{"cone", toString(result.cone)}, {"test", toString(result.test)}};
     addCells(object, totalColumns(), result);
+    addCells(object, laterTotalColumns(), result);
     if (detail.views) {
         nlohmann::json views = nlohmann::json::array();
         for (const ViewStatistics& view : result.views) views.push_back(viewToJson(view));
         object["views"] = std::move(views);
     }
     if (detail.clusters) {
-        nlohmann::json clusters = nlohmann::json::array();
-        for (const ClusterStatistics& cluster : result.clusters) {
-            nlohmann::json row = nlohmann::json::object();
-            addCells(row, clusterColumns(), cluster);
-            clusters.push_back(std::move(row));
-        }
-        object["clusters"] = std::move(clusters);
+        std::vector<uint32_t> every(result.clusters.size());
+        for (uint32_t c = 0; c < every.size(); ++c) every[c] = c;
+        object["clusters"] = clusterRowsToJson(result, every);
     }
     return object;
 }
@@ -167,6 +189,27 @@ void writeCells(std::ostream& out, const std::vector<Column<Row>>& columns, cons
 
 }  // namespace
 
+nlohmann::json clusterRowsToJson(const TestStatistics& result, const std::vector<uint32_t>& order) {
+    nlohmann::json rows = nlohmann::json::array();
+    for (uint32_t c : order) {
+        nlohmann::json row = nlohmann::json::object();
+        addCells(row, clusterColumns(), result.clusters.at(c));
+        rows.push_back(std::move(row));
+    }
+    return rows;
+}
+
+void writeClusterRowsCsv(const TestStatistics& result, const std::vector<uint32_t>& order, std::ostream& out) {
+    out << "cone,test";
+    writeHeader(out, clusterColumns());
+    out << '\n';
+    for (uint32_t c : order) {
+        out << toString(result.cone) << ',' << toString(result.test);
+        writeCells(out, clusterColumns(), result.clusters.at(c));
+        out << '\n';
+    }
+}
+
 nlohmann::json meshReportToJson(const MeshReport& report) {
     nlohmann::json object = nlohmann::json::object();
     addCells(object, reportColumns(), report);
@@ -207,12 +250,16 @@ void writeStatisticsCsv(const RunStatistics& run, std::ostream& out, const Stati
     out << "# section: totals\ncone,test,clusters,views";
     writeHeader(out, totalColumns());
     writeHeader(out, reportColumns());
-    out << ",winding_fixed_faces,inside_out_components\n";
+    out << ",winding_fixed_faces,inside_out_components";
+    writeHeader(out, laterTotalColumns());
+    out << '\n';
     for (const TestStatistics& result : run.results) {
         out << toString(result.cone) << ',' << toString(result.test) << ',' << run.clusters << ',' << run.viewCount;
         writeCells(out, totalColumns(), result);
         writeCells(out, reportColumns(), run.meshReport);
-        out << ',' << run.windingFixedFaces << ',' << run.meshReport.insideOutComponents << '\n';
+        out << ',' << run.windingFixedFaces << ',' << run.meshReport.insideOutComponents;
+        writeCells(out, laterTotalColumns(), result);
+        out << '\n';
     }
     if (detail.views) {
         out << "# section: views\ncone,test,view,eye_x,eye_y,eye_z,direction_x,direction_y,direction_z";

@@ -40,4 +40,9 @@ void writeStatisticsJson(const RunStatistics& run, std::ostream& out, const Stat
 // shortest text that reads back to the same value, whatever the locale.
 void writeStatisticsCsv(const RunStatistics& run, std::ostream& out, const StatisticsDetail& detail = {});
 
+// A worst-cluster table: the given clusters of one result, in that order, with the keys of the
+// per-cluster statistics (an array of objects; a CSV header row and one row each).
+nlohmann::json clusterRowsToJson(const TestStatistics& result, const std::vector<uint32_t>& order);
+void writeClusterRowsCsv(const TestStatistics& result, const std::vector<uint32_t>& order, std::ostream& out);
+
 }  // namespace conescope

@@ -512,12 +512,96 @@ TEST(CliStats, InsideOutMeshIsWarnedAboutEvenWhenQuietAndFixedOnRequest) {
     ASSERT_EQ(run.exitCode, 0) << run.err;
     const std::vector<std::string> lines = splitLines(run.out);
     ASSERT_GE(lines.size(), 3u);
-    EXPECT_EQ(lines[1].substr(lines[1].rfind(',') + 1), "inside_out_components");
-    EXPECT_EQ(lines[2].substr(lines[2].rfind(',') + 1), "1");
+    auto cells = [](const std::string& line) {
+        std::vector<std::string> parts;
+        std::stringstream stream(line);
+        for (std::string part; std::getline(stream, part, ',');) parts.push_back(part);
+        return parts;
+    };
+    const std::vector<std::string> header = cells(lines[1]), totals = cells(lines[2]);
+    const auto column = std::find(header.begin(), header.end(), "inside_out_components");
+    ASSERT_NE(column, header.end()) << lines[1];
+    EXPECT_EQ(totals.at(size_t(column - header.begin())), "1");
 
     run = runCli({"check", mesh});
     ASSERT_EQ(run.exitCode, 0) << run.err;
     EXPECT_EQ(nlohmann::json::parse(run.out)["report"]["inside_out_components"], 1);
+}
+
+}  // namespace
+}  // namespace conescope
+
+namespace conescope {
+namespace {
+
+// Back faces that were not culled are lost to the test or to the partition, nowhere else, on every
+// bundled mesh (also the view-independent shares: the oracle's never below the test's).
+TEST(CliStats, LossesAccountForEveryBackFaceOnEveryBundledMesh) {
+    for (const auto& entry : std::filesystem::directory_iterator(datasetsDir())) {
+        if (!hasSupportedMeshExtension(entry.path().string())) continue;
+        const nlohmann::json json = runStatsJson({entry.path().string(), "--views", "12", "--test", "apex,sphere,oracle"});
+        for (const nlohmann::json& result : json["results"]) {
+            const std::string name = entry.path().filename().string() + " " + result["test"].get<std::string>();
+            EXPECT_EQ(result["triangles_culled"].get<size_t>() + result["test_loss_triangles"].get<size_t>() +
+                          result["partition_loss_triangles"].get<size_t>(),
+                      result["back_facing_triangles"].get<size_t>())
+                << name;
+            for (const nlohmann::json& view : result["views"])
+                EXPECT_EQ(view["triangles_culled"].get<size_t>() + view["test_loss_triangles"].get<size_t>() +
+                              view["partition_loss_triangles"].get<size_t>(),
+                          view["back_facing_triangles"].get<size_t>())
+                    << name;
+            for (const nlohmann::json& cluster : result["clusters"])
+                EXPECT_GE(cluster["oracle_fraction"].get<double>(), cluster["cull_fraction"].get<double>()) << name;
+            EXPECT_EQ(result["false_culls"], 0) << name;
+        }
+    }
+}
+
+TEST(CliClusters, RanksTheDisplayedTestsClustersWorstFirst) {
+    const std::string mesh = dataset("torus.off");
+    const nlohmann::json stats = runStatsJson({mesh, "--views", "16", "--max-tris", "32", "--max-verts", "32"});
+    const nlohmann::json& all = stats["results"][0]["clusters"];
+    for (const std::string sort : {"test-loss", "partition-loss", "radius", "cull-fraction"}) {
+        const CliRun run = runCli({"clusters", mesh, "--views", "16", "--max-tris", "32", "--max-verts", "32", "--sort", sort,
+                                   "--top", "5", "--format", "json", "--quiet"});
+        ASSERT_EQ(run.exitCode, 0) << run.err;
+        const nlohmann::json json = nlohmann::json::parse(run.out);
+        EXPECT_EQ(json["sort"], sort);
+        const nlohmann::json& rows = json["rows"];
+        ASSERT_EQ(rows.size(), 5u);
+        // Each row is the stats run's row of that cluster, and no cluster left out is worse.
+        const std::string key = sort == "test-loss" ? "test_loss_triangles"
+                                : sort == "partition-loss" ? "partition_loss_triangles"
+                                : sort == "radius" ? "sphere_radius" : "cull_fraction";
+        const double sign = sort == "cull-fraction" ? -1.0 : 1.0;
+        for (size_t i = 0; i < rows.size(); ++i) {
+            EXPECT_EQ(rows[i], all[rows[i]["cluster"].get<size_t>()]) << sort;
+            if (i > 0) EXPECT_GE(sign * rows[i - 1][key].get<double>(), sign * rows[i][key].get<double>()) << sort;
+        }
+        size_t worseLeftOut = 0;
+        for (const nlohmann::json& cluster : all)
+            worseLeftOut += sign * cluster[key].get<double>() > sign * rows.back()[key].get<double>() &&
+                            std::find(rows.begin(), rows.end(), cluster) == rows.end();
+        EXPECT_EQ(worseLeftOut, 0u) << sort;
+    }
+    const CliRun csv = runCli({"clusters", mesh, "--top", "3", "--format", "csv", "--quiet"});
+    ASSERT_EQ(csv.exitCode, 0) << csv.err;
+    EXPECT_EQ(splitLines(csv.out).size(), 4u);
+    EXPECT_EQ(splitLines(csv.out)[0].rfind("cone,test,cluster,", 0), 0u);
+    const CliRun text = runCli({"clusters", mesh, "--top", "3", "--quiet"});
+    EXPECT_NE(text.out.find("clusters by test-loss"), std::string::npos) << text.out;
+    const CliRun bad = runCli({"clusters", mesh, "--sort", "prettiest"});
+    EXPECT_EQ(bad.exitCode, 2);
+    EXPECT_NE(bad.err.find("test-loss"), std::string::npos) << "the message lists the keys";
+}
+
+TEST(CliStats, TextSummaryNamesEfficiencyLossesAndWorstClusters) {
+    const CliRun run = runCli({"stats", dataset("fandisk.off"), "--views", "8", "--format", "text", "--quiet"});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    for (const char* expected : {"fandisk.off:", "efficiency", "lost by the test", "by the partition", "worst clusters by test loss"})
+        EXPECT_NE(run.out.find(expected), std::string::npos) << expected << "\n" << run.out;
+    EXPECT_LT(splitLines(run.out).size(), 20u) << "a summary, not every view";
 }
 
 }  // namespace

@@ -71,10 +71,28 @@ RunStatistics smallRun() {
     result.expectedEfficiency = 0.25;
     result.uncullableClusters = 1;
     result.nanosecondsPerCluster = 12.5;
+    result.testLossTriangles = 3;
+    result.partitionLossTriangles = 1;
+    result.meanViewEfficiency = 0.5;
+    result.meanClusterTriangles = 1.5;
+    result.meanClusterVertices = 3.5;
+    result.meanSphereRadius = 0.75;
+    result.maxSphereRadius = 1.0;
+    result.cullFraction = 0.25;
+    result.oracleFraction = 0.375;
     result.views.push_back(makeView(0, Eye::perspective({0.0, 0.0, 3.0}), {1, 2, 2, 1, 1, 0, 0}, 1.0, 10.0));
     result.views.push_back(makeView(1, Eye{{0.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, true}, {0, 0, 4, 1, 1, 1, 0}, 0.0, 15.0));
+    result.views[1].testLossTriangles = 3;
+    result.views[1].partitionLossTriangles = 1;
     result.clusters.push_back(makeCluster(0, 1, 2, 4, 12.75, true, 1, 2));
     result.clusters.push_back(makeCluster(1, 1, 1, 3, 90.0, false, 0, 0));
+    result.clusters[0].timesMissed = 1;
+    result.clusters[0].testLossTriangles = 3;
+    result.clusters[0].sphereRadius = 0.5;
+    result.clusters[0].cullFraction = 0.375;
+    result.clusters[0].oracleFraction = 0.5;
+    result.clusters[1].partitionLossTriangles = 1;
+    result.clusters[1].sphereRadius = 1.0;
     run.results.push_back(result);
     return run;
 }
@@ -122,7 +140,12 @@ TEST(StatisticsJson, HasEveryKeyWithItsValue) {
     EXPECT_EQ(keysOf(result), (std::set<std::string>{"cone", "test", "clusters_culled", "triangles_culled",
                                                      "back_facing_triangles", "missed_clusters", "false_culls",
                                                      "efficiency", "expected_efficiency", "uncullable_clusters",
-                                                     "ns_per_cluster", "views", "clusters"}));
+                                                     "ns_per_cluster", "views", "clusters", "test_loss_triangles",
+                                                     "partition_loss_triangles", "mean_view_efficiency",
+                                                     "mean_cluster_triangles", "mean_cluster_vertices", "mean_sphere_radius",
+                                                     "max_sphere_radius", "cull_fraction", "oracle_fraction"}));
+    EXPECT_EQ(result["test_loss_triangles"], 3);
+    EXPECT_EQ(result["oracle_fraction"].get<double>(), 0.375);
     EXPECT_EQ(result["cone"], "average");
     EXPECT_EQ(result["test"], "sphere");
     EXPECT_EQ(result["efficiency"].get<double>(), 1.0 / 3.0);
@@ -133,7 +156,8 @@ TEST(StatisticsJson, HasEveryKeyWithItsValue) {
     EXPECT_EQ(keysOf(ortho), (std::set<std::string>{"view", "eye", "direction", "orthographic", "clusters_culled",
                                                     "triangles_culled", "back_facing_triangles", "front_facing_triangles",
                                                     "back_facing_clusters", "missed_clusters", "false_culls", "efficiency",
-                                                    "ns_per_cluster"}));
+                                                    "ns_per_cluster", "test_loss_triangles", "partition_loss_triangles"}));
+    EXPECT_EQ(ortho["partition_loss_triangles"], 1);
     EXPECT_EQ(ortho["view"], 1);
     EXPECT_EQ(ortho["orthographic"], true);
     EXPECT_EQ(ortho["direction"], nlohmann::json::array({0.0, 1.0, 0.0}));
@@ -143,7 +167,11 @@ TEST(StatisticsJson, HasEveryKeyWithItsValue) {
     ASSERT_EQ(result["clusters"].size(), 2u);
     const nlohmann::json& cluster = result["clusters"][1];
     EXPECT_EQ(keysOf(cluster), (std::set<std::string>{"cluster", "faces", "triangles", "vertices", "half_angle_deg",
-                                                      "cullable", "times_culled", "times_back_facing", "false_culls"}));
+                                                      "cullable", "times_culled", "times_back_facing", "false_culls",
+                                                      "times_missed", "test_loss_triangles", "partition_loss_triangles",
+                                                      "sphere_radius", "cull_fraction", "oracle_fraction"}));
+    EXPECT_EQ(result["clusters"][0]["times_missed"], 1);
+    EXPECT_EQ(result["clusters"][0]["cull_fraction"].get<double>(), 0.375);
     EXPECT_EQ(cluster["cluster"], 1);
     EXPECT_EQ(cluster["cullable"], false);
     EXPECT_EQ(cluster["half_angle_deg"].get<double>(), 90.0);
@@ -186,18 +214,21 @@ TEST(StatisticsCsv, ExactText) {
         "# section: totals\n"
         "cone,test,clusters,views,clusters_culled,triangles_culled,back_facing_triangles,missed_clusters,false_culls,"
         "efficiency,expected_efficiency,uncullable_clusters,ns_per_cluster,open_edges,non_manifold_edges,inconsistent_edges,"
-        "duplicate_faces,degenerate_faces,components,orientable,winding_fixed_faces,inside_out_components\n"
-        "average,sphere,2,2,1,2,6,1,0,0.3333333333333333,0.25,1,12.5,5,0,4,0,0,1,1,3,0\n"
+        "duplicate_faces,degenerate_faces,components,orientable,winding_fixed_faces,inside_out_components,"
+        "test_loss_triangles,partition_loss_triangles,mean_view_efficiency,mean_cluster_triangles,mean_cluster_vertices,"
+        "mean_sphere_radius,max_sphere_radius,cull_fraction,oracle_fraction\n"
+        "average,sphere,2,2,1,2,6,1,0,0.3333333333333333,0.25,1,12.5,5,0,4,0,0,1,1,3,0,3,1,0.5,1.5,3.5,0.75,1,0.25,0.375\n"
         "# section: views\n"
         "cone,test,view,eye_x,eye_y,eye_z,direction_x,direction_y,direction_z,orthographic,clusters_culled,"
         "triangles_culled,back_facing_triangles,front_facing_triangles,back_facing_clusters,missed_clusters,false_culls,"
-        "efficiency,ns_per_cluster\n"
-        "average,sphere,0,0,0,3,0,0,-1,0,1,2,2,1,1,0,0,1,10\n"
-        "average,sphere,1,0,0,0,0,1,0,1,0,0,4,1,1,1,0,0,15\n"
+        "efficiency,ns_per_cluster,test_loss_triangles,partition_loss_triangles\n"
+        "average,sphere,0,0,0,3,0,0,-1,0,1,2,2,1,1,0,0,1,10,0,0\n"
+        "average,sphere,1,0,0,0,0,1,0,1,0,0,4,1,1,1,0,0,15,3,1\n"
         "# section: clusters\n"
-        "cone,test,cluster,faces,triangles,vertices,half_angle_deg,cullable,times_culled,times_back_facing,false_culls\n"
-        "average,sphere,0,1,2,4,12.75,1,1,2,0\n"
-        "average,sphere,1,1,1,3,90,0,0,0,0\n";
+        "cone,test,cluster,faces,triangles,vertices,half_angle_deg,cullable,times_culled,times_back_facing,false_culls,"
+        "times_missed,test_loss_triangles,partition_loss_triangles,sphere_radius,cull_fraction,oracle_fraction\n"
+        "average,sphere,0,1,2,4,12.75,1,1,2,0,1,3,0,0.5,0.375,0.5\n"
+        "average,sphere,1,1,1,3,90,0,0,0,0,0,0,1,1,0,0\n";
     EXPECT_EQ(text.str(), expected);
 }
 

@@ -1,0 +1,38 @@
+// The view-independent quality of a partition and of a test: for each cluster, the share of view
+// directions (eye at infinity, directions uniform on the sphere) from which it is culled.
+//
+// At infinity every conservative cone test (vertices, aabb, sphere, apex, meshopt-sphere) reduces to
+// the cone test v.axis > sin(alpha), culled from a cap of half-angle 90 - alpha: a share
+// (1 - sin alpha)/2 of the directions, exactly. The oracle culls from every direction u with n.u < 0
+// for each non-degenerate face normal n, a convex spherical polygon that holds that cap; its share is
+// counted over cullMapDirections spiral directions (Views.h), which the tests check against exact
+// areas (caps, octants) to well within 0.005.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "ClusterBounds.h"
+#include "Culling.h"
+
+namespace conescope {
+
+constexpr size_t cullMapDirections = size_t(1) << 15;
+
+struct CullMap {
+    std::vector<double> coneFraction;    // per cluster: (1 - sin alpha)/2, 0 when not cullable
+    std::vector<double> oracleFraction;  // per cluster: share of directions with every face back-facing
+};
+
+// Face normals from `faces` (world space), cones from `bounds`.
+CullMap computeCullMap(const FaceGeometry& faces, const ClusterBounds& bounds, size_t directions = cullMapDirections);
+
+// The share for `test`: the oracle's own for CullTest::Oracle, the cone's for every other test.
+double cullFraction(const CullMap& map, uint32_t cluster, CullTest test);
+
+// Share of directions from which a cone of half-angle alpha (given by sin alpha) culls: (1 - sin)/2.
+// The expected cull rate of a cluster, from which statistics' expected_efficiency is summed.
+double coneCullShare(double sinHalfAngle);
+
+}  // namespace conescope

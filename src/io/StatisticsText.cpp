@@ -1,0 +1,58 @@
+#include "io/StatisticsText.h"
+
+#include <cstdio>
+#include <string>
+
+#include "core/ClusterRanking.h"
+
+namespace conescope {
+
+namespace {
+
+// printf into a string: the table's fixed widths, whatever the stream's locale.
+template <typename... Values>
+std::string formatted(const char* format, Values... values) {
+    char buffer[256];
+    std::snprintf(buffer, sizeof buffer, format, values...);
+    return buffer;
+}
+
+double share(size_t part, size_t whole) { return whole ? double(part) / double(whole) : 0.0; }
+
+}  // namespace
+
+void writeClusterTableText(const TestStatistics& result, const std::vector<uint32_t>& order, std::ostream& out) {
+    out << formatted("%8s %6s %6s %7s %10s %6s %7s %7s %7s %10s %10s\n", "cluster", "tris", "verts", "alpha", "radius",
+                     "cull", "oracle", "culled", "missed", "test_loss", "part_loss");
+    for (uint32_t c : order) {
+        const ClusterStatistics& s = result.clusters.at(c);
+        out << formatted("%8u %6zu %6zu %6.1f%s %10.4g %6.3f %7.3f %7zu %7zu %10zu %10zu\n", s.cluster, s.triangles, s.vertices,
+                         s.halfAngleDegrees, s.cullable ? " " : "*", s.sphereRadius, s.cullFraction, s.oracleFraction,
+                         s.timesCulled, s.timesMissed, s.testLossTriangles, s.partitionLossTriangles);
+    }
+}
+
+void writeStatisticsText(const RunStatistics& run, std::ostream& out, size_t worstClusters) {
+    out << run.meshName << ": " << run.vertices << " vertices, " << run.triangles << " triangles in " << run.clusters
+        << " clusters (" << toString(run.settings.builder) << "), " << run.viewCount << (run.viewCount == 1 ? " view" : " views")
+        << '\n';
+    for (const TestStatistics& r : run.results) {
+        out << '\n' << toString(r.cone) << " cone, " << toString(r.test) << " test\n";
+        out << formatted("  efficiency        %.3f of the back faces culled (mean per view %.3f), false culls %zu\n", r.efficiency,
+                         r.meanViewEfficiency, r.falseCulls);
+        out << formatted("  not culled        %.3f lost by the test (whole cluster faced away), %.3f by the partition "
+                         "(cluster also held a visible face)\n",
+                         share(r.testLossTriangles, r.backFacingTriangles), share(r.partitionLossTriangles, r.backFacingTriangles));
+        out << formatted("  from any side     the test culls %.3f of the directions, every face faces away from %.3f "
+                         "(triangle-weighted)\n",
+                         r.cullFraction, r.oracleFraction);
+        out << formatted("  clusters          %.1f triangles and %.1f vertices on average, sphere radius mean %.4g max %.4g, "
+                         "%zu never cullable\n",
+                         r.meanClusterTriangles, r.meanClusterVertices, r.meanSphereRadius, r.maxSphereRadius, r.uncullableClusters);
+        if (worstClusters == 0 || r.clusters.empty()) continue;
+        out << "  worst clusters by test loss (alpha* = never cullable):\n";
+        writeClusterTableText(r, rankClusters(r, ClusterSortKey::TestLoss, worstClusters), out);
+    }
+}
+
+}  // namespace conescope

@@ -1,0 +1,152 @@
+// Where the back faces that were not culled went: the loss breakdown's identity, and the cull map's
+// shares against exact areas and against each other.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "TestMeshes.h"
+#include "core/CullMap.h"
+#include "core/Pipeline.h"
+
+using namespace conescope;
+
+namespace {
+
+// triangles_culled + test loss + partition loss = back-facing triangles, per view and over the
+// views; the clusters' losses and misses add up to the result's.
+void expectLossIdentity(const RunStatistics& run) {
+    for (const TestStatistics& result : run.results) {
+        const std::string name = toString(result.cone) + "/" + toString(result.test);
+        size_t test = 0, partition = 0;
+        for (const ViewStatistics& view : result.views) {
+            EXPECT_EQ(view.trianglesCulled + view.testLossTriangles + view.partitionLossTriangles, view.backFacingTriangles)
+                << name << " view " << view.view;
+            test += view.testLossTriangles;
+            partition += view.partitionLossTriangles;
+        }
+        EXPECT_EQ(test, result.testLossTriangles) << name;
+        EXPECT_EQ(partition, result.partitionLossTriangles) << name;
+        EXPECT_EQ(result.trianglesCulled + result.testLossTriangles + result.partitionLossTriangles, result.backFacingTriangles)
+            << name;
+        size_t clusterTest = 0, clusterPartition = 0, missed = 0;
+        for (const ClusterStatistics& cluster : result.clusters) {
+            clusterTest += cluster.testLossTriangles;
+            clusterPartition += cluster.partitionLossTriangles;
+            missed += cluster.timesMissed;
+            EXPECT_LE(cluster.timesCulled + cluster.timesMissed, result.views.size());
+            EXPECT_LE(cluster.timesMissed, cluster.timesBackFacing);
+        }
+        EXPECT_EQ(clusterTest, result.testLossTriangles) << name;
+        EXPECT_EQ(clusterPartition, result.partitionLossTriangles) << name;
+        EXPECT_EQ(missed, result.missedClusters) << name;
+        if (result.test == CullTest::Oracle) EXPECT_EQ(result.testLossTriangles, 0u) << "the oracle misses nothing";
+    }
+}
+
+// The cull map's promises: every cone test's share is (1 - sin alpha)/2 of its cone, the oracle's
+// share is never below it, and the means are the triangle-weighted means.
+void expectCullMapShares(const RunStatistics& run, const Mesh& mesh, const Settings& settings) {
+    const FaceGeometry faces = computeFaceGeometry(mesh);
+    const Partition partition = buildPartition(mesh, faces, settings);
+    for (const TestStatistics& result : run.results) {
+        const ClusterBounds bounds = computeClusterBounds(mesh, worldPositions(mesh), faces, partition, result.cone, settings.sphere);
+        double weighted = 0.0, triangles = 0.0;
+        for (const ClusterStatistics& cluster : result.clusters) {
+            const ConeOfNormals& cone = bounds.cones[cluster.cluster];
+            const double coneShare = cone.cullable ? (1.0 - cone.sinHalfAngle) / 2.0 : 0.0;
+            if (result.test == CullTest::Oracle)
+                EXPECT_EQ(cluster.cullFraction, cluster.oracleFraction);
+            else
+                EXPECT_DOUBLE_EQ(cluster.cullFraction, coneShare) << toString(result.test);
+            EXPECT_GE(cluster.oracleFraction, coneShare) << "the oracle culls wherever a conservative test does";
+            EXPECT_LE(cluster.oracleFraction, 0.5) << "a closed cluster of faces faces away from at most half the sphere";
+            weighted += cluster.cullFraction * double(cluster.triangles);
+            triangles += double(cluster.triangles);
+        }
+        EXPECT_NEAR(result.cullFraction, weighted / triangles, 1e-12);
+        EXPECT_GE(result.oracleFraction, result.cullFraction);
+    }
+}
+
+Settings everyTest(size_t views) {
+    Settings settings;
+    settings.cones = allConeMethods();
+    settings.tests = allCullTests();
+    settings.views = views;
+    return settings;
+}
+
+}  // namespace
+
+TEST(LossBreakdown, AddsUpOnBundledShapes) {
+    for (const Mesh& mesh : {testmesh::torus(1.0, 0.4, 48, 24), testmesh::icosphere(3), testmesh::quadCube()}) {
+        Settings settings = everyTest(24);
+        settings.limits = {24, 32};
+        const RunStatistics run = runStatistics(mesh, settings, "shape");
+        expectLossIdentity(run);
+        expectCullMapShares(run, mesh, settings);
+    }
+}
+
+TEST(LossBreakdown, AddsUpOnRandomMeshesAndEyesInside) {
+    std::mt19937_64 random(11);
+    for (int round = 0; round < 6; ++round) {
+        const Mesh mesh = testmesh::randomPatch(random, 12, 70.0);
+        Settings settings = everyTest(16);
+        settings.builder = round % 2 ? Builder::Meshlet : Builder::Optimized;
+        settings.limits = {16, 20};
+        // Close orbits put eyes among the faces, where partition losses are large.
+        settings.distance = round % 3 == 0 ? 0.3 : 2.0;
+        const RunStatistics run = runStatistics(mesh, settings, "patch");
+        expectLossIdentity(run);
+        size_t partitionLoss = 0;
+        for (const TestStatistics& result : run.results) partitionLoss += result.partitionLossTriangles;
+        EXPECT_GT(partitionLoss, 0u) << "clusters of a curved patch mix front and back faces from some eye";
+    }
+}
+
+namespace {
+
+// One cluster of three triangles meeting at a corner, normals -x, -y, -z, turned by `rotation`: every
+// face faces away exactly from the directions u with u.x, u.y, u.z > 0 (rotated), an octant.
+Mesh rotatedCorner(const glm::dmat3& rotation, int normals) {
+    const glm::dvec3 corners[3][3] = {{{0, 0, 0}, {0, 0, 1}, {0, 1, 0}},   // normal -x
+                                      {{0, 0, 0}, {1, 0, 0}, {0, 0, 1}},   // normal -y
+                                      {{0, 0, 0}, {0, 1, 0}, {1, 0, 0}}};  // normal -z
+    Mesh mesh;
+    for (int f = 0; f < normals; ++f) {
+        for (const glm::dvec3& corner : corners[f]) mesh.positions.push_back(glm::vec3(rotation * corner));
+        const uint32_t base = uint32_t(3 * f);
+        mesh.addFace({base, base + 1, base + 2});
+    }
+    return mesh;
+}
+
+double oracleShareOf(const Mesh& mesh) {
+    const FaceGeometry faces = computeFaceGeometry(mesh);
+    const Partition one = partitionFromIds(std::vector<double>(mesh.faceCount(), 0.0), mesh.faceCount(), "test");
+    const ClusterBounds bounds = computeClusterBounds(mesh, worldPositions(mesh), faces, one, ConeMethod::Minimal);
+    return computeCullMap(faces, bounds).oracleFraction.at(0);
+}
+
+}  // namespace
+
+TEST(CullMap, OracleShareMatchesExactAreas) {
+    // One normal: a hemisphere; two at right angles: a lune of a quarter; three: an octant.
+    std::mt19937_64 random(5);
+    std::uniform_real_distribution<double> angle(0.0, 6.283185307179586);
+    for (int round = 0; round < 8; ++round) {
+        const glm::dmat3 rotation(glm::rotate(glm::dmat4(1.0), angle(random), glm::normalize(glm::dvec3(angle(random) - 3.0, 1.0, angle(random) - 3.0))));
+        EXPECT_NEAR(oracleShareOf(rotatedCorner(rotation, 1)), 0.5, 0.002) << round;
+        EXPECT_NEAR(oracleShareOf(rotatedCorner(rotation, 2)), 0.25, 0.002) << round;
+        EXPECT_NEAR(oracleShareOf(rotatedCorner(rotation, 3)), 0.125, 0.002) << round;
+    }
+}
+
+TEST(CullMap, ConeShareIsTheCapArea) {
+    EXPECT_DOUBLE_EQ(coneCullShare(0.0), 0.5);  // a flat cluster: the hemisphere behind it
+    EXPECT_DOUBLE_EQ(coneCullShare(1.0), 0.0);  // a hemisphere of normals: nowhere
+    EXPECT_DOUBLE_EQ(coneCullShare(0.5), 0.25);
+}
