@@ -234,6 +234,32 @@ std::map<std::string, std::vector<double>> partitionFaceArrays(const PreparedMes
         spread("aabb_max" + suffix, [&](uint32_t c) { return double(bounds.boxes[c].max[axis]); });
     }
     spread("sphere_radius", [&](uint32_t c) { return bounds.spheres[c].radius; });
+    const CullMap map = computeCullMap(prepared.faces, bounds);
+    spread("cull_fraction", [&](uint32_t c) { return cullFraction(map, c, displayedTest(clusters.settings)); });
+    spread("oracle_fraction", [&](uint32_t c) { return map.oracleFraction[c]; });
+    return arrays;
+}
+
+std::map<std::string, std::vector<double>> eyeFaceArrays(const PreparedMesh& prepared, const ClusterSet& clusters,
+                                                         const EyeMeasurement& measurement) {
+    const std::vector<Facing> facing = classifyFaces(prepared.mesh(), prepared.world, prepared.faces, measurement.eye);
+    const std::vector<uint8_t> backFacingCluster = allBackFacingClusters(measurement);
+    const size_t faceCount = prepared.mesh().faceCount();
+    std::map<std::string, std::vector<double>> arrays;
+    std::vector<double>& culled = arrays["culled"];
+    std::vector<double>& back = arrays["back_facing"];
+    std::vector<double>& loss = arrays["loss"];
+    culled.resize(faceCount), back.resize(faceCount), loss.resize(faceCount);
+    for (size_t f = 0; f < faceCount; ++f) {
+        const uint32_t c = clusters.partition.clusterOfFace[f];
+        culled[f] = measurement.culled[c];
+        back[f] = facing[f] == Facing::Back;
+        // The loss classes of the statistics, per face: drawn as it should be, culled, or a back
+        // face drawn because of the test or because of the partition.
+        if (facing[f] != Facing::Back) loss[f] = double(FaceLoss::Visible);
+        else if (measurement.culled[c]) loss[f] = double(FaceLoss::Culled);
+        else loss[f] = double(backFacingCluster[c] ? FaceLoss::Test : FaceLoss::Partition);
+    }
     return arrays;
 }
 

@@ -116,9 +116,19 @@ RunStatistics measureRun(const PreparedMesh& prepared, const ClusterSet& cluster
 RunStatistics runStatistics(const Mesh& mesh, const Settings& settings, const std::string& meshName = {},
                             const ProgressCallback& progress = {});
 
+// What happened to a face from one eye, as the statistics count it.
+enum class FaceLoss { Visible = 0, Culled = 1, Test = 2, Partition = 3 };
+
+// Per-face arrays for one eye, for ParaView and the like: `culled` (its cluster was culled),
+// `back_facing` (the oracle's verdict) and `loss` (a FaceLoss: 0 visible or degenerate, 1 culled,
+// 2 a back face the test drew, 3 a back face drawn because its cluster holds a visible face).
+std::map<std::string, std::vector<double>> eyeFaceArrays(const PreparedMesh& prepared, const ClusterSet& clusters,
+                                                         const EyeMeasurement& measurement);
+
 // Per-face arrays describing the partition for writePolyData: cluster_id plus each cluster's cone
 // and bounds spread to its faces (cone_half_angle_deg, cone_axis_x/y/z, cone_cullable,
-// sphere_center_x/y/z, sphere_radius, aabb_min_x/y/z, aabb_max_x/y/z).
+// sphere_center_x/y/z, sphere_radius, aabb_min_x/y/z, aabb_max_x/y/z, and from the cull map
+// cull_fraction for the displayed test and oracle_fraction).
 std::map<std::string, std::vector<double>> partitionFaceArrays(const PreparedMesh& prepared, const ClusterSet& clusters);
 
 }  // namespace conescope

@@ -150,3 +150,29 @@ TEST(CullMap, ConeShareIsTheCapArea) {
     EXPECT_DOUBLE_EQ(coneCullShare(1.0), 0.0);  // a hemisphere of normals: nowhere
     EXPECT_DOUBLE_EQ(coneCullShare(0.5), 0.25);
 }
+
+TEST(LossBreakdown, PerFaceArraysAgreeWithTheViewsCounts) {
+    const std::shared_ptr<const Mesh> mesh = std::make_shared<Mesh>(testmesh::torus(1.0, 0.4, 48, 24));
+    Settings settings;
+    settings.limits = {24, 32};
+    const PreparedMesh prepared = prepareMesh(mesh, "torus.off", false);
+    const ClusterSet clusters = buildClusters(prepared, settings);
+    for (const glm::dvec3& position : {glm::dvec3(0.3, 2.5, 1.0), glm::dvec3(0.0, 0.1, 0.0), glm::dvec3(-4.0, 0.5, -1.0)}) {
+        const EyeMeasurement measurement = measureEye(prepared, clusters, eyeAt(settings, position, prepared.box), CullTest::Apex);
+        const auto arrays = eyeFaceArrays(prepared, clusters, measurement);
+        size_t triangles[4] = {0, 0, 0, 0}, back = 0;
+        for (size_t f = 0; f < mesh->faceCount(); ++f) {
+            triangles[size_t(arrays.at("loss")[f])] += mesh->faceSize(f) - 2;
+            back += arrays.at("back_facing")[f] > 0.0 ? mesh->faceSize(f) - 2 : 0;
+            EXPECT_EQ(arrays.at("culled")[f], measurement.culled[clusters.partition.clusterOfFace[f]]);
+        }
+        const ViewStatistics& view = measurement.view();
+        EXPECT_EQ(back, view.backFacingTriangles);
+        EXPECT_EQ(triangles[size_t(FaceLoss::Culled)], view.trianglesCulled);
+        EXPECT_EQ(triangles[size_t(FaceLoss::Test)], view.testLossTriangles);
+        EXPECT_EQ(triangles[size_t(FaceLoss::Partition)], view.partitionLossTriangles);
+    }
+    const auto partitionArrays = partitionFaceArrays(prepared, clusters);
+    for (size_t f = 0; f < mesh->faceCount(); f += 7)
+        EXPECT_GE(partitionArrays.at("oracle_fraction")[f], partitionArrays.at("cull_fraction")[f]);
+}
