@@ -1,0 +1,154 @@
+#include "ObserverView.h"
+
+#include <cmath>
+
+#include <vtkCallbackCommand.h>
+#include <vtkCamera.h>
+#include <vtkCellPicker.h>
+#include <vtkHandleWidget.h>
+#include <vtkPointHandleRepresentation3D.h>
+#include <vtkProperty.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderWindowInteractor.h>
+#include <vtkRenderer.h>
+
+#include "ObserverStyle.h"
+#include "scene/ClusterScene.h"
+
+namespace conescope {
+
+namespace {
+
+// A press and release closer than this (pixels) is a click: pick instead of rotate.
+constexpr int clickTolerance = 3;
+
+vtkSmartPointer<vtkPointHandleRepresentation3D> eyeHandleRepresentation() {
+    auto representation = vtkSmartPointer<vtkPointHandleRepresentation3D>::New();
+    representation->AllOff();
+    representation->SetHandleSize(40);
+    representation->GetProperty()->SetColor(SceneColours::eye[0], SceneColours::eye[1], SceneColours::eye[2]);
+    representation->GetProperty()->SetLineWidth(2.0);
+    representation->GetSelectedProperty()->SetColor(SceneColours::highlight[0], SceneColours::highlight[1],
+                                                    SceneColours::highlight[2]);
+    representation->GetSelectedProperty()->SetLineWidth(3.0);
+    return representation;
+}
+
+}  // namespace
+
+ObserverView::ObserverView(QWidget* parent) : QVTKOpenGLNativeWidget(parent) {
+    setObjectName(QStringLiteral("observerView"));
+    renderer_ = vtkSmartPointer<vtkRenderer>::New();
+    renderer_->SetBackground(0.12, 0.13, 0.16);
+    renderer_->SetBackground2(0.28, 0.30, 0.36);
+    renderer_->GradientBackgroundOn();
+    renderWindow()->AddRenderer(renderer_);
+    vtkNew<ObserverStyle> style;
+    interactor()->SetInteractorStyle(style);
+
+    picker_ = vtkSmartPointer<vtkCellPicker>::New();
+    picker_->SetTolerance(0.0005);
+    // The trackball style grabs the focus on a press, after which only focus holders and passive
+    // observers hear the release: watch the clicks passively (they never change the event's course).
+    clickObserver_ = vtkSmartPointer<vtkCallbackCommand>::New();
+    clickObserver_->SetClientData(this);
+    clickObserver_->SetCallback([](vtkObject*, unsigned long event, void* view, void*) {
+        auto* self = static_cast<ObserverView*>(view);
+        if (event == vtkCommand::LeftButtonPressEvent)
+            self->onLeftButtonPress();
+        else
+            self->onLeftButtonRelease();
+    });
+    clickObserver_->PassiveObserverOn();
+    interactor()->AddObserver(vtkCommand::LeftButtonPressEvent, clickObserver_);
+    interactor()->AddObserver(vtkCommand::LeftButtonReleaseEvent, clickObserver_);
+    cameraObserver_ = renderer_->GetActiveCamera()->AddObserver(vtkCommand::ModifiedEvent, this, &ObserverView::onCameraModified);
+
+    eyeHandleRepresentation_ = eyeHandleRepresentation();
+    eyeHandle_ = vtkSmartPointer<vtkHandleWidget>::New();
+    eyeHandle_->SetInteractor(interactor());
+    eyeHandle_->SetRepresentation(eyeHandleRepresentation_);
+    eyeHandle_->AddObserver(vtkCommand::InteractionEvent, this, &ObserverView::onHandleMoved);
+}
+
+ObserverView::~ObserverView() {
+    renderer_->GetActiveCamera()->RemoveObserver(cameraObserver_);
+    interactor()->RemoveObserver(clickObserver_);
+    eyeHandle_->Off();
+}
+
+void ObserverView::showScene(const ClusterScene* previous, const ClusterScene& current) {
+    if (previous) previous->removeFrom(renderer_);
+    current.addTo(renderer_);
+}
+
+void ObserverView::placeEyeHandle(const glm::dvec3& position, bool show) {
+    double world[3] = {position.x, position.y, position.z};
+    eyeHandleRepresentation_->SetWorldPosition(world);
+    if (show) eyeHandle_->On();
+}
+
+glm::dvec3 ObserverView::cameraPosition() const {
+    double position[3];
+    renderer_->GetActiveCamera()->GetPosition(position);
+    return {position[0], position[1], position[2]};
+}
+
+void ObserverView::lookAtMesh(const glm::dvec3& center, const glm::dvec3& eye) {
+    vtkCamera* camera = renderer_->GetActiveCamera();
+    glm::dvec3 direction = eye - center;
+    if (!(glm::length(direction) > 0.0)) direction = {0.0, 0.0, 1.0};
+    direction = glm::normalize(direction);
+    const glm::dvec3 side = glm::normalize(glm::cross(glm::dvec3(0.0, 1.0, 0.0), direction) + glm::dvec3(1e-9));
+    const glm::dvec3 from = center + glm::normalize(direction * 0.6 - side * 0.8 + glm::dvec3(0.0, 0.3, 0.0));
+    camera->SetFocalPoint(center.x, center.y, center.z);
+    camera->SetPosition(from.x, from.y, from.z);
+    camera->SetViewUp(0.0, 1.0, 0.0);
+    renderer_->ResetCamera();
+}
+
+QPoint ObserverView::displayPointOf(const QPoint& viewPosition) const {
+    // As QVTKInteractorAdapter converts mouse events.
+    const double ratio = devicePixelRatioF();
+    const int height = renderWindow()->GetSize()[1];
+    return {int(std::lround(viewPosition.x() * ratio)), height - int(std::lround(viewPosition.y() * ratio)) - 1};
+}
+
+QPoint ObserverView::viewPositionOf(const glm::dvec3& world) const {
+    renderer_->SetWorldPoint(world.x, world.y, world.z, 1.0);
+    renderer_->WorldToDisplay();
+    double display[3];
+    renderer_->GetDisplayPoint(display);
+    const double ratio = devicePixelRatioF();
+    const int height = renderWindow()->GetSize()[1];
+    return {int(std::lround(display[0] / ratio)), int(std::lround((height - 1 - display[1]) / ratio))};
+}
+
+int ObserverView::clusterAt(const ClusterScene& scene, const QPoint& display) {
+    if (!picker_->Pick(display.x(), display.y(), 0.0, renderer_)) return -1;
+    return scene.clusterOfCell(picker_->GetActor(), picker_->GetCellId());
+}
+
+void ObserverView::render() { renderWindow()->Render(); }
+
+void ObserverView::onLeftButtonPress() { interactor()->GetEventPosition(pressPosition_); }
+
+void ObserverView::onLeftButtonRelease() {
+    int position[2];
+    interactor()->GetEventPosition(position);
+    if (std::abs(position[0] - pressPosition_[0]) > clickTolerance || std::abs(position[1] - pressPosition_[1]) > clickTolerance)
+        return;
+    emit clicked(QPoint(position[0], position[1]));
+}
+
+void ObserverView::onCameraModified(vtkObject*, unsigned long, void*) {
+    if (following_) emit cameraMoved(cameraPosition());
+}
+
+void ObserverView::onHandleMoved(vtkObject*, unsigned long, void*) {
+    double position[3];
+    eyeHandleRepresentation_->GetWorldPosition(position);
+    emit eyeHandleMoved({position[0], position[1], position[2]});
+}
+
+}  // namespace conescope

@@ -1,0 +1,71 @@
+// The observer's view: the interactive trackball camera on a gradient background, showing a
+// ClusterScene and the cull eye's 3D handle. A click (press and release without a drag) asks for a
+// pick, the handle reports where it was dragged, and while following, the camera reports where it
+// moved. It holds no scene and no eye of its own: the window hands them in.
+#pragma once
+
+#include <QPoint>
+#include <QVTKOpenGLNativeWidget.h>
+
+#include <glm/glm.hpp>
+#include <vtkSmartPointer.h>
+
+class vtkCallbackCommand;
+class vtkCellPicker;
+class vtkHandleWidget;
+class vtkObject;
+class vtkPointHandleRepresentation3D;
+class vtkRenderer;
+
+namespace conescope {
+
+class ClusterScene;
+
+class ObserverView : public QVTKOpenGLNativeWidget {
+    Q_OBJECT
+public:
+    explicit ObserverView(QWidget* parent = nullptr);
+    ~ObserverView() override;
+
+    // Takes the previous scene's actors out (when there is one) and puts the current one's in.
+    void showScene(const ClusterScene* previous, const ClusterScene& current);
+    // Puts the eye's handle at `position`; `show` also switches it on (it is off until a mesh is shown).
+    void placeEyeHandle(const glm::dvec3& position, bool show = false);
+    // While following, cameraMoved() reports every change of the camera.
+    void setFollowing(bool following) { following_ = following; }
+
+    glm::dvec3 cameraPosition() const;
+    // Looks at the mesh centre from the side of the eye, a little turned, so the eye marker and
+    // both the culled and the drawn side are in the picture.
+    void lookAtMesh(const glm::dvec3& center, const glm::dvec3& eye);
+
+    // Qt's widget coordinates (top-left origin, logical pixels) to VTK's display coordinates and back.
+    QPoint displayPointOf(const QPoint& viewPosition) const;
+    QPoint viewPositionOf(const glm::dvec3& world) const;
+    // The cluster of `scene` under a display point, or -1.
+    int clusterAt(const ClusterScene& scene, const QPoint& display);
+
+    void render();
+
+signals:
+    void clicked(const QPoint& display);
+    void cameraMoved(const glm::dvec3& position);
+    void eyeHandleMoved(const glm::dvec3& position);
+
+private:
+    void onLeftButtonPress();
+    void onLeftButtonRelease();
+    void onCameraModified(vtkObject* caller, unsigned long event, void* data);
+    void onHandleMoved(vtkObject* caller, unsigned long event, void* data);
+
+    vtkSmartPointer<vtkRenderer> renderer_;
+    vtkSmartPointer<vtkCellPicker> picker_;
+    vtkSmartPointer<vtkCallbackCommand> clickObserver_;
+    unsigned long cameraObserver_ = 0;
+    int pressPosition_[2] = {0, 0};
+    bool following_ = false;
+    vtkSmartPointer<vtkHandleWidget> eyeHandle_;
+    vtkSmartPointer<vtkPointHandleRepresentation3D> eyeHandleRepresentation_;
+};
+
+}  // namespace conescope

@@ -1,0 +1,30 @@
+#include "PickedClusterView.h"
+
+#include "ClusterReport.h"
+#include "Session.h"
+
+namespace conescope {
+
+PickedClusterView::PickedClusterView(QWidget* parent) : QTextBrowser(parent) {
+    setObjectName(QStringLiteral("clusterReport"));
+    setOpenLinks(false);
+    setHtml(emptyClusterReportHtml());
+}
+
+void PickedClusterView::showPick(const Session& session) {
+    const int picked = session.pickedCluster();
+    const EyeMeasurement* measurement = session.measurement();
+    if (picked < 0 || !session.clusters() || !measurement) {
+        setHtml(picked < 0 ? emptyClusterReportHtml() : tr("<p>Cluster %1: no valid eye to explain.</p>").arg(picked));
+        return;
+    }
+    ClusterReportInput input;
+    input.cluster = uint32_t(picked);
+    input.bounds = &session.clusters()->bounds;
+    input.eye = measurement->eye;
+    input.test = displayedTest(session.settings());
+    input.explanation = explainCull(cullingInput(*session.preparedMesh(), *session.clusters()), input.cluster, input.eye, input.test);
+    setHtml(clusterReportHtml(input));
+}
+
+}  // namespace conescope

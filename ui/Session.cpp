@@ -1,0 +1,338 @@
+#include "Session.h"
+
+#include <algorithm>
+#include <chrono>
+
+#include <QFileInfo>
+
+#include "MeshLoading.h"
+#include "SceneBinding.h"
+
+namespace conescope {
+
+namespace {
+
+constexpr int animationIntervalMs = 150;
+
+const QString loadGroup = QStringLiteral("load");
+const QString clustersGroup = QStringLiteral("clusters");
+const QString orbitGroup = QStringLiteral("orbit");
+const QString exportGroup = QStringLiteral("export");
+
+// Maps a stage's progress into [from, to] of the whole task.
+ProgressCallback scaled(const ProgressCallback& progress, double from, double to) {
+    return [progress, from, to](double fraction, const std::string& stage) {
+        return progress(from + (to - from) * fraction, stage);
+    };
+}
+
+// A first look shows clusters, cones and boxes; normals and spheres crowd the view, so they wait
+// for their keys.
+std::map<Layer, bool> firstLookLayers() {
+    std::map<Layer, bool> layers;
+    for (Layer layer : allLayers()) layers[layer] = layer != Layer::Normals && layer != Layer::Spheres;
+    return layers;
+}
+
+}  // namespace
+
+struct Session::SceneResult {
+    std::shared_ptr<const PreparedMesh> prepared;
+    std::shared_ptr<const ClusterSet> clusters;
+    std::unique_ptr<ClusterScene> scene;
+};
+
+Session::Session(QObject* parent) : QObject(parent), layers_(firstLookLayers()) {
+    animationTimer_.setInterval(animationIntervalMs);
+    connect(&animationTimer_, &QTimer::timeout, this, [this]() { stepOrbit(1); });
+    connect(&runner_, &TaskRunner::taskStarted, this, &Session::taskStarted);
+    connect(&runner_, &TaskRunner::progressChanged, this, &Session::progressChanged);
+    connect(&runner_, &TaskRunner::idle, this, &Session::idle);
+}
+
+Session::~Session() {
+    animationTimer_.stop();
+    runner_.cancelAll();
+}
+
+// --- Loading and recomputing ---------------------------------------------------------------------
+
+void Session::openMesh(const QString& path) {
+    // A new mesh replaces whatever was being computed for the old one.
+    runner_.cancelAll();
+    const std::string file = path.toStdString();
+    const Settings settings = settings_;
+    runner_.run<SceneResult>(
+        loadGroup, tr("Loading %1").arg(QFileInfo(path).fileName()),
+        [file, settings](const ProgressCallback& progress) {
+            SceneResult result;
+            auto prepared = std::make_shared<PreparedMesh>(loadMesh(file, settings.fixWinding, scaled(progress, 0.0, 0.4)));
+            auto clusters = std::make_shared<ClusterSet>(buildClusters(*prepared, settings, nullptr, scaled(progress, 0.4, 0.9)));
+            progress(0.9, "scene");
+            result.scene = makeScene(*prepared, *clusters);
+            result.prepared = prepared;
+            result.clusters = clusters;
+            return result;
+        },
+        [this, path](SceneResult& result) {
+            showSceneResult(result, true);
+            emit meshShown(path, QString::fromStdString(loadMessage(*prepared_)));
+        },
+        [this, path](const QString& error) {
+            emit errorOccurred(tr("Cannot open %1").arg(QFileInfo(path).fileName()),
+                               prepared_ ? error + tr("\n\nThe mesh shown before stays loaded.") : error);
+        });
+}
+
+void Session::requestClusters(bool reprepare) {
+    // A mesh still loading picks the current settings up when it arrives.
+    if (!prepared_ || runner_.busy(loadGroup)) return;
+    runner_.cancel(clustersGroup);
+    runner_.cancel(orbitGroup);
+    const std::shared_ptr<const PreparedMesh> prepared = prepared_;
+    const std::shared_ptr<const ClusterSet> previous = reprepare ? nullptr : clusters_;
+    const Settings settings = settings_;
+    runner_.run<SceneResult>(
+        clustersGroup, tr("Building clusters"),
+        [prepared, previous, settings, reprepare](const ProgressCallback& progress) {
+            SceneResult result;
+            result.prepared = prepared;
+            if (reprepare) {
+                PreparedMesh again = prepareMesh(prepared->original, prepared->path, settings.fixWinding, scaled(progress, 0.0, 0.3));
+                again.readerNotes = prepared->readerNotes;
+                result.prepared = std::make_shared<PreparedMesh>(std::move(again));
+            }
+            auto clusters = std::make_shared<ClusterSet>(
+                buildClusters(*result.prepared, settings, previous.get(), scaled(progress, reprepare ? 0.3 : 0.0, 0.9)));
+            progress(0.9, "scene");
+            result.scene = makeScene(*result.prepared, *clusters);
+            result.clusters = clusters;
+            return result;
+        },
+        [this](SceneResult& result) { showSceneResult(result, false); },
+        [this](const QString& error) { emit errorOccurred(tr("Cannot build the clusters"), error); });
+}
+
+void Session::requestOrbit() {
+    if (!prepared_ || !clusters_) return;
+    runner_.cancel(orbitGroup);
+    const std::shared_ptr<const PreparedMesh> prepared = prepared_;
+    const std::shared_ptr<const ClusterSet> clusters = clusters_;
+    const Settings settings = settings_;
+    runner_.run<std::vector<ViewStatistics>>(
+        orbitGroup, tr("Orbit statistics"),
+        [prepared, clusters, settings](const ProgressCallback& progress) {
+            return measureOrbit(*prepared, *clusters, settings, progress);
+        },
+        [this, clusters](std::vector<ViewStatistics>& rows) {
+            if (clusters != clusters_) return;  // the clusters changed meanwhile; their own orbit follows
+            orbitRows_ = std::move(rows);
+            emit orbitChanged();
+        },
+        [this](const QString& error) { emit errorOccurred(tr("Cannot measure the orbit"), error); });
+}
+
+void Session::showSceneResult(SceneResult& result, bool newMesh) {
+    const bool samePartition = !newMesh && clusters_ && result.prepared == prepared_ &&
+                               !partitionChanged(clusters_->settings, result.clusters->settings);
+    // The views take the previous scene's actors out when they hear of the new one.
+    const std::unique_ptr<ClusterScene> previous = std::move(scene_);
+    prepared_ = result.prepared;
+    clusters_ = result.clusters;
+    scene_ = std::move(result.scene);
+    for (const auto& [layer, visible] : layers_) scene_->setLayerVisible(layer, visible);
+    scene_->setFaceColoring(coloring_);
+    if (!samePartition || picked_ >= int(clusters_->partition.clusterCount)) picked_ = -1;
+    scene_->setHighlightedCluster(picked_);
+    orbitRows_.clear();
+    if (newMesh) {
+        if (!eyeGiven_) eyePosition_ = startingEyePosition(prepared_->box, settings_);
+        eyeGiven_ = false;
+        orbitStep_ = -1;
+    }
+    measureCurrentEye();
+    emit sceneReplaced(previous.get(), newMesh);
+    emit eyeMoved();
+    emit eyeMeasured();
+    // The settings may have moved on while this was computed.
+    if (prepared_->fixWindingAsked != settings_.fixWinding || boundsChanged(clusters_->settings, settings_))
+        requestClusters(prepared_->fixWindingAsked != settings_.fixWinding);
+    else
+        requestOrbit();
+}
+
+void Session::applySettings(const Settings& settings) {
+    const Settings before = settings_;
+    settings_ = settings;
+    if (!prepared_ || !clusters_) return;
+    const bool reprepare = prepared_->fixWindingAsked != settings.fixWinding;
+    if (reprepare || boundsChanged(clusters_->settings, settings)) {
+        requestClusters(reprepare);
+        return;
+    }
+    // Back to what is built: nothing queued is needed any more.
+    runner_.cancel(clustersGroup);
+    const bool eyeChanged = displayedTest(before) != displayedTest(settings) || before.orthographic != settings.orthographic;
+    const bool orbitChanged = eyeChanged || before.views != settings.views || before.distance != settings.distance;
+    if (eyeChanged) updateEye();
+    if (orbitChanged) {
+        clearOrbit();
+        requestOrbit();
+    }
+}
+
+void Session::clearOrbit() {
+    orbitRows_.clear();
+    emit orbitChanged();
+}
+
+// --- Exports ---------------------------------------------------------------------------------------
+
+void Session::startStatisticsExport(const QString& path, StatisticsFormat format, bool orbit,
+                                    const std::function<void(bool)>& finished) {
+    if (!prepared_) {
+        emit errorOccurred(tr("Cannot export statistics"), tr("No mesh is loaded."));
+        finished(false);
+        return;
+    }
+    const std::shared_ptr<const PreparedMesh> prepared = prepared_;
+    const std::shared_ptr<const ClusterSet> clusters = clusters_;
+    const Settings settings = exportSettings(settings_, orbit ? std::nullopt : std::optional<glm::dvec3>(eyePosition_));
+    const std::string file = path.toStdString();
+    runner_.run<RunStatistics>(
+        exportGroup, tr("Exporting statistics"),
+        [prepared, clusters, settings, file, format](const ProgressCallback& progress) {
+            return conescope::exportStatistics(*prepared, *clusters, settings, file, format, progress);
+        },
+        [this, path, finished](RunStatistics& run) {
+            emit notice(tr("Wrote %1 (%2 views)").arg(path).arg(run.viewCount), 6000);
+            finished(true);
+        },
+        [this, finished](const QString& error) {
+            emit errorOccurred(tr("Cannot export statistics"), error);
+            finished(false);
+        });
+}
+
+bool Session::exportStatistics(const QString& path, StatisticsFormat format, bool orbit) {
+    auto written = std::make_shared<bool>(false);
+    startStatisticsExport(path, format, orbit, [written](bool success) { *written = success; });
+    runner_.waitUntilIdle();
+    return *written;
+}
+
+bool Session::exportPartition(const QString& path) {
+    if (!prepared_ || !clusters_) {
+        emit errorOccurred(tr("Cannot export the partition"), tr("No mesh is loaded."));
+        return false;
+    }
+    try {
+        conescope::exportPartition(*prepared_, *clusters_, path.toStdString());
+    } catch (const std::exception& error) {
+        emit errorOccurred(tr("Cannot export the partition"), QString::fromStdString(error.what()));
+        return false;
+    }
+    emit notice(tr("Wrote %1").arg(path), 6000);
+    return true;
+}
+
+// --- The eye ---------------------------------------------------------------------------------------
+
+void Session::setInitialEye(const glm::dvec3& position) {
+    eyePosition_ = position;
+    eyeGiven_ = true;
+}
+
+void Session::moveEye(const glm::dvec3& position, long orbitStep) {
+    eyePosition_ = position;
+    orbitStep_ = orbitStep;
+    updateEye();
+    emit orbitChanged();
+}
+
+void Session::moveEyeSoon(const glm::dvec3& position) {
+    // Called from VTK's event callbacks, where no view may render: the eye is measured and shown
+    // once the event loop is free. The efficiency plot marks the last orbit view until a moveEye.
+    eyePosition_ = position;
+    orbitStep_ = -1;
+    if (eyeUpdateScheduled_) return;
+    eyeUpdateScheduled_ = true;
+    QTimer::singleShot(0, this, [this]() {
+        eyeUpdateScheduled_ = false;
+        updateEye();
+    });
+}
+
+void Session::followCamera(const glm::dvec3& position) {
+    // Rendering touches the camera too (clipping range): only a new position moves the eye.
+    if (!prepared_ || position == eyePosition_) return;
+    moveEyeSoon(position);
+}
+
+void Session::moveEyeToStart() {
+    if (prepared_) moveEye(startingEyePosition(prepared_->box, settings_), -1);
+}
+
+void Session::stepOrbit(int step) {
+    if (!prepared_) return;
+    const std::vector<Eye> views = orbitOf(settings_, prepared_->box);
+    if (views.empty()) return;
+    const long count = long(views.size());
+    const long next = orbitStep_ < 0 ? (step > 0 ? 0 : count - 1) : ((orbitStep_ + step) % count + count) % count;
+    moveEye(views[size_t(next)].position, next);
+}
+
+void Session::setAnimating(bool animate) {
+    if (animate)
+        animationTimer_.start();
+    else
+        animationTimer_.stop();
+}
+
+void Session::updateEye() {
+    emit eyeMoved();
+    if (!prepared_ || !clusters_ || !scene_) return;
+    measureCurrentEye();
+    emit eyeMeasured();
+}
+
+void Session::measureCurrentEye() {
+    const auto start = std::chrono::steady_clock::now();
+    try {
+        const Eye eye = eyeAt(settings_, eyePosition_, prepared_->box);
+        measurement_ = measureEye(*prepared_, *clusters_, eye, displayedTest(settings_));
+    } catch (const std::exception& error) {
+        // An orthographic eye at the mesh centre has no direction: say so and show no decision.
+        measurement_.reset();
+        eyeError_ = QString::fromStdString(error.what());
+        scene_->clearClusterDecisions();
+        return;
+    }
+    eyeError_.clear();
+    showMeasurement(*scene_, *prepared_, *measurement_);
+    if (coloring_ == FaceColoring::FaceFacing) showFaceFacing(*scene_, *prepared_, measurement_->eye);
+    eyeSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// --- Scene display and picking -----------------------------------------------------------------------
+
+void Session::setLayerVisible(Layer layer, bool visible) {
+    layers_[layer] = visible;
+    if (scene_) scene_->setLayerVisible(layer, visible);
+}
+
+void Session::setFaceColoring(FaceColoring coloring) {
+    coloring_ = coloring;
+    if (!scene_) return;
+    scene_->setFaceColoring(coloring);
+    if (coloring == FaceColoring::FaceFacing && measurement_) showFaceFacing(*scene_, *prepared_, measurement_->eye);
+}
+
+void Session::pickCluster(int cluster) {
+    if (!scene_ || cluster < -1 || cluster >= int(scene_->clusterCount())) cluster = -1;
+    picked_ = cluster;
+    if (scene_) scene_->setHighlightedCluster(cluster);
+    emit pickChanged(cluster);
+}
+
+}  // namespace conescope

@@ -1,0 +1,133 @@
+// What the window shows, without any widget: the pipeline's stages for the current mesh (prepared
+// mesh, clusters, their scene, the cull eye's measurement, the orbit's rows), the settings, the cull
+// eye and the picked cluster. The slow stages (open, clusters, orbit, statistics export) run through
+// a TaskRunner; every number comes from core/Pipeline.h. Signals say what is new, and the views
+// (ObserverView, the docks) show it.
+#pragma once
+
+#include <functional>
+#include <map>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include <QObject>
+#include <QString>
+#include <QTimer>
+
+#include "Exports.h"
+#include "TaskRunner.h"
+#include "core/Pipeline.h"
+#include "scene/ClusterScene.h"
+
+namespace conescope {
+
+class Session : public QObject {
+    Q_OBJECT
+public:
+    explicit Session(QObject* parent = nullptr);
+    ~Session() override;
+
+    // --- Background stages ------------------------------------------------------------------------
+    // Reads, prepares and clusters the file; meshShown() when it is shown, errorOccurred() when it
+    // cannot be read (the mesh shown before stays).
+    void openMesh(const QString& path);
+    void waitUntilIdle() { runner_.waitUntilIdle(); }
+    void cancelAll() { runner_.cancelAll(); }
+
+    const Settings& settings() const { return settings_; }
+    // Recomputes what the change makes stale: the clusters (partition or bounds), the eye, the orbit.
+    void applySettings(const Settings& settings);
+
+    // Statistics in the CLI's format for the current eye or the orbit, in the background;
+    // `finished` says whether the file was written. exportStatistics waits for it.
+    void startStatisticsExport(const QString& path, StatisticsFormat format, bool orbit,
+                               const std::function<void(bool)>& finished);
+    bool exportStatistics(const QString& path, StatisticsFormat format, bool orbit);
+    bool exportPartition(const QString& path);
+
+    // --- The cull eye -----------------------------------------------------------------------------
+    glm::dvec3 eyePosition() const { return eyePosition_; }
+    long orbitStep() const { return orbitStep_; }  // -1 when the eye is not on an orbit view
+    // The eye the next loaded mesh starts with instead of startingEyePosition.
+    void setInitialEye(const glm::dvec3& position);
+    void moveEye(const glm::dvec3& position, long orbitStep = -1);
+    // For a stream of moves (the handle dragged, the followed camera): measured once, when the
+    // event loop is free. The eye leaves the orbit.
+    void moveEyeSoon(const glm::dvec3& position);
+    // The observer's camera moved while the eye follows it: only a new position moves the eye.
+    void followCamera(const glm::dvec3& position);
+    void moveEyeToStart();
+    void stepOrbit(int step);
+    void setAnimating(bool animate);
+
+    // --- The stages -------------------------------------------------------------------------------
+    const PreparedMesh* preparedMesh() const { return prepared_.get(); }
+    const ClusterSet* clusters() const { return clusters_.get(); }
+    const ClusterScene* scene() const { return scene_.get(); }
+    // The current eye's measurement; null before a mesh is shown or for an eye that has none
+    // (eyeError() then says why).
+    const EyeMeasurement* measurement() const { return measurement_ ? &*measurement_ : nullptr; }
+    QString eyeError() const { return eyeError_; }
+    double eyeSeconds() const { return eyeSeconds_; }
+    const std::vector<ViewStatistics>& orbitRows() const { return orbitRows_; }
+
+    // --- How the scene is drawn (kept for every new scene) ----------------------------------------
+    void setLayerVisible(Layer layer, bool visible);
+    bool layerVisible(Layer layer) const { return layers_.at(layer); }
+    void setFaceColoring(FaceColoring coloring);
+    FaceColoring faceColoring() const { return coloring_; }
+
+    // A cluster index, or -1 for none (also for an index the clusters do not have).
+    void pickCluster(int cluster);
+    int pickedCluster() const { return picked_; }
+
+signals:
+    // A new scene (new mesh or new clusters), its eye already measured. `previous` (null for the
+    // first) is still alive: views take its actors out.
+    void sceneReplaced(const conescope::ClusterScene* previous, bool newMesh);
+    // A new mesh is shown, with what the user should know about it (may be empty).
+    void meshShown(const QString& path, const QString& loadMessage);
+    void eyeMoved();
+    // The eye was measured again (measurement() is null and eyeError() set when it has no measurement).
+    void eyeMeasured();
+    // The orbit's rows changed, or moveEye put the eye on an orbit view (or off it).
+    void orbitChanged();
+    void pickChanged(int cluster);
+    void errorOccurred(const QString& title, const QString& message);
+    void notice(const QString& message, int milliseconds);
+    // A slow stage: its start, progress and the end of all of them.
+    void taskStarted(const QString& title);
+    void progressChanged(double fraction, const QString& stage);
+    void idle();
+
+private:
+    struct SceneResult;
+
+    void requestClusters(bool reprepare);
+    void requestOrbit();
+    void showSceneResult(SceneResult& result, bool newMesh);
+    void clearOrbit();
+    void updateEye();
+    void measureCurrentEye();
+
+    TaskRunner runner_;
+    Settings settings_;
+    std::shared_ptr<const PreparedMesh> prepared_;
+    std::shared_ptr<const ClusterSet> clusters_;
+    std::unique_ptr<ClusterScene> scene_;
+    std::optional<EyeMeasurement> measurement_;
+    QString eyeError_;
+    double eyeSeconds_ = 0.0;
+    std::vector<ViewStatistics> orbitRows_;
+    glm::dvec3 eyePosition_{0.0, 0.0, 3.0};
+    bool eyeGiven_ = false;  // the next mesh keeps eyePosition_ instead of the starting position
+    long orbitStep_ = -1;
+    bool eyeUpdateScheduled_ = false;
+    QTimer animationTimer_;
+    std::map<Layer, bool> layers_;
+    FaceColoring coloring_ = FaceColoring::CullDecision;
+    int picked_ = -1;
+};
+
+}  // namespace conescope
