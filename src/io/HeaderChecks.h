@@ -4,11 +4,11 @@
 // of them except the STL reader: vtkPLY indexes past its word list on short lines and frees twice on
 // an early end; the legacy reader crashes on a file cut inside a cell list or holding a value its
 // type cannot hold, and zero-fills truncated attribute data; the XML reader dereferences a missing
-// <PointData> when a cell array is bad and trusts appended block tables; the OBJ reader crashes on
-// "1/". The STL and legacy readers also allocate from header counts, so a forged count in a tiny file
-// asks for gigabytes. These checks reject such files first, with a message naming the file (and
-// line, for text formats), so only well-formed data reaches VTK. tests/io/MutationTests.cpp keeps
-// them honest.
+// <PointData> when a cell array is bad and trusts appended block tables (OBJ, whose VTK reader
+// crashed on a corner "1/", is read by hand: ObjFormat.h). The STL and legacy readers also
+// allocate from header counts, so a forged count in a tiny file asks for gigabytes. These checks
+// reject such files first, with a message naming the file (and line, for text formats), so only
+// well-formed data reaches VTK. tests/io/MutationTests.cpp keeps them honest.
 #pragma once
 
 #include <string>
@@ -36,10 +36,6 @@ void checkStlFile(const std::string& path);
 // attribute data complete, no values beyond a declared count), streaming through the data without
 // allocating from counts. Throws MeshReadError.
 void checkLegacyVtkFile(const std::string& path);
-
-// OBJ: every face/line/point corner is v, v/vt, v//vn or v/vt/vn with indices of elements that
-// exist, and lines fit vtkOBJReader's buffer. Throws MeshReadError ("path:line: what").
-void checkObjFile(const std::string& path);
 
 // .vtp: checks the XML header (known array types, sane component counts, piece counts that fit
 // the file) and every array in every encoding (ASCII, inline base64, raw or base64 appended,

@@ -11,7 +11,6 @@
 #include <vtkAlgorithm.h>
 #include <vtkErrorCode.h>
 #include <vtkExecutive.h>
-#include <vtkOBJReader.h>
 #include <vtkPLYReader.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataReader.h>
@@ -22,6 +21,7 @@
 #include "io/ClassicLocale.h"
 #include "io/FileChecks.h"
 #include "io/HeaderChecks.h"
+#include "io/ObjFormat.h"
 #include "io/OffFormat.h"
 #include "io/PolyDataConversion.h"
 #include "io/VtkMessageCapture.h"
@@ -57,12 +57,6 @@ vtkSmartPointer<vtkAlgorithm> makeVtkReader(const std::string& path, const std::
         std::vector<double> clusterIds = checkPlyFile(path);
         if (!clusterIds.empty()) droppedFaceArrays["cluster_id"] = std::move(clusterIds);
         vtkSmartPointer<vtkPLYReader> reader = vtkSmartPointer<vtkPLYReader>::New();
-        reader->SetFileName(path.c_str());
-        return reader;
-    }
-    if (extension == ".obj") {
-        checkObjFile(path);
-        vtkSmartPointer<vtkOBJReader> reader = vtkSmartPointer<vtkOBJReader>::New();
         reader->SetFileName(path.c_str());
         return reader;
     }
@@ -171,8 +165,9 @@ struct ReadContext {
     const ProgressCallback& progress;
 };
 
-Mesh readByExtension(const std::string& path, const std::string& extension, ReadContext&) {
+Mesh readByExtension(const std::string& path, const std::string& extension, ReadContext& context) {
     if (extension == ".off") return readOff(path);
+    if (extension == ".obj") return readObj(path, context.notes, context.progress);
     return readWithVtk(path, extension);
 }
 

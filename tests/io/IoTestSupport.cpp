@@ -16,6 +16,11 @@ std::filesystem::path datasetsDir() { return CONESCOPE_DATASETS_DIR; }
 
 std::filesystem::path formatSamplesDir() { return std::filesystem::path(CONESCOPE_TESTDATA_DIR) / "formats"; }
 
+std::string fileBytes(const std::filesystem::path& path) {
+    std::ifstream input(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(input), std::istreambuf_iterator<char>());
+}
+
 void appendBinaryInteger(std::string& out, uint32_t value, int bytes, bool bigEndian) {
     for (int k = 0; k < bytes; ++k) {
         const int shift = bigEndian ? 8 * (bytes - 1 - k) : 8 * k;

@@ -47,6 +47,9 @@ private:
     std::string previousC_;
 };
 
+// The whole file's bytes ("" when it cannot be read).
+std::string fileBytes(const std::filesystem::path& path);
+
 // Appends value as a `bytes`-byte integer (a float's bits for appendBinaryFloat) in the chosen byte
 // order: how tests write binary PLY bodies of either endianness.
 void appendBinaryInteger(std::string& out, uint32_t value, int bytes, bool bigEndian);
