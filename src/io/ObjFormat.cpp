@@ -48,22 +48,15 @@ struct ForwardReference {
     std::string corner;
 };
 
-// Bytes read between two progress reports.
-constexpr size_t progressStep = size_t(1) << 20;
-
 class ObjParser {
 public:
     ObjParser(std::string_view text, const std::string& sourceName, const ProgressCallback& progress)
-        : text_(text), sourceName_(sourceName), progress_(progress) {}
+        : text_(text), sourceName_(sourceName), progress_(progress, text.size()) {}
 
     Mesh parse(std::vector<std::string>& notes) {
         LineCursor lines(text_, 0, 0);
-        size_t nextReport = progressStep;
         while (!lines.atEnd()) {
-            if (lines.position() >= nextReport) {
-                reportProgress(lines.position());
-                nextReport += progressStep;
-            }
+            progress_.at(lines.position());
             std::string_view line = lines.next();
             text::splitWords(line.substr(0, line.find('#')), words_);
             if (!words_.empty()) readStatement(lines.lineNumber());
@@ -82,10 +75,6 @@ public:
 private:
     [[noreturn]] void fail(size_t lineNumber, const std::string& what) const {
         throw MeshReadError(sourceName_ + ":" + std::to_string(lineNumber) + ": " + what);
-    }
-
-    void reportProgress(size_t position) const {
-        if (progress_ && !progress_(double(position) / double(text_.size()), "reading")) throw OperationCancelled();
     }
 
     void readStatement(size_t lineNumber) {
@@ -199,7 +188,7 @@ private:
 
     std::string_view text_;
     const std::string& sourceName_;
-    const ProgressCallback& progress_;
+    ReadProgress progress_;
     Mesh mesh_;
     std::vector<std::string_view> words_;
     std::array<int64_t, 3> defined_{};  // v, vt and vn statements read so far

@@ -260,7 +260,7 @@ TEST(MalformedPly, IndexOutOfRange) {
     EXPECT_READ_ERROR(scratch.writeFile("index.ply", text), "vertex");
 }
 
-// Each of these crashed VTK 9.1's PLY reader before checkPlyFile existed.
+// Each of these crashed VTK 9.1's PLY reader before PLY files were checked (they are read by hand now).
 TEST(MalformedPly, LastLineWithoutNewline) {
     ScratchDirectory scratch;
     std::string text = fileBytes(formatSamplesDir() / "cube.ply");

@@ -16,17 +16,13 @@ namespace conescope {
 namespace {
 
 using testing::formatSamplesDir;
+using testing::expectSameMesh;
 using testing::fileBytes;
 using testing::ScratchDirectory;
+using testing::utf16;
 
 std::vector<uint32_t> faceVertices(const Mesh& mesh, size_t face) {
     return std::vector<uint32_t>(mesh.faceBegin(face), mesh.faceBegin(face) + mesh.faceSize(face));
-}
-
-void expectSameMesh(const Mesh& actual, const Mesh& expected) {
-    EXPECT_EQ(actual.positions, expected.positions);
-    EXPECT_EQ(actual.faceStarts, expected.faceStarts);
-    EXPECT_EQ(actual.faceVertices, expected.faceVertices);
 }
 
 // The sample's corners carry texture coordinates and normals, each quad its own normal: a reader
@@ -124,12 +120,6 @@ TEST(ObjFile, FaceOfFewerThanThreeCorners) {
 
 // ---------------------------------------------------------------- encodings
 
-std::string utf16(const std::string& ascii, bool bigEndian) {
-    std::string bytes = bigEndian ? "\xfe\xff" : "\xff\xfe";
-    for (char c : ascii) bytes += bigEndian ? std::string{'\0', c} : std::string{c, '\0'};
-    return bytes;
-}
-
 TEST(ObjEncoding, Utf8ByteOrderMarkIsSkipped) {
     ScratchDirectory scratch;
     const std::string text = fileBytes(formatSamplesDir() / "cube.obj");
@@ -218,19 +208,9 @@ TEST(ObjFile, ReportsProgressAndCanBeCancelled) {
     ScratchDirectory scratch;
     std::string text;
     for (int i = 0; i < 200000; ++i) text += "v 0.125 0.25 0.5\n";
-    text += "f 1 2 3\n";
-    const std::string path = scratch.writeFile("long.obj", text);
-    std::vector<double> fractions;
-    const MeshFile file = readMeshFile(path, [&](double fraction, const std::string&) {
-        fractions.push_back(fraction);
-        return true;
-    });
-    EXPECT_EQ(file.mesh.positions.size(), 200000u);
-    ASSERT_FALSE(fractions.empty());
-    EXPECT_TRUE(std::is_sorted(fractions.begin(), fractions.end()));
-    EXPECT_GT(fractions.front(), 0.0);
-    EXPECT_LT(fractions.back(), 1.0);
-    EXPECT_THROW(readMeshFile(path, [](double, const std::string&) { return false; }), OperationCancelled);
+    const std::string path = scratch.writeFile("long.obj", text + "f 1 2 3\n");
+    testing::expectProgressAndCancellation(path);
+    EXPECT_EQ(readMesh(path).positions.size(), 200000u);
 }
 
 }  // namespace
