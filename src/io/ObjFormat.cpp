@@ -96,15 +96,15 @@ private:
 
     // "v x y z [w | r g b]": a missing or unreadable coordinate is an error, never a 0.
     void readPosition(size_t lineNumber) {
-        const std::string number = std::to_string(defined_[Position] + 1);
-        if (words_.size() < 4) fail(lineNumber, "vertex " + number + " has fewer than 3 coordinates");
+        const auto vertex = [&] { return "vertex " + std::to_string(defined_[Position] + 1); };
+        if (words_.size() < 4) fail(lineNumber, vertex() + " has fewer than 3 coordinates");
         if (defined_[Position] == std::numeric_limits<uint32_t>::max())
             fail(lineNumber, "more vertices than 32-bit indices can address");
         glm::vec3 position;
         for (int k = 0; k < 3; ++k) {
             std::optional<float> coordinate = text::parseFiniteFloat(words_[k + 1]);
             if (!coordinate)
-                fail(lineNumber, "vertex " + number + " has a coordinate that is not a finite number: " +
+                fail(lineNumber, vertex() + " has a coordinate that is not a finite number: " +
                                      quotedForMessage(std::string(words_[k + 1])));
             position[k] = *coordinate;
         }
