@@ -44,6 +44,11 @@ std::string readFileBytes(const std::string& path) {
     return bytes;
 }
 
+void ReadProgress::report(size_t position) {
+    while (next_ <= position) next_ += step;
+    if (progress_ && !progress_(double(position) / double(total_), "reading")) throw OperationCancelled();
+}
+
 std::string lowerCaseExtension(const std::string& path) {
     std::string extension = filesystem::path(path).extension().string();
     std::transform(extension.begin(), extension.end(), extension.begin(),

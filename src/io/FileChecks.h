@@ -4,6 +4,8 @@
 #include <cstdint>
 #include <string>
 
+#include "core/Progress.h"
+
 namespace conescope {
 
 // Throws MeshReadError "path: what" unless path names an existing, readable, non-empty regular
@@ -15,6 +17,23 @@ std::uintmax_t fileSizeOrThrow(const std::string& path);
 
 // The whole file as bytes. Throws MeshReadError on open or read failure.
 std::string readFileBytes(const std::string& path);
+
+// A parser's progress through its bytes, reported about once per megabyte as stage "reading";
+// throws OperationCancelled when the callback says stop. Does nothing without a callback.
+class ReadProgress {
+public:
+    ReadProgress(const ProgressCallback& progress, size_t totalBytes) : progress_(progress), total_(totalBytes) {}
+    void at(size_t position) {
+        if (position >= next_) report(position);
+    }
+
+private:
+    void report(size_t position);
+    const ProgressCallback& progress_;
+    size_t total_;
+    size_t next_ = step;
+    static constexpr size_t step = size_t(1) << 20;
+};
 
 // Lower-case extension with the dot (".off"), or "" when the name has none.
 std::string lowerCaseExtension(const std::string& path);

@@ -1,5 +1,5 @@
-// checkStlFile; the other checks declared in HeaderChecks.h live in PlyCheck.cpp, ObjCheck.cpp,
-// LegacyVtkCheck.cpp and VtpCheck.cpp.
+// checkStlFile; the other checks declared in HeaderChecks.h live in LegacyVtkCheck.cpp and
+// VtpCheck.cpp.
 #include "io/HeaderChecks.h"
 
 #include <cctype>

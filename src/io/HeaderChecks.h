@@ -1,30 +1,19 @@
 // Structural checks run before a file reaches a VTK reader (internal to conescope_io).
 //
 // VTK 9.1's readers trust the files they read, and mutated copies of valid files crashed every one
-// of them except the STL reader: vtkPLY indexes past its word list on short lines and frees twice on
-// an early end; the legacy reader crashes on a file cut inside a cell list or holding a value its
-// type cannot hold, and zero-fills truncated attribute data; the XML reader dereferences a missing
-// <PointData> when a cell array is bad and trusts appended block tables; the OBJ reader crashes on
-// "1/". The STL and legacy readers also allocate from header counts, so a forged count in a tiny file
-// asks for gigabytes. These checks reject such files first, with a message naming the file (and
-// line, for text formats), so only well-formed data reaches VTK. tests/io/MutationTests.cpp keeps
-// them honest.
+// of them except the STL reader: the legacy reader crashes on a file cut inside a cell list or
+// holding a value its type cannot hold, and zero-fills truncated attribute data; the XML reader
+// dereferences a missing <PointData> when a cell array is bad and trusts appended block tables;
+// vtkPLY indexed past its word list on short lines and vtkOBJReader crashed on a corner "1/", which
+// is why PLY and OBJ are read by hand now (PlyFormat.h, ObjFormat.h). The STL and legacy readers
+// also allocate from header counts, so a forged count in a tiny file asks for gigabytes. These
+// checks reject such files first, with a message naming the file (and line, for text formats), so
+// only well-formed data reaches VTK. tests/io/MutationTests.cpp keeps them honest.
 #pragma once
 
 #include <string>
-#include <vector>
 
 namespace conescope {
-
-// Parses the PLY header and walks the whole body as vtkPLY will (one element per line in ASCII,
-// fixed sizes and list counts in binary): every element present and complete, list counts
-// non-negative, face indices within the vertex count, ASCII lines short enough for vtkPLY's line
-// buffer, and no data after the declared elements (a count too small would drop it; blank lines in
-// ASCII and whitespace bytes in binary are allowed, since exporters end files with a newline).
-// Throws MeshReadError ("path:line: what" for ASCII).
-// Returns the values of a scalar face property named cluster_id (empty when there is none):
-// vtkPLYReader drops it, and it is how a partition made elsewhere reaches the file builder.
-std::vector<double> checkPlyFile(const std::string& path);
 
 // For files VTK will read as binary STL, and text files without ASCII STL's 'solid': throws
 // MeshReadError if shorter than the 84-byte header, if the triangle count in the header differs
@@ -36,10 +25,6 @@ void checkStlFile(const std::string& path);
 // attribute data complete, no values beyond a declared count), streaming through the data without
 // allocating from counts. Throws MeshReadError.
 void checkLegacyVtkFile(const std::string& path);
-
-// OBJ: every face/line/point corner is v, v/vt, v//vn or v/vt/vn with indices of elements that
-// exist, and lines fit vtkOBJReader's buffer. Throws MeshReadError ("path:line: what").
-void checkObjFile(const std::string& path);
 
 // .vtp: checks the XML header (known array types, sane component counts, piece counts that fit
 // the file) and every array in every encoding (ASCII, inline base64, raw or base64 appended,

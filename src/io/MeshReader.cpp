@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <cstring>
-#include <map>
 #include <new>
 #include <unordered_map>
 #include <vector>
@@ -11,8 +10,6 @@
 #include <vtkAlgorithm.h>
 #include <vtkErrorCode.h>
 #include <vtkExecutive.h>
-#include <vtkOBJReader.h>
-#include <vtkPLYReader.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataReader.h>
 #include <vtkSTLReader.h>
@@ -22,7 +19,9 @@
 #include "io/ClassicLocale.h"
 #include "io/FileChecks.h"
 #include "io/HeaderChecks.h"
+#include "io/ObjFormat.h"
 #include "io/OffFormat.h"
+#include "io/PlyFormat.h"
 #include "io/PolyDataConversion.h"
 #include "io/VtkMessageCapture.h"
 
@@ -50,22 +49,7 @@ std::string supportedExtensionList() {
 // The reader for a VTK-handled extension, pointed at the file (for .vtp, at its patched text), after
 // the structural checks of HeaderChecks.h: VTK 9.1's readers trust their input and crash on some
 // damaged files, so each file is checked before VTK sees it.
-// Per-face arrays the VTK reader drops are returned in `droppedFaceArrays`.
-vtkSmartPointer<vtkAlgorithm> makeVtkReader(const std::string& path, const std::string& extension,
-                                            std::map<std::string, std::vector<double>>& droppedFaceArrays) {
-    if (extension == ".ply") {
-        std::vector<double> clusterIds = checkPlyFile(path);
-        if (!clusterIds.empty()) droppedFaceArrays["cluster_id"] = std::move(clusterIds);
-        vtkSmartPointer<vtkPLYReader> reader = vtkSmartPointer<vtkPLYReader>::New();
-        reader->SetFileName(path.c_str());
-        return reader;
-    }
-    if (extension == ".obj") {
-        checkObjFile(path);
-        vtkSmartPointer<vtkOBJReader> reader = vtkSmartPointer<vtkOBJReader>::New();
-        reader->SetFileName(path.c_str());
-        return reader;
-    }
+vtkSmartPointer<vtkAlgorithm> makeVtkReader(const std::string& path, const std::string& extension) {
     if (extension == ".stl") {
         checkStlFile(path);
         vtkSmartPointer<vtkSTLReader> reader = vtkSmartPointer<vtkSTLReader>::New();
@@ -139,8 +123,7 @@ std::string describeFailure(const VtkMessageCapture& capture, vtkAlgorithm* read
 Mesh readWithVtk(const std::string& path, const std::string& extension) {
     ScopedClassicNumericLocale classicNumbers;
     VtkMessageCapture capture;
-    std::map<std::string, std::vector<double>> droppedFaceArrays;
-    vtkSmartPointer<vtkAlgorithm> reader = makeVtkReader(path, extension, droppedFaceArrays);
+    vtkSmartPointer<vtkAlgorithm> reader = makeVtkReader(path, extension);
     if (capture.hasErrors()) throw MeshReadError(path + ": " + describeFailure(capture, reader));
     capture.watch(reader);
     capture.watch(reader->GetExecutive());
@@ -158,7 +141,6 @@ Mesh readWithVtk(const std::string& path, const std::string& extension) {
     try {
         Mesh mesh = meshFromPolyData(polyData);
         if (extension == ".stl") mergeEqualPositions(mesh);
-        for (auto& [name, values] : droppedFaceArrays) mesh.faceArrays.emplace(name, std::move(values));
         return mesh;
     } catch (const std::runtime_error& error) {
         throw MeshReadError(path + ": " + error.what());
@@ -171,8 +153,10 @@ struct ReadContext {
     const ProgressCallback& progress;
 };
 
-Mesh readByExtension(const std::string& path, const std::string& extension, ReadContext&) {
+Mesh readByExtension(const std::string& path, const std::string& extension, ReadContext& context) {
     if (extension == ".off") return readOff(path);
+    if (extension == ".obj") return readObj(path, context.notes, context.progress);
+    if (extension == ".ply") return readPly(path, context.notes, context.progress);
     return readWithVtk(path, extension);
 }
 

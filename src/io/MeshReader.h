@@ -19,10 +19,10 @@ public:
     using std::runtime_error::runtime_error;
 };
 
-// Reads .off (own parser), .ply .obj .stl .vtp .vtk (VTK readers), choosing by the extension,
+// Reads .off .obj .ply (own parsers), .stl .vtp .vtk (VTK readers), choosing by the extension,
 // case-insensitively. The result has at least one face and has passed validateMesh; its model
 // matrix is the identity unless the file stored one (see PolyDataConversion.h). Per-face scalar
-// arrays of VTK files (e.g. "cluster_id") land in Mesh::faceArrays. VTK's own messages are
+// arrays of VTK files and a PLY face property cluster_id land in Mesh::faceArrays. VTK's own messages are
 // captured into the exception instead of being printed. Throws MeshReadError.
 Mesh readMesh(const std::string& path);
 

@@ -1,4 +1,4 @@
-// Tokenising helpers shared by the pre-read format checks (internal to conescope_io).
+// Tokenising helpers shared by the text parsers and format checks (internal to conescope_io).
 #pragma once
 
 #include <charconv>
@@ -13,8 +13,10 @@ namespace conescope::text {
 
 inline bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
 
-inline std::vector<std::string_view> splitWords(std::string_view line) {
-    std::vector<std::string_view> words;
+// Fills `words` (cleared first) with the line's words: a parser reading millions of lines keeps
+// one vector instead of allocating one per line.
+inline void splitWords(std::string_view line, std::vector<std::string_view>& words) {
+    words.clear();
     size_t position = 0;
     while (position < line.size()) {
         while (position < line.size() && isBlank(line[position])) ++position;
@@ -22,6 +24,11 @@ inline std::vector<std::string_view> splitWords(std::string_view line) {
         while (position < line.size() && !isBlank(line[position])) ++position;
         if (position > start) words.push_back(line.substr(start, position - start));
     }
+}
+
+inline std::vector<std::string_view> splitWords(std::string_view line) {
+    std::vector<std::string_view> words;
+    splitWords(line, words);
     return words;
 }
 
@@ -49,10 +56,13 @@ inline bool isNumber(std::string_view word) { return parseNumber(word).has_value
 
 // A finite number that a float can hold: what a coordinate must be. VTK's text readers turn
 // anything else (nan, inf, 1e39, "abc") into 0 or FLT_MAX without a word, so the checks reject it first.
-inline bool isFiniteFloat(std::string_view word) {
+inline std::optional<float> parseFiniteFloat(std::string_view word) {
     std::optional<double> value = parseNumber(word);
-    return value && std::isfinite(*value) && std::abs(*value) <= double(std::numeric_limits<float>::max());
+    if (!value || !std::isfinite(*value) || std::abs(*value) > double(std::numeric_limits<float>::max())) return std::nullopt;
+    return float(*value);
 }
+
+inline bool isFiniteFloat(std::string_view word) { return parseFiniteFloat(word).has_value(); }
 
 // Splits text into lines one at a time, remembering 1-based line numbers.
 class LineCursor {

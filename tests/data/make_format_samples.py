@@ -66,6 +66,25 @@ def obj():
     return "\n".join(lines) + "\n"
 
 
+def textured_obj():
+    """The cube with a texture coordinate and a normal at every corner, in all four corner forms and
+    with negative indices, among groups, materials (one usemtl empty), smoothing groups, a trailing
+    comment, a line and points: 8 positions, 6 quads; the line and the 3 points are not faces."""
+    lines = ["# unit cube: 8 positions, 4 texture coordinates, 6 normals, 6 quads", "mtllib cube.mtl", "o cube"]
+    lines += ["v " + point_line(p) for p in POSITIONS]
+    lines += ["vt 0 0", "vt 1 0", "vt 1 1", "vt 0 1"]
+    lines += ["vn " + point_line(n) for n in QUAD_NORMALS]
+    forms = ["{v}/{t}/{n}", "{v}/{t}/{n}", "{v}//{n}", "{v}/{t}", "{v}", "{rv}/{rt}/{rn}"]
+    groups = ["g bottom", "usemtl red", "s 1", "g top", "usemtl", "s off"]
+    for face, (quad, form) in enumerate(zip(QUADS, forms)):
+        lines.append(groups[face])
+        # Relative indices count back from the 8 positions, 4 texture coordinates and 6 normals.
+        corners = [form.format(v=i + 1, t=k + 1, n=face + 1, rv=i - 8, rt=k - 4, rn=face - 6) for k, i in enumerate(quad)]
+        lines.append("f " + " ".join(corners) + (" # -z" if face == 0 else ""))
+    lines += ["l 1 2", "p 1 2 3"]
+    return "\n".join(lines) + "\n"
+
+
 def triangle_normal(t):
     a, b, c = (POSITIONS[i] for i in t)
     u = [b[k] - a[k] for k in range(3)]
@@ -156,6 +175,7 @@ def main():
     write("cube.ply", ascii_ply())
     write("cube-binary.ply", binary_ply(), "wb")
     write("cube.obj", obj())
+    write("cube-textured.obj", textured_obj())
     write("cube-ascii.stl", ascii_stl())
     write("cube-binary.stl", binary_stl(), "wb")
     write("cube.vtp", vtp())

@@ -1,6 +1,7 @@
 // Files nobody here wrote: assimp's test models (Debian assimp-testmodels). Every mesh file there in
 // a format readMesh supports either reads with the triangle count assimp finds, or is refused with
-// a reason: assimp refuses it too, or it is listed below (and in the README) with why.
+// a reason: assimp refuses it too, or it is listed below (and in the README) with why; the few
+// read with another count than assimp's are listed with why as well.
 #include <algorithm>
 #include <filesystem>
 #include <map>
@@ -24,6 +25,11 @@ const std::filesystem::path assimpModels = "/usr/share/assimp/models";
 const std::map<std::string, std::string> refusedOnPurpose = {
     {"OBJ/number_formats.obj", "'3.1+e2' is not a number; assimp reads it as 3.1"},
     {"OFF/invalid.off", "declares 4 faces and holds 2; assimp reads the 2"},
+};
+
+// Files readMesh reads with another triangle count than assimp on purpose, with the reason.
+const std::map<std::string, std::string> readDifferentlyOnPurpose = {
+    {"OBJ/box_UTF16BE.obj", "UTF-16 BE text: assimp 5.2.5 finds no mesh in it; converted, it is box.obj (ObjReaderTests)"},
 };
 
 // Every file under the formats' folders whose extension readMesh takes, sorted for stable output.
@@ -50,7 +56,9 @@ TEST(AssimpModels, EveryFileReadsWithAssimpsTriangleCountOrIsRefusedForAReason) 
             const Mesh mesh = readMesh(file.string());
             ++read;
             EXPECT_FALSE(refusedOnPurpose.count(relative)) << relative << " is listed as refused but reads";
-            if (expected) {
+            if (expected && readDifferentlyOnPurpose.count(relative)) {
+                EXPECT_NE(triangleCount(mesh), *expected) << relative << " is listed as read differently but agrees";
+            } else if (expected) {
                 EXPECT_EQ(triangleCount(mesh), *expected) << relative;
             }
         } catch (const MeshReadError& error) {

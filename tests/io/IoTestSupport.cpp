@@ -1,5 +1,6 @@
 #include "IoTestSupport.h"
 
+#include <algorithm>
 #include <clocale>
 #include <cstring>
 #include <cstdlib>
@@ -15,6 +16,36 @@ namespace conescope::testing {
 std::filesystem::path datasetsDir() { return CONESCOPE_DATASETS_DIR; }
 
 std::filesystem::path formatSamplesDir() { return std::filesystem::path(CONESCOPE_TESTDATA_DIR) / "formats"; }
+
+std::string fileBytes(const std::filesystem::path& path) {
+    std::ifstream input(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(input), std::istreambuf_iterator<char>());
+}
+
+std::string utf16(const std::string& ascii, bool bigEndian) {
+    std::string bytes = bigEndian ? "\xfe\xff" : "\xff\xfe";
+    for (char c : ascii) bytes += bigEndian ? std::string{'\0', c} : std::string{c, '\0'};
+    return bytes;
+}
+
+void expectProgressAndCancellation(const std::string& path) {
+    std::vector<double> fractions;
+    readMeshFile(path, [&](double fraction, const std::string&) {
+        fractions.push_back(fraction);
+        return true;
+    });
+    ASSERT_FALSE(fractions.empty()) << path;
+    EXPECT_TRUE(std::is_sorted(fractions.begin(), fractions.end()));
+    EXPECT_GT(fractions.front(), 0.0);
+    EXPECT_LT(fractions.back(), 1.0);
+    EXPECT_THROW(readMeshFile(path, [](double, const std::string&) { return false; }), OperationCancelled);
+}
+
+void expectSameMesh(const Mesh& actual, const Mesh& expected) {
+    EXPECT_EQ(actual.positions, expected.positions);
+    EXPECT_EQ(actual.faceStarts, expected.faceStarts);
+    EXPECT_EQ(actual.faceVertices, expected.faceVertices);
+}
 
 void appendBinaryInteger(std::string& out, uint32_t value, int bytes, bool bigEndian) {
     for (int k = 0; k < bytes; ++k) {

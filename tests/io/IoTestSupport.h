@@ -47,6 +47,19 @@ private:
     std::string previousC_;
 };
 
+// The whole file's bytes ("" when it cannot be read).
+std::string fileBytes(const std::filesystem::path& path);
+
+// ASCII text as UTF-16 in the chosen byte order, with its byte order mark.
+std::string utf16(const std::string& ascii, bool bigEndian);
+
+// Expects readMeshFile(path) to report rising fractions in (0, 1) and to throw OperationCancelled
+// when the callback says stop. The file must be a few megabytes, so there is progress to report.
+void expectProgressAndCancellation(const std::string& path);
+
+// Expects equal positions and faces (the same vertices in the same order).
+void expectSameMesh(const Mesh& actual, const Mesh& expected);
+
 // Appends value as a `bytes`-byte integer (a float's bits for appendBinaryFloat) in the chosen byte
 // order: how tests write binary PLY bodies of either endianness.
 void appendBinaryInteger(std::string& out, uint32_t value, int bytes, bool bigEndian);

@@ -13,14 +13,10 @@
 namespace conescope {
 namespace {
 
+using testing::fileBytes;
 using testing::ScratchDirectory;
 
 constexpr int mutationsPerFile = 120;
-
-std::string fileBytes(const std::filesystem::path& path) {
-    std::ifstream input(path, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(input), std::istreambuf_iterator<char>());
-}
 
 // One to four edits: overwrite, delete, insert a number, insert a digit or separator, cut.
 std::string mutated(std::string bytes, std::mt19937& random) {
@@ -65,7 +61,7 @@ TEST_P(MutatedSample, NeverCrashes) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Files, MutatedSample,
-                         ::testing::Values("cube.ply", "cube-binary.ply", "cube.obj", "cube-ascii.stl", "cube-binary.stl",
+                         ::testing::Values("cube.ply", "cube-binary.ply", "cube.obj", "cube-textured.obj", "cube-ascii.stl", "cube-binary.stl",
                                            "cube.vtp", "cube.vtk", "cube-strips.vtk", "cube-quads.off",
                                            "icosphere-clusters.vtp"),
                          [](const ::testing::TestParamInfo<const char*>& info) {

@@ -75,6 +75,7 @@ INSTANTIATE_TEST_SUITE_P(Formats, CubeInEveryFormat,
                          ::testing::Values(CubeSample{"cube.ply", 8, 6, 4, false},
                                            CubeSample{"cube-binary.ply", 8, 12, 3, false},
                                            CubeSample{"cube.obj", 8, 6, 4, false},
+                                           CubeSample{"cube-textured.obj", 8, 6, 4, false},
                                            CubeSample{"cube-ascii.stl", 8, 12, 3, false},
                                            CubeSample{"cube-binary.stl", 8, 12, 3, false},
                                            CubeSample{"cube.vtp", 8, 6, 4, true},
@@ -226,8 +227,8 @@ TEST(PolyDataConversion, NegativePointIdThrows) {
     EXPECT_THROW(meshFromPolyData(polyData), std::runtime_error);
 }
 
-// vtkPLYReader drops face properties; cluster_id is read by the PLY check so that a partition made
-// elsewhere reaches the file builder, in ASCII and in binary of either byte order.
+// A face property cluster_id is read so that a partition made elsewhere reaches the file builder,
+// in ASCII and in binary of either byte order.
 TEST(PlyFile, FaceClusterIdsComeThrough) {
     testing::ScratchDirectory scratch;
     const std::string header = "element vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
