@@ -18,6 +18,7 @@
 
 #include "io/ClassicLocale.h"
 #include "io/FileChecks.h"
+#include "io/GltfReader.h"
 #include "io/HeaderChecks.h"
 #include "io/OffFormat.h"
 #include "io/PolyDataConversion.h"
@@ -37,6 +38,7 @@ struct MeshFormat {
 const MeshFormat meshFormats[] = {
     {".off", "OFF"}, {".ply", "PLY"}, {".obj", "Wavefront OBJ"},
     {".stl", "STL"}, {".vtp", "VTK XML PolyData"}, {".vtk", "VTK legacy"},
+    {".gltf", "glTF 2.0"}, {".glb", "glTF 2.0 binary"},
 };
 
 std::string supportedExtensionList() {
@@ -131,8 +133,9 @@ struct ReadContext {
     const ProgressCallback& progress;
 };
 
-Mesh readByExtension(const std::string& path, const std::string& extension, ReadContext&) {
+Mesh readByExtension(const std::string& path, const std::string& extension, ReadContext& context) {
     if (extension == ".off") return readOff(path);
+    if (extension == ".gltf" || extension == ".glb") return readGltf(path, context.notes, context.progress);
     return readWithVtk(path, extension);
 }
 
