@@ -80,9 +80,11 @@ json parseDocument(const std::string& path, const std::string& text) {
         document = json::parse(text);
     } catch (const json::parse_error& error) {
         // nlohmann's message after its "[json.exception.parse_error.101] " tag gives the byte position.
-        const std::string what = error.what();
+        std::string what = error.what();
         const size_t tagEnd = what.find("] ");
-        refuse(path, "not valid JSON: " + (tagEnd == std::string::npos ? what : what.substr(tagEnd + 2)));
+        if (tagEnd != std::string::npos) what = what.substr(tagEnd + 2);
+        if (what.rfind("parse error ", 0) == 0) refuse(path, "not valid JSON " + what.substr(12));
+        refuse(path, "not valid JSON: " + what);
     }
     if (!document.is_object()) refuse(path, "not a glTF document: the JSON is not an object");
     if (nestedDeeperThan(document, 64)) refuse(path, "JSON nested more than 64 levels deep");
