@@ -230,12 +230,19 @@ GltfDecoded decodeGltfPrimitives(const std::string& path, const GltfScene& scene
     bytes.total = scene.bufferBytes;
     GltfDecoded decoded;
     decoded.importer = std::make_shared<Assimp::Importer>();
-    // The importer owns and deletes the file system.
-    decoded.importer->SetIOHandler(new DecodingFiles(path, mainFilePrefix(scene), scene.binChunkOffset,
-                                                     scene.binChunkOffset ? 8 + scene.binChunkLength : 0, bytes));
-    const aiScene* result = decoded.importer->ReadFile(path, 0);
-    // Back to assimp's own file system, which deletes ours: it refers to this function's `bytes`.
-    decoded.importer->SetIOHandler(nullptr);
+    DecodingFiles files(path, mainFilePrefix(scene), scene.binChunkOffset,
+                        scene.binChunkOffset ? 8 + scene.binChunkLength : 0, bytes);
+    const aiScene* result = nullptr;
+    {
+        // Lent for the read only: an importer deletes the file system it holds at its end, and
+        // SetIOHandler(nullptr) takes it back without deleting it.
+        struct LentFileSystem {
+            Assimp::Importer& importer;
+            ~LentFileSystem() { importer.SetIOHandler(nullptr); }
+        } lent{*decoded.importer};
+        decoded.importer->SetIOHandler(&files);
+        result = decoded.importer->ReadFile(path, 0);
+    }
     if (bytes.cancelled) throw OperationCancelled();
     if (!result || !result->mRootNode) refuseDecoding(path, decoded.importer->GetErrorString());
     for (size_t slot = 0; slot < scene.meshes.size(); ++slot) {

@@ -172,7 +172,8 @@ TEST(GltfRefusal, RequiredExtensionsThatCannotBeDecoded) {
     }
 }
 
-// assimp decodes Draco; data that is not Draco is refused with its message, and Draco holds no fans.
+// assimp decodes Draco; data that is not Draco is refused with its message (and nothing printed),
+// and Draco holds no fans.
 TEST(GltfRefusal, BrokenDraco) {
     ScratchDirectory scratch;
     auto draco = [](json& d) {
@@ -180,7 +181,9 @@ TEST(GltfRefusal, BrokenDraco) {
         d["meshes"][0]["primitives"][0]["extensions"]["KHR_draco_mesh_compression"] = {
             {"bufferView", 0}, {"attributes", {{"POSITION", 0}}}};
     };
+    ::testing::internal::CaptureStderr();
     EXPECT_READ_ERROR(changedCube(scratch, draco), "Invalid Draco mesh compression in mesh: mesh 0 primitive: 0: Not a Draco file");
+    EXPECT_EQ(::testing::internal::GetCapturedStderr(), "");
     EXPECT_READ_ERROR(changedCube(scratch, [&](json& d) {
                           draco(d);
                           d["meshes"][0]["primitives"][0]["mode"] = 6;
