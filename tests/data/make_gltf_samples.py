@@ -165,6 +165,24 @@ def mirrored():
     return doc
 
 
+def sparse():
+    """The cube whose top corners a sparse accessor lifts from z = 0.5 to z = 1.5: a box twice as
+    tall, read through the sparse indices and values that replace 12 of the 24 positions."""
+    doc = Document()
+    cube = split_cube(doc)
+    primitive = doc.json["meshes"][cube]["primitives"][0]
+    base = doc.json["accessors"][primitive["attributes"]["POSITION"]]
+    corners = [POSITIONS[i] for quad in QUADS for i in quad]
+    lifted = [v for v, p in enumerate(corners) if p[2] > 0]
+    indices = doc._view(b"".join(struct.pack("<H", v) for v in lifted))
+    values = doc._view(b"".join(struct.pack("<3f", corners[v][0], corners[v][1], 1.5) for v in lifted))
+    base["sparse"] = {"count": len(lifted), "indices": {"bufferView": indices, "componentType": UNSIGNED_SHORT},
+                      "values": {"bufferView": values}}
+    base["max"][2] = 1.5
+    doc.scene([doc.node(mesh=cube)])
+    return doc
+
+
 def with_lines_and_points():
     """The cube's triangles plus three primitives that are not faces: points, lines, a line strip."""
     doc = Document()
@@ -203,6 +221,7 @@ def main():
     write("transforms.gltf", transforms().gltf())
     write("mirrored.gltf", mirrored().gltf())
     write("lines-points.gltf", with_lines_and_points().gltf())
+    write("sparse.gltf", sparse().gltf())
 
 
 if __name__ == "__main__":

@@ -91,6 +91,12 @@ TEST(GltfRefusal, AccessorsOutsideTheirBufferViews) {
                       "bufferViews[2]: 72 bytes from byte 600 run past the end of buffers[0] (648 bytes)");
     EXPECT_READ_ERROR(changedCube(scratch, [](json& d) { d["accessors"][0].erase("bufferView"); }),
                       "accessors[0]: holds no data (no bufferView)");
+    EXPECT_READ_ERROR(changedGltf(scratch, "sparse.gltf", "sparse.gltf",
+                                  [](json& d) { d["accessors"][0]["sparse"]["values"]["byteOffset"] = 4; }),
+                      "accessors[0].sparse.values: 12 elements of 12 bytes from byte 4 run past the end of bufferViews[4] (144 bytes)");
+    EXPECT_READ_ERROR(changedGltf(scratch, "sparse.gltf", "sparse.gltf",
+                                  [](json& d) { d["accessors"][0]["sparse"]["count"] = 25; }),
+                      "accessors[0].sparse.count: 25 replaced elements, more than the accessor's 24");
 }
 
 TEST(GltfRefusal, AccessorsOfTheWrongType) {

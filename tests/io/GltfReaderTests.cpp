@@ -107,6 +107,17 @@ TEST(GltfReader, StripsAndFansKeepTheirWinding) {
     expectOutwardFromOrigin(mesh);
 }
 
+// A sparse accessor replaces the 12 top corners of the split cube: a box from z = -0.5 to 1.5.
+TEST(GltfReader, SparseAccessorsReplaceTheirElements) {
+    const Mesh mesh = readMesh(gltfSample("sparse.gltf"));
+    ASSERT_EQ(mesh.faceCount(), 12u);
+    expectSamePoints(mesh.positions, placedCorners([](double x, double y, double z) {
+                         return glm::dvec3(x, y, z > 0 ? 1.5 : z);
+                     }));
+    EXPECT_EQ(reportOf(mesh).components, 1u);
+    expectOutward(mesh, [](const glm::dvec3&) { return glm::dvec3(0, 0, 0.5); });
+}
+
 // One mesh, two nodes: twice the triangles, each copy at its node's translation.
 TEST(GltfReader, AMeshUsedByTwoNodesCountsTwice) {
     const Mesh mesh = readMesh(gltfSample("instanced.gltf"));
