@@ -1,6 +1,5 @@
 #include "io/GltfDocument.h"
 
-#include <cstring>
 #include <fstream>
 #include <map>
 

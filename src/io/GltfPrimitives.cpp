@@ -143,9 +143,16 @@ std::optional<GltfPrimitive> checkPrimitive(const GltfJson& gltf, const json& pr
     GltfPrimitive result;
     result.index = index;
     result.mode = int(mode);
-    result.draco = extensions && gltf.member(*extensions, "KHR_draco_mesh_compression", where + ".extensions");
-    if (result.draco && mode != triangles && mode != triangleStrip)
-        gltf.fail(where, "Draco compression of a triangle fan; KHR_draco_mesh_compression holds lists and strips only");
+    const json* draco = extensions ? gltf.member(*extensions, "KHR_draco_mesh_compression", where + ".extensions") : nullptr;
+    result.draco = draco != nullptr;
+    if (draco) {
+        if (mode != triangles && mode != triangleStrip)
+            gltf.fail(where, "Draco compression of a triangle fan; KHR_draco_mesh_compression holds lists and strips only");
+        const std::string dracoWhere = where + ".extensions.KHR_draco_mesh_compression";
+        const json* view = gltf.member(*draco, "bufferView", dracoWhere);
+        if (!view) gltf.fail(dracoWhere, "names no bufferView");
+        checkView(gltf, gltf.index(*view, "bufferViews", dracoWhere + ".bufferView"), buffers);
+    }
     result.vertexCount = checkAccessor(gltf, *position, where + ".attributes.POSITION", "VEC3", {floatComponent},
                                        "float (5126) without an extension", result.draco, buffers);
     const json* indices = gltf.member(primitive, "indices", where);

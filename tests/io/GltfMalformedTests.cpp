@@ -195,6 +195,11 @@ TEST(GltfRefusal, BrokenDraco) {
                           d["meshes"][0]["primitives"][0]["mode"] = 6;
                       }),
                       "meshes[0].primitives[0]: Draco compression of a triangle fan");
+    EXPECT_READ_ERROR(changedCube(scratch, [&](json& d) {
+                          draco(d);
+                          d["meshes"][0]["primitives"][0]["extensions"]["KHR_draco_mesh_compression"].erase("bufferView");
+                      }),
+                      "meshes[0].primitives[0].extensions.KHR_draco_mesh_compression: names no bufferView");
 }
 
 TEST(GltfRefusal, NoTriangles) {
