@@ -11,8 +11,8 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     if (size == 0) return 0;
-    static const char* const extensions[] = {".off", ".ply", ".obj", ".stl", ".vtp", ".vtk"};
-    const std::string path = "/tmp/conescope-fuzz-" + std::to_string(getpid()) + extensions[data[0] % 6];
+    static const char* const extensions[] = {".off", ".ply", ".obj", ".stl", ".vtp", ".vtk", ".gltf", ".glb"};
+    const std::string path = "/tmp/conescope-fuzz-" + std::to_string(getpid()) + extensions[data[0] % 8];
     {
         std::ofstream out(path, std::ios::binary | std::ios::trunc);
         out.write(reinterpret_cast<const char*>(data + 1), std::streamsize(size - 1));

@@ -1,10 +1,7 @@
 #include "io/MeshReader.h"
 
 #include <algorithm>
-#include <array>
-#include <cstring>
 #include <new>
-#include <unordered_map>
 #include <vector>
 
 #include <vtkAlgorithm.h>
@@ -18,11 +15,13 @@
 
 #include "io/ClassicLocale.h"
 #include "io/FileChecks.h"
+#include "io/GltfReader.h"
 #include "io/HeaderChecks.h"
 #include "io/ObjFormat.h"
 #include "io/OffFormat.h"
 #include "io/PlyFormat.h"
 #include "io/PolyDataConversion.h"
+#include "io/PositionMerging.h"
 #include "io/VtkMessageCapture.h"
 
 namespace conescope {
@@ -38,6 +37,7 @@ struct MeshFormat {
 const MeshFormat meshFormats[] = {
     {".off", "OFF"}, {".ply", "PLY"}, {".obj", "Wavefront OBJ"},
     {".stl", "STL"}, {".vtp", "VTK XML PolyData"}, {".vtk", "VTK legacy"},
+    {".gltf", "glTF 2.0"}, {".glb", "glTF 2.0 binary"},
 };
 
 std::string supportedExtensionList() {
@@ -72,44 +72,6 @@ vtkSmartPointer<vtkAlgorithm> makeVtkReader(const std::string& path, const std::
     if (!reader->IsFilePolyData()) throw MeshReadError(path + ": not a legacy VTK file with POLYDATA");
     checkLegacyVtkFile(path);
     return reader;
-}
-
-// The bits of a position with -0 made +0, so positions equal as floats have equal keys.
-std::array<uint32_t, 3> positionKey(const glm::vec3& position) {
-    std::array<uint32_t, 3> key{};
-    for (int k = 0; k < 3; ++k) {
-        const float coordinate = position[k] == 0.0f ? 0.0f : position[k];
-        std::memcpy(&key[k], &coordinate, 4);
-    }
-    return key;
-}
-
-// Mixes all three coordinates, so points on a grid (many equal x or z) do not collide.
-struct PositionKeyHash {
-    size_t operator()(const std::array<uint32_t, 3>& key) const {
-        return std::hash<uint64_t>()((uint64_t(key[0]) << 32 | key[1]) ^ (uint64_t(key[2]) * 0x9e3779b97f4a7c15ull));
-    }
-};
-
-// STL stores three corners per triangle; triangles share points only once equal corners are
-// merged. vtkSTLReader's merging (vtkMergePoints, exact equality) also drops every triangle two of
-// whose corners merge, so an STL's degenerate triangles never reached degenerate_faces. This merges
-// as vtkMergePoints does (equal floats, -0 equal to +0, numbered in the order first seen) but keeps
-// every triangle: a degenerate one stays a face with a repeated vertex, and computeFaceGeometry and
-// checkMesh count it like any zero-area face of another format. (Counting them in checkStlFile
-// instead would need a second ASCII STL parser agreeing with VTK's, and a count beside the mesh
-// that its faces and triangles would not include.)
-void mergeEqualPositions(Mesh& mesh) {
-    std::unordered_map<std::array<uint32_t, 3>, uint32_t, PositionKeyHash> mergedIndex;
-    std::vector<glm::vec3> merged;
-    std::vector<uint32_t> mergedIndexOf(mesh.positions.size());
-    for (size_t i = 0; i < mesh.positions.size(); ++i) {
-        auto [entry, isNew] = mergedIndex.try_emplace(positionKey(mesh.positions[i]), uint32_t(merged.size()));
-        if (isNew) merged.push_back(mesh.positions[i]);
-        mergedIndexOf[i] = entry->second;
-    }
-    for (uint32_t& vertex : mesh.faceVertices) vertex = mergedIndexOf[vertex];
-    mesh.positions = std::move(merged);
 }
 
 std::string describeFailure(const VtkMessageCapture& capture, vtkAlgorithm* reader) {
@@ -157,6 +119,7 @@ Mesh readByExtension(const std::string& path, const std::string& extension, Read
     if (extension == ".off") return readOff(path);
     if (extension == ".obj") return readObj(path, context.notes, context.progress);
     if (extension == ".ply") return readPly(path, context.notes, context.progress);
+    if (extension == ".gltf" || extension == ".glb") return readGltf(path, context.notes, context.progress);
     return readWithVtk(path, extension);
 }
 

@@ -19,7 +19,8 @@ public:
     using std::runtime_error::runtime_error;
 };
 
-// Reads .off .obj .ply (own parsers), .stl .vtp .vtk (VTK readers), choosing by the extension,
+// Reads .off .obj .ply (own parsers), .stl .vtp .vtk (VTK readers), .gltf .glb (GltfReader.h: the
+// default scene in world space, vertices merged by position), choosing by the extension,
 // case-insensitively. The result has at least one face and has passed validateMesh; its model
 // matrix is the identity unless the file stored one (see PolyDataConversion.h). Per-face scalar
 // arrays of VTK files and a PLY face property cluster_id land in Mesh::faceArrays. VTK's own messages are

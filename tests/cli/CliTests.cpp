@@ -577,7 +577,9 @@ TEST(CliClusters, RanksTheDisplayedTestsClustersWorstFirst) {
         const double sign = sort == "cull-fraction" ? -1.0 : 1.0;
         for (size_t i = 0; i < rows.size(); ++i) {
             EXPECT_EQ(rows[i], all[rows[i]["cluster"].get<size_t>()]) << sort;
-            if (i > 0) EXPECT_GE(sign * rows[i - 1][key].get<double>(), sign * rows[i][key].get<double>()) << sort;
+            if (i > 0) {
+                EXPECT_GE(sign * rows[i - 1][key].get<double>(), sign * rows[i][key].get<double>()) << sort;
+            }
         }
         size_t worseLeftOut = 0;
         for (const nlohmann::json& cluster : all)

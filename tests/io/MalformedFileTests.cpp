@@ -758,7 +758,7 @@ TEST(BadPath, UnknownExtension) {
 TEST(VtkMessages, NothingIsPrintedToStderr) {
     ScratchDirectory scratch;
     std::vector<std::string> paths;
-    for (const char* extension : {".ply", ".obj", ".stl", ".vtp", ".vtk"}) {
+    for (const char* extension : {".ply", ".obj", ".stl", ".vtp", ".vtk", ".gltf", ".glb"}) {
         paths.push_back(scratch.writeFile(std::string("garbage") + extension, garbageBytes(2000, 3)));
         paths.push_back(scratch.writeFile(std::string("text") + extension, "solid\n<VTKFile>\nply\nformat ascii\n"));
     }

@@ -133,7 +133,7 @@ TEST(ReadMesh, ReadsAClusterIdArrayFromTheBundledVtp) {
 
 TEST(SupportedFormats, ListsEveryReadableExtension) {
     std::vector<std::string> extensions = supportedMeshExtensions();
-    for (const char* expected : {".off", ".ply", ".obj", ".stl", ".vtp", ".vtk"})
+    for (const char* expected : {".off", ".ply", ".obj", ".stl", ".vtp", ".vtk", ".gltf", ".glb"})
         EXPECT_NE(std::find(extensions.begin(), extensions.end(), expected), extensions.end()) << expected;
     EXPECT_TRUE(hasSupportedMeshExtension("/some/where/Model.STL"));
     EXPECT_FALSE(hasSupportedMeshExtension("notes.txt"));
@@ -142,7 +142,7 @@ TEST(SupportedFormats, ListsEveryReadableExtension) {
 
 TEST(SupportedFormats, FileFilterIsQtStyle) {
     std::string filter = meshFileFilter();
-    EXPECT_EQ(filter.rfind("Meshes (*.off *.ply *.obj *.stl *.vtp *.vtk)", 0), 0u) << filter;
+    EXPECT_EQ(filter.rfind("Meshes (*.off *.ply *.obj *.stl *.vtp *.vtk *.gltf *.glb)", 0), 0u) << filter;
     EXPECT_NE(filter.find(";;OFF (*.off)"), std::string::npos) << filter;
     EXPECT_NE(filter.find(";;All files (*)"), std::string::npos) << filter;
 }
