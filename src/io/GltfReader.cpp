@@ -113,8 +113,6 @@ Mesh readGltf(const std::string& path, std::vector<std::string>& notes, const Pr
     if (scene.instances.empty()) throw MeshReadError(path + ": " + describeNoTriangles(scene.skipped));
     const GltfDecoded decoded = decodeGltfPrimitives(path, scene, progressWithin(progress, 0.05, 0.6));
     Mesh mesh = placeInstances(path, scene, decoded, progressWithin(progress, 0.6, 0.95));
-    reportOrCancel(progress, 0.95, "merging glTF vertices");
-    mergeEqualPositions(mesh);
     for (std::string& note : skippedNotes(scene.skipped)) notes.push_back(std::move(note));
     return mesh;
 }

@@ -101,9 +101,7 @@ Mesh readWithVtk(const std::string& path, const std::string& extension) {
         throw MeshReadError(path + ": no faces (" + std::to_string(polyData->GetNumberOfPoints()) + " points, " +
                             std::to_string(polyData->GetNumberOfLines()) + " lines, no polygons)");
     try {
-        Mesh mesh = meshFromPolyData(polyData);
-        if (extension == ".stl") mergeEqualPositions(mesh);
-        return mesh;
+        return meshFromPolyData(polyData);
     } catch (const std::runtime_error& error) {
         throw MeshReadError(path + ": " + error.what());
     }
@@ -154,6 +152,14 @@ MeshFile readMeshFile(const std::string& path, const ProgressCallback& progress)
     } catch (const std::runtime_error& error) {
         throw MeshReadError(path + ": " + error.what());
     }
+    // Clusters never cross components, so vertices a file splits at one position (at normal or
+    // texture seams, or a corner per face as STL and glTF store them) would cut the surface apart
+    // and make every builder look perfect. Vertices are positions, as OBJ's `v` entries are.
+    const size_t merged = mergeEqualPositions(mesh);
+    const bool cornersPerFace = extension == ".stl" || extension == ".gltf" || extension == ".glb";
+    if (merged > 0 && !cornersPerFace)
+        file.notes.push_back("merged " + std::to_string(merged) + " vertices into others at the same position (the file splits "
+                             "them, e.g. at normal or texture seams), so faces meeting there are neighbours");
     return file;
 }
 

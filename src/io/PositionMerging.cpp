@@ -1,10 +1,12 @@
 #include "io/PositionMerging.h"
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <cstring>
-#include <unordered_map>
 #include <vector>
+
+#include "core/LargeArrays.h"
 
 namespace conescope {
 
@@ -21,28 +23,65 @@ std::array<uint32_t, 3> positionKey(const glm::vec3& position) {
 }
 
 // Mixes all three coordinates, so points on a grid (many equal x or z) do not collide.
-struct PositionKeyHash {
-    size_t operator()(const std::array<uint32_t, 3>& key) const {
-        return std::hash<uint64_t>()((uint64_t(key[0]) << 32 | key[1]) ^ (uint64_t(key[2]) * 0x9e3779b97f4a7c15ull));
-    }
-};
+uint64_t hashOf(const std::array<uint32_t, 3>& key) {
+    uint64_t h = (uint64_t(key[0]) << 32 | key[1]) ^ (uint64_t(key[2]) * 0x9e3779b97f4a7c15ull);
+    h ^= h >> 29;
+    return h * 0xbf58476d1ce4e5b9ull;
+}
 
 }  // namespace
 
 // Merges as vtkMergePoints does (exact equality) but keeps every face: vtkSTLReader's own merging
 // drops each triangle two of whose corners merge, so an STL's degenerate triangles never reached
-// degenerate_faces.
-void mergeEqualPositions(Mesh& mesh) {
-    std::unordered_map<std::array<uint32_t, 3>, uint32_t, PositionKeyHash> mergedIndex;
+// degenerate_faces. Vertices are sorted by a hash of their position rather than put in a hash
+// table: one pass over millions of vertices, and nothing changes when no two positions are equal.
+size_t mergeEqualPositions(Mesh& mesh) {
+    const size_t count = mesh.positions.size();
+    std::vector<std::pair<uint64_t, uint32_t>> order;  // (hash, vertex), equal positions adjacent
+    reserveLarge(order, count);
+    for (size_t i = 0; i < count; ++i) order.emplace_back(hashOf(positionKey(mesh.positions[i])), uint32_t(i));
+    std::sort(order.begin(), order.end());
+    // Each vertex's representative: the first vertex (lowest index) at its position.
+    std::vector<uint32_t> first, distinct;  // distinct: the run's vertices at positions not seen before in it
+    size_t repeats = 0;
+    for (size_t run = 0; run < order.size();) {
+        size_t end = run + 1;
+        while (end < order.size() && order[end].first == order[run].first) ++end;
+        distinct.assign(1, order[run].second);
+        for (size_t i = run + 1; i < end; ++i) {
+            const uint32_t v = order[i].second;
+            const auto same = std::find_if(distinct.begin(), distinct.end(), [&](uint32_t d) {
+                return positionKey(mesh.positions[d]) == positionKey(mesh.positions[v]);
+            });
+            if (same == distinct.end()) {
+                distinct.push_back(v);
+                continue;
+            }
+            if (first.empty()) {
+                first.resize(count);
+                for (uint32_t u = 0; u < count; ++u) first[u] = u;
+            }
+            first[v] = *same;
+            ++repeats;
+        }
+        run = end;
+    }
+    if (repeats == 0) return 0;
+    // Number the kept vertices in the order first seen, as before.
+    std::vector<uint32_t> mergedIndexOf(count);
     std::vector<glm::vec3> merged;
-    std::vector<uint32_t> mergedIndexOf(mesh.positions.size());
-    for (size_t i = 0; i < mesh.positions.size(); ++i) {
-        auto [entry, isNew] = mergedIndex.try_emplace(positionKey(mesh.positions[i]), uint32_t(merged.size()));
-        if (isNew) merged.push_back(mesh.positions[i]);
-        mergedIndexOf[i] = entry->second;
+    merged.reserve(count - repeats);
+    for (uint32_t v = 0; v < count; ++v) {
+        if (first[v] == v) {
+            mergedIndexOf[v] = uint32_t(merged.size());
+            merged.push_back(mesh.positions[v]);
+        } else {
+            mergedIndexOf[v] = mergedIndexOf[first[v]];
+        }
     }
     for (uint32_t& vertex : mesh.faceVertices) vertex = mergedIndexOf[vertex];
     mesh.positions = std::move(merged);
+    return repeats;
 }
 
 }  // namespace conescope

@@ -2,6 +2,8 @@
 // attribute seams (internal to conescope_io).
 #pragma once
 
+#include <cstddef>
+
 #include "core/Mesh.h"
 
 namespace conescope {
@@ -10,7 +12,8 @@ namespace conescope {
 // the order first seen, and renumbers faceVertices. Every face is kept: one whose corners merge
 // stays a face with a repeated vertex, so computeFaceGeometry and checkMesh count it as degenerate.
 // Clusters never cross components, so a format whose faces share no vertex indices (STL, glTF
-// seams and non-indexed primitives) must be merged before clustering.
-void mergeEqualPositions(Mesh& mesh);
+// seams and non-indexed primitives) must be merged before clustering. Returns how many vertices were
+// merged into an earlier one (0: the mesh is unchanged).
+size_t mergeEqualPositions(Mesh& mesh);
 
 }  // namespace conescope

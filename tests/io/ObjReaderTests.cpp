@@ -10,6 +10,7 @@
 
 #include "IoTestSupport.h"
 #include "core/MeshChecks.h"
+#include "core/Statistics.h"
 #include "io/MeshReader.h"
 
 namespace conescope {
@@ -163,31 +164,28 @@ TEST(ObjEncoding, Utf32IsRefusedByName) {
 
 const std::filesystem::path assimpModels = "/usr/share/assimp/models";
 
-// Distinct positions, equal floats counted once.
-size_t distinctPositions(const Mesh& mesh) {
-    std::set<std::array<float, 3>> distinct;
-    for (const glm::vec3& p : mesh.positions) distinct.insert({p.x, p.y, p.z});
-    return distinct.size();
-}
 
 // WusonOBJ.obj has 2,117 v lines and 3,732 triangles (counted with grep). The STL of the same model
-// (its equal corners merged by the reader) is an independent reference for the connectivity; the
-// OFF holds the same triangles over 3,205 vertices, 2,117 of them distinct (seams are duplicated).
-TEST(ObjAssimpModels, WusonHasTheFilesVerticesAndTheSameSurfaceAsTheStlAndOff) {
+// stores a corner per triangle, the OFF duplicates its seams (3,205 vertices at 2,117 positions) and
+// the PLY a vertex per corner (11,184): read, all four are the same surface, with the same pieces
+// and (from the same builder) the same clusters.
+TEST(ObjAssimpModels, WusonIsTheSameSurfaceInEveryFormat) {
     if (!std::filesystem::exists(assimpModels / "OBJ/WusonOBJ.obj")) GTEST_SKIP() << "install assimp-testmodels";
     const Mesh obj = readMesh((assimpModels / "OBJ/WusonOBJ.obj").string());
-    const Mesh stl = readMesh((assimpModels / "STL/Wuson.stl").string());
-    const Mesh off = readMesh((assimpModels / "OFF/Wuson.off").string());
     EXPECT_EQ(obj.positions.size(), 2117u);
     EXPECT_EQ(obj.faceCount(), 3732u);
     EXPECT_EQ(triangleCount(obj), 3732u);
-    EXPECT_EQ(stl.positions.size(), obj.positions.size());
-    EXPECT_EQ(triangleCount(stl), triangleCount(obj));
-    EXPECT_EQ(triangleCount(off), triangleCount(obj));
-    EXPECT_EQ(distinctPositions(off), obj.positions.size());
     const MeshReport objReport = checkMesh(obj, computeFaceGeometry(obj));
-    EXPECT_EQ(objReport.components, checkMesh(stl, computeFaceGeometry(stl)).components);
     EXPECT_EQ(objReport.components, 54u);
+    const Partition objClusters = buildPartition(obj, computeFaceGeometry(obj), Settings{});
+    for (const char* other : {"STL/Wuson.stl", "OFF/Wuson.off", "PLY/Wuson.ply"}) {
+        const Mesh mesh = readMesh((assimpModels / other).string());
+        EXPECT_EQ(mesh.positions.size(), obj.positions.size()) << other;
+        EXPECT_EQ(triangleCount(mesh), triangleCount(obj)) << other;
+        EXPECT_EQ(checkMesh(mesh, computeFaceGeometry(mesh)).components, objReport.components) << other;
+        const Partition clusters = buildPartition(mesh, computeFaceGeometry(mesh), Settings{});
+        EXPECT_NEAR(double(clusters.clusterCount), double(objClusters.clusterCount), 0.05 * objClusters.clusterCount) << other;
+    }
 }
 
 TEST(ObjAssimpModels, CubeWithMaterialsEmptyMaterialAndUtf16) {
@@ -207,7 +205,7 @@ TEST(ObjAssimpModels, CubeWithMaterialsEmptyMaterialAndUtf16) {
 TEST(ObjFile, ReportsProgressAndCanBeCancelled) {
     ScratchDirectory scratch;
     std::string text;
-    for (int i = 0; i < 200000; ++i) text += "v 0.125 0.25 0.5\n";
+    for (int i = 0; i < 200000; ++i) text += "v " + std::to_string(i) + " 0.25 0.5\n";
     const std::string path = scratch.writeFile("long.obj", text + "f 1 2 3\n");
     testing::expectProgressAndCancellation(path);
     EXPECT_EQ(readMesh(path).positions.size(), 200000u);

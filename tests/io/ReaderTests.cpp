@@ -301,3 +301,32 @@ TEST(StlFile, DegenerateTrianglesAreKeptAndCounted) {
 
 }  // namespace
 }  // namespace conescope
+
+namespace conescope {
+namespace {
+
+// A square of two triangles whose shared edge the file stores twice (as exporters do at texture
+// seams): read, the triangles are neighbours, and the note says what was merged.
+TEST(VertexMerging, SplitSeamsAreJoinedWithANoteInEveryIndexedFormat) {
+    testing::ScratchDirectory scratch;
+    const std::string off = "OFF\n6 2 0\n0 0 0\n1 0 0\n1 1 0\n0 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 3 4 5\n";
+    const std::string obj = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3\nf 4 5 6\n";
+    for (const std::string& path : {scratch.writeFile("seam.off", off), scratch.writeFile("seam.obj", obj)}) {
+        const MeshFile file = readMeshFile(path);
+        EXPECT_EQ(file.mesh.positions.size(), 4u) << path;
+        EXPECT_EQ(checkMesh(file.mesh, computeFaceGeometry(file.mesh)).components, 1u) << path;
+        ASSERT_EQ(file.notes.size(), 1u) << path;
+        EXPECT_NE(file.notes[0].find("merged 2 vertices"), std::string::npos) << file.notes[0];
+    }
+    // Nothing to merge: the file's vertices as they are, and no note.
+    const MeshFile square = readMeshFile(scratch.writeFile("square.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3\n"));
+    EXPECT_EQ(square.mesh.positions.size(), 4u);
+    EXPECT_TRUE(square.notes.empty());
+    // -0 and +0 are one position; a whole file of one point stays one vertex (and degenerate faces).
+    const MeshFile zeros = readMeshFile(scratch.writeFile("zeros.off", "OFF\n4 2 0\n0 0 0\n-0 0 -0\n0 0 0\n0 -0 0\n3 0 1 2\n3 1 2 3\n"));
+    EXPECT_EQ(zeros.mesh.positions.size(), 1u);
+    EXPECT_EQ(computeFaceGeometry(zeros.mesh).degenerateCount, 2u);
+}
+
+}  // namespace
+}  // namespace conescope
