@@ -83,7 +83,7 @@ void WindowActions::changeSettings(Settings (*change)(Settings)) { window_->setS
 void WindowActions::createFileMenu() {
     QMenu* file = window_->menuBar()->addMenu(tr("&File"));
     open_ = add(file, tr("&Open mesh..."), QKeySequence::Open, [this]() { openWithDialog(); },
-                tr("Open a mesh (OFF, PLY, OBJ, STL, VTP, VTK)"));
+                tr("Open a mesh (OFF, PLY, OBJ, STL, glTF, GLB, VTP, VTK)"));
     recentMenu_ = file->addMenu(tr("Open &recent"));
     rebuildRecentMenu();
     file->addSeparator();
