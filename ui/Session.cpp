@@ -119,14 +119,14 @@ void Session::requestOrbit() {
     const std::shared_ptr<const PreparedMesh> prepared = prepared_;
     const std::shared_ptr<const ClusterSet> clusters = clusters_;
     const Settings settings = settings_;
-    runner_.run<std::vector<ViewStatistics>>(
+    runner_.run<TestStatistics>(
         orbitGroup, tr("Orbit statistics"),
         [prepared, clusters, settings](const ProgressCallback& progress) {
             return measureOrbit(*prepared, *clusters, settings, progress);
         },
-        [this, clusters](std::vector<ViewStatistics>& rows) {
+        [this, clusters](TestStatistics& orbit) {
             if (clusters != clusters_) return;  // the clusters changed meanwhile; their own orbit follows
-            orbitRows_ = std::move(rows);
+            orbit_ = std::move(orbit);
             emit orbitChanged();
         },
         [this](const QString& error) { emit errorOccurred(tr("Cannot measure the orbit"), error); });
@@ -144,7 +144,7 @@ void Session::showSceneResult(SceneResult& result, bool newMesh) {
     scene_->setFaceColoring(coloring_);
     if (!samePartition || picked_ >= int(clusters_->partition.clusterCount)) picked_ = -1;
     scene_->setHighlightedCluster(picked_);
-    orbitRows_.clear();
+    orbit_.reset();
     if (newMesh) {
         if (!eyeGiven_) eyePosition_ = startingEyePosition(prepared_->box, settings_);
         eyeGiven_ = false;
@@ -182,7 +182,7 @@ void Session::applySettings(const Settings& settings) {
 }
 
 void Session::clearOrbit() {
-    orbitRows_.clear();
+    orbit_.reset();
     emit orbitChanged();
 }
 
@@ -333,6 +333,22 @@ void Session::pickCluster(int cluster) {
     picked_ = cluster;
     if (scene_) scene_->setHighlightedCluster(cluster);
     emit pickChanged(cluster);
+}
+
+const std::vector<ViewStatistics>& Session::orbitRows() const {
+    static const std::vector<ViewStatistics> none;
+    return orbit_ ? orbit_->views : none;
+}
+
+void Session::showClusterWhereItIsLost(int cluster) {
+    pickCluster(cluster);
+    if (!prepared_ || !clusters_ || picked_ < 0) return;
+    const long view = viewMissingCluster(*prepared_, *clusters_, settings_, uint32_t(picked_));
+    if (view >= 0) {
+        moveEye(orbitOf(settings_, prepared_->box)[size_t(view)].position, view);
+    } else {
+        emit notice(tr("Cluster %1 is never drawn with back faces over the orbit").arg(picked_), 6000);
+    }
 }
 
 }  // namespace conescope

@@ -70,7 +70,9 @@ public:
     const EyeMeasurement* measurement() const { return measurement_ ? &*measurement_ : nullptr; }
     QString eyeError() const { return eyeError_; }
     double eyeSeconds() const { return eyeSeconds_; }
-    const std::vector<ViewStatistics>& orbitRows() const { return orbitRows_; }
+    const std::vector<ViewStatistics>& orbitRows() const;
+    // The displayed test over the orbit with every cluster's counts and fractions; null until measured.
+    const TestStatistics* orbitStatistics() const { return orbit_ ? &*orbit_ : nullptr; }
 
     // --- How the scene is drawn (kept for every new scene) ----------------------------------------
     void setLayerVisible(Layer layer, bool visible);
@@ -81,6 +83,9 @@ public:
     // A cluster index, or -1 for none (also for an index the clusters do not have).
     void pickCluster(int cluster);
     int pickedCluster() const { return picked_; }
+    // Picks the cluster and moves the eye to the first orbit view that loses its back faces (a miss
+    // of the test first, else the partition's loss): the view that shows why it costs.
+    void showClusterWhereItIsLost(int cluster);
 
 signals:
     // A new scene (new mesh or new clusters), its eye already measured. `previous` (null for the
@@ -119,7 +124,7 @@ private:
     std::optional<EyeMeasurement> measurement_;
     QString eyeError_;
     double eyeSeconds_ = 0.0;
-    std::vector<ViewStatistics> orbitRows_;
+    std::optional<TestStatistics> orbit_;
     glm::dvec3 eyePosition_{0.0, 0.0, 3.0};
     bool eyeGiven_ = false;  // the next mesh keeps eyePosition_ instead of the starting position
     long orbitStep_ = -1;

@@ -134,22 +134,27 @@ glm::dvec3 startingEyePosition(const Aabb& worldBox, const Settings& settings) {
     return glm::dvec3(worldBox.center()) + settings.distance * radius * direction;
 }
 
-std::vector<ViewStatistics> measureOrbit(const PreparedMesh& prepared, const ClusterSet& clusters,
-                                         const Settings& settings, const ProgressCallback& progress) {
+TestStatistics measureOrbit(const PreparedMesh& prepared, const ClusterSet& clusters, const Settings& settings,
+                            const ProgressCallback& progress) {
+    const CullingInput input = cullingInput(prepared, clusters);
+    TestStatistics statistics = measureCulling(input, orbitOf(settings, prepared.box), displayedTest(settings),
+                                               progressWithin(progress, 0.0, 0.9, "orbit statistics"));
+    report(progress, 0.9, "cull map");
+    addCullMap(statistics, computeCullMap(prepared.faces, clusters.bounds));
+    return statistics;
+}
+
+long viewMissingCluster(const PreparedMesh& prepared, const ClusterSet& clusters, const Settings& settings, uint32_t cluster) {
     const CullingInput input = cullingInput(prepared, clusters);
     const std::vector<Eye> views = orbitOf(settings, prepared.box);
-    // measureCulling has no callback; measuring in slices lets a cancel land between slices.
-    const size_t sliceSize = 16;
-    std::vector<ViewStatistics> rows;
-    for (size_t first = 0; first < views.size(); first += sliceSize) {
-        report(progress, double(first) / double(views.size()), "orbit statistics");
-        const std::vector<Eye> slice(views.begin() + first, views.begin() + std::min(views.size(), first + sliceSize));
-        for (ViewStatistics& view : measureCulling(input, slice, displayedTest(settings)).views) {
-            view.view += first;
-            rows.push_back(view);
-        }
+    long partitionLoss = -1;
+    for (size_t v = 0; v < views.size(); ++v) {
+        const CullExplanation why = explainCull(input, cluster, views[v], displayedTest(settings));
+        if (why.culled || why.backFaces == 0) continue;
+        if (why.frontFaces == 0) return long(v);
+        if (partitionLoss < 0) partitionLoss = long(v);
     }
-    return rows;
+    return partitionLoss;
 }
 
 Settings exportSettings(const Settings& settings, const std::optional<glm::dvec3>& eye) {

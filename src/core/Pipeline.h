@@ -96,10 +96,16 @@ std::vector<uint8_t> allBackFacingClusters(const EyeMeasurement& measurement);
 // from the centre), above and in front, so the first picture shows culled and drawn clusters.
 glm::dvec3 startingEyePosition(const Aabb& worldBox, const Settings& settings);
 
-// The per-view rows of the displayed test over the standard orbit (measureCulling over orbitOf):
-// what the efficiency plot draws. Cancellable between slices of views.
-std::vector<ViewStatistics> measureOrbit(const PreparedMesh& prepared, const ClusterSet& clusters,
-                                         const Settings& settings, const ProgressCallback& progress = {});
+// The displayed test over the standard orbit (measureCulling over orbitOf) with the cull map of the
+// clusters: the efficiency plot's rows (views) and the worst-cluster table (clusters). Cancellable
+// between views.
+TestStatistics measureOrbit(const PreparedMesh& prepared, const ClusterSet& clusters, const Settings& settings,
+                            const ProgressCallback& progress = {});
+
+// The first orbit view from which the displayed test draws `cluster` although every face faces away
+// (a miss: the test's loss); else the first from which it is drawn holding back faces and a visible
+// one (the partition's loss); -1 when it is never lost. Where to put the eye to see why it costs.
+long viewMissingCluster(const PreparedMesh& prepared, const ClusterSet& clusters, const Settings& settings, uint32_t cluster);
 
 // The settings for a statistics export: the current settings with the eye set (current eye) or
 // cleared (orbit).

@@ -58,7 +58,8 @@ double ratio(size_t culled, size_t back) { return back == 0 ? 1.0 : double(culle
 
 }  // namespace
 
-TestStatistics measureCulling(const CullingInput& input, const std::vector<Eye>& views, CullTest test) {
+TestStatistics measureCulling(const CullingInput& input, const std::vector<Eye>& views, CullTest test,
+                              const ProgressCallback& progress) {
     const ClusterBounds& bounds = input.bounds;
     const size_t clusterCount = bounds.count();
     TestStatistics result;
@@ -93,6 +94,7 @@ TestStatistics measureCulling(const CullingInput& input, const std::vector<Eye>&
 
     double totalNanoseconds = 0.0;
     for (size_t v = 0; v < views.size(); ++v) {
+        if (progress && v % 16 == 0 && !progress(double(v) / double(views.size()), "views")) throw OperationCancelled();
         const Eye& eye = views[v];
         const std::vector<Facing> facing = classifyFaces(input.mesh, input.world, input.faces, eye);
         const ClusterTruth truth = truthForView(input, facing);

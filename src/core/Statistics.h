@@ -93,8 +93,10 @@ struct RunStatistics {
 Partition buildPartition(const Mesh& mesh, const FaceGeometry& faces, const Settings& settings,
                          const ProgressCallback& progress = {});
 
-// Statistics for one (cone, test) over the given views from prepared bounds.
-TestStatistics measureCulling(const CullingInput& input, const std::vector<Eye>& views, CullTest test);
+// Statistics for one (cone, test) over the given views from prepared bounds. `progress` hears of
+// every 16th view and may cancel there (OperationCancelled).
+TestStatistics measureCulling(const CullingInput& input, const std::vector<Eye>& views, CullTest test,
+                              const ProgressCallback& progress = {});
 
 // Fills the clusters' cullFraction / oracleFraction and their triangle-weighted means from a cull
 // map of the same bounds (computeCullMap, CullMap.h): kept apart from measureCulling, which the

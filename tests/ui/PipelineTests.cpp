@@ -67,7 +67,7 @@ private slots:
         settings.tests = {CullTest::Aabb};
         const PreparedMesh prepared = loadMesh(datasetPath("icosphere.off").toStdString(), false);
         const ClusterSet clusters = buildClusters(prepared, settings);
-        const std::vector<ViewStatistics> rows = measureOrbit(prepared, clusters, settings);
+        const std::vector<ViewStatistics> rows = measureOrbit(prepared, clusters, settings).views;
         const RunStatistics run = statisticsInProcess(datasetPath("icosphere.off"), settings);
         const std::vector<ViewStatistics>& expected = run.results.front().views;
         QCOMPARE(rows.size(), expected.size());
