@@ -135,7 +135,6 @@ void ClusterScene::setEye(const Eye& eye, const glm::dvec3& lookAt) {
 
 bool ClusterScene::hasEye() const { return impl_->eye.hasEye(); }
 const Eye& ClusterScene::eye() const { return impl_->eye.eye(); }
-glm::dvec3 ClusterScene::eyeLookAt() const { return impl_->eye.lookAt(); }
 
 void ClusterScene::setHighlightedCluster(int cluster) {
     impl_->highlight.setCluster(cluster);

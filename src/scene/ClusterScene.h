@@ -84,7 +84,6 @@ public:
     void setEye(const Eye& eye, const glm::dvec3& lookAt);
     bool hasEye() const;
     const Eye& eye() const;  // Eye{} before setEye
-    glm::dvec3 eyeLookAt() const;
 
     // -1 = none. Outlines the cluster's faces and draws its cone, box and sphere opaque.
     // Throws std::out_of_range for an id outside [-1, K).

@@ -26,7 +26,6 @@ public:
     void setEye(const Eye& eye, const glm::dvec3& lookAt);
     bool hasEye() const { return hasEye_; }
     const Eye& eye() const { return eye_; }  // Eye{} before setEye
-    const glm::dvec3& lookAt() const { return lookAt_; }
 
     // Perspective eyes from the position towards lookAt, orthographic eyes with a parallel projection
     // along the direction; near and far planes and the view angle fitted to the mesh bounds.
