@@ -13,7 +13,7 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 
-#include "scene/ClusterScene.h"
+#include "scene/SceneTypes.h"
 
 namespace conescope {
 

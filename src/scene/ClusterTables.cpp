@@ -1,0 +1,81 @@
+#include "scene/ClusterTables.h"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+#include <vtkLookupTable.h>
+
+#include "core/Culling.h"
+
+namespace conescope {
+
+namespace {
+
+// A table of `count` colours for integer values 0 .. count-1: the range is widened by half a step on
+// each side so value v falls in the middle of entry v.
+vtkSmartPointer<vtkLookupTable> indexedTable(size_t count) {
+    auto table = vtkSmartPointer<vtkLookupTable>::New();
+    table->SetNumberOfTableValues(vtkIdType(std::max<size_t>(count, 1)));
+    table->SetTableRange(-0.5, double(std::max<size_t>(count, 1)) - 0.5);
+    return table;
+}
+
+void setEntry(vtkLookupTable* table, size_t index, const Rgb& colour, double alpha = 1.0) {
+    table->SetTableValue(vtkIdType(index), colour[0], colour[1], colour[2], alpha);
+}
+
+}  // namespace
+
+ClusterTables::ClusterTables(const std::vector<Rgb>& clusterColours)
+    : palette(indexedTable(clusterColours.size())), decision(indexedTable(clusterColours.size())),
+      visible(indexedTable(clusterColours.size())), facing(indexedTable(4)), colours_(clusterColours) {
+    for (size_t c = 0; c < colours_.size(); ++c) setEntry(palette, c, colours_[c]);
+    fill(nullptr, nullptr);
+    setEntry(facing, size_t(Facing::Front), SceneColours::front);
+    setEntry(facing, size_t(Facing::Back), SceneColours::back);
+    setEntry(facing, size_t(Facing::Degenerate), SceneColours::degenerate);
+    setEntry(facing, 3, SceneColours::unclassified);
+}
+
+void ClusterTables::setDecisions(const std::vector<uint8_t>& culled, const std::vector<uint8_t>& allBackFacing) {
+    const size_t clusterCount = colours_.size();
+    if (culled.size() != clusterCount || allBackFacing.size() != clusterCount)
+        throw std::invalid_argument("setClusterDecisions: expected " + std::to_string(clusterCount) +
+                                    " values per array, got " + std::to_string(culled.size()) + " and " +
+                                    std::to_string(allBackFacing.size()));
+    fill(&culled, &allBackFacing);
+    hasDecisions_ = true;
+}
+
+void ClusterTables::clearDecisions() {
+    fill(nullptr, nullptr);
+    hasDecisions_ = false;
+}
+
+vtkLookupTable* ClusterTables::forGlyphs(FaceColoring coloring) const {
+    return coloring == FaceColoring::CullDecision ? decision : palette;
+}
+
+// Without decisions (nullptr) every cluster is undecided and keeps its palette colour in the eye view.
+void ClusterTables::fill(const std::vector<uint8_t>* culled, const std::vector<uint8_t>* allBackFacing) {
+    counts_ = {};
+    for (size_t c = 0; c < colours_.size(); ++c) {
+        if (!culled) {
+            setEntry(decision, c, SceneColours::undecided);
+            setEntry(visible, c, colours_[c]);
+            continue;
+        }
+        const bool isCulled = (*culled)[c] != 0, back = (*allBackFacing)[c] != 0;
+        const Rgb& colour = isCulled ? (back ? SceneColours::culled : SceneColours::wronglyCulled)
+                                     : (back ? SceneColours::missedCull : SceneColours::drawn);
+        (isCulled ? (back ? counts_.culled : counts_.wronglyCulled) : (back ? counts_.missed : counts_.drawn))++;
+        setEntry(decision, c, colour);
+        // Alpha 0 removes the cluster from the eye's view (discarded in the fragment shader).
+        setEntry(visible, c, colours_[c], isCulled ? 0.0 : 1.0);
+    }
+    decision->Modified();
+    visible->Modified();
+}
+
+}  // namespace conescope

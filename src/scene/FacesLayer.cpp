@@ -1,0 +1,65 @@
+#include "scene/FacesLayer.h"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+#include <vtkActor.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+#include <vtkUnsignedCharArray.h>
+
+namespace conescope {
+
+FacesLayer::FacesLayer(const SceneData& data)
+    : SceneLayer(data), mapper_(cellArrayMapper(data.meshData, clusterIdArrayName, data.tables.palette)),
+      actor_(actorFor(mapper_)) {
+    actor_->GetProperty()->SetInterpolationToFlat();
+}
+
+void FacesLayer::recolour(FaceColoring coloring) {
+    if (coloring == FaceColoring::FaceFacing) {
+        mapper_->SelectColorArray(facingArrayName);
+        mapper_->SetLookupTable(data_.tables.facing);
+    } else {
+        mapper_->SelectColorArray(clusterIdArrayName);
+        mapper_->SetLookupTable(data_.tables.forGlyphs(coloring));
+    }
+}
+
+void FacesLayer::addLegendEntries(FaceColoring coloring, std::vector<LegendEntry>& entries) const {
+    if (coloring == FaceColoring::Cluster) {
+        entries.push_back({"clusters" + countLabel(data_.palette.size()), clusterLegendColours()});
+    } else if (coloring == FaceColoring::CullDecision) {
+        const DecisionCounts& counts = data_.tables.decisionCounts();
+        if (!data_.tables.hasDecisions()) {
+            entries.push_back({"no cull decision yet", {SceneColours::undecided}});
+        } else {
+            entries.push_back({"culled" + countLabel(counts.culled), {SceneColours::culled}});
+            entries.push_back({"missed cull: all back" + countLabel(counts.missed), {SceneColours::missedCull}});
+            entries.push_back({"drawn: front faces" + countLabel(counts.drawn), {SceneColours::drawn}});
+            if (counts.wronglyCulled)
+                entries.push_back({"culled with front faces" + countLabel(counts.wronglyCulled), {SceneColours::wronglyCulled}});
+        }
+    } else {
+        if (!hasFacing_) entries.push_back({"faces not classified yet", {SceneColours::unclassified}});
+        entries.push_back({"front-facing face", {SceneColours::front}});
+        entries.push_back({"back-facing face", {SceneColours::back}});
+        entries.push_back({"degenerate face", {SceneColours::degenerate}});
+    }
+}
+
+void FacesLayer::setFaceFacing(const std::vector<Facing>& facing) {
+    const size_t faceCount = data_.clusterOfFace.size();
+    if (facing.size() != faceCount)
+        throw std::invalid_argument("setFaceFacing: expected " + std::to_string(faceCount) + " faces, got " +
+                                    std::to_string(facing.size()));
+    static_assert(sizeof(Facing) == 1, "Facing is stored as one byte per face");
+    std::copy(reinterpret_cast<const uint8_t*>(facing.data()), reinterpret_cast<const uint8_t*>(facing.data()) + facing.size(),
+              data_.facing->GetPointer(0));
+    data_.facing->Modified();
+    hasFacing_ = true;
+}
+
+}  // namespace conescope

@@ -1,0 +1,101 @@
+#include "scene/SceneLayer.h"
+
+#include <algorithm>
+
+#include <vtkActor.h>
+#include <vtkCellData.h>
+#include <vtkIntArray.h>
+#include <vtkLookupTable.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+
+namespace conescope {
+
+int SceneLayer::clusterOfCell(vtkActor* actor, vtkIdType cellId) const { return clusterIdOfCell(actor, cellId); }
+
+void SceneLayer::setVisible(bool visible) {
+    visible_ = visible;
+    applyVisibility();
+}
+
+bool SceneLayer::owns(vtkActor* actor) const {
+    const std::vector<vtkActor*> ours = actors();
+    return std::find(ours.begin(), ours.end(), actor) != ours.end();
+}
+
+void SceneLayer::applyVisibility() {
+    for (vtkActor* actor : actors()) actor->SetVisibility(visible_ && hasContent());
+}
+
+int clusterIdOfCell(vtkActor* actor, vtkIdType cellId) {
+    if (!actor || cellId < 0 || !actor->GetMapper()) return -1;
+    auto* data = vtkPolyData::SafeDownCast(actor->GetMapper()->GetInputAsDataSet());
+    if (!data || cellId >= data->GetNumberOfCells()) return -1;
+    if (auto* ids = vtkIntArray::SafeDownCast(data->GetCellData()->GetArray(clusterIdArrayName))) return ids->GetValue(cellId);
+    // Glyphs made by vtkGlyph3D carry the id on their points.
+    if (auto* ids = vtkIntArray::SafeDownCast(data->GetPointData()->GetArray(clusterIdArrayName))) {
+        vtkIdType pointCount = 0;
+        const vtkIdType* pointIds = nullptr;
+        data->GetCellPoints(cellId, pointCount, pointIds);
+        if (pointCount > 0) return ids->GetValue(pointIds[0]);
+    }
+    return -1;
+}
+
+vtkSmartPointer<vtkPolyDataMapper> cellArrayMapper(vtkPolyData* input, const char* arrayName, vtkLookupTable* table) {
+    auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+    mapper->SetInputData(input);
+    mapper->ScalarVisibilityOn();
+    mapper->SetScalarModeToUseCellFieldData();
+    mapper->SelectColorArray(arrayName);
+    mapper->SetColorModeToMapScalars();
+    mapper->InterpolateScalarsBeforeMappingOff();
+    mapper->SetLookupTable(table);
+    mapper->UseLookupTableScalarRangeOn();
+    return mapper;
+}
+
+vtkSmartPointer<vtkPolyDataMapper> plainMapper(vtkPolyData* input) {
+    auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+    mapper->SetInputData(input);
+    mapper->ScalarVisibilityOff();
+    return mapper;
+}
+
+vtkSmartPointer<vtkActor> actorFor(vtkMapper* mapper) {
+    auto actor = vtkSmartPointer<vtkActor>::New();
+    actor->SetMapper(mapper);
+    return actor;
+}
+
+vtkSmartPointer<vtkActor> lineActor(vtkMapper* mapper, double width) {
+    auto actor = actorFor(mapper);
+    actor->GetProperty()->SetLineWidth(float(width));
+    actor->GetProperty()->LightingOff();
+    return actor;
+}
+
+void setColour(vtkActor* actor, const Rgb& colour) { actor->GetProperty()->SetColor(colour[0], colour[1], colour[2]); }
+
+vtkSmartPointer<vtkPolyData> emptyPolyData() {
+    auto polyData = vtkSmartPointer<vtkPolyData>::New();
+    polyData->SetPoints(vtkSmartPointer<vtkPoints>::New());
+    return polyData;
+}
+
+void setInput(vtkActor* actor, vtkPolyData* data) { vtkMapper::SafeDownCast(actor->GetMapper())->SetInputDataObject(data); }
+
+std::string countLabel(size_t n) { return " (" + std::to_string(n) + ")"; }
+
+std::vector<Rgb> clusterLegendColours() { return std::vector<Rgb>(baseHues().begin(), baseHues().begin() + 4); }
+
+// Glyphs take the faces' cluster colours, or the decision colours in decision mode.
+std::vector<Rgb> glyphLegendColours(FaceColoring coloring) {
+    if (coloring == FaceColoring::CullDecision) return {SceneColours::culled, SceneColours::missedCull, SceneColours::drawn};
+    return clusterLegendColours();
+}
+
+}  // namespace conescope

@@ -1,0 +1,81 @@
+// One visual layer of a ClusterScene, in the manner of polyscope's quantities: it owns its actors,
+// builds them from the scene's shared data, shows and hides them, recolours them, says what its colours
+// mean in the legend and maps a picked cell of its actors back to a cluster. Also the small VTK pieces
+// every layer builds its actors from.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <vtkSmartPointer.h>
+#include <vtkType.h>
+
+#include "scene/SceneData.h"
+#include "scene/SceneTypes.h"
+
+class vtkActor;
+class vtkLookupTable;
+class vtkMapper;
+class vtkPolyData;
+class vtkPolyDataMapper;
+
+namespace conescope {
+
+// One line of the legend: a label and its colours (more than one: "a colour per cluster").
+struct LegendEntry {
+    std::string label;
+    std::vector<Rgb> colours;
+};
+
+class SceneLayer {
+public:
+    explicit SceneLayer(const SceneData& data) : data_(data) {}
+    virtual ~SceneLayer() = default;
+
+    // The layer's actors in drawing order; the first is the layer's main actor (ClusterScene::actor).
+    virtual std::vector<vtkActor*> actors() const = 0;
+    // Whether there is anything to draw yet (an eye, a picked cluster); the actors show only then.
+    virtual bool hasContent() const { return true; }
+    // Follows the face colouring; most layers keep their colours.
+    virtual void recolour(FaceColoring) {}
+    // Appends what the layer's colours mean; asked only while the layer is visible and has content.
+    virtual void addLegendEntries(FaceColoring coloring, std::vector<LegendEntry>& entries) const = 0;
+    // The cluster of cell cellId of one of this layer's actors, -1 if the id is out of range.
+    virtual int clusterOfCell(vtkActor* actor, vtkIdType cellId) const;
+
+    void setVisible(bool visible);
+    bool visible() const { return visible_; }
+    bool owns(vtkActor* actor) const;
+
+protected:
+    // Shows every actor while the layer is visible and has content; call after the content changes.
+    void applyVisibility();
+
+    const SceneData& data_;
+
+private:
+    bool visible_ = false;
+};
+
+// The cluster_id of a cell of the actor's input: the cell array, or for glyphs made by vtkGlyph3D the
+// point array at the cell's first point; -1 if there is none or cellId is out of range.
+int clusterIdOfCell(vtkActor* actor, vtkIdType cellId);
+
+// A mapper that colours cells through `table` by an int cell array, without touching the array.
+vtkSmartPointer<vtkPolyDataMapper> cellArrayMapper(vtkPolyData* input, const char* arrayName, vtkLookupTable* table);
+vtkSmartPointer<vtkPolyDataMapper> plainMapper(vtkPolyData* input);
+vtkSmartPointer<vtkActor> actorFor(vtkMapper* mapper);
+// Unlit lines of the given width.
+vtkSmartPointer<vtkActor> lineActor(vtkMapper* mapper, double width);
+void setColour(vtkActor* actor, const Rgb& colour);
+vtkSmartPointer<vtkPolyData> emptyPolyData();
+// Replaces the input of the actor's mapper (the eye marker, the picked cluster's geometry).
+void setInput(vtkActor* actor, vtkPolyData* data);
+
+// " (n)": the count after a legend label.
+std::string countLabel(size_t n);
+// The legend's colours for "a colour per cluster", and for the glyphs in the given face colouring.
+std::vector<Rgb> clusterLegendColours();
+std::vector<Rgb> glyphLegendColours(FaceColoring coloring);
+
+}  // namespace conescope

@@ -1,0 +1,67 @@
+// The names and colours every part of the scene shares: the layers, the face colourings, the fixed
+// legend colours and the names of the per-cell arrays.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "scene/ClusterPalette.h"
+
+namespace conescope {
+
+// Name of the per-face cluster index on the mesh polydata and of the per-cell cluster index on every
+// per-cluster glyph polydata (cones, boxes, spheres).
+inline const char* const clusterIdArrayName = "cluster_id";
+// Per-face Facing value (0 front, 1 back, 2 degenerate, 3 not classified yet), written by setFaceFacing.
+inline const char* const facingArrayName = "facing";
+
+// Switchable parts of the scene. Default visibility: Faces, Borders, Cones, Eye, Highlight, Legend on;
+// Normals, Boxes, Spheres off.
+enum class Layer {
+    Faces,      // the mesh, coloured as FaceColoring says
+    Borders,    // edges between faces of different clusters, and open edges (one line polydata)
+    Cones,      // one translucent cone per cullable cluster: apex at the sphere centre, opening along the
+                // axis with exactly the cone's half-angle, slant length = sphere radius
+    Normals,    // face normals as arrows at face centroids, 0.6 x the mean edge length (a regular subset
+                // on large meshes); the arrows are only built once the layer is shown
+    Boxes,      // cluster AABBs as wire boxes, 12 lines per cluster
+    Spheres,    // bounding spheres as three orthogonal circles per cluster
+    Eye,        // the cull eye marker (after setEye)
+    Highlight,  // the picked cluster (after setHighlightedCluster): outline, opaque cone, box and sphere,
+                // shown whatever the Cones / Boxes / Spheres layers say
+    Legend,     // what the colours mean, for the visible layers
+};
+const std::vector<Layer>& allLayers();
+std::string toString(Layer);  // "faces", "borders", "cones", "normals", "boxes", "spheres", "eye", ...
+
+// How the faces (and the per-cluster glyphs) are coloured.
+enum class FaceColoring {
+    Cluster,       // the cluster palette: neighbouring clusters differ
+    CullDecision,  // per cluster: culled / missed cull / drawn (setClusterDecisions)
+    FaceFacing,    // per face, from the oracle: front / back / degenerate (setFaceFacing); glyphs keep the palette
+};
+std::string toString(FaceColoring);
+
+// The colours the legend lists, fixed so screenshots of different runs compare.
+struct SceneColours {
+    static constexpr Rgb culled{0.30, 0.30, 0.32};         // cluster culled by the test
+    static constexpr Rgb missedCull{1.00, 0.55, 0.05};     // drawn although every face is back-facing
+    static constexpr Rgb drawn{0.25, 0.50, 0.95};          // drawn, has a front-facing face
+    static constexpr Rgb wronglyCulled{0.95, 0.05, 0.05};  // culled although a face is front-facing (a bug)
+    static constexpr Rgb undecided{0.80, 0.80, 0.80};      // no decision set yet
+    static constexpr Rgb front{0.35, 0.65, 1.00};
+    static constexpr Rgb back{0.55, 0.15, 0.15};
+    static constexpr Rgb degenerate{1.00, 0.85, 0.10};
+    static constexpr Rgb unclassified{0.80, 0.80, 0.80};
+    static constexpr Rgb border{0.08, 0.08, 0.08};
+    static constexpr Rgb normals{0.10, 0.75, 0.30};
+    static constexpr Rgb eye{0.95, 0.10, 0.85};
+    static constexpr Rgb highlight{1.00, 0.95, 0.15};
+};
+// Opacity of the cone glyphs (the highlighted cluster's cone is opaque).
+constexpr double coneOpacity = 0.35;
+// The normals layer draws at most this many arrows: every k-th face on larger meshes.
+constexpr size_t maxNormalArrows = 100000;
+
+}  // namespace conescope
