@@ -5,7 +5,7 @@ set -euo pipefail
 packages=(
   cmake g++ make pkg-config
   libvtk9-dev libvtk9-qt-dev qtbase5-dev libglm-dev libmeshoptimizer-dev
-  libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev nlohmann-json3-dev
+  libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev nlohmann-json3-dev libexpat1-dev
   xvfb xauth clang libclang-rt-14-dev
   time python3
 )
