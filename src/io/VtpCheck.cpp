@@ -54,11 +54,9 @@ struct VtpFile {
     throw MeshReadError(file.path + ":" + std::to_string(element.line) + ": " + what);
 }
 
-bool isXmlSpace(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; }
-
 std::string_view trimmed(std::string_view text) {
-    while (!text.empty() && isXmlSpace(text.front())) text.remove_prefix(1);
-    while (!text.empty() && isXmlSpace(text.back())) text.remove_suffix(1);
+    while (!text.empty() && isVtkSpace(text.front())) text.remove_prefix(1);
+    while (!text.empty() && isVtkSpace(text.back())) text.remove_suffix(1);
     return text;
 }
 
@@ -250,6 +248,16 @@ void checkOffsetsEndAtConnectivity(const VtpFile& file, const CellSection& cells
              " values (forged offset, or a cell count that does not fit the offsets)");
 }
 
+// The section an array stands in and that section's piece, as VTK looks them up: each the parent
+// of the one before. `pieceIndex` numbers the pieces met so far.
+ArrayPlace arrayPlace(const VtpFile& file, const VtpElement& array, const std::vector<size_t>& pieceIndex) {
+    const VtpElement* section = parentOf(file, array);
+    if (!section || !isSection(section->name)) return {};
+    const VtpElement* piece = parentOf(file, *section);
+    if (!piece || piece->name != "Piece") return ArrayPlace{section, nullptr, 0};
+    return ArrayPlace{section, piece, pieceIndex[section->parent]};
+}
+
 // Walks the elements in document order: each piece's counts, each array's attributes and the
 // values it holds against the counts of its piece, and each cell section's last offset against
 // its connectivity once the walk has left the section.
@@ -276,13 +284,7 @@ void checkPiecesAndArrays(const VtpFile& file) {
             cells->cells = count(file, *parent, "NumberOf" + element.name);
         } else if (element.name == "DataArray") {
             checkArrayAttributes(file, element);
-            ArrayPlace place;
-            if (parent && isSection(parent->name)) {
-                const VtpElement* piece = parentOf(file, *parent);
-                bool inPiece = piece && piece->name == "Piece";
-                place = ArrayPlace{parent, inPiece ? piece : nullptr, inPiece ? pieceIndex[parent->parent] : 0};
-            }
-            checkArrayValues(file, element, place, cells && cells->place.section == parent ? &*cells : nullptr);
+            checkArrayValues(file, element, arrayPlace(file, element, pieceIndex), cells && cells->place.section == parent ? &*cells : nullptr);
         }
     }
     finishCells();

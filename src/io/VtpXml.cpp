@@ -15,9 +15,6 @@ namespace {
 
 constexpr std::string_view appendedDataPattern = "<AppendedData";
 
-// What vtkXMLParser::IsSpace accepts (isspace in the C locale).
-bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\v' || c == '\f'; }
-
 size_t lineAt(std::string_view bytes, size_t position) {
     return 1 + static_cast<size_t>(std::count(bytes.begin(), bytes.begin() + std::min(position, bytes.size()), '\n'));
 }
@@ -202,6 +199,8 @@ VtpXml readVtpXml(const std::string& path, std::string_view bytes) {
     return std::move(walk.xml);
 }
 
+bool isVtkSpace(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\v' || c == '\f'; }
+
 std::string_view textVtkReadsAfterTag(std::string_view bytes, const VtpElement& element) {
     std::string_view after = bytes.substr(element.tagEnd);
     return after.substr(0, after.find_first_of("<&"));
@@ -214,7 +213,7 @@ std::string_view contentBytes(std::string_view bytes, const VtpElement& element)
 
 std::optional<std::string_view> appendedDataBytes(std::string_view bytes, const VtpElement& appendedData) {
     size_t marker = appendedData.tagEnd;
-    while (marker < bytes.size() && isSpace(bytes[marker])) ++marker;
+    while (marker < bytes.size() && isVtkSpace(bytes[marker])) ++marker;
     if (marker >= bytes.size() || bytes[marker] != '_') return std::nullopt;  // VTK would read from here with a warning
     size_t begin = marker + 1;
     size_t endTag = bytes.rfind("</AppendedData>");

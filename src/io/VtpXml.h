@@ -42,6 +42,9 @@ struct VtpXml {
 // not a child of the root.
 VtpXml readVtpXml(const std::string& path, std::string_view bytes);
 
+// What vtkXMLParser::IsSpace accepts (isspace in the C locale): the blanks VTK skips before data.
+bool isVtkSpace(char c);
+
 // The bytes VTK reads as an inline array's data: from the end of its start tag up to the first '<'
 // or '&' (no data in any encoding holds either). For a self-closed tag that is the text after it.
 std::string_view textVtkReadsAfterTag(std::string_view bytes, const VtpElement& element);

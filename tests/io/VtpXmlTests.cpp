@@ -51,6 +51,15 @@ TEST(VtpXml, CommentsInstructionsAndCdataBetweenElementsAreSkipped) {
     expectCube(scratch.writeFile("instruction.vtp", cubeVtpWith("<PolyData>", "<PolyData><?note a > b?>")));
 }
 
+// Only a real <PointData> element spares the piece the one prepareVtpForVtk adds: the tag in this
+// CDATA section counted for the hand-written scanner, and VTK crashed on the bad cell value.
+TEST(VtpXml, PointDataInCdataDoesNotCount) {
+    ScratchDirectory scratch;
+    std::string text = cubeVtpWith("<CellData>", "<![CDATA[ > <PointData> ]]><CellData>");
+    EXPECT_READ_ERROR(scratch.writeFile("cdata.vtp", edited(text, ">0 0 1 1 2 2<", ">0 0 x 1 2 2<")),
+                      "Cannot read cell data array \"cluster_id\"");
+}
+
 TEST(VtpXml, AttributesInSingleQuotesOrWithSpacesAroundTheEqualsSign) {
     ScratchDirectory scratch;
     std::string singleQuoted = cubeVtp();
