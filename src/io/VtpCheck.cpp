@@ -145,10 +145,21 @@ std::string_view inlineText(const VtpFile& file, const VtpElement& array, const 
     return trimmed(vtkReads);
 }
 
+// VTK reads every array with an offset attribute from the appended data, whatever its format says
+// (a damaged format="appended" made it read ASCII-checked data as compressed blocks, and divide by
+// a block size of 0); a file saying otherwise is refused.
+void requireAppendedFormatWithOffset(const VtpFile& file, const VtpElement& array, const std::string& label) {
+    std::optional<std::string_view> format = array.attribute("format");
+    if (!array.attribute("offset") || format == std::optional<std::string_view>("appended")) return;
+    fail(file, array, label + " has an offset attribute but format " + (format ? quotedForMessage(std::string(*format)) : "(none)") +
+                          ": VTK reads an array with an offset from the appended data, so its format must be 'appended'");
+}
+
 // The values an array holds in its encoding. VTK sizes a connectivity array before it reads it
 // in any format, so an array it cannot read is refused here rather than passed on.
 StoredValues storedValues(const VtpFile& file, const VtpElement& array, const std::string& label, std::string_view type,
                           std::optional<uint64_t> wanted) {
+    requireAppendedFormatWithOffset(file, array, label);
     std::string_view format = array.attribute("format").value_or("ascii");
     std::string where = file.path + ":" + std::to_string(array.line) + ": " + label;
     if (format == "ascii") return asciiValues(inlineText(file, array, label), wanted);

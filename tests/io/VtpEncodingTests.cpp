@@ -212,5 +212,22 @@ TEST(VtpBinaryHeader, ForgedBlockTable) {
     }
 }
 
+// VTK reads any array with an offset attribute from the appended data, whatever its format says;
+// a damaged format (found by fuzz_mesh_readers) made it read blocks the checks never saw, and crash.
+TEST(VtpArrayFormat, OffsetWithoutAppendedFormatIsRefused) {
+    ScratchDirectory scratch;
+    for (Encoding encoding : {Encoding{"raw", Storage::AppendedRaw, true}, Encoding{"base64", Storage::AppendedBase64, false}}) {
+        std::string text = cubeVtp(encoding, Cube());
+        std::string appended = "Name=\"offsets\" format=\"appended\"";
+        ASSERT_NE(text.find(appended), std::string::npos);
+        std::string ascii = text, none = text;
+        ascii.replace(ascii.find(appended), appended.size(), "Name=\"offsets\" format=\"ascii\"");
+        none.replace(none.find(appended), appended.size(), "Name=\"offsets\" forEat=\"appended\"");
+        EXPECT_READ_ERROR(scratch.writeFile(std::string("ascii_") + encoding.name + ".vtp", ascii),
+                          ":10: DataArray 'offsets' in Polys of piece 0 has an offset attribute but format 'ascii'");
+        EXPECT_READ_ERROR(scratch.writeFile(std::string("none_") + encoding.name + ".vtp", none), "has an offset attribute but format (none)");
+    }
+}
+
 }  // namespace
 }  // namespace conescope
