@@ -337,7 +337,8 @@ void findAppendedData(VtpFile& file) {
     if (file.xml.appendedData == noElement) return;
     const VtpElement& appendedData = file.xml.elements[file.xml.appendedData];
     file.appended = appendedDataBytes(file.bytes, appendedData);
-    file.appendedBase64 = appendedData.attribute("encoding") == std::optional<std::string_view>("base64");
+    // vtkXMLDataParser switches to raw bytes for encoding="raw" only; anything else is base64.
+    file.appendedBase64 = appendedData.attribute("encoding") != std::optional<std::string_view>("raw");
 }
 
 }  // namespace
