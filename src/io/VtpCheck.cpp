@@ -17,7 +17,9 @@
 //  - a cell section's last offset, which VTK sizes the connectivity by, against the values the
 //    connectivity array holds;
 //  - inline data that is not plain text: VTK reads it from the file's bytes, not through the XML,
-//    so a comment, CDATA section or reference in it would be read as data or end it early.
+//    so a comment, CDATA section or reference in it would be read as data or end it early;
+//  - arrays read another way than they say: VTK reads any array with an offset attribute from the
+//    appended data, and appended data as base64 unless encoding="raw".
 #include "io/HeaderChecks.h"
 
 #include <cstdint>
