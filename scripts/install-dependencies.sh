@@ -5,7 +5,7 @@ set -euo pipefail
 packages=(
   cmake g++ make pkg-config
   libvtk9-dev libvtk9-qt-dev qtbase5-dev libglm-dev libmeshoptimizer-dev
-  libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev nlohmann-json3-dev
+  libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev nlohmann-json3-dev libexpat1-dev
   # assimp decodes glTF for the reader (src/io) and counts triangles independently in the tests;
   # assimp-testmodels are files nobody here wrote (tests/io/AssimpModelsTests.cpp).
   libassimp-dev assimp-testmodels

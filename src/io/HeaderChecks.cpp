@@ -1,5 +1,5 @@
 // checkStlFile; the other checks declared in HeaderChecks.h live in LegacyVtkCheck.cpp and
-// VtpCheck.cpp.
+// VtpCheck.cpp (with VtpXml.cpp and VtpEncoding.cpp).
 #include "io/HeaderChecks.h"
 
 #include <cctype>

@@ -26,13 +26,17 @@ void checkStlFile(const std::string& path);
 // allocating from counts. Throws MeshReadError.
 void checkLegacyVtkFile(const std::string& path);
 
-// .vtp: checks the XML header (known array types, sane component counts, piece counts that fit
-// the file) and every array in every encoding (ASCII, inline base64, raw or base64 appended,
-// compressed or not): no more values than the piece counts give (for binary arrays, exactly as
-// many), binary headers and block tables that fit the data in the file, and each cell section's
-// last offset equal to the length of its connectivity. Returns the file's text with an empty
-// <PointData/> added to pieces lacking one, which keeps vtkXMLPolyDataReader from crashing on a
-// bad cell-data array. Throws MeshReadError.
+// .vtp: reads the XML with expat (up to <AppendedData>, whose data may be raw binary, as VTK
+// does) and checks it: well-formed, read by VTK as the XML says (array data are plain text; no '>'
+// in a DataArray's attribute values; no stray "<AppendedData"; not UTF-16), known array types,
+// sane component counts, piece counts that fit the file; then every array in every encoding
+// (ASCII, inline base64, raw or base64 appended, compressed or not, told apart as VTK does; an
+// offset attribute only with format="appended"): no more values than the piece counts give (for
+// binary arrays, exactly as many), binary headers and block tables that fit the data in the file,
+// and each cell section's last offset equal to the length of its connectivity.
+// Returns the file's text with an empty <PointData/> added to pieces lacking one, which keeps
+// vtkXMLPolyDataReader from crashing on a bad cell-data array. Throws MeshReadError
+// ("path:line: what").
 std::string prepareVtpForVtk(const std::string& path);
 
 }  // namespace conescope

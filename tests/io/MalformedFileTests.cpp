@@ -770,10 +770,13 @@ TEST(VtkMessages, NothingIsPrintedToStderr) {
     EXPECT_EQ(printed, "");
 }
 
+// A cell value VTK cannot parse passes the checks before VTK (a cut-off file no longer does: its
+// XML is refused first, tests/io/VtpXmlTests.cpp), so the reason comes from vtkXMLPolyDataReader.
 TEST(VtkMessages, VtkReasonIsInTheException) {
     ScratchDirectory scratch;
     std::string text = fileBytes(formatSamplesDir() / "cube.vtp");
-    std::string path = scratch.writeFile("half.vtp", text.substr(0, text.size() / 2));
+    replaceFirst(text, ">0 0 1 1 2 2<", ">0 0 x 1 2 2<");
+    std::string path = scratch.writeFile("value.vtp", text);
     std::string message = testing::readErrorMessage(path);
     EXPECT_NE(message.find("vtkXML"), std::string::npos) << message;
     EXPECT_EQ(message.find("0x"), std::string::npos) << "object pointers should be stripped: " << message;

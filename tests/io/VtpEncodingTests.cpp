@@ -212,5 +212,38 @@ TEST(VtpBinaryHeader, ForgedBlockTable) {
     }
 }
 
+// vtkXMLDataParser reads appended data as base64 unless encoding="raw", with no encoding too: the
+// check read such data as raw bytes, refusing a good file and checking other sizes than VTK reads.
+TEST(VtpArrayFormat, AppendedDataWithoutEncodingIsBase64) {
+    ScratchDirectory scratch;
+    std::string text = cubeVtp({"base64", Storage::AppendedBase64, false}, Cube());
+    std::string encoding = "<AppendedData encoding=\"base64\">";
+    ASSERT_NE(text.find(encoding), std::string::npos);
+    text.replace(text.find(encoding), encoding.size(), "<AppendedData>");
+    EXPECT_EQ(readMesh(scratch.writeFile("good.vtp", text)).faceCount(), 6u);
+    Cube forged;
+    forged.offsetsByteCount = 4294967295u;
+    text = cubeVtp({"base64", Storage::AppendedBase64, false}, forged);
+    text.replace(text.find(encoding), encoding.size(), "<AppendedData>");
+    EXPECT_READ_ERROR(scratch.writeFile("forged.vtp", text), "appended data is corrupt: byte count 4294967295 runs past the end of the data");
+}
+
+// VTK reads any array with an offset attribute from the appended data, whatever its format says;
+// a damaged format (found by fuzz_mesh_readers) made it read blocks the checks never saw, and crash.
+TEST(VtpArrayFormat, OffsetWithoutAppendedFormatIsRefused) {
+    ScratchDirectory scratch;
+    for (Encoding encoding : {Encoding{"raw", Storage::AppendedRaw, true}, Encoding{"base64", Storage::AppendedBase64, false}}) {
+        std::string text = cubeVtp(encoding, Cube());
+        std::string appended = "Name=\"offsets\" format=\"appended\"";
+        ASSERT_NE(text.find(appended), std::string::npos);
+        std::string ascii = text, none = text;
+        ascii.replace(ascii.find(appended), appended.size(), "Name=\"offsets\" format=\"ascii\"");
+        none.replace(none.find(appended), appended.size(), "Name=\"offsets\" forEat=\"appended\"");
+        EXPECT_READ_ERROR(scratch.writeFile(std::string("ascii_") + encoding.name + ".vtp", ascii),
+                          ":10: DataArray 'offsets' in Polys of piece 0 has an offset attribute but format 'ascii'");
+        EXPECT_READ_ERROR(scratch.writeFile(std::string("none_") + encoding.name + ".vtp", none), "has an offset attribute but format (none)");
+    }
+}
+
 }  // namespace
 }  // namespace conescope
