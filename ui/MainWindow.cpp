@@ -19,6 +19,7 @@
 #include "EyeView.h"
 #include "ObserverView.h"
 #include "PickedClusterView.h"
+#include "WorstClustersView.h"
 #include "PlotsView.h"
 #include "SettingsPanel.h"
 #include "StatisticsPanel.h"
@@ -83,6 +84,10 @@ void MainWindow::createDocks() {
     eyeView_ = new EyeView(this);
     eyeViewDock_ = dock(tr("Eye view (culled clusters removed)"), "eyeViewDock", eyeView_, Qt::BottomDockWidgetArea);
     splitDockWidget(plotsDock_, eyeViewDock_, Qt::Horizontal);
+    worstClusters_ = new WorstClustersView(this);
+    // Behind the plots: the table of what each cluster costs over the orbit.
+    tabifyDockWidget(plotsDock_, dock(tr("Worst clusters"), "worstClustersDock", worstClusters_, Qt::BottomDockWidgetArea));
+    plotsDock_->raise();
     connect(eyeViewDock_, &QDockWidget::visibilityChanged, this, [this](bool visible) {
         if (visible) eyeView_->render();
     });
@@ -117,6 +122,7 @@ void MainWindow::connectControls() {
     connect(eyePanel_, &EyePanel::followToggled, this, &MainWindow::setFollowing);
     connect(eyePanel_, &EyePanel::animateToggled, this, &MainWindow::setAnimating);
     connect(view_, &ObserverView::clicked, this, &MainWindow::pickDisplay);
+    connect(worstClusters_, &WorstClustersView::clusterChosen, this, &MainWindow::chooseCluster);
     connect(view_, &ObserverView::cameraMoved, &session_, &Session::followCamera);
     connect(view_, &ObserverView::eyeHandleMoved, &session_, &Session::moveEyeSoon);
 }
@@ -153,6 +159,7 @@ void MainWindow::showEyeMeasurement() {
 
 void MainWindow::showOrbit() {
     plots_->showOrbit(session_.orbitRows(), session_.orbitStep());
+    worstClusters_->showOrbit(session_.orbitStatistics());
     statusLine_->showSummary(session_);
 }
 
@@ -216,6 +223,16 @@ void MainWindow::pickCluster(int cluster) { session_.pickCluster(cluster); }
 QString MainWindow::clusterReportHtml() const { return clusterView_->toHtml(); }
 
 QPoint MainWindow::viewPositionOf(const glm::dvec3& world) const { return view_->viewPositionOf(world); }
+
+void MainWindow::chooseCluster(int cluster) {
+    session_.showClusterWhereItIsLost(cluster);
+    if (session_.pickedCluster() < 0) return;
+    // Seen from where its normals point (the cone's axis), the cluster shows its faces, not its back.
+    const size_t picked = size_t(session_.pickedCluster());
+    const ClusterBounds& bounds = session_.clusters()->bounds;
+    const glm::dvec3 center(bounds.boxes[picked].center());
+    view_->frameBox(bounds.boxes[picked], bounds.cones[picked].cullable ? center + bounds.cones[picked].axis : session_.eyePosition());
+}
 
 void MainWindow::resetCamera() {
     if (!session_.scene()) return;

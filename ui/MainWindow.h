@@ -26,6 +26,7 @@ class EyePanel;
 class EyeView;
 class ObserverView;
 class PickedClusterView;
+class WorstClustersView;
 class PlotsView;
 class SettingsPanel;
 class StatisticsPanel;
@@ -104,6 +105,10 @@ public:
     void setAnimating(bool animate);
     // Renders every view that is on screen.
     void render();
+    // What a row of the worst-cluster table does: picks the cluster, frames it and moves the eye to
+    // the first orbit view that loses its back faces.
+    void chooseCluster(int cluster);
+    WorstClustersView* worstClustersView() const { return worstClusters_; }
 
 signals:
     void errorShown(const QString& message);
@@ -135,6 +140,7 @@ private:
     EyeView* eyeView_ = nullptr;
     PlotsView* plots_ = nullptr;
     PickedClusterView* clusterView_ = nullptr;
+    WorstClustersView* worstClusters_ = nullptr;
     SettingsPanel* settingsPanel_ = nullptr;
     EyePanel* eyePanel_ = nullptr;
     StatisticsPanel* statisticsPanel_ = nullptr;

@@ -107,6 +107,24 @@ void ObserverView::lookAtMesh(const glm::dvec3& center, const glm::dvec3& eye) {
     renderer_->ResetCamera();
 }
 
+void ObserverView::frameBox(const Aabb& box, const glm::dvec3& from) {
+    vtkCamera* camera = renderer_->GetActiveCamera();
+    const glm::dvec3 center(box.center());
+    glm::dvec3 direction = from - center;
+    if (!(glm::length(direction) > 0.0)) direction = {0.0, 0.0, 1.0};
+    const glm::dvec3 position = center + glm::normalize(direction);
+    camera->SetFocalPoint(center.x, center.y, center.z);
+    camera->SetPosition(position.x, position.y, position.z);
+    // An up vector along the view would make the camera's frame undefined.
+    const glm::dvec3 up = std::abs(glm::normalize(direction).y) > 0.95 ? glm::dvec3(0.0, 0.0, 1.0) : glm::dvec3(0.0, 1.0, 0.0);
+    camera->SetViewUp(up.x, up.y, up.z);
+    double bounds[6] = {box.min.x, box.max.x, box.min.y, box.max.y, box.min.z, box.max.z};
+    renderer_->ResetCamera(bounds);
+    camera->Dolly(0.6);
+    renderer_->ResetCameraClippingRange();
+    render();
+}
+
 QPoint ObserverView::displayPointOf(const QPoint& viewPosition) const {
     // As QVTKInteractorAdapter converts mouse events.
     const double ratio = devicePixelRatioF();

@@ -10,6 +10,8 @@
 #include <glm/glm.hpp>
 #include <vtkSmartPointer.h>
 
+#include "core/Mesh.h"
+
 class vtkCallbackCommand;
 class vtkCellPicker;
 class vtkHandleWidget;
@@ -38,6 +40,9 @@ public:
     // Looks at the mesh centre from the side of the eye, a little turned, so the eye marker and
     // both the culled and the drawn side are in the picture.
     void lookAtMesh(const glm::dvec3& center, const glm::dvec3& eye);
+    // Looks at `box` from the side of `from`, the box in the middle with some of its surroundings:
+    // how a chosen cluster is framed.
+    void frameBox(const Aabb& box, const glm::dvec3& from);
 
     // Qt's widget coordinates (top-left origin, logical pixels) to VTK's display coordinates and back.
     QPoint displayPointOf(const QPoint& viewPosition) const;

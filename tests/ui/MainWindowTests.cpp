@@ -6,6 +6,7 @@
 #include <QAction>
 #include <QCheckBox>
 #include <QComboBox>
+#include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QFile>
 #include <QImage>
@@ -38,6 +39,7 @@
 #include "SettingsPanel.h"
 #include "StatisticsPanel.h"
 #include "UiTestSupport.h"
+#include "WorstClustersView.h"
 #include "io/MeshReader.h"
 #include "io/StatisticsIO.h"
 
@@ -303,6 +305,47 @@ private slots:
         QVERIFY(std::find_if(views.begin(), views.end(), [&](const Eye& eye) { return eye.position == stopped; }) != views.end());
         QTest::qWait(400);
         QCOMPARE(window_->eyePosition(), stopped);
+    }
+
+    void worstClustersTableRanksAndShowsWhereAClusterIsLost() {
+        QVERIFY(window_->openMeshBlocking(datasetPath("fandisk.off")));
+        window_->waitUntilIdle();
+        WorstClustersView* table = window_->worstClustersView();
+        const TestStatistics* orbit = window_->session().orbitStatistics();
+        QVERIFY(orbit);
+        QCOMPARE(size_t(table->rowCount()), window_->clusters()->partition.clusterCount);
+        // Worst test loss first, as measureOrbit counted it.
+        size_t worst = 0;
+        for (const ClusterStatistics& cluster : orbit->clusters) worst = std::max(worst, cluster.testLossTriangles);
+        QVERIFY(worst > 0);
+        QCOMPARE(orbit->clusters.at(size_t(table->clusterAt(0))).testLossTriangles, worst);
+        for (int row = 1; row < table->rowCount(); ++row)
+            QVERIFY(orbit->clusters.at(size_t(table->clusterAt(row - 1))).testLossTriangles >=
+                    orbit->clusters.at(size_t(table->clusterAt(row))).testLossTriangles);
+        // Sorting by another column re-orders by that number.
+        table->sortByColumn(8, Qt::DescendingOrder);  // radius
+        QCOMPARE(orbit->clusters.at(size_t(table->clusterAt(0))).sphereRadius,
+                 std::max_element(orbit->clusters.begin(), orbit->clusters.end(), [](const auto& a, const auto& b) {
+                     return a.sphereRadius < b.sphereRadius;
+                 })->sphereRadius);
+        table->sortByColumn(1, Qt::DescendingOrder);
+
+        // A click on the worst row picks that cluster and puts the eye where the test misses it.
+        auto* dock = qobject_cast<QDockWidget*>(table->parentWidget());
+        QVERIFY(dock);
+        dock->raise();
+        QApplication::processEvents();
+        const int cluster = table->clusterAt(0);
+        QTest::mouseClick(table->viewport(), Qt::LeftButton, {}, table->visualItemRect(table->item(0, 0)).center());
+        window_->waitUntilIdle();
+        QCOMPARE(window_->pickedCluster(), cluster);
+        QVERIFY(window_->currentStatistics());
+        const ClusterStatistics& now = window_->currentStatistics()->statistics.clusters.at(size_t(cluster));
+        QCOMPARE(now.timesMissed, size_t(1));
+        QCOMPARE(now.timesCulled, size_t(0));
+        QVERIFY(window_->session().orbitStep() >= 0);
+        QVERIFY(window_->clusterReportHtml().contains(QStringLiteral("%1").arg(cluster)));
+        saveWindowPicture(QStringLiteral("window-worst-clusters.png"));
     }
 
     void clickPicksACluster() {
