@@ -281,6 +281,8 @@ void MainWindow::lookFromHere() { session_.moveEye(view_->cameraPosition(), -1);
 
 void MainWindow::setFollowing(bool follow) {
     view_->setFollowing(follow);
+    // The eye's marker would sit on the camera: hidden while following, back as the Eye layer says.
+    session_.setLayerVisible(Layer::Eye, !follow && layerVisible(Layer::Eye));
     eyePanel_->setFollowing(follow);
     {
         const QSignalBlocker blocker(actions_->followAction());

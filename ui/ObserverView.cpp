@@ -85,7 +85,13 @@ void ObserverView::showScene(const ClusterScene* previous, const ClusterScene& c
 void ObserverView::placeEyeHandle(const glm::dvec3& position, bool show) {
     double world[3] = {position.x, position.y, position.z};
     eyeHandleRepresentation_->SetWorldPosition(world);
-    if (show) eyeHandle_->On();
+    if (show) handleShown_ = true;
+    eyeHandle_->SetEnabled(handleShown_ && !following_);
+}
+
+void ObserverView::setFollowing(bool following) {
+    following_ = following;
+    eyeHandle_->SetEnabled(handleShown_ && !following_);
 }
 
 glm::dvec3 ObserverView::cameraPosition() const {

@@ -34,7 +34,8 @@ public:
     // Puts the eye's handle at `position`; `show` also switches it on (it is off until a mesh is shown).
     void placeEyeHandle(const glm::dvec3& position, bool show = false);
     // While following, cameraMoved() reports every change of the camera.
-    void setFollowing(bool following) { following_ = following; }
+    // While the eye follows the camera the handle would sit on the camera and fill the view: hidden.
+    void setFollowing(bool following);
 
     glm::dvec3 cameraPosition() const;
     // Looks at the mesh centre from the side of the eye, a little turned, so the eye marker and
@@ -69,6 +70,7 @@ private:
     unsigned long cameraObserver_ = 0;
     int pressPosition_[2] = {0, 0};
     bool following_ = false;
+    bool handleShown_ = false;  // placeEyeHandle has shown it (a mesh is there)
     vtkSmartPointer<vtkHandleWidget> eyeHandle_;
     vtkSmartPointer<vtkPointHandleRepresentation3D> eyeHandleRepresentation_;
 };

@@ -56,9 +56,12 @@ QDoubleSpinBox* weightBox(double maximum, double step, QWidget* parent) {
     return box;
 }
 
-// Puts `value` first in `list`, keeping the other entries once.
+// `list` with its first (the displayed) entry replaced by `value`: choosing in a box must not keep
+// the previous choice as a hidden extra result. Entries given besides (the command line's
+// `--test a,b`) stay, once each.
 template <typename Enum>
 std::vector<Enum> withFirst(std::vector<Enum> list, Enum value) {
+    if (!list.empty()) list.erase(list.begin());
     list.erase(std::remove(list.begin(), list.end(), value), list.end());
     list.insert(list.begin(), value);
     return list;

@@ -70,6 +70,9 @@ void StatisticsPanel::showClusters(const PreparedMesh& prepared, const ClusterSe
 
 void StatisticsPanel::showEye(const EyeMeasurement& measurement) {
     const ViewStatistics& view = measurement.view();
+    // The test can change without new clusters: the row says what this measurement used.
+    values_["cone / test"]->setText(QStringLiteral("%1 / %2").arg(QString::fromStdString(toString(measurement.statistics.cone)),
+                                                                  QString::fromStdString(toString(measurement.statistics.test))));
     const Eye& eye = measurement.eye;
     values_["eye"]->setText(eye.orthographic
                                 ? tr("orthographic along (%1, %2, %3)")

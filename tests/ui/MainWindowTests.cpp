@@ -348,6 +348,36 @@ private slots:
         saveWindowPicture(QStringLiteral("window-worst-clusters.png"));
     }
 
+    void boxesShowAndExportOnlyWhatIsChosen() {
+        QVERIFY(window_->openMeshBlocking(datasetPath("torus.off")));
+        SettingsPanel* panel = window_->settingsPanel();
+        for (CullTest test : {CullTest::Sphere, CullTest::Aabb, CullTest::Apex}) {
+            chooseInCombo(panel->testBox(), toString(test));
+            window_->waitUntilIdle();
+            // The statistics name the test this eye was measured with, though the clusters stayed.
+            QVERIFY2(window_->statisticsPanel()->value(QStringLiteral("cone / test")).endsWith(QString::fromStdString(toString(test))),
+                     qPrintable(window_->statisticsPanel()->value(QStringLiteral("cone / test"))));
+        }
+        // Earlier choices are not kept as hidden extra results: an export has the one test shown.
+        QVERIFY(window_->settings().tests == std::vector<CullTest>{CullTest::Apex});
+        const QString path = QDir(temporary_.path()).filePath(QStringLiteral("one-test.json"));
+        QVERIFY(window_->exportStatistics(path, StatisticsFormat::Json, false));
+        QFile file(path);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        QCOMPARE(nlohmann::json::parse(file.readAll().toStdString())["results"].size(), size_t(1));
+    }
+
+    void followingHidesTheEyeMarker() {
+        QVERIFY(window_->openMeshBlocking(datasetPath("torus.off")));
+        QVERIFY(window_->layerVisible(Layer::Eye));
+        window_->setFollowing(true);
+        QVERIFY2(!window_->session().layerVisible(Layer::Eye), "the marker would sit on the camera");
+        QVERIFY(!window_->scene()->layerVisible(Layer::Eye));
+        window_->setFollowing(false);
+        QVERIFY(window_->session().layerVisible(Layer::Eye));
+        QVERIFY(window_->scene()->layerVisible(Layer::Eye));
+    }
+
     void clickPicksACluster() {
         QVERIFY(window_->openMeshBlocking(datasetPath("icosphere.off")));
         window_->setEyePosition({0.0, 0.0, 4.0});
