@@ -107,6 +107,7 @@ void MainWindow::connectSession() {
         render();
     });
     connect(&session_, &Session::meshShown, this, &MainWindow::showMesh);
+    connect(&session_, &Session::settingsAdjusted, settingsPanel_, &SettingsPanel::setSettings);
     connect(&session_, &Session::errorOccurred, this, &MainWindow::showError);
     connect(&session_, &Session::notice, statusBar(), &QStatusBar::showMessage);
 }

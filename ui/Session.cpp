@@ -40,7 +40,20 @@ struct Session::SceneResult {
     std::shared_ptr<const PreparedMesh> prepared;
     std::shared_ptr<const ClusterSet> clusters;
     std::unique_ptr<ClusterScene> scene;
+    std::string builderNote;  // why the clusters came from another builder than the settings said
 };
+
+namespace {
+
+// The settings with the default builder instead of a file builder whose ids could not be used, so
+// a bad id file does not stick and raise its error again at every change.
+Settings withoutClusterFile(Settings settings) {
+    settings.builder = Settings{}.builder;
+    settings.clusterFile.clear();
+    return settings;
+}
+
+}  // namespace
 
 Session::Session(QObject* parent) : QObject(parent), layers_(firstLookLayers()) {
     animationTimer_.setInterval(animationIntervalMs);
@@ -67,7 +80,17 @@ void Session::openMesh(const QString& path) {
         [file, settings](const ProgressCallback& progress) {
             SceneResult result;
             auto prepared = std::make_shared<PreparedMesh>(loadMesh(file, settings.fixWinding, scaled(progress, 0.0, 0.4)));
-            auto clusters = std::make_shared<ClusterSet>(buildClusters(*prepared, settings, nullptr, scaled(progress, 0.4, 0.9)));
+            Settings chosen = builderForMesh(settings, prepared->mesh(), result.builderNote);
+            std::shared_ptr<ClusterSet> clusters;
+            try {
+                clusters = std::make_shared<ClusterSet>(buildClusters(*prepared, chosen, nullptr, scaled(progress, 0.4, 0.9)));
+            } catch (const std::exception& error) {
+                if (chosen.builder != Builder::File) throw;
+                // A mesh that cannot be read by the file builder can still be looked at.
+                result.builderNote = std::string(error.what()) + ": clusters from the " + toString(Settings{}.builder) + " builder instead";
+                clusters = std::make_shared<ClusterSet>(
+                    buildClusters(*prepared, withoutClusterFile(chosen), nullptr, scaled(progress, 0.4, 0.9)));
+            }
             progress(0.9, "scene");
             result.scene = makeScene(*prepared, *clusters);
             result.prepared = prepared;
@@ -75,8 +98,12 @@ void Session::openMesh(const QString& path) {
             return result;
         },
         [this, path](SceneResult& result) {
+            const std::string builderNote = result.builderNote;
+            adoptBuilderOf(*result.clusters);
             showSceneResult(result, true);
-            emit meshShown(path, QString::fromStdString(loadMessage(*prepared_)));
+            std::string message = loadMessage(*prepared_);
+            if (!builderNote.empty()) message += (message.empty() ? "" : "; ") + builderNote;
+            emit meshShown(path, QString::fromStdString(message));
         },
         [this, path](const QString& error) {
             emit errorOccurred(tr("Cannot open %1").arg(QFileInfo(path).fileName()),
@@ -110,7 +137,19 @@ void Session::requestClusters(bool reprepare) {
             return result;
         },
         [this](SceneResult& result) { showSceneResult(result, false); },
-        [this](const QString& error) { emit errorOccurred(tr("Cannot build the clusters"), error); });
+        [this](const QString& error) {
+            if (settings_.builder == Builder::File) {
+                // Back to the default builder: the id file's error is said once, not at every change.
+                emit errorOccurred(tr("Cannot use the cluster ids"),
+                                   error + tr("\n\nThe clusters come from the %1 builder instead.")
+                                               .arg(QString::fromStdString(toString(Settings{}.builder))));
+                settings_ = withoutClusterFile(settings_);
+                emit settingsAdjusted(settings_);
+                requestClusters(false);
+                return;
+            }
+            emit errorOccurred(tr("Cannot build the clusters"), error);
+        });
 }
 
 void Session::requestOrbit() {
@@ -349,6 +388,13 @@ void Session::showClusterWhereItIsLost(int cluster) {
     } else {
         emit notice(tr("Cluster %1 is never drawn with back faces over the orbit").arg(picked_), 6000);
     }
+}
+
+void Session::adoptBuilderOf(const ClusterSet& clusters) {
+    if (clusters.settings.builder == settings_.builder && clusters.settings.clusterFile == settings_.clusterFile) return;
+    settings_.builder = clusters.settings.builder;
+    settings_.clusterFile = clusters.settings.clusterFile;
+    emit settingsAdjusted(settings_);
 }
 
 }  // namespace conescope

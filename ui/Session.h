@@ -99,6 +99,9 @@ signals:
     // The orbit's rows changed, or moveEye put the eye on an orbit view (or off it).
     void orbitChanged();
     void pickChanged(int cluster);
+    // The session chose other settings than it was given (the builder a mesh can be shown with):
+    // the settings panel shows them.
+    void settingsAdjusted(const conescope::Settings& settings);
     void errorOccurred(const QString& title, const QString& message);
     void notice(const QString& message, int milliseconds);
     // A slow stage: its start, progress and the end of all of them.
@@ -113,6 +116,8 @@ private:
     void requestOrbit();
     void showSceneResult(SceneResult& result, bool newMesh);
     void clearOrbit();
+    // Takes the builder the clusters were made with as the current one (builderForMesh's choice).
+    void adoptBuilderOf(const ClusterSet& clusters);
     void updateEye();
     void measureCurrentEye();
 

@@ -163,6 +163,21 @@ Settings exportSettings(const Settings& settings, const std::optional<glm::dvec3
     return result;
 }
 
+Settings builderForMesh(const Settings& settings, const Mesh& mesh, std::string& why) {
+    Settings result = settings;
+    const bool hasIds = mesh.faceArrays.count("cluster_id") > 0;
+    if (settings.builder != Builder::File && hasIds) {
+        result.builder = Builder::File;
+        result.clusterFile.clear();
+        why = "the mesh carries a cluster_id array: showing its own partition (the file builder); choose another builder to compare";
+    } else if (settings.builder == Builder::File && settings.clusterFile.empty() && !hasIds) {
+        result.builder = Settings{}.builder;
+        why = "the mesh has no cluster_id array and no cluster file is given: clusters from the " + toString(result.builder) +
+              " builder instead of the file builder";
+    }
+    return result;
+}
+
 RunStatistics measureRun(const PreparedMesh& prepared, const ClusterSet& clusters, const Settings& settings,
                          const ProgressCallback& progress) {
     // Stages the settings make stale are built again; the rest is reused.

@@ -111,6 +111,11 @@ long viewMissingCluster(const PreparedMesh& prepared, const ClusterSet& clusters
 // cleared (orbit).
 Settings exportSettings(const Settings& settings, const std::optional<glm::dvec3>& eye);
 
+// The builder a freshly opened mesh is shown with: a mesh that carries a cluster_id array shows its
+// own partition (the file builder), and the file builder without a cluster file falls back to the
+// default builder for a mesh without one. `why` gets a sentence for the user when the builder changed.
+Settings builderForMesh(const Settings& settings, const Mesh& mesh, std::string& why);
+
 // The statistics of a whole run from the stages: every cone and test of `settings` over its views
 // (the single eye or the orbit), the displayed cone's bounds taken from `clusters`, the others
 // computed for the same partition. When `settings` make a stage stale (another winding repair,

@@ -552,6 +552,45 @@ private slots:
         window_->waitUntilIdle();
     }
 
+    void fileBuilderFallsBackAndMeshesWithIdsShowTheirOwnPartition() {
+        QSignalSpy errors(window_.get(), &MainWindow::errorShown);
+        // A mesh carrying cluster_id shows its own partition: the file builder is chosen for it.
+        QVERIFY(window_->openMeshBlocking(datasetPath("icosphere-clusters.vtp")));
+        QVERIFY(window_->settings().builder == Builder::File);
+        QCOMPARE(window_->settingsPanel()->builderBox()->currentText(), QStringLiteral("file"));
+        QVERIFY(window_->statusBar()->currentMessage().contains(QStringLiteral("cluster_id")));
+        // With the file builder chosen, a plain mesh still opens, with the default builder and a word why.
+        QVERIFY(window_->openMeshBlocking(datasetPath("torus.off")));
+        QVERIFY(window_->settings().builder == Settings{}.builder);
+        QVERIFY(window_->clusters()->settings.builder == Settings{}.builder);
+        QCOMPARE(window_->settingsPanel()->builderBox()->currentText(), QString::fromStdString(toString(Settings{}.builder)));
+        QVERIFY(window_->statusBar()->currentMessage().contains(QStringLiteral("no cluster_id")));
+        QCOMPARE(errors.count(), 0);
+        // A wrong id file is reported once and does not stick: the default builder takes over.
+        const QString ids = temporary_.filePath(QStringLiteral("wrong-ids.txt"));
+        QFile file(ids);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write("0 1 2\n");
+        file.close();
+        Settings settings = window_->settings();
+        settings.builder = Builder::File;
+        settings.clusterFile = ids.toStdString();
+        window_->setSettings(settings);
+        window_->waitUntilIdle();
+        QCOMPARE(errors.count(), 1);
+        QVERIFY(window_->settings().builder == Settings{}.builder);
+        QVERIFY(window_->settings().clusterFile.empty());
+        QVERIFY(window_->settingsPanel()->settings().clusterFile.empty());
+        Settings other = window_->settings();
+        other.limits.maxTriangles = 64;
+        window_->setSettings(other);
+        window_->waitUntilIdle();
+        QCOMPARE(errors.count(), 1);
+        QCOMPARE(window_->clusters()->settings.limits.maxTriangles, size_t(64));
+        window_->setSettings(Settings{});
+        window_->waitUntilIdle();
+    }
+
     void badFileKeepsTheMesh() {
         QVERIFY(window_->openMeshBlocking(datasetPath("icosphere.off")));
         const std::string before = window_->preparedMesh()->path;
