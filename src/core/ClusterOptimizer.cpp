@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "Adjacency.h"
 #include "Cones.h"
 #include "Parallel.h"
 #include "SphericalCaps.h"
@@ -54,71 +55,6 @@ constexpr size_t kRefinementPasses = 30;
 
 // The objective's share of one cluster: T (1 - sin alpha).
 double valueOf(double triangles, const Cap& cap) { return triangles * (1.0 - sinOf(cap)); }
-
-// ---------------------------------------------------------------------------------------------
-// Adjacency in compressed rows.
-
-struct Rows {
-    std::vector<uint32_t> starts;
-    std::vector<uint32_t> items;
-    const uint32_t* begin(size_t i) const { return items.data() + starts[i]; }
-    const uint32_t* end(size_t i) const { return items.data() + starts[i + 1]; }
-};
-
-// Faces around each vertex; a face that repeats a vertex is listed once.
-Rows facesAroundVertices(const Mesh& mesh) {
-    Rows rows;
-    rows.starts.assign(mesh.positions.size() + 1, 0);
-    for (uint32_t v : mesh.faceVertices) ++rows.starts[v + 1];
-    for (size_t v = 0; v < mesh.positions.size(); ++v) rows.starts[v + 1] += rows.starts[v];
-    rows.items.resize(mesh.faceVertices.size());
-    std::vector<uint32_t> cursor(rows.starts.begin(), rows.starts.end() - 1);
-    for (size_t f = 0; f < mesh.faceCount(); ++f)
-        for (size_t k = 0; k < mesh.faceSize(f); ++k) {
-            const uint32_t v = mesh.faceBegin(f)[k];
-            if (cursor[v] > rows.starts[v] && rows.items[cursor[v] - 1] == f) continue;
-            rows.items[cursor[v]++] = uint32_t(f);
-        }
-    size_t write = 0;
-    for (size_t v = 0; v < mesh.positions.size(); ++v) {
-        const uint32_t start = rows.starts[v];
-        rows.starts[v] = uint32_t(write);
-        for (uint32_t i = start; i < cursor[v]; ++i) rows.items[write++] = rows.items[i];
-    }
-    rows.starts[mesh.positions.size()] = uint32_t(write);
-    rows.items.resize(write);
-    return rows;
-}
-
-bool faceHasVertex(const Mesh& mesh, uint32_t face, uint32_t vertex) {
-    const uint32_t* vertices = mesh.faceBegin(face);
-    for (size_t k = 0; k < mesh.faceSize(face); ++k)
-        if (vertices[k] == vertex) return true;
-    return false;
-}
-
-// Faces sharing a side (both of its end points) with each face.
-Rows facesAcrossEdges(const Mesh& mesh, const Rows& aroundVertex) {
-    Rows rows;
-    rows.starts.assign(mesh.faceCount() + 1, 0);
-    rows.items.reserve(mesh.faceVertices.size());
-    for (size_t f = 0; f < mesh.faceCount(); ++f) {
-        const uint32_t* vertices = mesh.faceBegin(f);
-        const size_t size = mesh.faceSize(f);
-        const size_t rowStart = rows.items.size();
-        for (size_t k = 0; k < size; ++k) {
-            const uint32_t a = vertices[k], b = vertices[(k + 1) % size];
-            if (a == b) continue;
-            for (const uint32_t* g = aroundVertex.begin(a); g != aroundVertex.end(a); ++g) {
-                if (*g == f || !faceHasVertex(mesh, *g, b)) continue;
-                if (std::find(rows.items.begin() + long(rowStart), rows.items.end(), *g) == rows.items.end())
-                    rows.items.push_back(*g);
-            }
-        }
-        rows.starts[f + 1] = uint32_t(rows.items.size());
-    }
-    return rows;
-}
 
 // ---------------------------------------------------------------------------------------------
 // The clustering being optimised.
