@@ -53,8 +53,8 @@ constexpr size_t kMinPartClusters = 16;
 // Greedy local search stops after this many passes over the faces near the last moves.
 constexpr size_t kRefinementPasses = 30;
 
-// The objective's share of one cluster: T (1 - sin alpha).
-double valueOf(double triangles, const Cap& cap) { return triangles * (1.0 - sinOf(cap)); }
+// The objective's share of one cluster.
+double valueOf(double triangles, const Cap& cap) { return expectedCulledTriangles(triangles, sinOf(cap)); }
 
 // ---------------------------------------------------------------------------------------------
 // The clustering being optimised.
@@ -485,7 +485,7 @@ bool Optimizer::dissolve(uint32_t cluster) {
                 if (!fits(face, to)) continue;
                 const Cluster& target = clusters_[to];
                 const double sinAfter = usable_[face] ? sinAfterAdding(target.cap, glm::dot(geometry_.normals[face], target.cap.axis)) : sinOf(target.cap);
-                const double gain = (double(target.triangles) + triangles_[face]) * (1.0 - sinAfter) - valueOf(target.triangles, target.cap);
+                const double gain = expectedCulledTriangles(double(target.triangles) + triangles_[face], sinAfter) - valueOf(target.triangles, target.cap);
                 if (gain > bestGain) bestGain = gain, bestTarget = to;
             }
             for (size_t k = 0; k < targetCount && bestTarget == kNone && pushing; ++k)
@@ -856,24 +856,6 @@ Partition Optimizer::result() const {
 }
 
 }  // namespace
-
-double expectedCullRate(const Mesh& mesh, const FaceGeometry& faces, const Partition& partition) {
-    const ClusterFaces rows = facesByCluster(partition);
-    std::vector<glm::dvec3> normals;
-    double culled = 0.0, total = 0.0;
-    for (uint32_t c = 0; c < partition.clusterCount; ++c) {
-        normals.clear();
-        double triangles = 0.0;
-        for (uint32_t i = rows.starts[c]; i < rows.starts[c + 1]; ++i) {
-            normals.push_back(faces.normals[rows.faces[i]]);
-            triangles += double(mesh.faceSize(rows.faces[i]) - 2);
-        }
-        const ConeOfNormals cone = minimalCone(normals.data(), normals.size());
-        if (cone.cullable) culled += triangles * (1.0 - cone.sinHalfAngle);
-        total += triangles;
-    }
-    return total > 0.0 ? culled / total : 0.0;
-}
 
 size_t defaultClusterBudget(const Mesh& mesh, const MeshletLimits& limits) {
     const double roundPatch = double(std::min(limits.maxTriangles, 2 * limits.maxVertices));

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "ClusterOptimizer.h"
+#include "ExpectedCull.h"
 
 namespace conescope {
 
@@ -64,8 +65,6 @@ TestStatistics measureCulling(const CullingInput& input, const std::vector<Eye>&
     result.cone = bounds.coneMethod;
     result.test = test;
     result.clusters.resize(clusterCount);
-    size_t totalTriangles = 0;
-    double expected = 0.0;
     for (uint32_t c = 0; c < clusterCount; ++c) {
         ClusterStatistics& cluster = result.clusters[c];
         cluster.cluster = c;
@@ -75,10 +74,8 @@ TestStatistics measureCulling(const CullingInput& input, const std::vector<Eye>&
         cluster.cullable = bounds.cones[c].cullable;
         cluster.halfAngleDegrees = cluster.cullable ? glm::degrees(bounds.cones[c].halfAngle()) : 90.0;
         result.uncullableClusters += cluster.cullable ? 0 : 1;
-        totalTriangles += cluster.triangles;
-        if (cluster.cullable) expected += double(cluster.triangles) * (1.0 - bounds.cones[c].sinHalfAngle);
     }
-    result.expectedEfficiency = totalTriangles ? expected / double(totalTriangles) : 0.0;
+    result.expectedEfficiency = expectedCullRate(bounds.cones.data(), bounds.triangles.data(), clusterCount);
 
     double totalNanoseconds = 0.0;
     for (size_t v = 0; v < views.size(); ++v) {
