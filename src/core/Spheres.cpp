@@ -111,7 +111,7 @@ struct BallsInSpace {
     Ball through(const glm::dvec3* boundary, size_t count) const { return ballThrough(boundary, count); }
     bool holds(const Ball& ball, const glm::dvec3& p) const { return ball.radiusSquared >= 0.0 && ball.contains(p); }
     bool spend(size_t, size_t) const { return true; }
-    Ball giveUp(const glm::dvec3*) const { return Ball{}; }
+    Ball giveUp(const glm::dvec3*) const { return Ball{}; }  // never called: spend always agrees
 };
 
 }  // namespace
@@ -122,7 +122,7 @@ Sphere minimalSphere(const glm::dvec3* points, size_t count) {
     shuffleReproducibly(shuffled.data(), shuffled.size(), 0x9E3779B97F4A7C15ull);
     glm::dvec3 boundary[4];
     BallsInSpace balls;
-    const Ball ball = welzl(balls, shuffled.data(), shuffled.size(), boundary, 0);
+    const Ball ball = welzl<0>(balls, shuffled.data(), shuffled.size(), boundary);
     return sphereAround(ball.center, points, count);
 }
 

@@ -64,7 +64,7 @@ struct ConeCaps {
         return cap.cosRadius <= 1.0 && glm::dot(p, cap.axis) >= cap.cosRadius - 1e-14;
     }
     bool spend(size_t, size_t) const { return true; }
-    Cap giveUp(const glm::dvec3*) const { return Cap{}; }
+    Cap giveUp(const glm::dvec3*) const { return Cap{}; }  // never called: spend always agrees
 };
 
 }  // namespace
@@ -73,19 +73,11 @@ Cap minimalConeCap(glm::dvec3* points, size_t count) {
     shuffleReproducibly(points, count, 0x2545F4914F6CDD1Dull);
     glm::dvec3 boundary[3];
     ConeCaps caps;
-    return welzl(caps, points, count, boundary, 0);
+    return welzl<0>(caps, points, count, boundary);
 }
 
 // ---------------------------------------------------------------------------------------------
 // The optimized builder's construction.
-
-namespace {
-constexpr double kContainSlack = 1e-10;
-}  // namespace
-
-bool contains(const Cap& cap, const glm::dvec3& normal) {
-    return glm::dot(normal, cap.axis) >= cap.cosRadius - kContainSlack;
-}
 
 Cap noCone(const glm::dvec3& axis) { return capAround(axis, -1.0); }
 
@@ -152,9 +144,8 @@ struct SearchCaps {
             default: return capThrough(boundary[0], boundary[1], boundary[2]);
         }
     }
-    bool holds(const Cap& cap, const glm::dvec3& p) const {
-        return !(cap.cosRadius > 0.0) || (cap.cosRadius <= 1.0 && contains(cap, p));
-    }
+    // A cap without a cone stops growing; the empty cap (cosRadius 2) holds no unit normal.
+    bool holds(const Cap& cap, const glm::dvec3& p) const { return !(cap.cosRadius > 0.0) || contains(cap, p); }
     bool spend(size_t boundaryCount, size_t end) {
         if (boundaryCount != 2) return true;
         if (budget < end) return false;
@@ -191,14 +182,14 @@ Cap minimalCap(glm::dvec3* points, size_t count) {
     shuffleReproducibly(points, count, kSearchShuffleSeed);
     SearchCaps caps{welzlBudget(points, count)};
     glm::dvec3 boundary[3];
-    return checkedCap(welzl(caps, points, count, boundary, 0), points, count);
+    return checkedCap(welzl<0>(caps, points, count, boundary), points, count);
 }
 
 Cap minimalCapWith(glm::dvec3* points, size_t count, const glm::dvec3& added) {
     shuffleReproducibly(points, count, kSearchShuffleSeed);
     SearchCaps caps{welzlBudget(points, count)};
     glm::dvec3 boundary[3] = {added};
-    const Cap cap = welzl(caps, points, count, boundary, 1);
+    const Cap cap = welzl<1>(caps, points, count, boundary);
     if (!(cap.cosRadius > 0.0) || !contains(cap, added)) return noCone(cap.axis);
     return checkedCap(cap, points, count);
 }
@@ -217,11 +208,6 @@ Cap supportCapRemoving(const Cap& cap, const glm::dvec3& removed) {
     for (uint32_t i = 0; i < cap.supportCount; ++i)
         if (cap.support[i] != removed) points[count++] = cap.support[i];
     return count > 0 ? minimalCap(points, count) : capThrough(removed);
-}
-
-double sinOf(const Cap& cap) {
-    if (!(cap.cosRadius > 0.0) || cap.cosRadius > 1.0) return 1.0;  // no cone, or no normals
-    return std::sqrt(std::max(0.0, 1.0 - cap.cosRadius * cap.cosRadius));
 }
 
 double sinAfterAdding(const Cap& cap, double cosTheta) {

@@ -11,6 +11,8 @@
 // Replacing one by the other moves the cones' last bits and changes the optimized partitions.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 
@@ -31,7 +33,7 @@ Cap minimalConeCap(glm::dvec3* points, size_t count);
 // --- The optimized builder's caps --------------------------------------------------------------
 
 // Whether the cap holds a normal, with the builder's slack of 1e-10.
-bool contains(const Cap& cap, const glm::dvec3& normal);
+inline bool contains(const Cap& cap, const glm::dvec3& normal) { return glm::dot(normal, cap.axis) >= cap.cosRadius - 1e-10; }
 // A cap that stands for "no cone"; the axis is kept only so that it stays defined.
 Cap noCone(const glm::dvec3& axis);
 // The cap of a single normal (radius 0).
@@ -49,7 +51,10 @@ Cap supportCapAdding(const Cap& cap, const glm::dvec3& added);
 Cap supportCapRemoving(const Cap& cap, const glm::dvec3& removed);
 
 // sin of the half-angle: 1 for no cone or for no normals.
-double sinOf(const Cap& cap);
+inline double sinOf(const Cap& cap) {
+    if (!(cap.cosRadius > 0.0) || cap.cosRadius > 1.0) return 1.0;
+    return std::sqrt(std::max(0.0, 1.0 - cap.cosRadius * cap.cosRadius));
+}
 
 // sin of the half-angle of the smallest cap holding `cap` and a normal at cos(theta) from its
 // axis: (alpha + theta) / 2 by half-angle formulas. An upper bound on the exact minimal cap.

@@ -29,20 +29,24 @@ inline void shuffleReproducibly(glm::dvec3* points, size_t count, uint64_t seed)
 //   Ball through(const glm::dvec3* boundary, size_t count);   smallest ball with these on its boundary
 //   bool holds(const Ball&, const glm::dvec3&);              false for the empty ball
 //   bool spend(size_t boundaryCount, size_t end);            false: give up this branch (a work budget)
-//   Ball giveUp(const glm::dvec3* boundary);                 what a branch returns when it gives up
+//   Ball giveUp(const glm::dvec3* boundary);                 what a branch gives up with: a ball that
+//                                                            holds every point, so nothing recurses
 //
-// The smallest ball holding points[0, end) with boundary[0, boundaryCount) on its boundary.
-// points may be reordered (move-to-front); boundary needs room for kMaxBoundary points.
-template <class Kind>
-typename Kind::Ball welzl(Kind& kind, glm::dvec3* points, size_t end, glm::dvec3* boundary, size_t boundaryCount) {
-    if (!kind.spend(boundaryCount, end)) return kind.giveUp(boundary);
-    typename Kind::Ball ball = kind.through(boundary, boundaryCount);
-    if (boundaryCount == Kind::kMaxBoundary) return ball;
-    for (size_t i = 0; i < end; ++i) {
-        if (kind.holds(ball, points[i])) continue;
-        boundary[boundaryCount] = points[i];
-        ball = welzl(kind, points, i, boundary, boundaryCount + 1);
-        if constexpr (Kind::kMoveToFront) std::rotate(points, points + i, points + i + 1);
+// The smallest ball holding points[0, end) with boundary[0, BoundaryCount) on its boundary; call
+// it with BoundaryCount 0 (or 1 to force a point onto the boundary). points may be reordered
+// (move-to-front); boundary needs room for kMaxBoundary points. The boundary count is a template
+// argument so that each level is its own function, with `through` for a known count inlined.
+template <size_t BoundaryCount, class Kind>
+typename Kind::Ball welzl(Kind& kind, glm::dvec3* points, size_t end, glm::dvec3* boundary) {
+    // One named result (no early return), so that it is built in place and never copied out.
+    typename Kind::Ball ball = kind.spend(BoundaryCount, end) ? kind.through(boundary, BoundaryCount) : kind.giveUp(boundary);
+    if constexpr (BoundaryCount < Kind::kMaxBoundary) {
+        for (size_t i = 0; i < end; ++i) {
+            if (kind.holds(ball, points[i])) continue;
+            boundary[BoundaryCount] = points[i];
+            ball = welzl<BoundaryCount + 1>(kind, points, i, boundary);
+            if constexpr (Kind::kMoveToFront) std::rotate(points, points + i, points + i + 1);
+        }
     }
     return ball;
 }
