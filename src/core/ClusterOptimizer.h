@@ -1,4 +1,6 @@
 // A cluster builder that maximises the expected cull rate directly, at a given cluster budget.
+// Its code is in optimizer/: the shared state (State.h), one file per step (Steps.h) and the
+// parts of large meshes (Parts.h).
 #pragma once
 
 #include <cstddef>
