@@ -3,6 +3,7 @@
 // clusters over the surface and for the optimized builder's moves.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -30,6 +31,9 @@ void forEachSide(const Mesh& mesh, size_t face, Visit visit) {
         if (a != b) visit(a, b);
     }
 }
+
+// One key per edge whatever the direction a face runs it: (smaller vertex << 32) | larger vertex.
+inline uint64_t edgeKey(uint32_t a, uint32_t b) { return uint64_t(std::min(a, b)) << 32 | std::max(a, b); }
 
 // Faces around each vertex, in face order; a face that repeats a vertex is listed once.
 Rows facesAroundVertices(const Mesh& mesh);
