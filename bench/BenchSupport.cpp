@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <unordered_map>
 
+#include "core/Adjacency.h"
+
 namespace conescope::bench {
 
 std::string sourceDirectory() { return CONESCOPE_SOURCE_DIR; }
@@ -41,8 +43,7 @@ Mesh subdivideOnce(const Mesh& mesh) {
     std::unordered_map<uint64_t, uint32_t> midpoints;
     midpoints.reserve(mesh.faceCount() * 2);
     auto midpoint = [&](uint32_t a, uint32_t b) {
-        const uint64_t key = (uint64_t(std::min(a, b)) << 32) | std::max(a, b);
-        auto [it, inserted] = midpoints.try_emplace(key, uint32_t(finer.positions.size()));
+        auto [it, inserted] = midpoints.try_emplace(edgeKey(a, b), uint32_t(finer.positions.size()));
         if (inserted) finer.positions.push_back(0.5f * (mesh.positions[a] + mesh.positions[b]));
         return it->second;
     };

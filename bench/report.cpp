@@ -25,6 +25,7 @@
 #include "BenchSupport.h"
 #include "core/ClusterBounds.h"
 #include "core/Culling.h"
+#include "core/ExpectedCull.h"
 #include "core/Settings.h"
 #include "core/Statistics.h"
 #include "io/MeshReader.h"
@@ -192,7 +193,8 @@ size_t measureMeshopt(const MeshData& data, const MeshletLimits& limits, float c
         const meshopt_Meshlet& meshlet = clusters.meshlets[m];
         base.largestVertices = std::max<size_t>(base.largestVertices, meshlet.vertex_count);
         base.largestTriangles = std::max<size_t>(base.largestTriangles, meshlet.triangle_count);
-        if (clusters.bounds[m].cone_cutoff < 1.0f) expected += meshlet.triangle_count * (1.0 - clusters.bounds[m].cone_cutoff);
+        if (clusters.bounds[m].cone_cutoff < 1.0f)  // its cutoff is sin(alpha)
+            expected += expectedCulledTriangles(meshlet.triangle_count, clusters.bounds[m].cone_cutoff);
     }
     base.expectedEfficiency = triangles.mesh.faceCount() ? expected / double(triangles.mesh.faceCount()) : 0.0;
     progress("  " + data.name + " " + std::to_string(limits.maxVertices) + "/" + std::to_string(limits.maxTriangles) +

@@ -6,6 +6,7 @@
 #include <cstring>
 #include <limits>
 #include <stdexcept>
+#include <vector>
 
 #include "Settings.h"
 
@@ -148,65 +149,74 @@ inline void storeBits(unsigned bits, uint8_t* culled, size_t first, size_t count
 
 // ---- Kernels: one formula each, written once for every lane width.
 
+// The eye and the slack constants in every lane, broadcast once per call.
 template <class Lanes>
-inline void apexKernel(const ClusterBatch& batch, const EyeConstants& eye, uint8_t* culled) {
+struct EyeLanes {
+    typename Lanes::F x, y, z, slack, relative;
+};
+
+template <class Lanes>
+inline EyeLanes<Lanes> broadcastEye(const EyeConstants& eye) {
+    return {Lanes::broadcast(eye.x), Lanes::broadcast(eye.y), Lanes::broadcast(eye.z), Lanes::broadcast(eye.absoluteSlack),
+            Lanes::broadcast(kSlackRelative)};
+}
+
+// What every test reads about the view vector v from the eye to a stored point (apex or sphere
+// centre) of clusters i, i + 1, ...: v.V1, |v|, and the rounding slack for that length.
+template <class Lanes>
+struct View {
+    typename Lanes::F along, length, error;
+};
+
+template <class Lanes>
+inline View<Lanes> viewTo(const ClusterBatch& batch, const std::vector<float>& pointX, const std::vector<float>& pointY,
+                          const std::vector<float>& pointZ, const EyeLanes<Lanes>& eye, size_t i) {
     using F = typename Lanes::F;
-    const F ex = Lanes::broadcast(eye.x), ey = Lanes::broadcast(eye.y), ez = Lanes::broadcast(eye.z);
-    const F slack = Lanes::broadcast(eye.absoluteSlack), relative = Lanes::broadcast(kSlackRelative);
-    for (size_t i = 0; i < batch.count; i += Lanes::width) {
-        const F vx = Lanes::load(&batch.apexX[i]) - ex;
-        const F vy = Lanes::load(&batch.apexY[i]) - ey;
-        const F vz = Lanes::load(&batch.apexZ[i]) - ez;
-        const F along = vx * Lanes::load(&batch.axisX[i]) + vy * Lanes::load(&batch.axisY[i]) +
-                        vz * Lanes::load(&batch.axisZ[i]);
-        const F length = Lanes::sqrt(vx * vx + vy * vy + vz * vz);
-        const F threshold = Lanes::load(&batch.sinHalfAngle[i]) * length + (relative * length + slack);
-        storeBits<Lanes>(Lanes::bits(Lanes::greater(along, threshold)), culled, i, batch.count);
-    }
+    const F vx = Lanes::load(&pointX[i]) - eye.x;
+    const F vy = Lanes::load(&pointY[i]) - eye.y;
+    const F vz = Lanes::load(&pointZ[i]) - eye.z;
+    const F along = vx * Lanes::load(&batch.axisX[i]) + vy * Lanes::load(&batch.axisY[i]) + vz * Lanes::load(&batch.axisZ[i]);
+    const F length = Lanes::sqrt(vx * vx + vy * vy + vz * vz);
+    return {along, length, eye.relative * length + eye.slack};
+}
+
+// Runs a test over all clusters, a lane group at a time: `test(view, i)` gives the mask of the
+// clusters i, i + 1, ... it culls, from the view vector to the stored point (pointX, pointY, pointZ).
+template <class Lanes, class Test>
+inline void cullEachGroup(const ClusterBatch& batch, const EyeConstants& constants, const std::vector<float>& pointX,
+                          const std::vector<float>& pointY, const std::vector<float>& pointZ, uint8_t* culled, Test test) {
+    const EyeLanes<Lanes> eye = broadcastEye<Lanes>(constants);
+    for (size_t i = 0; i < batch.count; i += Lanes::width)
+        storeBits<Lanes>(Lanes::bits(test(viewTo<Lanes>(batch, pointX, pointY, pointZ, eye, i), i)), culled, i, batch.count);
 }
 
 template <class Lanes>
-inline void meshoptSphereKernel(const ClusterBatch& batch, const EyeConstants& eye, uint8_t* culled) {
-    using F = typename Lanes::F;
-    const F ex = Lanes::broadcast(eye.x), ey = Lanes::broadcast(eye.y), ez = Lanes::broadcast(eye.z);
-    const F slack = Lanes::broadcast(eye.absoluteSlack), relative = Lanes::broadcast(kSlackRelative);
-    for (size_t i = 0; i < batch.count; i += Lanes::width) {
-        const F vx = Lanes::load(&batch.centerX[i]) - ex;
-        const F vy = Lanes::load(&batch.centerY[i]) - ey;
-        const F vz = Lanes::load(&batch.centerZ[i]) - ez;
-        const F along = vx * Lanes::load(&batch.axisX[i]) + vy * Lanes::load(&batch.axisY[i]) +
-                        vz * Lanes::load(&batch.axisZ[i]);
-        const F length = Lanes::sqrt(vx * vx + vy * vy + vz * vz);
-        const F threshold = Lanes::load(&batch.sinHalfAngle[i]) * length + Lanes::load(&batch.radius[i]) +
-                            (relative * length + slack);
-        storeBits<Lanes>(Lanes::bits(Lanes::greater(along, threshold)), culled, i, batch.count);
-    }
+inline void apexKernel(const ClusterBatch& batch, const EyeConstants& constants, uint8_t* culled) {
+    cullEachGroup<Lanes>(batch, constants, batch.apexX, batch.apexY, batch.apexZ, culled, [&](const View<Lanes>& v, size_t i) {
+        return Lanes::greater(v.along, Lanes::load(&batch.sinHalfAngle[i]) * v.length + v.error);
+    });
 }
 
 template <class Lanes>
-inline void sphereKernel(const ClusterBatch& batch, const EyeConstants& eye, uint8_t* culled) {
+inline void meshoptSphereKernel(const ClusterBatch& batch, const EyeConstants& constants, uint8_t* culled) {
+    cullEachGroup<Lanes>(batch, constants, batch.centerX, batch.centerY, batch.centerZ, culled, [&](const View<Lanes>& v, size_t i) {
+        return Lanes::greater(v.along, Lanes::load(&batch.sinHalfAngle[i]) * v.length + Lanes::load(&batch.radius[i]) + v.error);
+    });
+}
+
+template <class Lanes>
+inline void sphereKernel(const ClusterBatch& batch, const EyeConstants& constants, uint8_t* culled) {
     using F = typename Lanes::F;
-    const F ex = Lanes::broadcast(eye.x), ey = Lanes::broadcast(eye.y), ez = Lanes::broadcast(eye.z);
-    const F slack = Lanes::broadcast(eye.absoluteSlack), relative = Lanes::broadcast(kSlackRelative);
-    for (size_t i = 0; i < batch.count; i += Lanes::width) {
-        const F vx = Lanes::load(&batch.centerX[i]) - ex;
-        const F vy = Lanes::load(&batch.centerY[i]) - ey;
-        const F vz = Lanes::load(&batch.centerZ[i]) - ez;
-        const F along = vx * Lanes::load(&batch.axisX[i]) + vy * Lanes::load(&batch.axisY[i]) +
-                        vz * Lanes::load(&batch.axisZ[i]);
-        const F length = Lanes::sqrt(vx * vx + vy * vy + vz * vz);
-        const F error = relative * length + slack;
+    cullEachGroup<Lanes>(batch, constants, batch.centerX, batch.centerY, batch.centerZ, culled, [&](const View<Lanes>& v, size_t i) {
         // [low, high] holds the exact distance d, so the cone of views is judged with its worst case.
-        const F high = length + error, low = length - error;
+        const F high = v.length + v.error, low = v.length - v.error;
         const F r = Lanes::load(&batch.radius[i]);
         const auto outside = Lanes::greater(low * Lanes::load(&batch.cosHalfAngleDown[i]), r);
         // sin(alpha) sqrt(d^2 - r^2) + cos(alpha) r = d cos(B - asin(r/d)); NaN (d < r) never passes.
         const F tangent = Lanes::sqrt((high - r) * (high + r));
-        const F threshold = Lanes::load(&batch.sinHalfAngle[i]) * tangent +
-                            Lanes::load(&batch.cosHalfAngleUp[i]) * r + error;
-        storeBits<Lanes>(Lanes::bits(Lanes::both(Lanes::greater(along, threshold), outside)), culled, i,
-                         batch.count);
-    }
+        const F threshold = Lanes::load(&batch.sinHalfAngle[i]) * tangent + Lanes::load(&batch.cosHalfAngleUp[i]) * r + v.error;
+        return Lanes::both(Lanes::greater(v.along, threshold), outside);
+    });
 }
 
 enum class Kernel { Sphere, Apex, MeshoptSphere };

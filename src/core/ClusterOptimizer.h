@@ -1,19 +1,16 @@
 // A cluster builder that maximises the expected cull rate directly, at a given cluster budget.
+// Its code is in optimizer/: the shared state (State.h), one file per step (Steps.h) and the
+// parts of large meshes (Parts.h).
 #pragma once
 
 #include <cstddef>
 
+#include "ExpectedCull.h"  // the objective, expectedCullRate
 #include "Mesh.h"
 #include "Partition.h"
 #include "Progress.h"
 
 namespace conescope {
-
-// Seen from a uniformly random far direction, a cluster whose minimal normal cone has half-angle
-// alpha is culled with probability (1 - sin alpha) / 2, and half of all triangles face away, so
-// sum_c T_c (1 - sin alpha_c) / T estimates the fraction of back-facing triangles culled. Exact
-// minimal cones (minimalCone); a cluster with no cone narrower than a hemisphere counts 0.
-double expectedCullRate(const Mesh& mesh, const FaceGeometry& faces, const Partition& partition);
 
 // The budget used when none is given: clusters 68% full, min(maxTriangles, 2 maxVertices) being
 // what a round patch within both limits can hold; at 64/124 about the count meshoptimizer's

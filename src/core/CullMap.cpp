@@ -7,8 +7,6 @@
 
 namespace conescope {
 
-double coneCullShare(double sinHalfAngle) { return 0.5 * (1.0 - std::clamp(sinHalfAngle, -1.0, 1.0)); }
-
 namespace {
 
 // Share of directions u with n.u < 0 for every normal: all faces back-facing from an eye far along u.

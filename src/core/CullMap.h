@@ -15,6 +15,7 @@
 
 #include "ClusterBounds.h"
 #include "Culling.h"
+#include "ExpectedCull.h"
 
 namespace conescope {
 
@@ -30,9 +31,5 @@ CullMap computeCullMap(const FaceGeometry& faces, const ClusterBounds& bounds, s
 
 // The share for `test`: the oracle's own for CullTest::Oracle, the cone's for every other test.
 double cullFraction(const CullMap& map, uint32_t cluster, CullTest test);
-
-// Share of directions from which a cone of half-angle alpha (given by sin alpha) culls: (1 - sin)/2.
-// The expected cull rate of a cluster, from which statistics' expected_efficiency is summed.
-double coneCullShare(double sinHalfAngle);
 
 }  // namespace conescope

@@ -12,28 +12,12 @@
 #include <stdexcept>
 #include <unordered_map>
 
+#include "Adjacency.h"
+
 namespace conescope {
 
 namespace {
 constexpr uint32_t kUnassigned = std::numeric_limits<uint32_t>::max();
-
-// Faces around each vertex, compressed rows: the adjacency every growing builder walks.
-struct VertexFaces {
-    std::vector<uint32_t> starts;
-    std::vector<uint32_t> faces;
-};
-
-VertexFaces facesAroundVertices(const Mesh& mesh) {
-    VertexFaces adjacency;
-    adjacency.starts.assign(mesh.positions.size() + 1, 0);
-    for (uint32_t v : mesh.faceVertices) ++adjacency.starts[v + 1];
-    for (size_t v = 0; v < mesh.positions.size(); ++v) adjacency.starts[v + 1] += adjacency.starts[v];
-    adjacency.faces.resize(mesh.faceVertices.size());
-    std::vector<uint32_t> cursor(adjacency.starts.begin(), adjacency.starts.end() - 1);
-    for (size_t f = 0; f < mesh.faceCount(); ++f)
-        for (size_t k = 0; k < mesh.faceSize(f); ++k) adjacency.faces[cursor[mesh.faceBegin(f)[k]]++] = uint32_t(f);
-    return adjacency;
-}
 
 // Renumbers cluster ids densely (0..K-1) in order of first use, dropping empty ids.
 Partition compact(std::vector<uint32_t> clusterOfFace) {
@@ -48,7 +32,7 @@ Partition compact(std::vector<uint32_t> clusterOfFace) {
 
 Partition buildMeshlets(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits, double normalWeight) {
     const size_t faceCount = mesh.faceCount();
-    const VertexFaces adjacency = facesAroundVertices(mesh);
+    const Rows facesAround = facesAroundVertices(mesh);
     std::vector<uint32_t> clusterOfFace(faceCount, kUnassigned);
     std::vector<uint32_t> vertexCluster(mesh.positions.size(), kUnassigned);
     std::vector<uint32_t> candidateCluster(faceCount, kUnassigned);
@@ -87,11 +71,9 @@ Partition buildMeshlets(const Mesh& mesh, const FaceGeometry& faces, const Meshl
             for (size_t k = 0; k < mesh.faceSize(f); ++k) {
                 const uint32_t v = mesh.faceBegin(f)[k];
                 if (vertexCluster[v] != cluster) vertexCluster[v] = cluster, ++vertexCount;
-                for (uint32_t i = adjacency.starts[v]; i < adjacency.starts[v + 1]; ++i) {
-                    const uint32_t g = adjacency.faces[i];
-                    if (clusterOfFace[g] == kUnassigned && candidateCluster[g] != cluster)
-                        candidateCluster[g] = cluster, candidates.push_back(g);
-                }
+                for (const uint32_t* g = facesAround.begin(v); g != facesAround.end(v); ++g)
+                    if (clusterOfFace[*g] == kUnassigned && candidateCluster[*g] != cluster)
+                        candidateCluster[*g] = cluster, candidates.push_back(*g);
             }
         };
         addFace(seed);

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <vector>
 
+#include "Welzl.h"
+
 namespace conescope {
 
 // Every sphere function ends here: the radius becomes the largest distance from the centre, then is
@@ -13,14 +15,6 @@ Sphere sphereAround(const glm::dvec3& center, const glm::dvec3* points, size_t c
     for (size_t i = 0; i < count; ++i) radius = std::max(radius, glm::length(points[i] - center));
     const double scale = std::max({std::abs(center.x), std::abs(center.y), std::abs(center.z), radius});
     return {center, radius + scale * 1e-12};
-}
-
-void shuffleReproducibly(std::vector<glm::dvec3>& points, uint64_t seed) {
-    uint64_t state = seed;
-    for (size_t i = points.size(); i > 1; --i) {
-        state = state * 6364136223846793005ull + 1442695040888963407ull;  // 64-bit LCG
-        std::swap(points[i - 1], points[(state >> 33) % i]);
-    }
 }
 
 Sphere ritterSphere(const glm::dvec3* points, size_t count) {
@@ -109,28 +103,26 @@ Ball ballThrough(const glm::dvec3* boundary, size_t count) {
     return {a + offset, glm::dot(offset, offset)};
 }
 
-// Welzl's recursion unrolled over a move-to-front list (Gärtner's form): expected linear time.
-Ball welzl(std::vector<glm::dvec3>& points, size_t end, glm::dvec3* boundary, size_t boundaryCount) {
-    Ball ball = ballThrough(boundary, boundaryCount);
-    if (boundaryCount == 4) return ball;
-    for (size_t i = 0; i < end; ++i) {
-        if (ball.radiusSquared >= 0.0 && ball.contains(points[i])) continue;
-        boundary[boundaryCount] = points[i];
-        ball = welzl(points, i, boundary, boundaryCount + 1);
-        // Move the support point to the front so later passes meet it first.
-        std::rotate(points.begin(), points.begin() + long(i), points.begin() + long(i) + 1);
-    }
-    return ball;
-}
+// Balls in space for Welzl's recursion (Welzl.h), in move-to-front form: expected linear time.
+struct BallsInSpace {
+    using Ball = conescope::Ball;
+    static constexpr size_t kMaxBoundary = 4;
+    static constexpr bool kMoveToFront = true;
+    Ball through(const glm::dvec3* boundary, size_t count) const { return ballThrough(boundary, count); }
+    bool holds(const Ball& ball, const glm::dvec3& p) const { return ball.radiusSquared >= 0.0 && ball.contains(p); }
+    bool spend(size_t, size_t) const { return true; }
+    Ball giveUp(const glm::dvec3*) const { return Ball{}; }  // never called: spend always agrees
+};
 
 }  // namespace
 
 Sphere minimalSphere(const glm::dvec3* points, size_t count) {
     if (count == 0) return {};
     std::vector<glm::dvec3> shuffled(points, points + count);
-    shuffleReproducibly(shuffled, 0x9E3779B97F4A7C15ull);
+    shuffleReproducibly(shuffled.data(), shuffled.size(), 0x9E3779B97F4A7C15ull);
     glm::dvec3 boundary[4];
-    const Ball ball = welzl(shuffled, shuffled.size(), boundary, 0);
+    BallsInSpace balls;
+    const Ball ball = welzl<0>(balls, shuffled.data(), shuffled.size(), boundary);
     return sphereAround(ball.center, points, count);
 }
 

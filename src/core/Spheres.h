@@ -20,10 +20,6 @@ Sphere ritterSphere(const glm::dvec3* points, size_t count);
 // largest distance from the centre, so every point is inside whatever the rounding.
 Sphere minimalSphere(const glm::dvec3* points, size_t count);
 
-// A fixed pseudo-random order for Welzl-style algorithms: expected linear time on sorted input,
-// and the same result on every run.
-void shuffleReproducibly(std::vector<glm::dvec3>& points, uint64_t seed);
-
 // The sphere with this centre that holds every point (largest distance, plus a rounding margin).
 Sphere sphereAround(const glm::dvec3& center, const glm::dvec3* points, size_t count);
 

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "ClusterOptimizer.h"
+#include "ExpectedCull.h"
 
 namespace conescope {
 
@@ -66,8 +67,6 @@ TestStatistics measureCulling(const CullingInput& input, const std::vector<Eye>&
     result.cone = bounds.coneMethod;
     result.test = test;
     result.clusters.resize(clusterCount);
-    size_t totalTriangles = 0;
-    double expected = 0.0;
     for (uint32_t c = 0; c < clusterCount; ++c) {
         ClusterStatistics& cluster = result.clusters[c];
         cluster.cluster = c;
@@ -78,14 +77,12 @@ TestStatistics measureCulling(const CullingInput& input, const std::vector<Eye>&
         cluster.sphereRadius = bounds.spheres[c].radius;
         cluster.halfAngleDegrees = cluster.cullable ? glm::degrees(bounds.cones[c].halfAngle()) : 90.0;
         result.uncullableClusters += cluster.cullable ? 0 : 1;
-        totalTriangles += cluster.triangles;
-        if (cluster.cullable) expected += double(cluster.triangles) * (1.0 - bounds.cones[c].sinHalfAngle);
         result.meanClusterTriangles += double(cluster.triangles);
         result.meanClusterVertices += double(cluster.vertices);
         result.meanSphereRadius += cluster.sphereRadius;
         result.maxSphereRadius = std::max(result.maxSphereRadius, cluster.sphereRadius);
     }
-    result.expectedEfficiency = totalTriangles ? expected / double(totalTriangles) : 0.0;
+    result.expectedEfficiency = expectedCullRate(bounds.cones.data(), bounds.triangles.data(), clusterCount);
     if (clusterCount > 0) {
         result.meanClusterTriangles /= double(clusterCount);
         result.meanClusterVertices /= double(clusterCount);

@@ -1,0 +1,44 @@
+// Which faces touch which: faces around each vertex and faces across each side, in compressed rows
+// (one array of items and one of row starts, no vector per row), for the builders that grow
+// clusters over the surface and for the optimized builder's moves.
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "Mesh.h"
+
+namespace conescope {
+
+// Row i is items[starts[i], starts[i + 1]).
+struct Rows {
+    std::vector<uint32_t> starts;
+    std::vector<uint32_t> items;
+    const uint32_t* begin(size_t i) const { return items.data() + starts[i]; }
+    const uint32_t* end(size_t i) const { return items.data() + starts[i + 1]; }
+};
+
+// The sides of a face in winding order, as (a, b); a side whose two ends are one vertex (a face
+// that repeats a vertex) is no side and is skipped.
+template <class Visit>
+void forEachSide(const Mesh& mesh, size_t face, Visit visit) {
+    const uint32_t* vertices = mesh.faceBegin(face);
+    const size_t size = mesh.faceSize(face);
+    for (size_t k = 0; k < size; ++k) {
+        const uint32_t a = vertices[k], b = vertices[(k + 1) % size];
+        if (a != b) visit(a, b);
+    }
+}
+
+// One key per edge whatever the direction a face runs it: (smaller vertex << 32) | larger vertex.
+inline uint64_t edgeKey(uint32_t a, uint32_t b) { return uint64_t(std::min(a, b)) << 32 | std::max(a, b); }
+
+// Faces around each vertex, in face order; a face that repeats a vertex is listed once.
+Rows facesAroundVertices(const Mesh& mesh);
+
+// Faces sharing a side (both of its end points) with each face, every face once per row.
+Rows facesAcrossEdges(const Mesh& mesh, const Rows& aroundVertex);
+
+}  // namespace conescope

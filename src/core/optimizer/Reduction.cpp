@@ -1,0 +1,400 @@
+// Reduction to the budget: growth leaves more clusters than the budget, many small. The smallest
+// are dissolved face by face into their neighbours; where that gets stuck, whole clusters merge
+// (cheapest loss first), faces that save a vertex move to make room, and three clusters are cut
+// again into two.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <queue>
+#include <vector>
+
+#include "Steps.h"
+
+namespace conescope::optimizer {
+
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+// Live clusters, smallest first (ties by id): the order in which dissolving is tried.
+std::vector<uint32_t> clustersBySize(const State& state) {
+    std::vector<uint32_t> order;
+    for (uint32_t c = 0; c < state.clusters.size(); ++c)
+        if (!state.clusters[c].faces.empty()) order.push_back(c);
+    std::stable_sort(order.begin(), order.end(),
+                     [&](uint32_t a, uint32_t b) { return state.clusters[a].triangles < state.clusters[b].triangles; });
+    return order;
+}
+
+// The face moves on and the cluster it joins gets a cap that holds it (grown, not exact: cheap,
+// and recomputed once the step is done).
+void moveGrowingCap(State& state, uint32_t face, uint32_t to) {
+    move(state, face, to);
+    if (state.usable[face]) state.clusters[to].cap = growCap(state.clusters[to].cap, state.geometry.normals[face]);
+}
+
+// Frees room for `face` in `cluster` by passing one of the cluster's border faces on to a third
+// cluster (not `from`, where `face` comes from). Cheap tests first (would `face` fit without it,
+// does it fit elsewhere), the connectivity walk last. The move is recorded in state.undo. (Chains
+// of two such hand-overs reached tight budgets slightly more often at twice the cost: not worth it.)
+bool makeRoom(State& state, uint32_t face, uint32_t cluster, uint32_t from) {
+    const Cluster& full = state.clusters[cluster];
+    // Who in the cluster uses each corner of `face` (none, one face, or more), so that what
+    // arrives without g is a lookup per corner rather than a walk around it for every g.
+    state.corners.clear();
+    for (size_t k = 0; k < state.mesh.faceSize(face); ++k) {
+        if (repeatsEarlierVertex(state.mesh, face, k)) continue;
+        const uint32_t v = state.mesh.faceBegin(face)[k];
+        State::Corner corner;
+        for (const uint32_t* g = state.aroundVertex.begin(v); g != state.aroundVertex.end(v) && corner.users < 2; ++g)
+            if (state.clusterOf[*g] == cluster) corner.soleUser = *g, ++corner.users;
+        state.corners.push_back(corner);
+    }
+    state.members = full.faces;
+    for (uint32_t g : state.members) {
+        if (g == face || state.clusterOf[g] != cluster ||
+            full.triangles - state.faceTriangles[g] + state.faceTriangles[face] > state.limits.maxTriangles)
+            continue;
+        // Only a border face has somewhere to go; most members are inside, so ask that first.
+        uint32_t others[8];
+        const size_t otherCount = neighbourClusters(state, g, others);
+        if (std::count(others, others + otherCount, from) == long(otherCount)) continue;
+        // Vertices once g is gone: g's own ones leave, face's ones not used by the rest arrive.
+        uint32_t arriving = 0;
+        for (const State::Corner& corner : state.corners) arriving += corner.users == 0 || (corner.users == 1 && corner.soleUser == g);
+        if (full.vertices - ownVertices(state, g) + arriving > state.limits.maxVertices) continue;
+        bool touches = false;  // `face` must still border the cluster without g
+        for (const uint32_t* k = state.acrossEdge.begin(face); k != state.acrossEdge.end(face); ++k)
+            touches |= *k != g && state.clusterOf[*k] == cluster;
+        if (!touches) continue;
+        for (size_t i = 0; i < otherCount; ++i) {
+            const uint32_t other = others[i];
+            if (other == from || !fits(state, g, other)) continue;
+            if (!staysConnectedWithout(state, g)) break;
+            moveGrowingCap(state, g, other);
+            state.undo.emplace_back(g, cluster);
+            return true;
+        }
+    }
+    return false;
+}
+
+// Of the clusters `face` could join, the one where the objective loses least (by the grown cap's
+// bound); kNone when it fits in none.
+uint32_t cheapestHome(const State& state, uint32_t face, const uint32_t* targets, size_t targetCount) {
+    double bestGain = -kInfinity;
+    uint32_t bestTarget = kNone;
+    for (size_t k = 0; k < targetCount; ++k) {
+        const uint32_t to = targets[k];
+        if (!fits(state, face, to)) continue;
+        const Cluster& target = state.clusters[to];
+        const double sinAfter = state.usable[face]
+                                    ? sinAfterAdding(target.cap, glm::dot(state.geometry.normals[face], target.cap.axis))
+                                    : sinOf(target.cap);
+        const double gain = expectedCulledTriangles(double(target.triangles) + state.faceTriangles[face], sinAfter) -
+                            valueOf(target.triangles, target.cap);
+        if (gain > bestGain) bestGain = gain, bestTarget = to;
+    }
+    return bestTarget;
+}
+
+// Exact caps for every cluster the moves in state.undo touched.
+void recomputeTouchedCaps(State& state) {
+    state.members.clear();
+    for (const auto& [face, from] : state.undo) state.members.push_back(from), state.members.push_back(state.clusterOf[face]);
+    std::sort(state.members.begin(), state.members.end());
+    state.members.erase(std::unique(state.members.begin(), state.members.end()), state.members.end());
+    for (uint32_t c : state.members) state.clusters[c].cap = state.clusters[c].faces.empty() ? Cap{} : exactCap(state, c);
+}
+
+// Empties a cluster by handing each of its faces, from its border inwards, to the neighbouring
+// cluster where the objective loses least; a full neighbour first passes one of its own border
+// faces on. Caps are grown approximately on the way and recomputed at the end. Undone (returns
+// false) if some face finds no room.
+bool dissolve(State& state, uint32_t cluster) {
+    if (state.clusters[cluster].faces.empty()) return false;
+    state.undo.clear();
+    std::vector<uint32_t>& queue = state.queue;
+    uint32_t queued = 0;  // faceStamp of faces in the queue (other checks may overwrite some: harmless)
+    auto refill = [&]() {
+        queued = ++state.stamp;
+        queue.clear();
+        for (uint32_t f : state.clusters[cluster].faces)
+            for (const uint32_t* g = state.acrossEdge.begin(f); g != state.acrossEdge.end(f); ++g)
+                if (state.clusterOf[*g] != cluster && state.faceStamp[f] != queued) state.faceStamp[f] = queued, queue.push_back(f);
+    };
+    refill();
+    for (int round = 0; round < 4 && !state.clusters[cluster].faces.empty(); ++round) {
+        const bool pushing = round >= 2;  // plain moves everywhere first, then make room
+        for (size_t i = 0; i < queue.size(); ++i) {
+            const uint32_t face = queue[i];
+            if (state.clusterOf[face] != cluster) continue;
+            uint32_t targets[8];
+            const size_t targetCount = neighbourClusters(state, face, targets);
+            uint32_t bestTarget = cheapestHome(state, face, targets, targetCount);
+            for (size_t k = 0; k < targetCount && bestTarget == kNone && pushing; ++k)
+                if (makeRoom(state, face, targets[k], cluster)) bestTarget = targets[k];
+            if (bestTarget == kNone && round == 3) break;  // last round: one stuck face fails it all
+            if (bestTarget == kNone) continue;
+            state.undo.emplace_back(face, cluster);
+            moveGrowingCap(state, face, bestTarget);
+            for (const uint32_t* g = state.acrossEdge.begin(face); g != state.acrossEdge.end(face); ++g)
+                if (state.clusterOf[*g] == cluster && state.faceStamp[*g] != queued) state.faceStamp[*g] = queued, queue.push_back(*g);
+        }
+        refill();
+    }
+    const bool emptied = state.clusters[cluster].faces.empty();
+    if (!emptied)
+        for (size_t i = state.undo.size(); i-- > 0;) move(state, state.undo[i].first, state.undo[i].second);
+    recomputeTouchedCaps(state);
+    if (emptied) --state.liveClusters;
+    return emptied;
+}
+
+// The two faces of state.pool farthest apart, roughly: the one farthest from the pool's centre,
+// then the one farthest from that. They seed the two halves of threeIntoTwo.
+void farthestPair(const State& state, uint32_t seeds[2]) {
+    const std::vector<glm::dvec3>& centroids = state.geometry.centroids;
+    glm::dvec3 center(0.0);
+    for (uint32_t f : state.pool) center += centroids[f];
+    center /= double(state.pool.size());
+    seeds[0] = seeds[1] = state.pool[0];
+    double farthest = -1.0;
+    for (uint32_t f : state.pool)
+        if (glm::length(centroids[f] - center) > farthest) farthest = glm::length(centroids[f] - center), seeds[0] = f;
+    farthest = -1.0;
+    for (uint32_t f : state.pool) {
+        const double distance = glm::length(centroids[f] - centroids[seeds[0]]);
+        if (distance > farthest) farthest = distance, seeds[1] = f;
+    }
+}
+
+// Balanced flood of state.pool from the two seeds: each half takes its nearest faces (faceMark =
+// 0 or 1) until it holds half of the `total` triangles. False when some face was reached by
+// neither half.
+bool floodInHalves(State& state, const uint32_t seeds[2], double total, double sideTriangles[2]) {
+    struct Entry {
+        double distance;
+        uint32_t face, side;
+        bool operator<(const Entry& other) const {
+            if (distance != other.distance) return distance > other.distance;
+            return face > other.face;
+        }
+    };
+    std::priority_queue<Entry> heap;
+    const uint32_t member = ++state.stamp;
+    for (uint32_t f : state.pool) state.faceStamp[f] = member;
+    const uint32_t taken = ++state.stamp;
+    for (uint32_t side = 0; side < 2; ++side) heap.push({0.0, seeds[side], side});
+    sideTriangles[0] = sideTriangles[1] = 0.0;
+    size_t assigned = 0;
+    while (!heap.empty()) {
+        const Entry top = heap.top();
+        heap.pop();
+        if (state.faceStamp[top.face] == taken) continue;
+        if (sideTriangles[top.side] + state.faceTriangles[top.face] > 0.5 * total + 2.0 && sideTriangles[1 - top.side] < 0.5 * total)
+            continue;  // this half is full; the other may still reach the face
+        state.faceStamp[top.face] = taken;
+        state.faceMark[top.face] = top.side;
+        sideTriangles[top.side] += state.faceTriangles[top.face];
+        ++assigned;
+        for (const uint32_t* g = state.acrossEdge.begin(top.face); g != state.acrossEdge.end(top.face); ++g)
+            if (state.faceStamp[*g] == member)
+                heap.push({glm::length(state.geometry.centroids[*g] - state.geometry.centroids[seeds[top.side]]), *g, top.side});
+    }
+    return assigned == state.pool.size();
+}
+
+// The objective of the two halves floodInHalves marked, or -infinity when one breaks a limit.
+double valueOfHalves(State& state, const double sideTriangles[2]) {
+    double value = 0.0;
+    for (uint32_t side = 0; side < 2; ++side) {
+        ++state.stamp;
+        uint32_t vertices = 0;
+        state.gathered.clear();
+        for (uint32_t f : state.pool) {
+            if (state.faceMark[f] != side) continue;
+            if (state.usable[f]) state.gathered.push_back(state.geometry.normals[f]);
+            for (size_t k = 0; k < state.mesh.faceSize(f); ++k) {
+                const uint32_t v = state.mesh.faceBegin(f)[k];
+                if (state.vertexStamp[v] != state.stamp) state.vertexStamp[v] = state.stamp, ++vertices;
+            }
+        }
+        if (vertices > state.limits.maxVertices || sideTriangles[side] > double(state.limits.maxTriangles)) return -kInfinity;
+        value += valueOf(sideTriangles[side], minimalCap(state.gathered.data(), state.gathered.size()));
+    }
+    return value;
+}
+
+// This cluster and two of its neighbours are cut again into two compact halves grown from their
+// two farthest faces; the count drops by one when both halves fit. For when no neighbour has
+// room to take the cluster face by face. The best pair by objective wins.
+bool threeIntoTwo(State& state, uint32_t cluster) {
+    std::vector<uint32_t>& neighbours = state.neighbours;
+    clustersAround(state, cluster, 64, neighbours);
+    double bestValue = -kInfinity;
+    uint32_t bestPair[2] = {kNone, kNone};
+    for (size_t i = 0; i < neighbours.size(); ++i)
+        for (size_t j = i + 1; j < neighbours.size(); ++j) {
+            const uint32_t a = neighbours[i], b = neighbours[j];
+            const double total = double(state.clusters[cluster].triangles) + state.clusters[a].triangles + state.clusters[b].triangles;
+            if (total > 2.0 * double(state.limits.maxTriangles)) continue;
+            state.pool = state.clusters[cluster].faces;
+            state.pool.insert(state.pool.end(), state.clusters[a].faces.begin(), state.clusters[a].faces.end());
+            state.pool.insert(state.pool.end(), state.clusters[b].faces.begin(), state.clusters[b].faces.end());
+            uint32_t seeds[2];
+            farthestPair(state, seeds);
+            double sideTriangles[2];
+            if (!floodInHalves(state, seeds, total, sideTriangles)) continue;
+            const double value = valueOfHalves(state, sideTriangles);
+            if (value <= bestValue) continue;
+            bestValue = value;
+            state.bestPool = state.pool;
+            state.bestHalf.clear();
+            for (uint32_t f : state.pool)
+                if (state.faceMark[f] == 0) state.bestHalf.push_back(f);
+            bestPair[0] = a, bestPair[1] = b;
+        }
+    if (bestPair[0] == kNone) return false;
+    // Half 0 goes to the first neighbour, half 1 to the second; this cluster empties.
+    ++state.stamp;
+    for (uint32_t f : state.bestHalf) state.faceStamp[f] = state.stamp;
+    for (uint32_t f : state.bestPool) {
+        const uint32_t want = state.faceStamp[f] == state.stamp ? bestPair[0] : bestPair[1];
+        if (state.clusterOf[f] != want) move(state, f, want);
+    }
+    state.clusters[bestPair[0]].cap = exactCap(state, bestPair[0]);
+    state.clusters[bestPair[1]].cap = exactCap(state, bestPair[1]);
+    state.clusters[cluster].cap = Cap{};
+    --state.liveClusters;
+    return true;
+}
+
+// The objective lost by merging two clusters, with the merged cap in *merged; infinity when the
+// merged cluster breaks a limit.
+double mergeLoss(State& state, uint32_t a, uint32_t b, Cap* merged) {
+    const Cluster& first = state.clusters[a];
+    const Cluster& second = state.clusters[b];
+    if (first.triangles + second.triangles > state.limits.maxTriangles) return kInfinity;
+    ++state.stamp;
+    uint32_t vertices = first.vertices;
+    for (uint32_t f : second.faces)
+        for (size_t k = 0; k < state.mesh.faceSize(f); ++k) {
+            const uint32_t v = state.mesh.faceBegin(f)[k];
+            if (state.vertexStamp[v] == state.stamp) continue;
+            state.vertexStamp[v] = state.stamp;
+            if (!clusterUsesVertex(state, a, v)) ++vertices;
+        }
+    if (vertices > state.limits.maxVertices) return kInfinity;
+    state.gathered.clear();
+    for (const Cluster* part : {&first, &second})
+        for (uint32_t f : part->faces)
+            if (state.usable[f]) state.gathered.push_back(state.geometry.normals[f]);
+    *merged = minimalCap(state.gathered.data(), state.gathered.size());
+    return valueOf(first.triangles, first.cap) + valueOf(second.triangles, second.cap) -
+           valueOf(double(first.triangles) + double(second.triangles), *merged);
+}
+
+void mergeInto(State& state, uint32_t into, uint32_t from, const Cap& merged) {
+    state.members = state.clusters[from].faces;
+    for (uint32_t f : state.members) move(state, f, into);
+    state.clusters[into].cap = merged;
+    state.clusters[from].cap = Cap{};
+    --state.liveClusters;
+}
+
+// Whole-cluster merges, cheapest objective loss first (lazy heap: an entry is stale once either
+// cluster changed since it was pushed).
+void mergeCheapest(State& state, size_t count) {
+    struct Entry {
+        double loss;
+        uint32_t a, b, versionA, versionB;
+        bool operator<(const Entry& other) const {
+            if (loss != other.loss) return loss > other.loss;
+            if (a != other.a) return a > other.a;
+            return b > other.b;
+        }
+    };
+    std::vector<uint32_t> version(state.clusters.size(), 0);
+    std::priority_queue<Entry> heap;
+    std::vector<uint32_t> neighbours;
+    auto pushPairs = [&](uint32_t a) {
+        clustersAround(state, a, std::numeric_limits<size_t>::max(), neighbours);
+        for (uint32_t b : neighbours) {
+            Cap merged;
+            const double loss = mergeLoss(state, a, b, &merged);
+            const uint32_t low = std::min(a, b), high = std::max(a, b);
+            if (std::isfinite(loss)) heap.push({loss, low, high, version[low], version[high]});
+        }
+    };
+    for (uint32_t a = 0; a < state.clusters.size(); ++a)
+        if (!state.clusters[a].faces.empty()) pushPairs(a);
+    size_t done = 0;
+    while (done < count && !heap.empty()) {
+        const Entry top = heap.top();
+        heap.pop();
+        if (version[top.a] != top.versionA || version[top.b] != top.versionB) continue;
+        if (state.clusters[top.a].faces.empty() || state.clusters[top.b].faces.empty()) continue;
+        Cap merged;
+        if (!std::isfinite(mergeLoss(state, top.a, top.b, &merged))) continue;
+        mergeInto(state, top.a, top.b, merged);
+        ++version[top.a];
+        ++version[top.b];
+        ++done;
+        pushPairs(top.a);
+    }
+}
+
+// Moves that save a vertex: a border face whose corners the neighbour already uses, and one of
+// which only it uses in its own cluster. Full clusters get room that way for the reduction.
+size_t compact(State& state) {
+    size_t moves = 0;
+    for (uint32_t face = 0; face < state.faceCount; ++face) {
+        const uint32_t from = state.clusterOf[face];
+        if (state.clusters[from].faces.size() <= 1 || ownVertices(state, face) == 0) continue;
+        uint32_t targets[8];
+        const size_t targetCount = neighbourClusters(state, face, targets);
+        for (size_t i = 0; i < targetCount; ++i) {
+            const uint32_t to = targets[i];
+            if (newVertices(state, face, to) != 0 || state.clusters[to].triangles + state.faceTriangles[face] > state.limits.maxTriangles)
+                continue;
+            if (!staysConnectedWithout(state, face)) break;
+            moveGrowingCap(state, face, to);
+            ++moves;
+            break;
+        }
+    }
+    if (moves > 0)
+        for (uint32_t c = 0; c < state.clusters.size(); ++c)
+            if (!state.clusters[c].faces.empty()) state.clusters[c].cap = exactCap(state, c);
+    return moves;
+}
+
+// Dissolving, smallest clusters first, while above the target.
+void dissolveSmallest(State& state, size_t target) {
+    for (uint32_t c : clustersBySize(state)) {
+        if (state.liveClusters <= target) return;
+        dissolve(state, c);
+    }
+}
+
+}  // namespace
+
+void reduceTo(State& state, size_t target) {
+    dissolveSmallest(state, target);
+    if (state.liveClusters > target) mergeCheapest(state, state.liveClusters - target);
+    // Where every neighbour is full, three clusters become two, which frees room for more dissolving.
+    for (int round = 0; round < 4 && state.liveClusters > target; ++round) {
+        const size_t before = state.liveClusters;
+        compact(state);
+        dissolveSmallest(state, target);
+        for (uint32_t c : clustersBySize(state)) {
+            if (state.liveClusters <= target) break;
+            if (!state.clusters[c].faces.empty()) threeIntoTwo(state, c);
+        }
+        dissolveSmallest(state, target);
+        if (state.liveClusters == before) break;
+    }
+}
+
+}  // namespace conescope::optimizer

@@ -1,0 +1,199 @@
+#include "State.h"
+
+#include <algorithm>
+
+namespace conescope::optimizer {
+
+State::State(const Mesh& mesh, const FaceGeometry& geometry, const MeshletLimits& limits)
+    : mesh(mesh), geometry(geometry), limits(limits), faceCount(mesh.faceCount()) {
+    aroundVertex = facesAroundVertices(mesh);
+    acrossEdge = facesAcrossEdges(mesh, aroundVertex);
+    clusterOf.assign(faceCount, kNone);
+    slotOf.assign(faceCount, 0);
+    faceStamp.assign(faceCount, 0);
+    faceMark.assign(faceCount, 0);
+    vertexStamp.assign(mesh.positions.size(), 0);
+    faceTriangles.resize(faceCount);
+    usable.resize(faceCount);
+    for (size_t f = 0; f < faceCount; ++f) {
+        faceTriangles[f] = uint32_t(mesh.faceSize(f) - 2);
+        usable[f] = !geometry.degenerate[f];
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Membership.
+
+namespace {
+
+void attach(State& state, uint32_t face, uint32_t cluster) {
+    Cluster& target = state.clusters[cluster];
+    target.vertices += newVertices(state, face, cluster);
+    target.triangles += state.faceTriangles[face];
+    state.clusterOf[face] = cluster;
+    state.slotOf[face] = uint32_t(target.faces.size());
+    target.faces.push_back(face);
+}
+
+// The last face of the cluster takes the leaving face's slot: O(1) whatever the cluster's size.
+void detach(State& state, uint32_t face) {
+    Cluster& source = state.clusters[state.clusterOf[face]];
+    source.vertices -= ownVertices(state, face);
+    source.triangles -= state.faceTriangles[face];
+    const uint32_t slot = state.slotOf[face];
+    source.faces[slot] = source.faces.back();
+    state.slotOf[source.faces[slot]] = slot;
+    source.faces.pop_back();
+    state.clusterOf[face] = kNone;
+}
+
+}  // namespace
+
+void move(State& state, uint32_t face, uint32_t to) {
+    detach(state, face);
+    attach(state, face, to);
+}
+
+void clustersAround(const State& state, uint32_t cluster, size_t limit, std::vector<uint32_t>& out) {
+    out.clear();
+    for (uint32_t f : state.clusters[cluster].faces) {
+        uint32_t around[8];
+        const size_t count = neighbourClusters(state, f, around);
+        for (size_t i = 0; i < count; ++i)
+            if (out.size() < limit && std::find(out.begin(), out.end(), around[i]) == out.end()) out.push_back(around[i]);
+    }
+    std::sort(out.begin(), out.end());
+}
+
+// ---------------------------------------------------------------------------------------------
+// Caps.
+
+size_t gatherNormals(State& state, uint32_t cluster, uint32_t exceptFace) {
+    state.gathered.clear();
+    for (uint32_t f : state.clusters[cluster].faces)
+        if (f != exceptFace && state.usable[f]) state.gathered.push_back(state.geometry.normals[f]);
+    return state.gathered.size();
+}
+
+Cap exactCap(State& state, uint32_t cluster) {
+    const size_t count = gatherNormals(state, cluster, kNone);
+    return minimalCap(state.gathered.data(), count);
+}
+
+Cap capAdding(State& state, uint32_t cluster, uint32_t face) {
+    const Cap& current = state.clusters[cluster].cap;
+    const glm::dvec3& normal = state.geometry.normals[face];
+    if (!state.usable[face] || contains(current, normal)) return current;
+    if (current.cosRadius > 1.0) return capThrough(normal);
+    if (!(current.cosRadius > 0.0)) return current;  // already no cone
+    const size_t count = gatherNormals(state, cluster, kNone);
+    return minimalCapWith(state.gathered.data(), count, normal);
+}
+
+bool bindsCap(const State& state, uint32_t face) {
+    const Cap& current = state.clusters[state.clusterOf[face]].cap;
+    return state.usable[face] &&
+           !(current.cosRadius > 0.0 && glm::dot(state.geometry.normals[face], current.axis) > current.cosRadius + 1e-9);
+}
+
+Cap capRemoving(State& state, uint32_t face) {
+    const uint32_t cluster = state.clusterOf[face];
+    if (!bindsCap(state, face)) return state.clusters[cluster].cap;
+    const size_t count = gatherNormals(state, cluster, face);
+    return minimalCap(state.gathered.data(), count);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Connectivity.
+
+namespace {
+
+constexpr size_t kRingSize = 48;
+
+// Usually the cluster's faces around the corners of `face` already join its edge neighbours: a
+// walk over that ring (at most kRingSize faces, on the stack) answers without the whole cluster.
+// True when it reaches all neighboursInCluster from `first`; false when it does not or the ring
+// is too large to tell.
+bool ringJoinsNeighbours(const State& state, uint32_t face, uint32_t first, uint32_t neighboursInCluster) {
+    const uint32_t cluster = state.clusterOf[face];
+    uint32_t ring[kRingSize];
+    size_t ringCount = 0;
+    for (size_t k = 0; k < state.mesh.faceSize(face); ++k) {
+        const uint32_t v = state.mesh.faceBegin(face)[k];
+        for (const uint32_t* g = state.aroundVertex.begin(v); g != state.aroundVertex.end(v); ++g)
+            if (*g != face && state.clusterOf[*g] == cluster && ringCount < kRingSize &&
+                std::find(ring, ring + ringCount, *g) == ring + ringCount)
+                ring[ringCount++] = *g;
+    }
+    if (ringCount >= kRingSize) return false;
+    bool reachedRing[kRingSize] = {};
+    size_t stack[kRingSize], top = 0, reachedNeighbours = 1;
+    const size_t start = size_t(std::find(ring, ring + ringCount, first) - ring);
+    reachedRing[start] = true;
+    stack[top++] = start;
+    while (top > 0) {
+        const uint32_t f = ring[stack[--top]];
+        for (const uint32_t* g = state.acrossEdge.begin(f); g != state.acrossEdge.end(f); ++g) {
+            const size_t i = size_t(std::find(ring, ring + ringCount, *g) - ring);
+            if (i == ringCount || reachedRing[i]) continue;
+            reachedRing[i] = true;
+            stack[top++] = i;
+            for (const uint32_t* h = state.acrossEdge.begin(face); h != state.acrossEdge.end(face); ++h) reachedNeighbours += *h == *g;
+        }
+    }
+    return reachedNeighbours == neighboursInCluster;
+}
+
+}  // namespace
+
+bool staysConnectedWithout(State& state, uint32_t face) {
+    const uint32_t cluster = state.clusterOf[face];
+    uint32_t first = kNone, neighboursInCluster = 0;
+    for (const uint32_t* g = state.acrossEdge.begin(face); g != state.acrossEdge.end(face); ++g)
+        if (state.clusterOf[*g] == cluster) {
+            ++neighboursInCluster;
+            if (first == kNone) first = *g;
+        }
+    if (neighboursInCluster <= 1) return true;
+    if (ringJoinsNeighbours(state, face, first, neighboursInCluster)) return true;
+    // Walk the cluster from one neighbour without crossing `face`; every face must be reached.
+    ++state.stamp;
+    state.faceStamp[face] = state.stamp;
+    state.faceStamp[first] = state.stamp;
+    state.walk.assign(1, first);
+    size_t reached = 1;
+    while (!state.walk.empty()) {
+        const uint32_t f = state.walk.back();
+        state.walk.pop_back();
+        for (const uint32_t* g = state.acrossEdge.begin(f); g != state.acrossEdge.end(f); ++g)
+            if (state.clusterOf[*g] == cluster && state.faceStamp[*g] != state.stamp) {
+                state.faceStamp[*g] = state.stamp;
+                state.walk.push_back(*g);
+                ++reached;
+            }
+    }
+    return reached + 1 == state.clusters[cluster].faces.size();
+}
+
+// ---------------------------------------------------------------------------------------------
+// The whole.
+
+void clear(State& state) {
+    state.clusters.clear();
+    std::fill(state.clusterOf.begin(), state.clusterOf.end(), kNone);
+    state.liveClusters = 0;
+}
+
+Partition result(const State& state) {
+    std::vector<uint32_t> renumber(state.clusters.size(), kNone);
+    Partition partition;
+    partition.clusterOfFace.resize(state.faceCount);
+    for (size_t f = 0; f < state.faceCount; ++f) {
+        uint32_t& id = renumber[state.clusterOf[f]];
+        if (id == kNone) id = partition.clusterCount++;
+        partition.clusterOfFace[f] = id;
+    }
+    return partition;
+}
+
+}  // namespace conescope::optimizer

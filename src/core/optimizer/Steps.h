@@ -1,0 +1,25 @@
+// The optimized builder's steps, in the order optimizeClusters (ClusterOptimizer.cpp) runs them;
+// each in its own file.
+#pragma once
+
+#include <cstddef>
+
+#include "State.h"
+
+namespace conescope::optimizer {
+
+// Growth.cpp: clusters of like normals grown one at a time over edge neighbours, each until no
+// face fits the limits or `triangleCap` triangles. Makes more clusters than the budget.
+void grow(State& state, double triangleCap);
+
+// Reduction.cpp: clusters dissolved into neighbours, merged or cut three into two until at most
+// `target` are left (or no step gets further).
+void reduceTo(State& state, size_t target);
+
+// LocalSearch.cpp: border faces moved to the neighbouring cluster where the objective gains, until
+// no move gains (or a pass limit).
+void refine(State& state);
+// LocalSearch.cpp: `sweeps` annealing sweeps over all border faces, cooling from sweep to sweep.
+void anneal(State& state, size_t sweeps);
+
+}  // namespace conescope::optimizer
