@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "Adjacency.h"
 #include "LargeArrays.h"
 
 namespace conescope {
@@ -21,16 +22,8 @@ struct HalfEdge {
 std::vector<HalfEdge> sortedHalfEdges(const Mesh& mesh) {
     std::vector<HalfEdge> edges;
     reserveLarge(edges, mesh.faceVertices.size());
-    for (size_t f = 0; f < mesh.faceCount(); ++f) {
-        const uint32_t* face = mesh.faceBegin(f);
-        const size_t count = mesh.faceSize(f);
-        for (size_t k = 0; k < count; ++k) {
-            const uint32_t a = face[k], b = face[(k + 1) % count];
-            if (a == b) continue;
-            const uint64_t key = (uint64_t(std::min(a, b)) << 32) | std::max(a, b);
-            edges.push_back({key, uint32_t(f), a < b});
-        }
-    }
+    for (size_t f = 0; f < mesh.faceCount(); ++f)
+        forEachSide(mesh, f, [&](uint32_t a, uint32_t b) { edges.push_back({edgeKey(a, b), uint32_t(f), a < b}); });
     std::sort(edges.begin(), edges.end(), [](const HalfEdge& x, const HalfEdge& y) { return x.key < y.key; });
     return edges;
 }
