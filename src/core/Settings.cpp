@@ -68,22 +68,19 @@ ConeMethod parseConeMethod(const std::string& text) { return parseName(coneNames
 CullTest parseCullTest(const std::string& text) { return parseName(testNames(), text, "cull test"); }
 SphereMethod parseSphereMethod(const std::string& text) { return parseName(sphereNames(), text, "sphere method"); }
 
-const std::vector<ConeMethod>& allConeMethods() {
-    static const std::vector<ConeMethod> all = entriesOf(coneNames());
+namespace {
+// Every entry of an enum's table, made once per enum type.
+template <typename Enum>
+const std::vector<Enum>& allOf(const NameTable<Enum>& table) {
+    static const std::vector<Enum> all = entriesOf(table);
     return all;
 }
-const std::vector<CullTest>& allCullTests() {
-    static const std::vector<CullTest> all = entriesOf(testNames());
-    return all;
-}
-const std::vector<Builder>& allBuilders() {
-    static const std::vector<Builder> all = entriesOf(builderNames());
-    return all;
-}
-const std::vector<SphereMethod>& allSphereMethods() {
-    static const std::vector<SphereMethod> all = entriesOf(sphereNames());
-    return all;
-}
+}  // namespace
+
+const std::vector<ConeMethod>& allConeMethods() { return allOf(coneNames()); }
+const std::vector<CullTest>& allCullTests() { return allOf(testNames()); }
+const std::vector<Builder>& allBuilders() { return allOf(builderNames()); }
+const std::vector<SphereMethod>& allSphereMethods() { return allOf(sphereNames()); }
 
 std::vector<Eye> viewsFor(const Settings& settings, const Aabb& worldBox) {
     if (settings.eye) {

@@ -80,21 +80,18 @@ private:
 std::string asText(std::string_view token) { return quotedForMessage(std::string(token)); }
 
 // Locale-independent (std::from_chars): a GUI that called setlocale() must not turn "0.5" into 0.
-std::optional<double> parseReal(std::string_view token) {
+// The whole token must be the number; a leading '+' is allowed.
+template <typename Number>
+std::optional<Number> parseWhole(std::string_view token) {
     if (!token.empty() && token.front() == '+') token.remove_prefix(1);
-    double value = 0.0;
+    Number value = 0;
     auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
     if (error != std::errc() || end != token.data() + token.size() || token.empty()) return std::nullopt;
     return value;
 }
 
-std::optional<int64_t> parseInteger(std::string_view token) {
-    if (!token.empty() && token.front() == '+') token.remove_prefix(1);
-    int64_t value = 0;
-    auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
-    if (error != std::errc() || end != token.data() + token.size() || token.empty()) return std::nullopt;
-    return value;
-}
+std::optional<double> parseReal(std::string_view token) { return parseWhole<double>(token); }
+std::optional<int64_t> parseInteger(std::string_view token) { return parseWhole<int64_t>(token); }
 
 // What the header keyword ([ST][C][N][4][n]OFF) says about the vertex lines.
 struct OffKeyword {

@@ -31,37 +31,37 @@ uint32_t checkedPointIndex(vtkIdType id) {
 // polys, strips), so per-cell arrays can be carried over face by face.
 using SourceCells = std::vector<vtkIdType>;
 
-void appendPolygons(vtkPolyData* polyData, Mesh& mesh, SourceCells& sourceCells) {
-    vtkCellArray* polygons = polyData->GetPolys();
-    if (!polygons) return;
-    vtkIdType firstCell = polyData->GetNumberOfVerts() + polyData->GetNumberOfLines();
-    std::vector<uint32_t> face;
-    vtkSmartPointer<vtkCellArrayIterator> cells = vtk::TakeSmartPointer(polygons->NewIterator());
+// Calls visit(cellIndex, size, points) for each cell of `cells` (may be null), in order.
+template <typename Visit>
+void forEachCell(vtkCellArray* cells, Visit visit) {
+    if (!cells) return;
+    vtkSmartPointer<vtkCellArrayIterator> cell = vtk::TakeSmartPointer(cells->NewIterator());
     vtkIdType cellIndex = 0;
-    for (cells->GoToFirstCell(); !cells->IsDoneWithTraversal(); cells->GoToNextCell(), ++cellIndex) {
+    for (cell->GoToFirstCell(); !cell->IsDoneWithTraversal(); cell->GoToNextCell(), ++cellIndex) {
         vtkIdType size = 0;
         const vtkIdType* points = nullptr;
-        cells->GetCurrentCell(size, points);
+        cell->GetCurrentCell(size, points);
+        visit(cellIndex, size, points);
+    }
+}
+
+void appendPolygons(vtkPolyData* polyData, Mesh& mesh, SourceCells& sourceCells) {
+    const vtkIdType firstCell = polyData->GetNumberOfVerts() + polyData->GetNumberOfLines();
+    std::vector<uint32_t> face;
+    forEachCell(polyData->GetPolys(), [&](vtkIdType cellIndex, vtkIdType size, const vtkIdType* points) {
         face.clear();
         for (vtkIdType k = 0; k < size; ++k) face.push_back(checkedPointIndex(points[k]));
         // Faces with < 3 points are kept so validateMesh reports them instead of hiding file damage.
         mesh.addFace(face.data(), face.size());
         sourceCells.push_back(firstCell + cellIndex);
-    }
+    });
 }
 
 // Strip (p0 p1 p2 p3 ...) has triangles (p0 p1 p2), (p2 p1 p3), (p2 p3 p4), ...: every odd
 // triangle swaps its first two points so all keep the strip's orientation.
 void appendStripTriangles(vtkPolyData* polyData, Mesh& mesh, SourceCells& sourceCells) {
-    vtkCellArray* strips = polyData->GetStrips();
-    if (!strips) return;
-    vtkIdType firstCell = polyData->GetNumberOfVerts() + polyData->GetNumberOfLines() + polyData->GetNumberOfPolys();
-    vtkSmartPointer<vtkCellArrayIterator> cells = vtk::TakeSmartPointer(strips->NewIterator());
-    vtkIdType cellIndex = 0;
-    for (cells->GoToFirstCell(); !cells->IsDoneWithTraversal(); cells->GoToNextCell(), ++cellIndex) {
-        vtkIdType size = 0;
-        const vtkIdType* points = nullptr;
-        cells->GetCurrentCell(size, points);
+    const vtkIdType firstCell = polyData->GetNumberOfVerts() + polyData->GetNumberOfLines() + polyData->GetNumberOfPolys();
+    forEachCell(polyData->GetStrips(), [&](vtkIdType cellIndex, vtkIdType size, const vtkIdType* points) {
         for (vtkIdType k = 0; k + 2 < size; ++k) {
             uint32_t a = checkedPointIndex(points[k]), b = checkedPointIndex(points[k + 1]),
                      c = checkedPointIndex(points[k + 2]);
@@ -72,7 +72,7 @@ void appendStripTriangles(vtkPolyData* polyData, Mesh& mesh, SourceCells& source
                 mesh.addFace({b, a, c});
             sourceCells.push_back(firstCell + cellIndex);
         }
-    }
+    });
 }
 
 void copyFaceArrays(vtkPolyData* polyData, const SourceCells& sourceCells, Mesh& mesh) {
