@@ -27,6 +27,7 @@
 #include "core/ClusterBounds.h"
 #include "core/Culling.h"
 #include "core/ExpectedCull.h"
+#include "core/Pipeline.h"
 #include "core/Settings.h"
 #include "core/Statistics.h"
 #include "io/MeshReader.h"
@@ -54,13 +55,12 @@ struct Options {
     size_t jobs = 1;
 };
 
+// A mesh as the pipeline's first stage holds it (core/Pipeline.h), with the orbits measured on it.
 struct MeshData {
     std::string name;
-    Mesh mesh;
-    std::vector<glm::vec3> world;
-    FaceGeometry faces;
-    size_t triangles = 0;
+    PreparedMesh prepared;
     std::map<double, std::vector<Eye>> views;  // by distance
+    const Mesh& mesh() const { return prepared.mesh(); }
 };
 
 // Largest cluster, in distinct vertices and fan triangles.
@@ -87,7 +87,7 @@ void measureConeScope(const MeshData& data, const MeshletLimits& limits, size_t 
         Partition partition;
         const auto partitionStart = Clock::now();
         try {
-            partition = buildPartition(data.mesh, data.faces, settings);
+            partition = buildPartition(data.mesh(), data.prepared.faces, settings);
         } catch (const std::exception& error) {
             progress(what + "skipped (" + error.what() + ")");
             continue;
@@ -98,12 +98,12 @@ void measureConeScope(const MeshData& data, const MeshletLimits& limits, size_t 
         for (ConeMethod cone : allConeMethods()) {
             const auto boundsStart = Clock::now();
             const ClusterBounds bounds =
-                computeClusterBounds(data.mesh, data.world, data.faces, partition, cone, settings.sphere);
+                computeClusterBounds(data.mesh(), data.prepared.world, data.prepared.faces, partition, cone, settings.sphere);
             const double boundsSeconds = secondsSince(boundsStart);
-            const CullingInput input{data.mesh, data.world, data.faces, bounds};
+            const CullingInput input{data.mesh(), data.prepared.world, data.prepared.faces, bounds};
             Row base;
             base.mesh = data.name;
-            base.triangles = data.triangles;
+            base.triangles = data.prepared.triangles;
             base.builder = toString(builder);
             if (builder == Builder::Meshopt) base.coneWeight = formatWeight(settings.meshoptConeWeight);
             base.maxVertices = limits.maxVertices;
@@ -138,17 +138,17 @@ void measureConeScope(const MeshData& data, const MeshletLimits& limits, size_t 
 // meshoptimizer's pipeline as its documentation shows it, judged by the same per-face oracle.
 // Returns its cluster count.
 size_t measureMeshopt(const MeshData& data, const MeshletLimits& limits, float coneWeight, std::vector<Row>& rows) {
-    const std::vector<unsigned int> indices = bench::fanTriangles(data.mesh);
+    const std::vector<unsigned int> indices = bench::fanTriangles(data.mesh());
     const auto start = Clock::now();
-    const bench::MeshoptClusters clusters = bench::buildMeshoptClusters(indices, data.world, limits, coneWeight);
+    const bench::MeshoptClusters clusters = bench::buildMeshoptClusters(indices, data.prepared.world, limits, coneWeight);
     const double seconds = secondsSince(start);
-    const bench::MeshletTriangles triangles = bench::meshletTriangleMesh(clusters, data.world);
+    const bench::MeshletTriangles triangles = bench::meshletTriangleMesh(clusters, data.prepared.world);
     const FaceGeometry faces = computeFaceGeometry(triangles.mesh);
     const size_t count = clusters.count();
 
     Row base;
     base.mesh = data.name;
-    base.triangles = data.triangles;
+    base.triangles = data.prepared.triangles;
     base.builder = kMeshoptLoop;
     base.coneWeight = formatWeight(coneWeight);
     base.maxVertices = limits.maxVertices;
@@ -255,14 +255,10 @@ int main(int argc, char** argv) {
                 try {
                     MeshData data;
                     data.name = bench::meshName(files[i]);
-                    data.mesh = readMesh(files[i]);
-                    data.world = worldPositions(data.mesh);
-                    data.faces = computeFaceGeometry(data.mesh);
-                    data.triangles = triangleCount(data.mesh);
-                    const Aabb box = computeAabb(data.world);
-                    for (double d : distances) data.views[d] = orbitViews(box, options.views, d);
+                    data.prepared = prepareMesh(std::make_shared<const Mesh>(readMesh(files[i])), files[i], false);
+                    for (double d : distances) data.views[d] = orbitViews(data.prepared.box, options.views, d);
                     progress("[" + std::to_string(i + 1) + "/" + std::to_string(files.size()) + "] " + data.name + ": " +
-                             std::to_string(data.triangles) + " triangles (" + formatNumber(secondsSince(start), 0) +
+                             std::to_string(data.prepared.triangles) + " triangles (" + formatNumber(secondsSince(start), 0) +
                              " s elapsed)");
                     for (const MeshletLimits& limits : budgets) {
                         // The last weight is the settings' default (1.0), the stronger baseline.
