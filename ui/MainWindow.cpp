@@ -177,8 +177,11 @@ void MainWindow::showError(const QString& title, const QString& message) {
     lastError_ = message;
     statusBar()->showMessage(title, 8000);
     emit errorShown(message);
-    if (errorDialogs_) QMessageBox::critical(this, title, message);
+    // Once the failed task has ended and the progress bar is gone, not over it.
+    if (errorDialogs_) QTimer::singleShot(0, this, [this, title, message]() { QMessageBox::critical(this, title, message); });
 }
+
+bool MainWindow::progressShown() const { return statusLine_->progressShown(); }
 
 void MainWindow::render() {
     view_->render();

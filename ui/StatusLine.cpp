@@ -52,6 +52,8 @@ StatusLine::StatusLine(QStatusBar* bar, Session* session) : QObject(bar) {
     });
 }
 
+bool StatusLine::progressShown() const { return progress_->isVisible(); }
+
 void StatusLine::showSummary(const Session& session) {
     const PreparedMesh* prepared = session.preparedMesh();
     const ClusterSet* clusters = session.clusters();

@@ -21,6 +21,7 @@ public:
     StatusLine(QStatusBar* bar, Session* session);
 
     void showSummary(const Session& session);
+    bool progressShown() const;
 
 private:
     QLabel* summary_ = nullptr;

@@ -11,7 +11,9 @@
 #include <QFile>
 #include <QImage>
 #include <QLineEdit>
+#include <QMessageBox>
 #include <QMimeData>
+#include <QTimer>
 #include <QUrl>
 #include <QProcess>
 #include <QPushButton>
@@ -640,6 +642,32 @@ private slots:
         for (size_t f = 0; f < sphere.faceCount(); ++f) QVERIFY(glm::dot(faces.normals[f], faces.centroids[f]) > 0.0);
         fix->setChecked(false);
         window_->waitUntilIdle();
+    }
+
+    void errorDialogOpensAfterTheProgressBarIsGone() {
+        QVERIFY(window_->openMeshBlocking(datasetPath("icosphere.off")));
+        const QString garbage = temporary_.filePath(QStringLiteral("broken.off"));
+        QFile file(garbage);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write("OFF\n3 1 0\n0 0 zero\n1 0 0\n");
+        file.close();
+        window_->setErrorDialogsEnabled(true);
+        int dialogs = 0;
+        bool progressBehindDialog = false;
+        QTimer watcher;
+        connect(&watcher, &QTimer::timeout, this, [&]() {
+            if (auto* dialog = qobject_cast<QMessageBox*>(QApplication::activeModalWidget())) {
+                ++dialogs;
+                progressBehindDialog = progressBehindDialog || window_->progressShown();
+                dialog->close();
+            }
+        });
+        watcher.start(20);
+        window_->openMesh(garbage);
+        QTRY_COMPARE_WITH_TIMEOUT(dialogs, 1, 5000);
+        watcher.stop();
+        window_->setErrorDialogsEnabled(false);
+        QVERIFY(!progressBehindDialog);
     }
 
     void cancelledLoadKeepsTheMesh() {
