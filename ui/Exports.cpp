@@ -4,6 +4,7 @@
 #include <cctype>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <stdexcept>
 
 #include <vtkNew.h>
@@ -36,8 +37,11 @@ RunStatistics exportStatistics(const PreparedMesh& prepared, const ClusterSet& c
     return run;
 }
 
-void exportPartition(const PreparedMesh& prepared, const ClusterSet& clusters, const std::string& path) {
-    writePolyData(prepared.mesh(), path, partitionFaceArrays(prepared, clusters));
+void exportPartition(const PreparedMesh& prepared, const ClusterSet& clusters, const EyeMeasurement* eye,
+                     const std::string& path) {
+    std::map<std::string, std::vector<double>> arrays = partitionFaceArrays(prepared, clusters);
+    if (eye) arrays.merge(eyeFaceArrays(prepared, clusters, *eye));
+    writePolyData(prepared.mesh(), path, arrays);
 }
 
 void saveRenderWindowPng(vtkRenderWindow* window, const std::string& path) {

@@ -26,7 +26,10 @@ RunStatistics exportStatistics(const PreparedMesh& prepared, const ClusterSet& c
 // The culled mesh with cluster_id and the per-cluster cone and bound arrays per face
 // (partitionFaceArrays), through writePolyData: .vtp or .vtk keep the arrays, and the `file`
 // builder reads cluster_id back. Throws MeshWriteError.
-void exportPartition(const PreparedMesh& prepared, const ClusterSet& clusters, const std::string& path);
+// With an eye's measurement, also what happened to each face from that eye (eyeFaceArrays: culled,
+// back_facing, loss), for ParaView and the like.
+void exportPartition(const PreparedMesh& prepared, const ClusterSet& clusters, const EyeMeasurement* eye,
+                     const std::string& path);
 
 // The window's current picture as PNG (vtkWindowToImageFilter, back buffer re-rendered).
 // Throws std::runtime_error naming the path when it cannot be written.

@@ -266,7 +266,7 @@ bool Session::exportPartition(const QString& path) {
         return false;
     }
     try {
-        conescope::exportPartition(*prepared_, *clusters_, path.toStdString());
+        conescope::exportPartition(*prepared_, *clusters_, measurement(), path.toStdString());
     } catch (const std::exception& error) {
         emit errorOccurred(tr("Cannot export the partition"), QString::fromStdString(error.what()));
         return false;

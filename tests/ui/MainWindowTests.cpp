@@ -527,8 +527,17 @@ private slots:
         QVERIFY(window_->exportPartition(path));
         const Mesh written = readMesh(path.toStdString());
         for (const char* name : {"cluster_id", "cone_half_angle_deg", "cone_axis_x", "cone_axis_y", "cone_axis_z",
-                                 "sphere_radius", "sphere_center_x", "aabb_min_x", "aabb_max_z"})
+                                 "sphere_radius", "sphere_center_x", "aabb_min_x", "aabb_max_z", "cull_fraction",
+                                 "oracle_fraction", "culled", "back_facing", "loss"})
             QVERIFY2(written.faceArrays.count(name) == 1, name);
+        // The eye's arrays are the window's current measurement, face by face.
+        const EyeMeasurement& eye = *window_->currentStatistics();
+        size_t culledTriangles = 0;
+        for (size_t f = 0; f < written.faceCount(); ++f) {
+            QCOMPARE(written.faceArrays.at("culled")[f], double(eye.culled[clusterOfFace[f]]));
+            culledTriangles += written.faceArrays.at("loss")[f] == double(FaceLoss::Culled) ? written.faceSize(f) - 2 : 0;
+        }
+        QCOMPARE(culledTriangles, eye.view().trianglesCulled);
         const ClusterBounds& bounds = window_->clusters()->bounds;
         for (size_t f = 0; f < written.faceCount(); ++f) {
             QCOMPARE(written.faceArrays.at("cluster_id")[f], double(clusterOfFace[f]));
