@@ -161,6 +161,7 @@ void MainWindow::showEyeMeasurement() {
 void MainWindow::showOrbit() {
     plots_->showOrbit(session_.orbitRows(), session_.orbitStep());
     worstClusters_->showOrbit(session_.orbitStatistics());
+    statisticsPanel_->showOrbit(session_.orbitStatistics());
     statusLine_->showSummary(session_);
 }
 

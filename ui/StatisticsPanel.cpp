@@ -1,5 +1,7 @@
 #include "StatisticsPanel.h"
 
+#include <algorithm>
+
 #include <QFormLayout>
 #include <QLabel>
 #include <QLocale>
@@ -21,7 +23,8 @@ StatisticsPanel::StatisticsPanel(QWidget* parent) : QWidget(parent) {
     for (const char* name : {"eye", "clusters culled", "triangles culled", "back-facing triangles", "efficiency",
                              "false culls", "missed clusters", "time per test", "mesh", "faces", "triangles",
                              "degenerate faces", "mesh problems", "clusters", "uncullable clusters", "builder",
-                             "cone / test", "build time"})
+                             "cone / test", "build time", "orbit efficiency", "lost over the orbit", "expected efficiency",
+                             "cull / oracle fraction", "cluster fill", "sphere radius"})
         addRow(QString::fromLatin1(name));
     clear();
 }
@@ -66,6 +69,26 @@ void StatisticsPanel::showClusters(const PreparedMesh& prepared, const ClusterSe
         QString::fromStdString(toString(displayedTest(clusters.settings)))));
     values_["build time"]->setText(tr("partition %1, bounds %2")
                                        .arg(seconds(clusters.partitionSeconds), seconds(clusters.boundsSeconds)));
+}
+
+void StatisticsPanel::showOrbit(const TestStatistics* orbit) {
+    const char* rows[] = {"orbit efficiency", "lost over the orbit", "expected efficiency", "cull / oracle fraction",
+                          "cluster fill", "sphere radius"};
+    if (!orbit) {
+        for (const char* row : rows) values_[QString::fromLatin1(row)]->setText(tr("measuring..."));
+        return;
+    }
+    const double back = double(std::max<size_t>(orbit->backFacingTriangles, 1));
+    values_["orbit efficiency"]->setText(tr("%1 (mean per view %2)").arg(percent(orbit->efficiency), percent(orbit->meanViewEfficiency)));
+    values_["lost over the orbit"]->setText(tr("%1 by the test, %2 by the partition")
+                                                .arg(percent(double(orbit->testLossTriangles) / back),
+                                                     percent(double(orbit->partitionLossTriangles) / back)));
+    values_["expected efficiency"]->setText(percent(orbit->expectedEfficiency));
+    values_["cull / oracle fraction"]->setText(QStringLiteral("%1 / %2").arg(orbit->cullFraction, 0, 'f', 3).arg(orbit->oracleFraction, 0, 'f', 3));
+    values_["cluster fill"]->setText(tr("%1 triangles, %2 vertices on average")
+                                         .arg(orbit->meanClusterTriangles, 0, 'f', 1)
+                                         .arg(orbit->meanClusterVertices, 0, 'f', 1));
+    values_["sphere radius"]->setText(tr("mean %1, max %2").arg(orbit->meanSphereRadius, 0, 'g', 4).arg(orbit->maxSphereRadius, 0, 'g', 4));
 }
 
 void StatisticsPanel::showEye(const EyeMeasurement& measurement) {

@@ -19,6 +19,8 @@ public:
 
     void showClusters(const PreparedMesh& prepared, const ClusterSet& clusters);
     void showEye(const EyeMeasurement& measurement);
+    // The partition's summary over the orbit (measureOrbit); "measuring..." while there is none.
+    void showOrbit(const TestStatistics* orbit);
     void showEyeError(const QString& message);
     void clear();
 

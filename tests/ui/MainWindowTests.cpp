@@ -316,6 +316,12 @@ private slots:
         const TestStatistics* orbit = window_->session().orbitStatistics();
         QVERIFY(orbit);
         QCOMPARE(size_t(table->rowCount()), window_->clusters()->partition.clusterCount);
+        // The partition's summary over the orbit, in the statistics panel.
+        const QString efficiency = QString::number(100.0 * orbit->efficiency, 'f', 1) + QLatin1Char('%');
+        QVERIFY(window_->statisticsPanel()->value(QStringLiteral("orbit efficiency")).startsWith(efficiency));
+        QVERIFY(window_->statisticsPanel()->value(QStringLiteral("lost over the orbit")).contains(QStringLiteral("by the partition")));
+        QVERIFY(window_->statisticsPanel()->value(QStringLiteral("cull / oracle fraction"))
+                    .startsWith(QString::number(orbit->cullFraction, 'f', 3)));
         // Worst test loss first, as measureOrbit counted it.
         size_t worst = 0;
         for (const ClusterStatistics& cluster : orbit->clusters) worst = std::max(worst, cluster.testLossTriangles);
