@@ -107,7 +107,9 @@ CommandLineResult parseCommandLine(const QStringList& arguments) {
         QStringLiteral("Layers shown, comma separated; all others are hidden (faces, borders, cones, normals, boxes, "
                        "spheres, eye, highlight, legend). In the window, keys 1-9 still switch them."),
         QStringLiteral("names"));
-    parser.addOptions({screenshot, size, fromEye, coloring, layers});
+    const QCommandLineOption pick(QStringLiteral("pick"), QStringLiteral("Screenshot with this cluster picked (highlighted)."),
+                                  QStringLiteral("ID"));
+    parser.addOptions({screenshot, size, fromEye, coloring, layers, pick});
     for (const auto& [field, option] : settingOptions) parser.addOption(option);
     QStringList extensions;
     for (const std::string& extension : supportedMeshExtensions()) extensions << QString::fromStdString(extension);
@@ -163,8 +165,13 @@ CommandLineResult parseCommandLine(const QStringList& arguments) {
         if (parser.isSet(coloring)) options.coloring = parseFaceColoring(parser.value(coloring));
         if (parser.isSet(layers))
             options.layers = parseNameList<Layer>(parser.value(layers), [](const std::string& name) { return parseLayer(QString::fromStdString(name)); });
-        if (options.screenshot.isEmpty() && (parser.isSet(size) || options.fromEye))
-            throw std::invalid_argument("--size and --from-eye only apply to --screenshot");
+        if (parser.isSet(pick)) {
+            bool valid = false;
+            options.pick = parser.value(pick).toULongLong(&valid);
+            if (!valid) throw std::invalid_argument("--pick '" + parser.value(pick).toStdString() + "' is not a cluster id");
+        }
+        if (options.screenshot.isEmpty() && (parser.isSet(size) || options.fromEye || options.pick))
+            throw std::invalid_argument("--size, --from-eye and --pick only apply to --screenshot");
     } catch (const std::exception& error) {
         result.action = CommandLineResult::Action::ExitFailure;
         result.message = QString::fromStdString(error.what());
@@ -186,8 +193,17 @@ int runHeadlessScreenshot(const AppOptions& options) {
         showMeasurement(scene, prepared, measurement);
         scene.setFaceColoring(options.coloring);
         if (options.coloring == FaceColoring::FaceFacing) showFaceFacing(scene, prepared, measurement.eye);
+        for (const auto& [layer, visible] : firstLookLayers()) scene.setLayerVisible(layer, visible);
         if (options.layers) showOnly(*options.layers, scene);
+        if (options.pick) {
+            if (*options.pick >= clusters.partition.clusterCount)
+                throw std::invalid_argument("--pick " + std::to_string(*options.pick) + ": the mesh has " +
+                                            std::to_string(clusters.partition.clusterCount) + " clusters (0 to " +
+                                            std::to_string(clusters.partition.clusterCount - 1) + ")");
+            scene.setHighlightedCluster(int(*options.pick));
+        }
         RenderOptions render;
+        render.frameEye = false;
         render.width = options.size.width();
         render.height = options.size.height();
         render.fromEye = options.fromEye;

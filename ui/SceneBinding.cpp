@@ -2,6 +2,12 @@
 
 namespace conescope {
 
+std::map<Layer, bool> firstLookLayers() {
+    std::map<Layer, bool> layers;
+    for (Layer layer : allLayers()) layers[layer] = layer != Layer::Normals && layer != Layer::Spheres;
+    return layers;
+}
+
 std::unique_ptr<ClusterScene> makeScene(const PreparedMesh& prepared, const ClusterSet& clusters) {
     return std::make_unique<ClusterScene>(prepared.mesh(), prepared.world, prepared.faces, clusters.partition,
                                           clusters.bounds);

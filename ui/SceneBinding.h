@@ -2,12 +2,17 @@
 // draw the same picture for the same eye.
 #pragma once
 
+#include <map>
 #include <memory>
 
 #include "core/Pipeline.h"
 #include "scene/ClusterScene.h"
 
 namespace conescope {
+
+// A first look shows clusters, cones and boxes; normals and spheres crowd the view, so they wait
+// for their keys. The window and the headless screenshot start with these.
+std::map<Layer, bool> firstLookLayers();
 
 std::unique_ptr<ClusterScene> makeScene(const PreparedMesh& prepared, const ClusterSet& clusters);
 

@@ -26,14 +26,6 @@ ProgressCallback scaled(const ProgressCallback& progress, double from, double to
     };
 }
 
-// A first look shows clusters, cones and boxes; normals and spheres crowd the view, so they wait
-// for their keys.
-std::map<Layer, bool> firstLookLayers() {
-    std::map<Layer, bool> layers;
-    for (Layer layer : allLayers()) layers[layer] = layer != Layer::Normals && layer != Layer::Spheres;
-    return layers;
-}
-
 }  // namespace
 
 struct Session::SceneResult {

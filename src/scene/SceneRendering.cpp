@@ -19,7 +19,11 @@ namespace conescope {
 
 void placeObserverCamera(const ClusterScene& scene, const RenderOptions& options, vtkCamera* camera) {
     const std::array<double, 6> bounds = scene.meshBounds();
-    const glm::dvec3 low(bounds[0], bounds[2], bounds[4]), high(bounds[1], bounds[3], bounds[5]);
+    glm::dvec3 low(bounds[0], bounds[2], bounds[4]), high(bounds[1], bounds[3], bounds[5]);
+    if (options.frameEye && scene.hasEye() && !scene.eye().orthographic) {
+        low = glm::min(low, scene.eye().position);
+        high = glm::max(high, scene.eye().position);
+    }
     const glm::dvec3 center = 0.5 * (low + high);
     const double radius = std::max(0.5 * glm::distance(low, high), 1e-12);
 

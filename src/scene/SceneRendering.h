@@ -27,6 +27,8 @@ struct RenderOptions {
     std::optional<glm::dvec3> cameraPosition;
     std::optional<glm::dvec3> focalPoint;
     glm::dvec3 viewUp{0.0, 1.0, 0.0};
+    // With an unset position, fit the cull eye (a perspective one) into the picture with the mesh.
+    bool frameEye = false;
     double viewAngleDegrees = 30.0;
     Rgb background{0.12, 0.13, 0.16};
     // Render what the cull eye sees instead of the observer view: camera from applyEyeToCamera, only

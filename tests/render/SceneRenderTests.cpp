@@ -3,7 +3,10 @@
 #include <string>
 
 #include <gtest/gtest.h>
+#include <vtkCamera.h>
 #include <vtkImageData.h>
+#include <vtkMatrix4x4.h>
+#include <vtkNew.h>
 
 #include "RenderTestSupport.h"
 #include "core/Culling.h"
@@ -76,6 +79,36 @@ TEST(SceneRendering, EyeViewDropsCulledClustersWithoutChangingWhatIsSeen) {
     scene.setClusterDecisions(front, std::vector<uint8_t>(scene.clusterCount(), 0));
     const auto holes = renderToImage(scene, options);
     EXPECT_GT(rendertest::compareImages(holes, everything).meanChannelDifference, 2.0);
+}
+
+// Where a world point lands in normalised device coordinates ([-1, 1] inside the picture).
+glm::dvec3 deviceCoordinates(vtkCamera* camera, const RenderOptions& options, const glm::dvec3& point) {
+    vtkMatrix4x4* m = camera->GetCompositeProjectionTransformMatrix(double(options.width) / options.height, -1.0, 1.0);
+    const double in[4] = {point.x, point.y, point.z, 1.0};
+    double out[4];
+    m->MultiplyPoint(in, out);
+    return glm::dvec3(out[0], out[1], out[2]) / out[3];
+}
+
+TEST(SceneRendering, FramingTheEyeKeepsAFarEyeInThePicture) {
+    const SceneInput input = rendertest::loadDataset("icosphere.off", 32);
+    ClusterScene scene = makeScene(input);
+    const glm::dvec3 eye(0.0, 0.0, 12.0);
+    scene.setEye(Eye::perspective(eye), glm::dvec3(0.0));
+    RenderOptions options = smallImage();
+    vtkNew<vtkCamera> camera;
+    placeObserverCamera(scene, options, camera);
+    EXPECT_GT(glm::length(glm::dvec2(deviceCoordinates(camera, options, eye))), 1.0) << "fitted to the mesh alone, the eye is out";
+    options.frameEye = true;
+    placeObserverCamera(scene, options, camera);
+    const glm::dvec3 shown = deviceCoordinates(camera, options, eye);
+    EXPECT_LT(std::abs(shown.x), 1.0);
+    EXPECT_LT(std::abs(shown.y), 1.0);
+    for (const glm::vec3& p : input.world) {
+        const glm::dvec3 q = deviceCoordinates(camera, options, glm::dvec3(p));
+        ASSERT_LT(std::abs(q.x), 1.0);
+        ASSERT_LT(std::abs(q.y), 1.0);
+    }
 }
 
 TEST(SceneRendering, MissingDisplayGivesAClearError) {

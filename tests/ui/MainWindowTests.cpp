@@ -682,6 +682,9 @@ private slots:
         QTRY_COMPARE_WITH_TIMEOUT(dialogs, 1, 5000);
         watcher.stop();
         window_->setErrorDialogsEnabled(false);
+        // The closed dialog took the activation: give it back, so the next tests' shortcuts reach the window.
+        QApplication::setActiveWindow(window_.get());
+        QTRY_COMPARE(QApplication::activeWindow(), window_.get());
         QVERIFY(!progressBehindDialog);
     }
 

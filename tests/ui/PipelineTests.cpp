@@ -267,6 +267,28 @@ private slots:
         QVERIFY(faces != facesAndBoxes && faces != boxes && boxes != facesAndBoxes);
         QVERIFY(defaults != faces && defaults != facesAndBoxes && defaults != boxes);
         QCOMPARE(shot(QStringLiteral("faces-again.png"), {QStringLiteral("faces")}), faces);
+        // Headless starts with the window's first-look layers.
+        QCOMPARE(defaults, shot(QStringLiteral("window-layers.png"),
+                                {QStringLiteral("faces"), QStringLiteral("borders"), QStringLiteral("cones"), QStringLiteral("boxes"),
+                                 QStringLiteral("eye"), QStringLiteral("highlight"), QStringLiteral("legend")}));
+    }
+
+    void headlessScreenshotPicksACluster() {
+        // --pick highlights a cluster; an id the mesh does not have is refused with the range.
+        auto shot = [&](const QString& name, const QStringList& extra, QString* errors = nullptr) {
+            const QString file = temporary_.filePath(name);
+            QStringList arguments{QStringLiteral("--screenshot"), file, QStringLiteral("--size"), QStringLiteral("240x180"),
+                                  QStringLiteral("--eye=0,0,3"), datasetPath("torus.off")};
+            arguments << extra;
+            return runApplication(arguments, errors) == 0 ? QImage(file) : QImage();
+        };
+        const QImage plain = shot(QStringLiteral("plain.png"), {});
+        const QImage picked = shot(QStringLiteral("picked.png"), {QStringLiteral("--pick"), QStringLiteral("3")});
+        QVERIFY(!plain.isNull() && !picked.isNull());
+        QVERIFY(plain != picked);
+        QString errors;
+        QVERIFY(shot(QStringLiteral("none.png"), {QStringLiteral("--pick"), QStringLiteral("100000")}, &errors).isNull());
+        QVERIFY2(errors.contains(QStringLiteral("clusters (0 to")), qPrintable(errors));
     }
 
     void headlessScreenshotErrors() {
