@@ -203,7 +203,7 @@ int runHeadlessScreenshot(const AppOptions& options) {
             scene.setHighlightedCluster(int(*options.pick));
         }
         RenderOptions render;
-        render.frameEye = false;
+        render.frameEye = true;
         render.width = options.size.width();
         render.height = options.size.height();
         render.fromEye = options.fromEye;

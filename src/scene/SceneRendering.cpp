@@ -20,6 +20,7 @@ namespace conescope {
 void placeObserverCamera(const ClusterScene& scene, const RenderOptions& options, vtkCamera* camera) {
     const std::array<double, 6> bounds = scene.meshBounds();
     glm::dvec3 low(bounds[0], bounds[2], bounds[4]), high(bounds[1], bounds[3], bounds[5]);
+    // The sphere the picture fits: the mesh's, or the mesh's and the eye's together.
     if (options.frameEye && scene.hasEye() && !scene.eye().orthographic) {
         low = glm::min(low, scene.eye().position);
         high = glm::max(high, scene.eye().position);
