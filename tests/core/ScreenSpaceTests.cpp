@@ -5,7 +5,7 @@
 
 #include "TestMeshes.h"
 #include "core/Culling.h"
-#include "core/ScreenSpace.h"
+#include "ScreenSpace.h"
 
 using namespace conescope;
 

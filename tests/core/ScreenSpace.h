@@ -1,13 +1,13 @@
-// Seed 001's second test: after the view-projection, a face is back-facing when its signed screen
-// area is negative (counter-clockwise = front). It must agree with the normal test n.(e - q) < 0
-// for faces entirely in front of the eye.
+// Seed 001's second test, kept with the tests as a second oracle (the product uses the normal test):
+// after the view-projection, a face is back-facing when its signed screen area is negative
+// (counter-clockwise = front). It must agree with n.(e - q) < 0 for faces entirely in front of the eye.
 #pragma once
 
 #include <cstddef>
 
 #include <glm/glm.hpp>
 
-#include "Views.h"
+#include "core/Views.h"
 
 namespace conescope {
 
