@@ -159,6 +159,9 @@ QString testSection(const ClusterReportInput& input) {
         }
     }
     table.row(QStringLiteral("<b>decision</b>"), why.culled ? QStringLiteral("<b>culled</b>") : QStringLiteral("<b>drawn</b>"));
+    if (why.culled != why.exactCulled)
+        table.row(QStringLiteral("float kernel"), QStringLiteral("drawn: the exact test would cull it, but it lies within the batched "
+                                                                 "kernel's rounding slack of the threshold"));
     return table.html() + steps;
 }
 

@@ -1,5 +1,7 @@
 #include "Culling.h"
 
+#include "BatchCulling.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -107,10 +109,18 @@ bool cullCluster(const CullingInput& input, uint32_t cluster, const Eye& eye, Cu
     return false;
 }
 
-std::vector<uint8_t> cullClusters(const CullingInput& input, const Eye& eye, CullTest test) {
+std::vector<uint8_t> cullClustersExact(const CullingInput& input, const Eye& eye, CullTest test) {
     std::vector<uint8_t> culled(input.bounds.count());
     for (uint32_t c = 0; c < culled.size(); ++c) culled[c] = cullCluster(input, c, eye, test) ? 1 : 0;
     return culled;
+}
+
+bool culledInBatch(const Eye& eye, CullTest test) { return !eye.orthographic && batchSupports(test); }
+
+std::vector<uint8_t> cullClusters(const CullingInput& input, const Eye& eye, CullTest test) {
+    if (!culledInBatch(eye, test)) return cullClustersExact(input, eye, test);
+    if (input.batch) return cullBatch(*input.batch, eye.position, test);
+    return cullBatch(makeClusterBatch(input.bounds), eye.position, test);
 }
 
 CullExplanation explainCull(const CullingInput& input, uint32_t cluster, const Eye& eye, CullTest test) {
@@ -118,7 +128,8 @@ CullExplanation explainCull(const CullingInput& input, uint32_t cluster, const E
     const ClusterBounds& bounds = input.bounds;
     const ConeOfNormals& cone = bounds.cones[cluster];
     const Sphere& sphere = bounds.spheres[cluster];
-    why.culled = cullCluster(input, cluster, eye, test);
+    why.exactCulled = cullCluster(input, cluster, eye, test);
+    why.culled = culledInBatch(eye, test) ? cullClusters(input, eye, test)[cluster] != 0 : why.exactCulled;
     why.cullable = cone.cullable;
     why.axis = cone.axis;
     why.cosHalfAngle = cone.cosHalfAngle;

@@ -27,19 +27,33 @@ Facing classifyFace(const Mesh& mesh, const std::vector<glm::vec3>& world, const
 std::vector<Facing> classifyFaces(const Mesh& mesh, const std::vector<glm::vec3>& world, const FaceGeometry& faces,
                                   const Eye& eye);
 
+struct ClusterBatch;
+
 // The everything a cluster test needs besides the bounds.
 struct CullingInput {
     const Mesh& mesh;
     const std::vector<glm::vec3>& world;
     const FaceGeometry& faces;
     const ClusterBounds& bounds;
+    // The same bounds as float arrays (BatchCulling.h) for many views; made per call when null.
+    const ClusterBatch* batch = nullptr;
 };
 
 // One cluster, one eye, one test.
 bool cullCluster(const CullingInput& input, uint32_t cluster, const Eye& eye, CullTest test);
 
-// All clusters: 1 = culled.
+// All clusters: 1 = culled. What the product runs: the batched float kernel (BatchCulling.h, AVX2,
+// SSE2 or scalar as the CPU allows) for the perspective apex, sphere and meshopt-sphere tests, which
+// culls only what the exact test culls (minus a sliver at its threshold), and the exact
+// double-precision test for the others.
 std::vector<uint8_t> cullClusters(const CullingInput& input, const Eye& eye, CullTest test);
+
+// The exact double-precision test for every cluster (cullCluster): the reference the batched
+// kernel is checked against.
+std::vector<uint8_t> cullClustersExact(const CullingInput& input, const Eye& eye, CullTest test);
+
+// Whether cullClusters runs the batched kernel for this eye and test.
+bool culledInBatch(const Eye& eye, CullTest test);
 
 // The single comparisons the tests are made of, exposed so the GUI can show each step.
 // v.V1 > sin(alpha): the unit view vector lies inside the cone of views that see every normal's back.
@@ -55,7 +69,8 @@ std::array<glm::dvec3, 8> aabbCorners(const Aabb& box);
 
 // A learner's view of one decision: every number the chosen test compared.
 struct CullExplanation {
-    bool culled = false;
+    bool culled = false;              // the product's decision (cullClusters: batched where it can be)
+    bool exactCulled = false;         // the exact double test's; differs only in a sliver at the threshold
     bool cullable = false;
     glm::dvec3 axis{0.0};
     double halfAngleDegrees = 90.0;

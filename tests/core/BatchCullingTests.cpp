@@ -123,7 +123,7 @@ void compare(const Mesh& mesh, const Partition& partition, const std::vector<Eye
                 const std::vector<uint8_t> reference = cullBatch(batch, eye.position, test, SimdLevel::Scalar);
                 for (SimdLevel level : kLevels)
                     counts.levelMismatches += cullBatch(batch, eye.position, test, level) != reference;
-                const std::vector<uint8_t> exact = cullClusters(input, eye, test);
+                const std::vector<uint8_t> exact = cullClustersExact(input, eye, test);
                 for (size_t c = 0; c < bounds.count(); ++c) {
                     ++counts.decisions;
                     counts.batchCulls += reference[c];

@@ -110,21 +110,25 @@ void checkMesh(std::mt19937_64& random, const Mesh& mesh, const Partition& parti
     const ClusterFaces rows = facesByCluster(partition);
     for (const Eye& eye : eyes) {
         const auto facing = classifyFaces(mesh, world, faces, eye);
-        for (uint32_t c = 0; c < partition.clusterCount; ++c) {
-            bool hasFront = false;
-            for (uint32_t i = rows.starts[c]; i < rows.starts[c + 1]; ++i) hasFront |= facing[rows.faces[i]] == Facing::Front;
-            ++counts.cases;
-            for (const ClusterBounds& bounds : boundsPerCone) {
-                const CullingInput input{mesh, world, faces, bounds};
-                for (CullTest test : allCullTests()) {
-                    ++counts.decisions;
-                    if (!cullCluster(input, c, eye, test)) continue;
-                    ++counts.culls;
-                    if (hasFront) {
-                        ++counts.falseCulls;
-                        ADD_FAILURE() << "false cull: cone " << toString(bounds.coneMethod) << " test " << toString(test)
-                                      << " cluster " << c << " eye (" << eye.position.x << ", " << eye.position.y << ", "
-                                      << eye.position.z << ") ortho " << eye.orthographic;
+        std::vector<uint8_t> hasFront(partition.clusterCount, 0);
+        for (uint32_t c = 0; c < partition.clusterCount; ++c)
+            for (uint32_t i = rows.starts[c]; i < rows.starts[c + 1]; ++i) hasFront[c] |= facing[rows.faces[i]] == Facing::Front;
+        counts.cases += partition.clusterCount;
+        for (const ClusterBounds& bounds : boundsPerCone) {
+            const CullingInput input{mesh, world, faces, bounds};
+            for (CullTest test : allCullTests()) {
+                // The exact test and what the product runs (the batched kernel where it applies).
+                for (const std::vector<uint8_t>& culled : {cullClustersExact(input, eye, test), cullClusters(input, eye, test)}) {
+                    for (uint32_t c = 0; c < partition.clusterCount; ++c) {
+                        ++counts.decisions;
+                        if (!culled[c]) continue;
+                        ++counts.culls;
+                        if (hasFront[c]) {
+                            ++counts.falseCulls;
+                            ADD_FAILURE() << "false cull: cone " << toString(bounds.coneMethod) << " test " << toString(test)
+                                          << " cluster " << c << " eye (" << eye.position.x << ", " << eye.position.y << ", "
+                                          << eye.position.z << ") ortho " << eye.orthographic;
+                        }
                     }
                 }
             }
