@@ -124,6 +124,11 @@ void MainWindow::connectControls() {
     connect(eyePanel_, &EyePanel::animateToggled, this, &MainWindow::setAnimating);
     connect(view_, &ObserverView::clicked, this, &MainWindow::pickDisplay);
     connect(worstClusters_, &WorstClustersView::clusterChosen, this, &MainWindow::chooseCluster);
+    connect(plots_, &PlotsView::viewClicked, this, [this](long view) {
+        if (!session_.preparedMesh()) return;
+        const std::vector<Eye> views = orbitOf(session_.settings(), session_.preparedMesh()->box);
+        if (view >= 0 && size_t(view) < views.size()) session_.moveEye(views[size_t(view)].position, view);
+    });
     connect(view_, &ObserverView::cameraMoved, &session_, &Session::followCamera);
     connect(view_, &ObserverView::eyeHandleMoved, &session_, &Session::moveEyeSoon);
 }

@@ -109,6 +109,7 @@ public:
     // the first orbit view that loses its back faces.
     void chooseCluster(int cluster);
     WorstClustersView* worstClustersView() const { return worstClusters_; }
+    PlotsView* plotsView() const { return plots_; }
     bool progressShown() const;
 
 signals:

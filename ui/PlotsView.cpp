@@ -1,7 +1,14 @@
 #include "PlotsView.h"
 
 #include <QVTKOpenGLNativeWidget.h>
+#include <cmath>
+#include <cstdlib>
+
+#include <vtkAxis.h>
+#include <vtkCallbackCommand.h>
 #include <vtkChartXY.h>
+#include <vtkNew.h>
+#include <vtkRenderWindowInteractor.h>
 #include <vtkContextScene.h>
 #include <vtkContextView.h>
 #include <vtkRenderWindow.h>
@@ -15,6 +22,42 @@ PlotsView::PlotsView(QWidget* parent) : QTabWidget(parent) {
     efficiency_ = addPlot(tr("Efficiency per view"), "Efficiency per orbit view: triangles culled / back-facing");
     histogram_ = addPlot(tr("Cone half-angles"), "Cone half-angles");
     connect(this, &QTabWidget::currentChanged, this, [this]() { render(); });
+    // A click on the efficiency plot moves the eye to that view; a drag still pans the chart. The
+    // chart takes the press, so the clicks are watched passively.
+    vtkNew<vtkCallbackCommand> click;
+    click->SetClientData(this);
+    click->SetCallback([](vtkObject* caller, unsigned long event, void* self, void*) {
+        auto* plots = static_cast<PlotsView*>(self);
+        int position[2];
+        static_cast<vtkRenderWindowInteractor*>(caller)->GetEventPosition(position);
+        if (event == vtkCommand::LeftButtonPressEvent) {
+            plots->pressX_ = position[0], plots->pressY_ = position[1];
+            return;
+        }
+        if (std::abs(position[0] - plots->pressX_) > 3 || std::abs(position[1] - plots->pressY_) > 3) return;
+        const long view = plots->viewAtDisplayX(position[0]);
+        if (view >= 0) emit plots->viewClicked(view);
+    });
+    click->PassiveObserverOn();
+    efficiency_.widget->interactor()->AddObserver(vtkCommand::LeftButtonPressEvent, click);
+    efficiency_.widget->interactor()->AddObserver(vtkCommand::LeftButtonReleaseEvent, click);
+}
+
+long PlotsView::viewAtDisplayX(double x) const {
+    vtkAxis* axis = efficiency_.chart->GetAxis(vtkAxis::BOTTOM);
+    const float* from = axis->GetPoint1();
+    const float* to = axis->GetPoint2();
+    if (viewCount_ == 0 || !(to[0] > from[0])) return -1;
+    const double value = axis->GetMinimum() + (x - from[0]) / (to[0] - from[0]) * (axis->GetMaximum() - axis->GetMinimum());
+    const long view = std::lround(value);
+    return view >= 0 && size_t(view) < viewCount_ ? view : -1;
+}
+
+double PlotsView::displayXOfView(long index) const {
+    vtkAxis* axis = efficiency_.chart->GetAxis(vtkAxis::BOTTOM);
+    const float* from = axis->GetPoint1();
+    const float* to = axis->GetPoint2();
+    return from[0] + (double(index) - axis->GetMinimum()) / (axis->GetMaximum() - axis->GetMinimum()) * (to[0] - from[0]);
 }
 
 PlotsView::Plot PlotsView::addPlot(const QString& tab, const char* title) {
@@ -33,6 +76,7 @@ PlotsView::Plot PlotsView::addPlot(const QString& tab, const char* title) {
 }
 
 void PlotsView::showOrbit(const std::vector<ViewStatistics>& views, long currentView) {
+    viewCount_ = views.size();
     plotEfficiencyPerView(efficiency_.chart, views, currentView);
     render(efficiency_);
 }

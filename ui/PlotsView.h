@@ -12,6 +12,7 @@
 #include "core/Statistics.h"
 
 class QVTKOpenGLNativeWidget;
+class vtkCallbackCommand;
 class vtkChartXY;
 class vtkContextView;
 
@@ -26,6 +27,16 @@ public:
     void showHalfAngles(const std::vector<ClusterStatistics>& clusters);
     // Renders the plot on screen, if any.
     void render();
+    // The orbit view under a point of the efficiency plot (VTK display coordinates, x from the
+    // left), or -1 outside its bottom axis' range; for a click and for tests.
+    long viewAtDisplayX(double x) const;
+    // Where view `index` is on the efficiency plot's bottom axis (display x), for tests.
+    double displayXOfView(long index) const;
+    QVTKOpenGLNativeWidget* efficiencyWidget() const { return efficiency_.widget; }
+
+signals:
+    // A click (not a drag) on the efficiency plot at this orbit view.
+    void viewClicked(long view);
 
 private:
     struct Plot {
@@ -38,6 +49,8 @@ private:
 
     Plot efficiency_;
     Plot histogram_;
+    size_t viewCount_ = 0;
+    int pressX_ = 0, pressY_ = 0;
 };
 
 }  // namespace conescope

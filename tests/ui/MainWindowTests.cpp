@@ -41,6 +41,7 @@
 #include "SettingsPanel.h"
 #include "StatisticsPanel.h"
 #include "UiTestSupport.h"
+#include "PlotsView.h"
 #include "WorstClustersView.h"
 #include "io/MeshReader.h"
 #include "io/StatisticsIO.h"
@@ -384,6 +385,29 @@ private slots:
         window_->setFollowing(false);
         QVERIFY(window_->session().layerVisible(Layer::Eye));
         QVERIFY(window_->scene()->layerVisible(Layer::Eye));
+    }
+
+    void clickingTheEfficiencyPlotMovesTheEyeToThatView() {
+        QVERIFY(window_->openMeshBlocking(datasetPath("torus.off")));
+        window_->waitUntilIdle();
+        PlotsView* plots = window_->plotsView();
+        auto* dock = qobject_cast<QDockWidget*>(plots->parentWidget());
+        QVERIFY(dock);
+        dock->raise();
+        plots->setCurrentIndex(0);
+        QApplication::processEvents();
+        window_->render();
+        QWidget* widget = plots->efficiencyWidget();
+        QVERIFY(widget->isVisible());
+        const long target = 37;
+        const double x = plots->displayXOfView(target);
+        QCOMPARE(plots->viewAtDisplayX(x), target);
+        const double ratio = widget->devicePixelRatioF();
+        QTest::mouseClick(widget, Qt::LeftButton, {}, QPoint(int(std::lround(x / ratio)), widget->height() / 2));
+        window_->waitUntilIdle();
+        QCOMPARE(window_->session().orbitStep(), target);
+        const std::vector<Eye> views = orbitOf(window_->settings(), window_->preparedMesh()->box);
+        QCOMPARE(window_->eyePosition(), views[size_t(target)].position);
     }
 
     void clickPicksACluster() {
