@@ -45,7 +45,8 @@ std::string toString(FaceColoring);
 
 // The colours the legend lists, fixed so screenshots of different runs compare.
 struct SceneColours {
-    static constexpr Rgb culled{0.30, 0.30, 0.32};         // cluster culled by the test
+    // Light enough to stand out on the dark background, neutral enough not to read as drawn.
+    static constexpr Rgb culled{0.62, 0.62, 0.66};         // cluster culled by the test
     static constexpr Rgb missedCull{1.00, 0.55, 0.05};     // drawn although every face is back-facing
     static constexpr Rgb drawn{0.25, 0.50, 0.95};          // drawn, has a front-facing face
     static constexpr Rgb wronglyCulled{0.95, 0.05, 0.05};  // culled although a face is front-facing (a bug)
