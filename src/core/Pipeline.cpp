@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "BatchCulling.h"
 #include "SettingsSchema.h"
 
 namespace conescope {
@@ -91,6 +92,8 @@ ClusterSet buildClusters(const PreparedMesh& prepared, const Settings& settings,
     clusters.bounds = computeClusterBounds(prepared.mesh(), prepared.world, prepared.faces, clusters.partition,
                                            displayedCone(settings), settings.sphere);
     clusters.boundsSeconds = secondsSince(start);
+    report(progress, 0.9, "cull map (" + toString(displayedCone(settings)) + ")");
+    clusters.cullMap = computeCullMap(prepared.faces, clusters.bounds);
     report(progress, 1.0, "clusters ready");
     return clusters;
 }
@@ -138,20 +141,31 @@ TestStatistics measureOrbit(const PreparedMesh& prepared, const ClusterSet& clus
                             const ProgressCallback& progress) {
     const CullingInput input = cullingInput(prepared, clusters);
     TestStatistics statistics = measureCulling(input, orbitOf(settings, prepared.box), displayedTest(settings),
-                                               progressWithin(progress, 0.0, 0.9, "orbit statistics"));
-    report(progress, 0.9, "cull map");
-    addCullMap(statistics, computeCullMap(prepared.faces, clusters.bounds));
+                                               progressWithin(progress, 0.0, 1.0, "orbit statistics"));
+    addCullMap(statistics, clusters.cullMap);
     return statistics;
 }
 
 long viewMissingCluster(const PreparedMesh& prepared, const ClusterSet& clusters, const Settings& settings, uint32_t cluster) {
-    const CullingInput input = cullingInput(prepared, clusters);
+    // The cluster's faces from each view and the product's decision (cullClusters, one float batch
+    // for all the views): the same verdicts the orbit statistics counted.
+    const ClusterBatch batch = makeClusterBatch(clusters.bounds);
+    const CullingInput input{prepared.mesh(), prepared.world, prepared.faces, clusters.bounds, &batch};
+    const ClusterFaces& rows = clusters.bounds.faces;
     const std::vector<Eye> views = orbitOf(settings, prepared.box);
     long partitionLoss = -1;
     for (size_t v = 0; v < views.size(); ++v) {
-        const CullExplanation why = explainCull(input, cluster, views[v], displayedTest(settings));
-        if (why.culled || why.backFaces == 0) continue;
-        if (why.frontFaces == 0) return long(v);
+        size_t front = 0, back = 0;
+        for (uint32_t i = rows.starts[cluster]; i < rows.starts[cluster + 1]; ++i) {
+            const Facing facing = classifyFace(prepared.mesh(), prepared.world, prepared.faces, rows.faces[i], views[v]);
+            front += facing == Facing::Front;
+            back += facing == Facing::Back;
+        }
+        const CullTest test = displayedTest(settings);
+        const bool culled = culledInBatch(views[v], test) ? cullClusters(input, views[v], test)[cluster] != 0
+                                                          : cullCluster(input, cluster, views[v], test);
+        if (back == 0 || culled) continue;
+        if (front == 0) return long(v);
         if (partitionLoss < 0) partitionLoss = long(v);
     }
     return partitionLoss;
@@ -211,7 +225,8 @@ RunStatistics measureRun(const PreparedMesh& prepared, const ClusterSet& cluster
                                                                   clusters.partition, cone, settings.sphere);
         const CullingInput input{prepared.mesh(), prepared.world, prepared.faces, built ? clusters.bounds : bounds};
         report(progress, double(step) / double(steps), "cull map (" + toString(cone) + ")");
-        const CullMap map = computeCullMap(prepared.faces, input.bounds);
+        const CullMap computed = built ? CullMap() : computeCullMap(prepared.faces, input.bounds);
+        const CullMap& map = built ? clusters.cullMap : computed;
         for (CullTest test : settings.tests) {
             report(progress, double(step) / double(steps), "culling (" + toString(cone) + ", " + toString(test) + ")");
             run.results.push_back(measureCulling(input, views, test));
@@ -254,7 +269,7 @@ std::map<std::string, std::vector<double>> partitionFaceArrays(const PreparedMes
         spread("aabb_max" + suffix, [&](uint32_t c) { return double(bounds.boxes[c].max[axis]); });
     }
     spread("sphere_radius", [&](uint32_t c) { return bounds.spheres[c].radius; });
-    const CullMap map = computeCullMap(prepared.faces, bounds);
+    const CullMap& map = clusters.cullMap;
     spread("cull_fraction", [&](uint32_t c) { return cullFraction(map, c, displayedTest(clusters.settings)); });
     spread("oracle_fraction", [&](uint32_t c) { return map.oracleFraction[c]; });
     return arrays;

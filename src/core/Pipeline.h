@@ -44,6 +44,9 @@ struct ClusterSet {
     Settings settings;                // the settings the partition and bounds were built with
     Partition partition;
     ClusterBounds bounds;
+    // The bounds' view-independent shares (CullMap.h), made once with them: the orbit, the
+    // statistics and the exports all read these.
+    CullMap cullMap;
     double partitionSeconds = 0.0;
     double boundsSeconds = 0.0;
 };
