@@ -46,10 +46,15 @@ Enum parseSceneName(const QString& text, const Values& values, const char* what)
 
 }  // namespace
 
+// The colourings' names for the help, separated by commas.
+QString colouringNames() {
+    QStringList names;
+    for (FaceColoring coloring : allFaceColorings()) names << QString::fromStdString(toString(coloring));
+    return names.join(QStringLiteral(", "));
+}
+
 FaceColoring parseFaceColoring(const QString& text) {
-    return parseSceneName<FaceColoring>(
-        text, std::initializer_list<FaceColoring>{FaceColoring::Cluster, FaceColoring::CullDecision, FaceColoring::FaceFacing},
-        "colouring");
+    return parseSceneName<FaceColoring>(text, allFaceColorings(), "colouring");
 }
 
 Layer parseLayer(const QString& text) { return parseSceneName<Layer>(text, allLayers(), "layer"); }
@@ -86,10 +91,7 @@ CommandLineResult parseCommandLine(const QStringList& arguments) {
                                      QStringLiteral("Screenshot what the cull eye sees (culled clusters removed)."));
     const QCommandLineOption coloring(
         QStringLiteral("coloring"),
-        QStringLiteral("Face colours: %1, %2 (default) or %3.")
-            .arg(QString::fromStdString(toString(FaceColoring::Cluster)),
-                 QString::fromStdString(toString(FaceColoring::CullDecision)),
-                 QString::fromStdString(toString(FaceColoring::FaceFacing))),
+        QStringLiteral("Face colours: %1 (default: %2).").arg(colouringNames(), QString::fromStdString(toString(FaceColoring::CullDecision))),
         QStringLiteral("name"));
     // The run settings, one option per field of the schema (core/SettingsSchema.h), as the CLI has them.
     std::vector<std::pair<const SettingField*, QCommandLineOption>> settingOptions;
@@ -190,9 +192,9 @@ int runHeadlessScreenshot(const AppOptions& options) {
         const glm::dvec3 eyePosition = options.eye ? *options.eye : startingEyePosition(prepared.box, settings);
         const EyeMeasurement measurement =
             measureEye(prepared, clusters, eyeAt(settings, eyePosition, prepared.box), displayedTest(settings));
-        showMeasurement(scene, prepared, measurement);
+        showMeasurement(scene, prepared, clusters, measurement);
         scene.setFaceColoring(options.coloring);
-        if (options.coloring == FaceColoring::FaceFacing) showFaceFacing(scene, prepared, measurement.eye);
+        showEyeColouring(scene, prepared, clusters, measurement, options.coloring);
         for (const auto& [layer, visible] : firstLookLayers()) scene.setLayerVisible(layer, visible);
         if (options.layers) showOnly(*options.layers, scene);
         if (options.pick) {
@@ -201,12 +203,14 @@ int runHeadlessScreenshot(const AppOptions& options) {
                                             std::to_string(clusters.partition.clusterCount) + " clusters (0 to " +
                                             std::to_string(clusters.partition.clusterCount - 1) + ")");
             scene.setHighlightedCluster(int(*options.pick));
+            showTestDrawing(scene, prepared, clusters, int(*options.pick), measurement);
         }
         RenderOptions render;
         render.frameEye = true;
         render.width = options.size.width();
         render.height = options.size.height();
         render.fromEye = options.fromEye;
+        if (options.pick) frameTestDrawing(scene, render);
         renderToPng(scene, render, options.screenshot.toStdString());
         return 0;
     } catch (const std::exception& error) {

@@ -1,5 +1,7 @@
 #include "SceneBinding.h"
 
+#include "core/CullMap.h"
+
 namespace conescope {
 
 std::map<Layer, bool> firstLookLayers() {
@@ -13,13 +15,36 @@ std::unique_ptr<ClusterScene> makeScene(const PreparedMesh& prepared, const Clus
                                           clusters.bounds);
 }
 
-void showMeasurement(ClusterScene& scene, const PreparedMesh& prepared, const EyeMeasurement& measurement) {
+void showMeasurement(ClusterScene& scene, const PreparedMesh& prepared, const ClusterSet& clusters,
+                     const EyeMeasurement& measurement) {
     scene.setClusterDecisions(measurement.culled, allBackFacingClusters(measurement));
     scene.setEye(measurement.eye, glm::dvec3(prepared.box.center()));
+    const size_t count = clusters.bounds.count();
+    std::vector<double> cull(count);
+    std::vector<uint8_t> cullable(count);
+    for (uint32_t c = 0; c < count; ++c) {
+        cull[c] = cullFraction(clusters.cullMap, c, measurement.statistics.test);
+        cullable[c] = clusters.bounds.cones[c].cullable || measurement.statistics.test == CullTest::Oracle;
+    }
+    scene.setClusterFractions(cull, clusters.cullMap.oracleFraction, cullable);
 }
 
-void showFaceFacing(ClusterScene& scene, const PreparedMesh& prepared, const Eye& eye) {
-    scene.setFaceFacing(classifyFaces(prepared.mesh(), prepared.world, prepared.faces, eye));
+void showEyeColouring(ClusterScene& scene, const PreparedMesh& prepared, const ClusterSet& clusters,
+                      const EyeMeasurement& measurement, FaceColoring coloring) {
+    if (coloring != FaceColoring::FaceFacing && coloring != FaceColoring::Loss) return;
+    const std::vector<Facing> facing = classifyFaces(prepared.mesh(), prepared.world, prepared.faces, measurement.eye);
+    if (coloring == FaceColoring::FaceFacing) scene.setFaceFacing(facing);
+    else scene.setFaceLoss(faceLosses(clusters, measurement, facing));
+}
+
+void showTestDrawing(ClusterScene& scene, const PreparedMesh& prepared, const ClusterSet& clusters, int cluster,
+                     const EyeMeasurement& measurement) {
+    if (cluster < 0 || cluster >= int(clusters.bounds.count())) {
+        scene.setTestDrawing({});
+        return;
+    }
+    scene.setTestDrawing(makeTestDrawing(cullingInput(prepared, clusters), uint32_t(cluster), measurement.eye,
+                                         measurement.statistics.test));
 }
 
 }  // namespace conescope

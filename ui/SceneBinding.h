@@ -16,11 +16,19 @@ std::map<Layer, bool> firstLookLayers();
 
 std::unique_ptr<ClusterScene> makeScene(const PreparedMesh& prepared, const ClusterSet& clusters);
 
-// The decisions of the measured eye (culled, and all-back-facing from the oracle) and the eye
-// marker looking at the mesh centre.
-void showMeasurement(ClusterScene& scene, const PreparedMesh& prepared, const EyeMeasurement& measurement);
+// The decisions of the measured eye (culled, and all-back-facing from the oracle), the eye marker
+// looking at the mesh centre, and the cull map's fractions for the measured test.
+void showMeasurement(ClusterScene& scene, const PreparedMesh& prepared, const ClusterSet& clusters,
+                     const EyeMeasurement& measurement);
 
-// The oracle's per-face facing from this eye (classifyFaces), for the face-facing colouring.
-void showFaceFacing(ClusterScene& scene, const PreparedMesh& prepared, const Eye& eye);
+// The per-face colourings that depend on the eye, for the colouring shown: the oracle's facing
+// (classifyFaces) or the loss classes (faceLosses). Nothing for the others: classifying every face
+// at every eye move is left to the colourings that show it.
+void showEyeColouring(ClusterScene& scene, const PreparedMesh& prepared, const ClusterSet& clusters,
+                      const EyeMeasurement& measurement, FaceColoring coloring);
+
+// The picked cluster's test from the measured eye (Layer::Test); cluster -1 clears it.
+void showTestDrawing(ClusterScene& scene, const PreparedMesh& prepared, const ClusterSet& clusters, int cluster,
+                     const EyeMeasurement& measurement);
 
 }  // namespace conescope

@@ -337,11 +337,13 @@ void Session::measureCurrentEye() {
         measurement_.reset();
         eyeError_ = QString::fromStdString(error.what());
         scene_->clearClusterDecisions();
+        scene_->setTestDrawing({});
         return;
     }
     eyeError_.clear();
-    showMeasurement(*scene_, *prepared_, *measurement_);
-    if (coloring_ == FaceColoring::FaceFacing) showFaceFacing(*scene_, *prepared_, measurement_->eye);
+    showMeasurement(*scene_, *prepared_, *clusters_, *measurement_);
+    showEyeColouring(*scene_, *prepared_, *clusters_, *measurement_, coloring_);
+    showTestDrawing(*scene_, *prepared_, *clusters_, picked_, *measurement_);
     eyeSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
@@ -356,13 +358,14 @@ void Session::setFaceColoring(FaceColoring coloring) {
     coloring_ = coloring;
     if (!scene_) return;
     scene_->setFaceColoring(coloring);
-    if (coloring == FaceColoring::FaceFacing && measurement_) showFaceFacing(*scene_, *prepared_, measurement_->eye);
+    if (measurement_) showEyeColouring(*scene_, *prepared_, *clusters_, *measurement_, coloring);
 }
 
 void Session::pickCluster(int cluster) {
     if (!scene_ || cluster < -1 || cluster >= int(scene_->clusterCount())) cluster = -1;
     picked_ = cluster;
     if (scene_) scene_->setHighlightedCluster(cluster);
+    if (scene_ && measurement_) showTestDrawing(*scene_, *prepared_, *clusters_, cluster, *measurement_);
     emit pickChanged(cluster);
 }
 

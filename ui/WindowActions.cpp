@@ -116,11 +116,11 @@ void WindowActions::createViewMenu(QDockWidget* eyeViewDock, QDockWidget* plotsD
     }
     QMenu* coloring = view->addMenu(tr("&Colour faces by"));
     auto* coloringGroup = new QActionGroup(this);
-    const std::pair<FaceColoring, QString> colorings[] = {{FaceColoring::Cluster, tr("Ctrl+1")},
-                                                          {FaceColoring::CullDecision, tr("Ctrl+2")},
-                                                          {FaceColoring::FaceFacing, tr("Ctrl+3")}};
-    for (const auto& [mode, key] : colorings) {
-        QAction* action = add(coloring, tr("Colour by %1").arg(QString::fromStdString(toString(mode))), QKeySequence(key),
+    // Ctrl+1 .. Ctrl+6 in the order of allFaceColorings.
+    int key = 1;
+    for (FaceColoring mode : allFaceColorings()) {
+        QAction* action = add(coloring, tr("Colour by %1").arg(QString::fromStdString(toString(mode))),
+                              QKeySequence(tr("Ctrl+%1").arg(key++)),
                               [this, mode = mode]() { window_->setFaceColoring(mode); });
         action->setCheckable(true);
         action->setChecked(mode == session_->faceColoring());

@@ -97,6 +97,14 @@ MeshoptCluster meshoptBounds(const Mesh& mesh, const std::vector<glm::vec3>& wor
 
 }  // namespace
 
+ConeOfNormals clusterCone(const Mesh& mesh, const std::vector<glm::vec3>& world, const FaceGeometry& faces,
+                          const uint32_t* clusterFaces, size_t faceCount, ConeMethod method) {
+    std::vector<glm::dvec3> normals;
+    for (size_t i = 0; i < faceCount; ++i) normals.push_back(faces.normals[clusterFaces[i]]);
+    if (method == ConeMethod::Meshopt) return meshoptBounds(mesh, world, clusterFaces, faceCount, normals).cone;
+    return coneByMethod(method, normals);
+}
+
 ClusterBounds computeClusterBounds(const Mesh& mesh, const std::vector<glm::vec3>& world, const FaceGeometry& faces,
                                    const Partition& partition, ConeMethod coneMethod, SphereMethod sphereMethod) {
     ClusterBounds bounds;

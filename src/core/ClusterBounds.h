@@ -39,6 +39,11 @@ ClusterBounds computeClusterBounds(const Mesh& mesh, const std::vector<glm::vec3
                                    const Partition& partition, ConeMethod coneMethod,
                                    SphereMethod sphereMethod = SphereMethod::Minimal);
 
+// One cluster's cone by `method`, exactly as computeClusterBounds makes it: the Gauss map compares
+// every method's cone on the same cluster.
+ConeOfNormals clusterCone(const Mesh& mesh, const std::vector<glm::vec3>& world, const FaceGeometry& faces,
+                          const uint32_t* clusterFaces, size_t faceCount, ConeMethod method);
+
 // The point behind every face plane along -axis (meshoptimizer's construction, in double):
 // apex = centre - axis * max_f n_f.(centre - q_f) / n_f.axis over the faces' vertices q_f.
 glm::dvec3 coneApex(const ConeOfNormals& cone, const glm::dvec3& center, const Mesh& mesh,

@@ -3,6 +3,7 @@
 #include "BatchCulling.h"
 
 #include <algorithm>
+#include <limits>
 #include <cmath>
 
 namespace conescope {
@@ -160,17 +161,34 @@ CullExplanation explainCull(const CullingInput& input, uint32_t cluster, const E
         why.cornerDotAxis[i] = length > 0.0 ? glm::dot(view, cone.axis) / length : 0.0;
         why.cornerBack[i] = cone.cullable && length > 0.0 && why.cornerDotAxis[i] > cone.sinHalfAngle + kCullMargin;
     }
+    // The tightest point of the test: its v.V1 less the threshold (the smallest over the points).
+    double tightest = why.viewDotAxis;
     if (test == CullTest::Vertices) {
+        tightest = std::numeric_limits<double>::infinity();
         for (uint32_t i = bounds.vertexStarts[cluster]; i < bounds.vertexStarts[cluster + 1]; ++i) {
             ++why.pointsTested;
-            const glm::dvec3 view =
-                eye.orthographic ? eye.direction : glm::dvec3(input.world[bounds.vertexIds[i]]) - eye.position;
-            why.pointsBack += cone.cullable && vectorSeesBack(cone, view);
+            const glm::dvec3 vertex(input.world[bounds.vertexIds[i]]);
+            const glm::dvec3 view = eye.orthographic ? eye.direction : vertex - eye.position;
+            const bool back = cone.cullable && vectorSeesBack(cone, view);
+            why.pointsBack += back;
+            why.vertices.push_back(vertex);
+            why.vertexBack.push_back(back);
+            const double length = glm::length(view);
+            tightest = std::min(tightest, length > 0.0 ? glm::dot(view, cone.axis) / length : 0.0);
         }
     } else if (test == CullTest::Aabb || test == CullTest::AabbFast) {
         why.pointsTested = 8;
         why.pointsBack = size_t(std::count(why.cornerBack.begin(), why.cornerBack.end(), true));
+        tightest = *std::min_element(why.cornerDotAxis.begin(), why.cornerDotAxis.end());
     }
+    why.margin = tightest - why.threshold;
+    if (test == CullTest::MeshoptSphere && !eye.orthographic)
+        why.margin -= why.distance > 0.0 ? why.radius / why.distance : std::numeric_limits<double>::infinity();
+    // Inside the sphere, or seeing it wider than B, the sphere test compares nothing; without a cone no test does.
+    const bool sphereNeverCulls = test == CullTest::Sphere && !eye.orthographic &&
+                                  (why.eyeInsideSphere || !(why.angleBDegrees - why.sphereAngleDegrees > 0.0));
+    if (test == CullTest::Oracle || !cone.cullable || sphereNeverCulls)
+        why.margin = std::numeric_limits<double>::quiet_NaN();
     const ClusterFaces& rows = bounds.faces;
     for (uint32_t i = rows.starts[cluster]; i < rows.starts[cluster + 1]; ++i) {
         switch (classifyFace(input.mesh, input.world, input.faces, rows.faces[i], eye)) {

@@ -89,6 +89,13 @@ struct CullExplanation {
     std::array<bool, 8> cornerBack{};
     size_t pointsTested = 0;          // vertices or corners looked at
     size_t pointsBack = 0;
+    // Vertices test: each cluster vertex and whether its view vector sees the back (1 = yes).
+    std::vector<glm::dvec3> vertices;
+    std::vector<uint8_t> vertexBack;
+    // How far the tightest compared value is past its threshold, in units of v.V1: above 0 the exact
+    // test culls with that much to spare, below 0 it is short by that much. NaN for the oracle and
+    // for a cluster without a cone. The meshopt-sphere test is written as v.V1 > sin(alpha) + r/d.
+    double margin = 0.0;
     size_t frontFaces = 0;            // by the oracle
     size_t backFaces = 0;
     size_t degenerateFaces = 0;

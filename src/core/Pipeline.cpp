@@ -275,10 +275,25 @@ std::map<std::string, std::vector<double>> partitionFaceArrays(const PreparedMes
     return arrays;
 }
 
+std::vector<FaceLoss> faceLosses(const ClusterSet& clusters, const EyeMeasurement& measurement,
+                                 const std::vector<Facing>& facing) {
+    const std::vector<uint8_t> backFacingCluster = allBackFacingClusters(measurement);
+    std::vector<FaceLoss> losses(facing.size());
+    for (size_t f = 0; f < facing.size(); ++f) {
+        const uint32_t c = clusters.partition.clusterOfFace[f];
+        // The loss classes of the statistics, per face: drawn as it should be, culled, or a back
+        // face drawn because of the test or because of the partition.
+        if (facing[f] != Facing::Back) losses[f] = FaceLoss::Visible;
+        else if (measurement.culled[c]) losses[f] = FaceLoss::Culled;
+        else losses[f] = backFacingCluster[c] ? FaceLoss::Test : FaceLoss::Partition;
+    }
+    return losses;
+}
+
 std::map<std::string, std::vector<double>> eyeFaceArrays(const PreparedMesh& prepared, const ClusterSet& clusters,
                                                          const EyeMeasurement& measurement) {
     const std::vector<Facing> facing = classifyFaces(prepared.mesh(), prepared.world, prepared.faces, measurement.eye);
-    const std::vector<uint8_t> backFacingCluster = allBackFacingClusters(measurement);
+    const std::vector<FaceLoss> losses = faceLosses(clusters, measurement, facing);
     const size_t faceCount = prepared.mesh().faceCount();
     std::map<std::string, std::vector<double>> arrays;
     std::vector<double>& culled = arrays["culled"];
@@ -286,14 +301,9 @@ std::map<std::string, std::vector<double>> eyeFaceArrays(const PreparedMesh& pre
     std::vector<double>& loss = arrays["loss"];
     culled.resize(faceCount), back.resize(faceCount), loss.resize(faceCount);
     for (size_t f = 0; f < faceCount; ++f) {
-        const uint32_t c = clusters.partition.clusterOfFace[f];
-        culled[f] = measurement.culled[c];
+        culled[f] = measurement.culled[clusters.partition.clusterOfFace[f]];
         back[f] = facing[f] == Facing::Back;
-        // The loss classes of the statistics, per face: drawn as it should be, culled, or a back
-        // face drawn because of the test or because of the partition.
-        if (facing[f] != Facing::Back) loss[f] = double(FaceLoss::Visible);
-        else if (measurement.culled[c]) loss[f] = double(FaceLoss::Culled);
-        else loss[f] = double(backFacingCluster[c] ? FaceLoss::Test : FaceLoss::Partition);
+        loss[f] = double(losses[f]);
     }
     return arrays;
 }

@@ -131,7 +131,13 @@ RunStatistics runStatistics(const Mesh& mesh, const Settings& settings, const st
                             const ProgressCallback& progress = {});
 
 // What happened to a face from one eye, as the statistics count it.
-enum class FaceLoss { Visible = 0, Culled = 1, Test = 2, Partition = 3 };
+enum class FaceLoss : uint8_t { Visible = 0, Culled = 1, Test = 2, Partition = 3 };
+
+// Per face, what happened to it from the measured eye, given the oracle's facing from that eye
+// (classifyFaces): a back face culled, drawn by the test's caution, or drawn because its cluster holds
+// a visible face; anything else is Visible (front-facing or degenerate).
+std::vector<FaceLoss> faceLosses(const ClusterSet& clusters, const EyeMeasurement& measurement,
+                                 const std::vector<Facing>& facing);
 
 // Per-face arrays for one eye, for ParaView and the like: `culled` (its cluster was culled),
 // `back_facing` (the oracle's verdict) and `loss` (a FaceLoss: 0 visible or degenerate, 1 culled,

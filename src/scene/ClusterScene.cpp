@@ -15,6 +15,7 @@
 #include "scene/NormalsLayer.h"
 #include "scene/SceneData.h"
 #include "scene/SceneLegend.h"
+#include "scene/TestLayer.h"
 
 namespace conescope {
 
@@ -23,7 +24,7 @@ struct ClusterScene::Impl {
          const ClusterBounds& clusterBounds)
         : data(mesh, world, partition, clusterBounds), faces(data), borders(data, mesh, partition), cones(conesLayer(data)),
           normals(data, faceGeometry, partition), boxes(boxesLayer(data)), spheres(spheresLayer(data)), eye(data),
-          highlight(data), eyeView(data) {}
+          highlight(data), test(data), eyeView(data) {}
 
     SceneData data;
     FacesLayer faces;
@@ -33,6 +34,7 @@ struct ClusterScene::Impl {
     GlyphLayer boxes, spheres;
     EyeLayer eye;
     HighlightLayer highlight;
+    TestLayer test;
     SceneLegend legend;
     EyeView eyeView;
     FaceColoring coloring = FaceColoring::Cluster;
@@ -48,12 +50,15 @@ struct ClusterScene::Impl {
         case Layer::Spheres: return &spheres;
         case Layer::Eye: return &eye;
         case Layer::Highlight: return &highlight;
+        case Layer::Test: return &test;
         case Layer::Legend: return nullptr;
         }
         return nullptr;
     }
-    // The order the actors go into a renderer: the picked cluster over the glyphs, the eye last.
-    std::vector<SceneLayer*> drawingOrder() { return {&faces, &borders, &cones, &normals, &boxes, &spheres, &highlight, &eye}; }
+    // The order the actors go into a renderer: the picked cluster and its test over the glyphs, the eye last.
+    std::vector<SceneLayer*> drawingOrder() {
+        return {&faces, &borders, &cones, &normals, &boxes, &spheres, &highlight, &test, &eye};
+    }
 
     // The legend lists the visible layers' entries in the order of allLayers().
     void updateLegend() {
@@ -84,12 +89,16 @@ ClusterScene& ClusterScene::operator=(ClusterScene&&) noexcept = default;
 void ClusterScene::addTo(vtkRenderer* renderer) const {
     for (SceneLayer* layer : impl_->drawingOrder())
         for (vtkActor* actor : layer->actors()) renderer->AddActor(actor);
+    for (SceneLayer* layer : impl_->drawingOrder())
+        for (vtkProp* overlay : layer->overlays()) renderer->AddViewProp(overlay);
     renderer->AddViewProp(impl_->legend.actor());
 }
 
 void ClusterScene::removeFrom(vtkRenderer* renderer) const {
     for (SceneLayer* layer : impl_->drawingOrder())
         for (vtkActor* actor : layer->actors()) renderer->RemoveActor(actor);
+    for (SceneLayer* layer : impl_->drawingOrder())
+        for (vtkProp* overlay : layer->overlays()) renderer->RemoveViewProp(overlay);
     renderer->RemoveViewProp(impl_->legend.actor());
 }
 
@@ -127,6 +136,24 @@ void ClusterScene::setFaceFacing(const std::vector<Facing>& facing) {
     impl_->faces.setFaceFacing(facing);
     impl_->updateLegend();
 }
+
+void ClusterScene::setFaceLoss(const std::vector<FaceLoss>& loss) {
+    impl_->faces.setFaceLoss(loss);
+    impl_->updateLegend();
+}
+
+void ClusterScene::setClusterFractions(const std::vector<double>& cullFraction, const std::vector<double>& oracleFraction,
+                                       const std::vector<uint8_t>& cullable) {
+    impl_->data.tables.setFractions(cullFraction, oracleFraction, cullable);
+    impl_->updateLegend();
+}
+
+void ClusterScene::setTestDrawing(const TestDrawing& drawing) {
+    impl_->test.setDrawing(drawing);
+    impl_->updateLegend();
+}
+
+const TestDrawing& ClusterScene::testDrawing() const { return impl_->test.drawing(); }
 
 void ClusterScene::setEye(const Eye& eye, const glm::dvec3& lookAt) {
     impl_->eye.setEye(eye, lookAt);

@@ -30,6 +30,7 @@
 #include "core/Views.h"
 #include "scene/ClusterPalette.h"
 #include "scene/SceneTypes.h"
+#include "scene/TestLayer.h"
 
 class vtkActor;
 class vtkCamera;
@@ -77,6 +78,17 @@ public:
 
     // The oracle's per-face result (classifyFaces). Writes the per-face "facing" array.
     void setFaceFacing(const std::vector<Facing>& facing);
+    // What happened to each face from the eye (core faceLosses). Writes the per-face "loss" array.
+    void setFaceLoss(const std::vector<FaceLoss>& loss);
+    // The cull map's per-cluster shares (ClusterSet::cullMap) for the fraction colourings, and which
+    // clusters have a cone at all. Rewrites K table entries. Throws std::invalid_argument on a size mismatch.
+    void setClusterFractions(const std::vector<double>& cullFraction, const std::vector<double>& oracleFraction,
+                             const std::vector<uint8_t>& cullable);
+
+    // The picked cluster's test in 3D (Layer::Test; makeTestDrawing); a drawing with cluster -1 clears it.
+    // Throws std::out_of_range for a cluster outside [-1, K).
+    void setTestDrawing(const TestDrawing& drawing);
+    const TestDrawing& testDrawing() const;
 
     // Places the eye marker: for a perspective eye a sphere at the position with a cone pointing at
     // lookAt; for an orthographic eye an arrow along eye.direction outside the mesh bounds, aimed at

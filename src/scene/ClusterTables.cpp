@@ -29,13 +29,40 @@ void setEntry(vtkLookupTable* table, size_t index, const Rgb& colour, double alp
 
 ClusterTables::ClusterTables(const std::vector<Rgb>& clusterColours)
     : palette(indexedTable(clusterColours.size())), decision(indexedTable(clusterColours.size())),
-      visible(indexedTable(clusterColours.size())), facing(indexedTable(4)), colours_(clusterColours) {
+      visible(indexedTable(clusterColours.size())), facing(indexedTable(4)), cullFraction(indexedTable(clusterColours.size())),
+      oracleFraction(indexedTable(clusterColours.size())), loss(indexedTable(5)), colours_(clusterColours) {
     for (size_t c = 0; c < colours_.size(); ++c) setEntry(palette, c, colours_[c]);
     fill(nullptr, nullptr);
     setEntry(facing, size_t(Facing::Front), SceneColours::front);
     setEntry(facing, size_t(Facing::Back), SceneColours::back);
     setEntry(facing, size_t(Facing::Degenerate), SceneColours::degenerate);
     setEntry(facing, 3, SceneColours::unclassified);
+    for (size_t c = 0; c < colours_.size(); ++c) {
+        setEntry(cullFraction, c, SceneColours::undecided);
+        setEntry(oracleFraction, c, SceneColours::undecided);
+    }
+    // The loss classes in the decision colours: the same meaning per face as per cluster.
+    setEntry(loss, 0, SceneColours::drawn);
+    setEntry(loss, 1, SceneColours::culled);
+    setEntry(loss, 2, SceneColours::testLoss);
+    setEntry(loss, 3, SceneColours::partitionLoss);
+    setEntry(loss, 4, SceneColours::unclassified);
+}
+
+void ClusterTables::setFractions(const std::vector<double>& cull, const std::vector<double>& oracle,
+                                 const std::vector<uint8_t>& cullable) {
+    const size_t clusterCount = colours_.size();
+    if (cull.size() != clusterCount || oracle.size() != clusterCount || cullable.size() != clusterCount)
+        throw std::invalid_argument("setClusterFractions: expected " + std::to_string(clusterCount) + " values per array");
+    uncullable_ = 0;
+    for (size_t c = 0; c < clusterCount; ++c) {
+        uncullable_ += !cullable[c];
+        setEntry(cullFraction, c, cullable[c] ? fractionRamp(cull[c] / maxClusterFraction) : SceneColours::uncullable);
+        setEntry(oracleFraction, c, fractionRamp(oracle[c] / maxClusterFraction));
+    }
+    cullFraction->Modified();
+    oracleFraction->Modified();
+    hasFractions_ = true;
 }
 
 void ClusterTables::setDecisions(const std::vector<uint8_t>& culled, const std::vector<uint8_t>& allBackFacing) {
@@ -54,7 +81,15 @@ void ClusterTables::clearDecisions() {
 }
 
 vtkLookupTable* ClusterTables::forGlyphs(FaceColoring coloring) const {
-    return coloring == FaceColoring::CullDecision ? decision : palette;
+    switch (coloring) {
+    case FaceColoring::CullDecision:
+    case FaceColoring::Loss: return decision;
+    case FaceColoring::CullFraction: return cullFraction;
+    case FaceColoring::OracleFraction: return oracleFraction;
+    case FaceColoring::Cluster:
+    case FaceColoring::FaceFacing: return palette;
+    }
+    return palette;
 }
 
 // Without decisions (nullptr) every cluster is undecided and keeps its palette colour in the eye view.

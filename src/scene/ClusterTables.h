@@ -33,13 +33,24 @@ public:
     bool hasDecisions() const { return hasDecisions_; }
     const DecisionCounts& decisionCounts() const { return counts_; }
 
-    // The table the per-cluster glyphs are coloured with: the decisions in decision mode, else the palette.
+    // Per cluster, the cull map's shares (CullMap.h) on the fraction ramp, 0 .. maxClusterFraction;
+    // clusters without a cone (cullable 0) in the uncullable colour on the cull-fraction table.
+    // Throws std::invalid_argument on a size mismatch.
+    void setFractions(const std::vector<double>& cullFraction, const std::vector<double>& oracleFraction,
+                      const std::vector<uint8_t>& cullable);
+    bool hasFractions() const { return hasFractions_; }
+    size_t uncullableClusters() const { return uncullable_; }
+
+    // The table the per-cluster glyphs are coloured with: the decisions in decision and loss mode,
+    // the fraction in fraction modes, else the palette.
     vtkLookupTable* forGlyphs(FaceColoring coloring) const;
 
     vtkSmartPointer<vtkLookupTable> palette;   // K entries: the cluster palette
     vtkSmartPointer<vtkLookupTable> decision;  // K entries: decision colours
     vtkSmartPointer<vtkLookupTable> visible;   // K entries: palette, alpha 0 when culled
     vtkSmartPointer<vtkLookupTable> facing;    // 4 entries: one per Facing value and "not classified"
+    vtkSmartPointer<vtkLookupTable> cullFraction, oracleFraction;  // K entries each: the fraction ramp
+    vtkSmartPointer<vtkLookupTable> loss;      // 5 entries: one per FaceLoss value and "not measured"
 
 private:
     void fill(const std::vector<uint8_t>* culled, const std::vector<uint8_t>* allBackFacing);
@@ -47,6 +58,8 @@ private:
     const std::vector<Rgb>& colours_;
     DecisionCounts counts_;
     bool hasDecisions_ = false;
+    bool hasFractions_ = false;
+    size_t uncullable_ = 0;
 };
 
 }  // namespace conescope

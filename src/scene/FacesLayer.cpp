@@ -22,6 +22,9 @@ void FacesLayer::recolour(FaceColoring coloring) {
     if (coloring == FaceColoring::FaceFacing) {
         mapper_->SelectColorArray(facingArrayName);
         mapper_->SetLookupTable(data_.tables.facing);
+    } else if (coloring == FaceColoring::Loss) {
+        mapper_->SelectColorArray(lossArrayName);
+        mapper_->SetLookupTable(data_.tables.loss);
     } else {
         mapper_->SelectColorArray(clusterIdArrayName);
         mapper_->SetLookupTable(data_.tables.forGlyphs(coloring));
@@ -42,6 +45,20 @@ void FacesLayer::addLegendEntries(FaceColoring coloring, std::vector<LegendEntry
             if (counts.wronglyCulled)
                 entries.push_back({"culled with front faces" + countLabel(counts.wronglyCulled), {SceneColours::wronglyCulled}});
         }
+    } else if (coloring == FaceColoring::CullFraction || coloring == FaceColoring::OracleFraction) {
+        const bool cull = coloring == FaceColoring::CullFraction;
+        if (!data_.tables.hasFractions()) {
+            entries.push_back({"no cull map yet", {SceneColours::undecided}});
+            return;
+        }
+        entries.push_back({std::string(cull ? "cull" : "oracle") + " fraction 0 .. 0.5", fractionLegendColours()});
+        if (cull) entries.push_back({"uncullable: no cone" + countLabel(data_.tables.uncullableClusters()), {SceneColours::uncullable}});
+    } else if (coloring == FaceColoring::Loss) {
+        if (!hasLoss_) entries.push_back({"no eye measured yet", {SceneColours::unclassified}});
+        entries.push_back({"culled back face" + countLabel(lossCounts_[1]), {SceneColours::culled}});
+        entries.push_back({"lost to the test" + countLabel(lossCounts_[2]), {SceneColours::testLoss}});
+        entries.push_back({"lost to the partition" + countLabel(lossCounts_[3]), {SceneColours::partitionLoss}});
+        entries.push_back({"visible or degenerate" + countLabel(lossCounts_[0]), {SceneColours::drawn}});
     } else {
         if (!hasFacing_) entries.push_back({"faces not classified yet", {SceneColours::unclassified}});
         entries.push_back({"front-facing face", {SceneColours::front}});
@@ -60,6 +77,20 @@ void FacesLayer::setFaceFacing(const std::vector<Facing>& facing) {
               data_.facing->GetPointer(0));
     data_.facing->Modified();
     hasFacing_ = true;
+}
+
+void FacesLayer::setFaceLoss(const std::vector<FaceLoss>& loss) {
+    const size_t faceCount = data_.clusterOfFace.size();
+    if (loss.size() != faceCount)
+        throw std::invalid_argument("setFaceLoss: expected " + std::to_string(faceCount) + " faces, got " + std::to_string(loss.size()));
+    lossCounts_ = {};
+    uint8_t* values = data_.loss->GetPointer(0);
+    for (size_t f = 0; f < faceCount; ++f) {
+        values[f] = uint8_t(loss[f]);
+        ++lossCounts_[size_t(loss[f]) & 3];
+    }
+    data_.loss->Modified();
+    hasLoss_ = true;
 }
 
 }  // namespace conescope

@@ -1,9 +1,12 @@
-// Layer::Faces: the mesh polydata, coloured by cluster, by cull decision or per face by the oracle.
+// Layer::Faces: the mesh polydata, coloured by cluster, by cull decision, by a cluster's cull map
+// fraction, or per face by the oracle or by what happened to it from the eye (its loss class).
 #pragma once
 
+#include <array>
 #include <vector>
 
 #include "core/Culling.h"
+#include "core/Pipeline.h"
 #include "scene/SceneLayer.h"
 
 namespace conescope {
@@ -20,11 +23,16 @@ public:
     // The oracle's per-face result (classifyFaces) into the mesh's "facing" array.
     // Throws std::invalid_argument on a size mismatch.
     void setFaceFacing(const std::vector<Facing>& facing);
+    // The eye's per-face loss classes (faceLosses) into the mesh's "loss" array, counted for the legend
+    // in faces. Throws std::invalid_argument on a size mismatch.
+    void setFaceLoss(const std::vector<FaceLoss>& loss);
 
 private:
     vtkSmartPointer<vtkPolyDataMapper> mapper_;
     vtkSmartPointer<vtkActor> actor_;
     bool hasFacing_ = false;
+    bool hasLoss_ = false;
+    std::array<size_t, 4> lossCounts_{};
 };
 
 }  // namespace conescope

@@ -27,13 +27,18 @@ SceneData::SceneData(const Mesh& mesh, const std::vector<glm::vec3>& world, cons
                      const ClusterBounds& bounds)
     : clusterOfFace(partition.clusterOfFace), bounds(bounds), palette(clusterPalette(clusterAdjacency(mesh, partition))),
       worldBox(computeAabb(world)), meanEdge(meanEdgeLength(mesh, world)), points(pointsFrom(world)),
-      meshData(meshPolyData(mesh, points, partition)), facing(vtkSmartPointer<vtkUnsignedCharArray>::New()), tables(palette) {
+      meshData(meshPolyData(mesh, points, partition)), facing(vtkSmartPointer<vtkUnsignedCharArray>::New()),
+      loss(vtkSmartPointer<vtkUnsignedCharArray>::New()), tables(palette) {
     this->mesh.faceStarts = mesh.faceStarts;
     this->mesh.faceVertices = mesh.faceVertices;
     facing->SetName(facingArrayName);
     facing->SetNumberOfTuples(vtkIdType(mesh.faceCount()));
     facing->FillValue(3);
     meshData->GetCellData()->AddArray(facing);
+    loss->SetName(lossArrayName);
+    loss->SetNumberOfTuples(vtkIdType(mesh.faceCount()));
+    loss->FillValue(4);
+    meshData->GetCellData()->AddArray(loss);
 }
 
 }  // namespace conescope

@@ -50,8 +50,9 @@ struct SceneData {
     double meanEdge = 0.0;
 
     vtkSmartPointer<vtkPoints> points;       // world positions, shared by the mesh, the borders and the outline
-    vtkSmartPointer<vtkPolyData> meshData;   // one polygon per face; cell arrays cluster_id and facing
+    vtkSmartPointer<vtkPolyData> meshData;   // one polygon per face; cell arrays cluster_id, facing and loss
     vtkSmartPointer<vtkUnsignedCharArray> facing;  // meshData's "facing" array
+    vtkSmartPointer<vtkUnsignedCharArray> loss;    // meshData's "loss" array
     ClusterTables tables;
 };
 

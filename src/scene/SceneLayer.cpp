@@ -10,6 +10,7 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
+#include <vtkProp.h>
 #include <vtkProperty.h>
 
 namespace conescope {
@@ -28,6 +29,7 @@ bool SceneLayer::owns(vtkActor* actor) const {
 
 void SceneLayer::applyVisibility() {
     for (vtkActor* actor : actors()) actor->SetVisibility(visible_ && hasContent());
+    for (vtkProp* overlay : overlays()) overlay->SetVisibility(visible_ && hasContent());
 }
 
 int clusterIdOfCell(vtkActor* actor, vtkIdType cellId) {
@@ -92,9 +94,17 @@ std::string countLabel(size_t n) { return " (" + std::to_string(n) + ")"; }
 
 std::vector<Rgb> clusterLegendColours() { return std::vector<Rgb>(baseHues().begin(), baseHues().begin() + 4); }
 
+std::vector<Rgb> fractionLegendColours() {
+    std::vector<Rgb> colours;
+    for (int i = 0; i < 6; ++i) colours.push_back(fractionRamp(i / 5.0));
+    return colours;
+}
+
 // Glyphs take the faces' cluster colours, or the decision colours in decision mode.
 std::vector<Rgb> glyphLegendColours(FaceColoring coloring) {
-    if (coloring == FaceColoring::CullDecision) return {SceneColours::culled, SceneColours::missedCull, SceneColours::drawn};
+    if (coloring == FaceColoring::CullDecision || coloring == FaceColoring::Loss)
+        return {SceneColours::culled, SceneColours::missedCull, SceneColours::drawn};
+    if (coloring == FaceColoring::CullFraction || coloring == FaceColoring::OracleFraction) return fractionLegendColours();
     return clusterLegendColours();
 }
 

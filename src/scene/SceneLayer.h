@@ -18,6 +18,7 @@ class vtkLookupTable;
 class vtkMapper;
 class vtkPolyData;
 class vtkPolyDataMapper;
+class vtkProp;
 
 namespace conescope {
 
@@ -34,6 +35,8 @@ public:
 
     // The layer's actors in drawing order; the first is the layer's main actor (ClusterScene::actor).
     virtual std::vector<vtkActor*> actors() const = 0;
+    // 2D props drawn over the picture (labels), shown and hidden with the actors; not pickable.
+    virtual std::vector<vtkProp*> overlays() const { return {}; }
     // Whether there is anything to draw yet (an eye, a picked cluster); the actors show only then.
     virtual bool hasContent() const { return true; }
     // Follows the face colouring; most layers keep their colours.
@@ -77,5 +80,7 @@ std::string countLabel(size_t n);
 // The legend's colours for "a colour per cluster", and for the glyphs in the given face colouring.
 std::vector<Rgb> clusterLegendColours();
 std::vector<Rgb> glyphLegendColours(FaceColoring coloring);
+// The fraction ramp from 0 to maxClusterFraction in a few steps.
+std::vector<Rgb> fractionLegendColours();
 
 }  // namespace conescope

@@ -59,6 +59,20 @@ void placeObserverCamera(const ClusterScene& scene, const RenderOptions& options
     camera->OrthogonalizeViewUp();
 }
 
+void frameTestDrawing(const ClusterScene& scene, RenderOptions& options) {
+    const TestDrawing& drawing = scene.testDrawing();
+    if (drawing.cluster < 0) return;
+    const glm::dvec3 focus = drawing.sphere.center;
+    // Across the view vector, a little from behind the eye: the funnel in profile, the faces in view.
+    glm::dvec3 side = glm::cross(drawing.why.view, options.viewUp);
+    if (glm::length(side) < 1e-6) side = glm::cross(drawing.why.view, glm::dvec3(1, 0, 0));
+    const glm::dvec3 from = glm::normalize(glm::normalize(side) - 0.6 * drawing.why.view);
+    const double halfAngle = 0.5 * options.viewAngleDegrees * M_PI / 180.0;
+    const double radius = 5.0 * std::max(drawing.sphere.radius, 1e-9);
+    options.focalPoint = focus;
+    options.cameraPosition = focus + from * (radius / std::sin(halfAngle));
+}
+
 vtkSmartPointer<vtkImageData> renderToImage(const ClusterScene& scene, const RenderOptions& options) {
     // Without a display an off-screen window aborts the process inside VTK's X code: fail clearly first.
     const char* display = std::getenv("DISPLAY");

@@ -36,6 +36,11 @@ struct RenderOptions {
     bool fromEye = false;
 };
 
+// Points the options' camera at the scene's test drawing (setTestDrawing): the picked cluster seen from
+// the side of its view vector, close enough that the cluster, its axis and its cull region fill the
+// picture. Leaves the options alone when nothing is drawn.
+void frameTestDrawing(const ClusterScene& scene, RenderOptions& options);
+
 // The default observer camera for these options (what an unset cameraPosition / focalPoint means).
 void placeObserverCamera(const ClusterScene& scene, const RenderOptions& options, vtkCamera* camera);
 

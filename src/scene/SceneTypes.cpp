@@ -1,10 +1,13 @@
 #include "scene/SceneTypes.h"
 
+#include <algorithm>
+
 namespace conescope {
 
 const std::vector<Layer>& allLayers() {
     static const std::vector<Layer> layers = {Layer::Faces, Layer::Borders, Layer::Cones,     Layer::Normals, Layer::Boxes,
-                                              Layer::Spheres, Layer::Eye,   Layer::Highlight, Layer::Legend};
+                                              Layer::Spheres, Layer::Eye,   Layer::Highlight, Layer::Test,
+                                              Layer::Legend};
     return layers;
 }
 
@@ -18,9 +21,28 @@ std::string toString(Layer layer) {
     case Layer::Spheres: return "spheres";
     case Layer::Eye: return "eye";
     case Layer::Highlight: return "highlight";
+    case Layer::Test: return "test";
     case Layer::Legend: return "legend";
     }
     return "unknown";
+}
+
+const std::vector<FaceColoring>& allFaceColorings() {
+    static const std::vector<FaceColoring> colorings = {FaceColoring::Cluster,      FaceColoring::CullDecision,
+                                                        FaceColoring::FaceFacing,   FaceColoring::CullFraction,
+                                                        FaceColoring::OracleFraction, FaceColoring::Loss};
+    return colorings;
+}
+
+// Five stops close to viridis: dark where little is culled, bright where much is.
+Rgb fractionRamp(double t) {
+    static const Rgb stops[] = {{0.27, 0.00, 0.33}, {0.23, 0.32, 0.55}, {0.13, 0.57, 0.55}, {0.37, 0.79, 0.38}, {0.99, 0.91, 0.14}};
+    t = std::clamp(t, 0.0, 1.0) * 4.0;
+    const int i = std::min(int(t), 3);
+    const double f = t - i;
+    Rgb colour;
+    for (int k = 0; k < 3; ++k) colour[k] = stops[i][k] + (stops[i + 1][k] - stops[i][k]) * f;
+    return colour;
 }
 
 std::string toString(FaceColoring coloring) {
@@ -28,6 +50,9 @@ std::string toString(FaceColoring coloring) {
     case FaceColoring::Cluster: return "cluster";
     case FaceColoring::CullDecision: return "decision";
     case FaceColoring::FaceFacing: return "facing";
+    case FaceColoring::CullFraction: return "cull-fraction";
+    case FaceColoring::OracleFraction: return "oracle-fraction";
+    case FaceColoring::Loss: return "loss";
     }
     return "unknown";
 }

@@ -15,8 +15,11 @@ namespace conescope {
 inline const char* const clusterIdArrayName = "cluster_id";
 // Per-face Facing value (0 front, 1 back, 2 degenerate, 3 not classified yet), written by setFaceFacing.
 inline const char* const facingArrayName = "facing";
+// Per-face FaceLoss value (core/Pipeline.h: 0 visible, 1 culled, 2 test loss, 3 partition loss; 4 not
+// measured yet), written by setFaceLoss.
+inline const char* const lossArrayName = "loss";
 
-// Switchable parts of the scene. Default visibility: Faces, Borders, Cones, Eye, Highlight, Legend on;
+// Switchable parts of the scene. Default visibility: Faces, Borders, Cones, Eye, Highlight, Test, Legend on;
 // Normals, Boxes, Spheres off.
 enum class Layer {
     Faces,      // the mesh, coloured as FaceColoring says
@@ -30,6 +33,7 @@ enum class Layer {
     Eye,        // the cull eye marker (after setEye)
     Highlight,  // the picked cluster (after setHighlightedCluster): outline, opaque cone, box and sphere,
                 // shown whatever the Cones / Boxes / Spheres layers say
+    Test,       // the picked cluster's cull test in 3D (setTestDrawing): axis, view vector, cull region, points
     Legend,     // what the colours mean, for the visible layers
 };
 const std::vector<Layer>& allLayers();
@@ -40,7 +44,11 @@ enum class FaceColoring {
     Cluster,       // the cluster palette: neighbouring clusters differ
     CullDecision,  // per cluster: culled / missed cull / drawn (setClusterDecisions)
     FaceFacing,    // per face, from the oracle: front / back / degenerate (setFaceFacing); glyphs keep the palette
+    CullFraction,  // per cluster, the share of directions the test culls it from (setClusterFractions)
+    OracleFraction,  // per cluster, the share from which every face faces away (setClusterFractions)
+    Loss,          // per face for the eye: visible / culled / test loss / partition loss (setFaceLoss)
 };
+const std::vector<FaceColoring>& allFaceColorings();
 std::string toString(FaceColoring);
 
 // The colours the legend lists, fixed so screenshots of different runs compare.
@@ -59,7 +67,16 @@ struct SceneColours {
     static constexpr Rgb normals{0.10, 0.75, 0.30};
     static constexpr Rgb eye{0.95, 0.10, 0.85};
     static constexpr Rgb highlight{1.00, 0.95, 0.15};
+    static constexpr Rgb uncullable{0.45, 0.12, 0.40};       // no cone: never culled, whatever the eye
+    // The loss classes: a back face drawn because of the test, because of the partition.
+    static constexpr Rgb testLoss{1.00, 0.55, 0.05};
+    static constexpr Rgb partitionLoss{0.85, 0.20, 0.55};
 };
+// The colour ramp of the fraction colourings at t in [0, 1] (dark blue through teal to yellow), and
+// the largest fraction a cluster can have: (1 - sin 0) / 2, a flat cluster.
+Rgb fractionRamp(double t);
+constexpr double maxClusterFraction = 0.5;
+
 // Opacity of the cone glyphs (the highlighted cluster's cone is opaque).
 constexpr double coneOpacity = 0.35;
 // The normals layer draws at most this many arrows: every k-th face on larger meshes.
