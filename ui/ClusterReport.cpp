@@ -1,5 +1,7 @@
 #include "ClusterReport.h"
 
+#include <cmath>
+
 #include <QStringList>
 
 #include "core/Settings.h"
@@ -158,6 +160,10 @@ QString testSection(const ClusterReportInput& input) {
             case CullTest::Oracle: break;
         }
     }
+    if (!std::isnan(why.margin))
+        table.row(QStringLiteral("margin (tightest v&middot;V1 &minus; threshold)"),
+                  why.margin > 0.0 ? QStringLiteral("passes by %1").arg(number(why.margin))
+                                   : QStringLiteral("<b>short by %1</b>").arg(number(-why.margin)));
     table.row(QStringLiteral("<b>decision</b>"), why.culled ? QStringLiteral("<b>culled</b>") : QStringLiteral("<b>drawn</b>"));
     if (why.culled != why.exactCulled)
         table.row(QStringLiteral("float kernel"), QStringLiteral("drawn: the exact test would cull it, but it lies within the batched "

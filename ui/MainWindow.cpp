@@ -18,6 +18,7 @@
 #include "EyePanel.h"
 #include "EyeView.h"
 #include "ObserverView.h"
+#include "GaussMapView.h"
 #include "PickedClusterView.h"
 #include "WorstClustersView.h"
 #include "PlotsView.h"
@@ -74,10 +75,25 @@ void MainWindow::createDocks() {
     eyePanel_ = new EyePanel(this);
     statisticsPanel_ = new StatisticsPanel(this);
     clusterView_ = new PickedClusterView(this);
+    gaussMap_ = new GaussMapView(this);
     sideDocks_ = {dock(tr("Settings"), "settingsDock", scrolled(settingsPanel_), Qt::LeftDockWidgetArea),
                   dock(tr("Cull eye"), "eyeDock", eyePanel_, Qt::LeftDockWidgetArea),
                   dock(tr("Statistics"), "statisticsDock", scrolled(statisticsPanel_), Qt::RightDockWidgetArea),
                   dock(tr("Picked cluster"), "clusterDock", clusterView_, Qt::RightDockWidgetArea)};
+    // Beside the picked cluster's numbers: its normals and cones on the unit sphere (G raises it).
+    QDockWidget* gaussDock = dock(tr("Gauss map"), "gaussMapDock", gaussMap_, Qt::RightDockWidgetArea);
+    tabifyDockWidget(sideDocks_[3], gaussDock);
+    sideDocks_[3]->raise();
+    auto* showGauss = new QAction(tr("Show the Gauss map"), this);
+    showGauss->setShortcut(QKeySequence(tr("G")));
+    connect(showGauss, &QAction::triggered, gaussDock, [gaussDock]() {
+        gaussDock->show();
+        gaussDock->raise();
+    });
+    addAction(showGauss);
+    connect(gaussDock, &QDockWidget::visibilityChanged, this, [this](bool visible) {
+        if (visible) gaussMap_->render();
+    });
 
     plots_ = new PlotsView(this);
     plotsDock_ = dock(tr("Plots"), "plotsDock", plots_, Qt::BottomDockWidgetArea);
@@ -104,6 +120,7 @@ void MainWindow::connectSession() {
     connect(&session_, &Session::orbitChanged, this, &MainWindow::showOrbit);
     connect(&session_, &Session::pickChanged, this, [this]() {
         clusterView_->showPick(session_);
+        gaussMap_->showPick(session_, true);
         render();
     });
     connect(&session_, &Session::meshShown, this, &MainWindow::showMesh);
@@ -159,6 +176,7 @@ void MainWindow::showEyeMeasurement() {
         statisticsPanel_->showEyeError(session_.eyeError());
     }
     clusterView_->showPick(session_);
+    gaussMap_->showPick(session_, false);
     render();
     if (measurement) emit eyeMeasured();
 }

@@ -26,6 +26,7 @@ class EyePanel;
 class EyeView;
 class ObserverView;
 class PickedClusterView;
+class GaussMapView;
 class WorstClustersView;
 class PlotsView;
 class SettingsPanel;
@@ -109,6 +110,7 @@ public:
     // the first orbit view that loses its back faces.
     void chooseCluster(int cluster);
     WorstClustersView* worstClustersView() const { return worstClusters_; }
+    GaussMapView* gaussMapView() const { return gaussMap_; }
     PlotsView* plotsView() const { return plots_; }
     bool progressShown() const;
 
@@ -142,6 +144,7 @@ private:
     EyeView* eyeView_ = nullptr;
     PlotsView* plots_ = nullptr;
     PickedClusterView* clusterView_ = nullptr;
+    GaussMapView* gaussMap_ = nullptr;
     WorstClustersView* worstClusters_ = nullptr;
     SettingsPanel* settingsPanel_ = nullptr;
     EyePanel* eyePanel_ = nullptr;

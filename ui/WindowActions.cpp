@@ -103,7 +103,8 @@ void WindowActions::createViewMenu(QDockWidget* eyeViewDock, QDockWidget* plotsD
     QMenu* layers = view->addMenu(tr("&Layers"));
     int number = 1;
     for (Layer layer : allLayers()) {
-        const QKeySequence key = number <= 9 ? QKeySequence(Qt::Key_0 + number) : QKeySequence();
+        // 1 .. 9, then 0 for the tenth, as on the keyboard.
+        const QKeySequence key = number <= 10 ? QKeySequence(Qt::Key_0 + number % 10) : QKeySequence();
         QAction* action = add(layers, tr("Show %1").arg(QString::fromStdString(toString(layer))), key, {});
         action->setCheckable(true);
         action->setChecked(session_->layerVisible(layer));

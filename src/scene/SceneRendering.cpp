@@ -68,15 +68,39 @@ void frameTestDrawing(const ClusterScene& scene, RenderOptions& options) {
     if (glm::length(side) < 1e-6) side = glm::cross(drawing.why.view, glm::dvec3(1, 0, 0));
     const glm::dvec3 from = glm::normalize(glm::normalize(side) - 0.6 * drawing.why.view);
     const double halfAngle = 0.5 * options.viewAngleDegrees * M_PI / 180.0;
-    const double radius = 5.0 * std::max(drawing.sphere.radius, 1e-9);
+    const double radius = 2.5 * std::max(drawing.sphere.radius, 1e-9);
     options.focalPoint = focus;
     options.cameraPosition = focus + from * (radius / std::sin(halfAngle));
 }
 
-vtkSmartPointer<vtkImageData> renderToImage(const ClusterScene& scene, const RenderOptions& options) {
+void requireDisplay() {
     // Without a display an off-screen window aborts the process inside VTK's X code: fail clearly first.
     const char* display = std::getenv("DISPLAY");
     if (!display || !*display) throw std::runtime_error("rendering needs an X display; run under xvfb-run");
+}
+
+vtkSmartPointer<vtkImageData> renderOffScreen(vtkRenderer* renderer, int width, int height) {
+    auto window = vtkSmartPointer<vtkRenderWindow>::New();
+    window->SetOffScreenRendering(1);
+    window->SetMultiSamples(0);
+    window->SetSize(width, height);
+    window->AddRenderer(renderer);
+    window->Render();
+
+    auto grab = vtkSmartPointer<vtkWindowToImageFilter>::New();
+    grab->SetInput(window);
+    grab->SetInputBufferTypeToRGB();
+    grab->ReadFrontBufferOff();
+    grab->Update();
+    auto image = vtkSmartPointer<vtkImageData>::New();
+    image->DeepCopy(grab->GetOutput());
+    window->RemoveRenderer(renderer);
+    window->Finalize();
+    return image;
+}
+
+vtkSmartPointer<vtkImageData> renderToImage(const ClusterScene& scene, const RenderOptions& options) {
+    requireDisplay();
     if (options.width <= 0 || options.height <= 0)
         throw std::runtime_error("rendering needs a positive image size, got " + std::to_string(options.width) + "x" +
                                  std::to_string(options.height));
@@ -95,24 +119,9 @@ vtkSmartPointer<vtkImageData> renderToImage(const ClusterScene& scene, const Ren
         renderer->ResetCameraClippingRange();
     }
 
-    auto window = vtkSmartPointer<vtkRenderWindow>::New();
-    window->SetOffScreenRendering(1);
-    window->SetMultiSamples(0);
-    window->SetSize(options.width, options.height);
-    window->AddRenderer(renderer);
-    window->Render();
-
-    auto grab = vtkSmartPointer<vtkWindowToImageFilter>::New();
-    grab->SetInput(window);
-    grab->SetInputBufferTypeToRGB();
-    grab->ReadFrontBufferOff();
-    grab->Update();
-    auto image = vtkSmartPointer<vtkImageData>::New();
-    image->DeepCopy(grab->GetOutput());
-
+    vtkSmartPointer<vtkImageData> image = renderOffScreen(renderer, options.width, options.height);
     // Leave the scene's actors free for another renderer.
     if (!options.fromEye) scene.removeFrom(renderer);
-    window->Finalize();
     return image;
 }
 

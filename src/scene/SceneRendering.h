@@ -12,6 +12,7 @@
 
 class vtkCamera;
 class vtkImageData;
+class vtkRenderer;
 
 namespace conescope {
 
@@ -43,6 +44,11 @@ void frameTestDrawing(const ClusterScene& scene, RenderOptions& options);
 
 // The default observer camera for these options (what an unset cameraPosition / focalPoint means).
 void placeObserverCamera(const ClusterScene& scene, const RenderOptions& options, vtkCamera* camera);
+
+// Throws std::runtime_error ("rendering needs an X display; run under xvfb-run") without a DISPLAY.
+void requireDisplay();
+// Renders the renderer alone in an off-screen window of that size into an RGB image, multisampling off.
+vtkSmartPointer<vtkImageData> renderOffScreen(vtkRenderer* renderer, int width, int height);
 
 // Renders into an RGB image of options.width x options.height (multisampling off, so the pixels are
 // the same on every run of the same driver). Throws std::runtime_error when there is no X display

@@ -1,5 +1,6 @@
 // Pixels: the eye's view without culled clusters, the missing-display error, and the image baselines.
 #include <cstdlib>
+#include <memory>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -10,7 +11,10 @@
 
 #include "RenderTestSupport.h"
 #include "core/Culling.h"
+#include "core/Pipeline.h"
+#include "core/TestGeometry.h"
 #include "scene/ClusterScene.h"
+#include "scene/GaussMapScene.h"
 #include "scene/SceneRendering.h"
 
 namespace conescope {
@@ -188,6 +192,67 @@ TEST_F(RenderImages, SpheresEyeAndPickedCluster) {
     options.focalPoint = glm::dvec3(-0.5, 0.8, 0.6);
     const auto image = renderToImage(scene, options);
     const std::string failure = rendertest::checkAgainstBaseline(image, "spheres_eye");
+    EXPECT_TRUE(failure.empty()) << failure;
+}
+
+// The picked cluster's test drawn in 3D, framed as the headless --pick screenshot frames it: for the
+// apex test the cone of eye positions from the apex, for the box test the numbered corners.
+std::string renderTestDrawing(const SceneInput& input, CullTest test, uint32_t cluster, const std::string& baseline) {
+    ClusterScene scene = makeScene(input);
+    const CullingInput cullInput{input.mesh, input.world, input.faces, input.bounds};
+    scene.setLayerVisible(Layer::Cones, false);
+    scene.setLayerVisible(Layer::Legend, false);
+    scene.setHighlightedCluster(int(cluster));
+    scene.setEye(decisionEye, {0, 0, 0});
+    scene.setTestDrawing(makeTestDrawing(cullInput, cluster, decisionEye, test));
+    RenderOptions options = smallImage();
+    frameTestDrawing(scene, options);
+    return rendertest::checkAgainstBaseline(renderToImage(scene, options), baseline);
+}
+
+TEST_F(RenderImages, ApexTestDrawnForThePickedCluster) {
+    const std::string failure = renderTestDrawing(*torus_, CullTest::Apex, 5, "test_apex");
+    EXPECT_TRUE(failure.empty()) << failure;
+}
+
+TEST_F(RenderImages, BoxTestCornersNumberedWithTheirVerdicts) {
+    const std::string failure = renderTestDrawing(*torus_, CullTest::Aabb, 5, "test_aabb");
+    EXPECT_TRUE(failure.empty()) << failure;
+}
+
+TEST_F(RenderImages, GaussMapShowsNormalsCapsAndViewHorizon) {
+    PreparedMesh prepared;
+    prepared.culled = std::make_shared<Mesh>(torus_->mesh);
+    prepared.world = torus_->world;
+    prepared.faces = torus_->faces;
+    ClusterSet clusters;
+    clusters.partition = torus_->partition;
+    clusters.bounds = torus_->bounds;
+    const CullingInput cullInput{torus_->mesh, torus_->world, torus_->faces, torus_->bounds};
+    const CullExplanation why = explainCull(cullInput, 5, decisionEye, CullTest::Apex);
+    GaussMapScene gauss;
+    gauss.show(gaussMapOf(prepared, clusters, 5, why), ConeMethod::Minimal, 5);
+    const std::string failure = rendertest::checkAgainstBaseline(renderGaussMapToImage(gauss, 400, 300), "gauss_map");
+    EXPECT_TRUE(failure.empty()) << failure;
+}
+
+TEST_F(RenderImages, FacesColouredByLossClass) {
+    ClusterScene scene = makeScene(*torus_);
+    PreparedMesh prepared;
+    prepared.culled = std::make_shared<Mesh>(torus_->mesh);
+    prepared.world = torus_->world;
+    prepared.faces = torus_->faces;
+    ClusterSet clusters;
+    clusters.partition = torus_->partition;
+    clusters.bounds = torus_->bounds;
+    const EyeMeasurement measurement = measureEye(prepared, clusters, decisionEye, CullTest::Sphere);
+    scene.setFaceLoss(faceLosses(clusters, measurement, classifyFaces(torus_->mesh, torus_->world, torus_->faces, decisionEye)));
+    scene.setFaceColoring(FaceColoring::Loss);
+    scene.setLayerVisible(Layer::Cones, false);
+    scene.setEye(decisionEye, {0, 0, 0});
+    RenderOptions options = observer();
+    options.cameraPosition = glm::dvec3(3.9, -3.6, -2.1);
+    const std::string failure = rendertest::checkAgainstBaseline(renderToImage(scene, options), "loss");
     EXPECT_TRUE(failure.empty()) << failure;
 }
 

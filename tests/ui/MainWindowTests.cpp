@@ -30,12 +30,14 @@
 #include <vtkCamera.h>
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
+#include <vtkLegendBoxActor.h>
 #include <vtkPolyData.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkRendererCollection.h>
 
 #include "EyePanel.h"
+#include "GaussMapView.h"
 #include "HelpDialog.h"
 #include "MainWindow.h"
 #include "SettingsPanel.h"
@@ -100,6 +102,14 @@ void compareWithCore(MainWindow& window) {
 }
 
 }  // namespace
+
+// Every legend entry's text, one per line.
+QString legendText(const ClusterScene& scene) {
+    QString text;
+    vtkLegendBoxActor* legend = scene.legend();
+    for (int i = 0; i < legend->GetNumberOfEntries(); ++i) text += QString::fromUtf8(legend->GetEntryString(i)) + '\n';
+    return text;
+}
 
 class MainWindowTests : public QObject {
     Q_OBJECT
@@ -481,6 +491,73 @@ private slots:
         window_->setSettings(Settings{});
         window_->waitUntilIdle();
         window_->pickCluster(-1);
+    }
+
+    void pickDrawsTheTestTheMarginAndTheGaussMap() {
+        QVERIFY(window_->openMeshBlocking(datasetPath("torus.off")));
+        window_->setEyePosition({0.4, -2.2, 1.3});
+        QVERIFY(window_->layerVisible(Layer::Test));
+        const ClusterScene& scene = *window_->scene();
+        QCOMPARE(scene.testDrawing().cluster, -1);
+        QVERIFY(!scene.actor(Layer::Test)->GetVisibility());
+        QVERIFY(!window_->gaussMapView()->scene().hasMap());
+        const Eye eye = window_->currentStatistics()->eye;
+        const CullingInput input = cullingInput(*window_->preparedMesh(), *window_->clusters());
+        const CullTest test = displayedTest(window_->settings());
+        // Every cluster: the drawing and the margin are the core's for this eye and test.
+        size_t culled = 0, drawn = 0;
+        for (uint32_t c = 0; c < window_->clusters()->bounds.count(); c += 4) {
+            window_->pickCluster(int(c));
+            const CullExplanation why = explainCull(input, c, eye, test);
+            QCOMPARE(window_->scene()->testDrawing().cluster, int(c));
+            QCOMPARE(window_->scene()->testDrawing().why.margin, why.margin);
+            QVERIFY(window_->scene()->actor(Layer::Test)->GetVisibility());
+            QVERIFY(window_->gaussMapView()->scene().hasMap());
+            const QString report = window_->clusterReportHtml();
+            if (std::isnan(why.margin)) continue;
+            QVERIFY(report.contains(why.margin > 0.0 ? QStringLiteral("passes by") : QStringLiteral("short by")));
+            (why.culled ? culled : drawn)++;
+        }
+        QVERIFY(culled > 0 && drawn > 0);
+        // The drawing follows the eye.
+        const double before = window_->scene()->testDrawing().why.margin;
+        window_->setEyePosition({-1.0, 2.5, -1.5});
+        QVERIFY(window_->scene()->testDrawing().why.margin != before);
+        QCOMPARE(window_->scene()->testDrawing().eye.position, window_->currentStatistics()->eye.position);
+        QTest::keyClick(window_.get(), Qt::Key_G);
+        saveWindowPicture(QStringLiteral("window-gauss-map.png"));
+        window_->pickCluster(-1);
+        QCOMPARE(window_->scene()->testDrawing().cluster, -1);
+        QVERIFY(!window_->gaussMapView()->scene().hasMap());
+    }
+
+    void fractionAndLossColourings() {
+        QVERIFY(window_->openMeshBlocking(datasetPath("elephant.off")));
+        const ClusterSet& clusters = *window_->clusters();
+        // Ctrl+4: cull fraction, one entry per cluster on the ramp, uncullable clusters apart and counted.
+        QTest::keyClick(window_.get(), Qt::Key_4, Qt::ControlModifier);
+        QCOMPARE(int(window_->scene()->faceColoring()), int(FaceColoring::CullFraction));
+        size_t uncullable = 0;
+        for (const ConeOfNormals& cone : clusters.bounds.cones) uncullable += !cone.cullable;
+        QVERIFY(uncullable > 0);
+        QVERIFY(legendText(*window_->scene()).contains(QStringLiteral("uncullable: no cone (%1)").arg(uncullable)));
+        // Ctrl+6: the loss class of every face is the core's for the current eye.
+        QTest::keyClick(window_.get(), Qt::Key_6, Qt::ControlModifier);
+        QCOMPARE(int(window_->scene()->faceColoring()), int(FaceColoring::Loss));
+        const PreparedMesh& prepared = *window_->preparedMesh();
+        const std::vector<FaceLoss> expected = faceLosses(
+            clusters, *window_->currentStatistics(),
+            classifyFaces(prepared.mesh(), prepared.world, prepared.faces, window_->currentStatistics()->eye));
+        vtkDataArray* loss = window_->scene()->meshPolyData()->GetCellData()->GetArray(lossArrayName);
+        QVERIFY(loss);
+        size_t testLoss = 0;
+        for (size_t f = 0; f < expected.size(); ++f) {
+            QCOMPARE(loss->GetTuple1(vtkIdType(f)), double(expected[f]));
+            testLoss += expected[f] == FaceLoss::Test;
+        }
+        QVERIFY(legendText(*window_->scene()).contains(QStringLiteral("lost to the test (%1)").arg(testLoss)));
+        saveWindowPicture(QStringLiteral("window-loss.png"));
+        QTest::keyClick(window_.get(), Qt::Key_2, Qt::ControlModifier);
     }
 
     void exportsMatchTheCore() {

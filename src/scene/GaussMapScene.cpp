@@ -1,0 +1,251 @@
+#include "scene/GaussMapScene.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <stdexcept>
+#include <string>
+
+#include <vtkActor.h>
+#include <vtkCamera.h>
+#include <vtkCellArray.h>
+#include <vtkImageData.h>
+#include <vtkLegendBoxActor.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkSphereSource.h>
+#include <vtkWindowToImageFilter.h>
+
+#include "scene/SceneGeometry.h"
+#include "scene/SceneLayer.h"
+#include "scene/SceneLegend.h"
+#include "scene/SceneRendering.h"
+
+namespace conescope {
+
+namespace {
+
+constexpr Rgb sphereColour{0.55, 0.58, 0.65};
+constexpr Rgb normalColour{0.95, 0.95, 0.95};
+constexpr int circleSegments = 96;
+
+// Two unit vectors perpendicular to `axis` and to each other.
+void basis(const glm::dvec3& axis, glm::dvec3& u, glm::dvec3& w) {
+    const glm::dvec3 other = std::abs(axis.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
+    u = glm::normalize(glm::cross(axis, other));
+    w = glm::cross(axis, u);
+}
+
+// The circle at angle `angle` from `axis` on a sphere of radius `radius`: a cap's rim (angle pi/2
+// is the great circle perpendicular to axis).
+GlyphGeometry circleOnSphere(const glm::dvec3& axis, double angle, double radius) {
+    GlyphGeometry geometry;
+    glm::dvec3 u, w;
+    basis(axis, u, w);
+    for (int k = 0; k < circleSegments; ++k) {
+        const double phi = 2.0 * M_PI * k / circleSegments;
+        geometry.points.emplace_back(radius * (std::cos(angle) * axis + std::sin(angle) * (std::cos(phi) * u + std::sin(phi) * w)));
+    }
+    for (int k = 0; k < circleSegments; ++k) geometry.addCell({k, (k + 1) % circleSegments}, 0);
+    return geometry;
+}
+
+// The cap itself as a fan of rings, slightly above the sphere so it is not hidden by it.
+GlyphGeometry capSurface(const glm::dvec3& axis, double angle, double radius) {
+    GlyphGeometry geometry;
+    glm::dvec3 u, w;
+    basis(axis, u, w);
+    constexpr int rings = 12, segments = 48;
+    geometry.points.emplace_back(radius * axis);
+    for (int r = 1; r <= rings; ++r) {
+        const double a = angle * r / rings;
+        for (int k = 0; k < segments; ++k) {
+            const double phi = 2.0 * M_PI * k / segments;
+            geometry.points.emplace_back(radius * (std::cos(a) * axis + std::sin(a) * (std::cos(phi) * u + std::sin(phi) * w)));
+        }
+    }
+    for (int k = 0; k < segments; ++k) geometry.addCell({0, 1 + k, 1 + (k + 1) % segments}, 0);
+    for (int r = 1; r < rings; ++r)
+        for (int k = 0; k < segments; ++k) {
+            const int64_t a = 1 + int64_t(r - 1) * segments, b = a + segments, next = (k + 1) % segments;
+            geometry.addCell({a + k, a + next, b + next, b + k}, 0);
+        }
+    return geometry;
+}
+
+vtkSmartPointer<vtkPolyData> pointCloud(const std::vector<glm::dvec3>& points, double radius) {
+    auto vtkPointList = vtkSmartPointer<vtkPoints>::New();
+    auto vertices = vtkSmartPointer<vtkCellArray>::New();
+    for (const glm::dvec3& p : points) {
+        const vtkIdType id = vtkPointList->InsertNextPoint(radius * p.x, radius * p.y, radius * p.z);
+        vertices->InsertNextCell(1, &id);
+    }
+    auto data = vtkSmartPointer<vtkPolyData>::New();
+    data->SetPoints(vtkPointList);
+    data->SetVerts(vertices);
+    return data;
+}
+
+vtkSmartPointer<vtkActor> pointsActor(const Rgb& colour, double size) {
+    auto actor = actorFor(plainMapper(emptyPolyData()));
+    setColour(actor, colour);
+    actor->GetProperty()->SetPointSize(float(size));
+    actor->GetProperty()->RenderPointsAsSpheresOn();
+    return actor;
+}
+
+std::string degreesText(double radians) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.1f deg", radians * 180.0 / M_PI);
+    return text;
+}
+
+}  // namespace
+
+Rgb coneMethodColour(ConeMethod method) {
+    switch (method) {
+    case ConeMethod::Average: return {1.00, 0.60, 0.10};
+    case ConeMethod::SeedSphere: return {0.25, 0.80, 0.95};
+    case ConeMethod::Minimal: return {0.35, 0.90, 0.35};
+    case ConeMethod::Meshopt: return {0.95, 0.35, 0.60};
+    }
+    return {1.0, 1.0, 1.0};
+}
+
+struct GaussMapScene::Impl {
+    vtkSmartPointer<vtkActor> sphere = actorFor(plainMapper(emptyPolyData()));
+    vtkSmartPointer<vtkActor> normals = pointsActor(normalColour, 7.0);
+    std::vector<vtkSmartPointer<vtkActor>> rims;  // one per cone method, in allConeMethods() order
+    vtkSmartPointer<vtkActor> cap = actorFor(plainMapper(emptyPolyData()));
+    vtkSmartPointer<vtkActor> view = lineActor(plainMapper(emptyPolyData()), 3.0);
+    vtkSmartPointer<vtkActor> viewTip = pointsActor(SceneColours::eye, 12.0);
+    vtkSmartPointer<vtkActor> horizon = lineActor(plainMapper(emptyPolyData()), 2.0);
+    SceneLegend legend;
+    std::optional<GaussMap> map;
+    ConeMethod displayed = ConeMethod::Minimal;
+
+    std::vector<vtkActor*> actors() const {
+        std::vector<vtkActor*> all = {sphere, cap, horizon, view, viewTip, normals};
+        for (const auto& rim : rims) all.push_back(rim);
+        return all;
+    }
+};
+
+GaussMapScene::GaussMapScene() : impl_(std::make_unique<Impl>()) {
+    auto source = vtkSmartPointer<vtkSphereSource>::New();
+    source->SetRadius(1.0);
+    source->SetThetaResolution(64);
+    source->SetPhiResolution(32);
+    source->Update();
+    setInput(impl_->sphere, source->GetOutput());
+    setColour(impl_->sphere, sphereColour);
+    impl_->sphere->GetProperty()->SetOpacity(0.25);
+    impl_->sphere->GetProperty()->BackfaceCullingOn();
+    impl_->cap->GetProperty()->SetOpacity(0.35);
+    impl_->cap->GetProperty()->LightingOff();
+    setColour(impl_->view, SceneColours::eye);
+    setColour(impl_->horizon, SceneColours::eye);
+    for (size_t i = 0; i < allConeMethods().size(); ++i) impl_->rims.push_back(lineActor(plainMapper(emptyPolyData()), 3.0));
+    impl_->legend.setVisible(true);
+    show(std::nullopt, ConeMethod::Minimal);
+}
+
+GaussMapScene::~GaussMapScene() = default;
+
+void GaussMapScene::show(const std::optional<GaussMap>& map, ConeMethod displayed, int cluster) {
+    impl_->map = map;
+    impl_->displayed = displayed;
+    for (vtkActor* actor : impl_->actors()) actor->SetVisibility(map.has_value());
+    if (!map) {
+        impl_->legend.show({{"pick a cluster to see its normals", {sphereColour}}});
+        return;
+    }
+    std::vector<LegendEntry> entries;
+    entries.push_back({"cluster " + std::to_string(cluster) + ": " + std::to_string(map->normals.size()) + " face normals", {normalColour}});
+    setInput(impl_->normals, pointCloud(map->normals, 1.004));
+    impl_->cap->SetVisibility(false);
+    for (size_t i = 0; i < map->cones.size() && i < impl_->rims.size(); ++i) {
+        const auto& [method, cone] = map->cones[i];
+        vtkActor* rim = impl_->rims[i];
+        setColour(rim, coneMethodColour(method));
+        const std::string name = toString(method) + (method == displayed ? " (shown)" : "");
+        if (!cone.cullable) {
+            rim->SetVisibility(false);
+            entries.push_back({name + ": no cone", {coneMethodColour(method)}});
+            continue;
+        }
+        setInput(rim, polyDataFrom(circleOnSphere(cone.axis, cone.halfAngle(), 1.006), CellKind::Lines));
+        entries.push_back({name + ": " + degreesText(cone.halfAngle()), {coneMethodColour(method)}});
+        if (method == displayed) {
+            setInput(impl_->cap, polyDataFrom(capSurface(cone.axis, cone.halfAngle(), 1.003), CellKind::Polygons));
+            setColour(impl_->cap, coneMethodColour(method));
+            impl_->cap->SetVisibility(true);
+        }
+    }
+    // v from the centre to the sphere, and its horizon: the normals of a back-facing cluster lie on v's side.
+    GlyphGeometry line;
+    line.points = {glm::vec3(0.0f), glm::vec3(map->view * 1.35)};
+    line.addCell({0, 1}, 0);
+    setInput(impl_->view, polyDataFrom(line, CellKind::Lines));
+    setInput(impl_->viewTip, pointCloud({map->view}, 1.35));
+    setInput(impl_->horizon, polyDataFrom(circleOnSphere(map->view, M_PI / 2.0, 1.002), CellKind::Lines));
+    entries.push_back({"view vector v and its horizon", {SceneColours::eye}});
+    impl_->legend.show(entries);
+}
+
+bool GaussMapScene::hasMap() const { return impl_->map.has_value(); }
+
+void GaussMapScene::addTo(vtkRenderer* renderer) const {
+    for (vtkActor* actor : impl_->actors()) renderer->AddActor(actor);
+    renderer->AddViewProp(impl_->legend.actor());
+}
+
+void GaussMapScene::removeFrom(vtkRenderer* renderer) const {
+    for (vtkActor* actor : impl_->actors()) renderer->RemoveActor(actor);
+    renderer->RemoveViewProp(impl_->legend.actor());
+}
+
+void GaussMapScene::placeCamera(vtkCamera* camera) const {
+    glm::dvec3 towards(0.0, 0.0, 1.0), up(0.0, 1.0, 0.0);
+    if (impl_->map) {
+        // 45 degrees from the displayed cap's axis towards v: the cap in front, v and its horizon at a
+        // slant (through the translucent sphere when v points away).
+        const glm::dvec3 view = impl_->map->view;
+        glm::dvec3 axis = view;
+        for (const auto& [method, cone] : impl_->map->cones)
+            if (method == impl_->displayed && cone.cullable) axis = cone.axis;
+        glm::dvec3 u, w;
+        basis(axis, u, w);
+        glm::dvec3 side = view - glm::dot(view, axis) * axis;
+        side = glm::length(side) > 1e-6 ? glm::normalize(side) : u;
+        towards = glm::normalize(axis + side);
+        up = glm::cross(towards, glm::cross(axis, side));
+        if (glm::length(up) < 1e-6) up = w;
+    }
+    const glm::dvec3 position = towards * 4.6;
+    camera->ParallelProjectionOff();
+    camera->SetViewAngle(30.0);
+    camera->SetFocalPoint(0.0, 0.0, 0.0);
+    camera->SetPosition(position.x, position.y, position.z);
+    camera->SetViewUp(up.x, up.y, up.z);
+    camera->OrthogonalizeViewUp();
+    camera->SetClippingRange(0.5, 10.0);
+}
+
+vtkLegendBoxActor* GaussMapScene::legend() const { return impl_->legend.actor(); }
+
+vtkSmartPointer<vtkImageData> renderGaussMapToImage(const GaussMapScene& scene, int width, int height) {
+    requireDisplay();
+    auto renderer = vtkSmartPointer<vtkRenderer>::New();
+    renderer->SetBackground(0.12, 0.13, 0.16);
+    scene.addTo(renderer);
+    scene.placeCamera(renderer->GetActiveCamera());
+    vtkSmartPointer<vtkImageData> image = renderOffScreen(renderer, width, height);
+    scene.removeFrom(renderer);
+    return image;
+}
+
+}  // namespace conescope

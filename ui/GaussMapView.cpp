@@ -1,0 +1,41 @@
+#include "GaussMapView.h"
+
+#include <vtkInteractorStyleTrackballCamera.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderWindowInteractor.h>
+#include <vtkRenderer.h>
+
+#include "Session.h"
+
+namespace conescope {
+
+GaussMapView::GaussMapView(QWidget* parent) : QVTKOpenGLNativeWidget(parent) {
+    setObjectName(QStringLiteral("gaussMapView"));
+    renderer_ = vtkSmartPointer<vtkRenderer>::New();
+    renderer_->SetBackground(0.12, 0.13, 0.16);
+    renderWindow()->AddRenderer(renderer_);
+    interactor()->SetInteractorStyle(vtkSmartPointer<vtkInteractorStyleTrackballCamera>::New());
+    scene_.addTo(renderer_);
+    scene_.placeCamera(renderer_->GetActiveCamera());
+}
+
+void GaussMapView::showPick(const Session& session, bool newPick) {
+    const ClusterScene* clusterScene = session.scene();
+    const int cluster = session.pickedCluster();
+    if (!clusterScene || cluster < 0 || !session.preparedMesh() || !session.clusters() ||
+        clusterScene->testDrawing().cluster != cluster) {
+        scene_.show(std::nullopt, displayedCone(session.settings()));
+    } else {
+        // The eye's explanation is the test layer's: the same view vector the observer view draws.
+        scene_.show(gaussMapOf(*session.preparedMesh(), *session.clusters(), uint32_t(cluster), clusterScene->testDrawing().why),
+                    session.clusters()->bounds.coneMethod, cluster);
+    }
+    if (newPick) scene_.placeCamera(renderer_->GetActiveCamera());
+    render();
+}
+
+void GaussMapView::render() {
+    if (isVisible()) renderWindow()->Render();
+}
+
+}  // namespace conescope
