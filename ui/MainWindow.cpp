@@ -265,6 +265,7 @@ void MainWindow::chooseCluster(int cluster) {
 void MainWindow::resetCamera() {
     if (!session_.scene()) return;
     view_->lookAtMesh(glm::dvec3(session_.preparedMesh()->box.center()), session_.eyePosition());
+    view_->placeEyeHandle(session_.eyePosition());
     render();
 }
 

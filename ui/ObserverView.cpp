@@ -31,6 +31,9 @@ vtkSmartPointer<vtkPointHandleRepresentation3D> eyeHandleRepresentation() {
     representation->GetSelectedProperty()->SetColor(SceneColours::highlight[0], SceneColours::highlight[1],
                                                     SceneColours::highlight[2]);
     representation->GetSelectedProperty()->SetLineWidth(3.0);
+    // Its world size follows the camera it was last drawn with (a fixed size in pixels): counted in
+    // ResetCamera it would keep the scale of the previous mesh.
+    representation->UseBoundsOff();
     return representation;
 }
 
@@ -85,6 +88,9 @@ void ObserverView::showScene(const ClusterScene* previous, const ClusterScene& c
 void ObserverView::placeEyeHandle(const glm::dvec3& position, bool show) {
     double world[3] = {position.x, position.y, position.z};
     eyeHandleRepresentation_->SetWorldPosition(world);
+    // The representation sizes itself for the camera only when it was modified: a new place or a new
+    // camera (a new mesh, Reset) must not keep the size it had for the previous one.
+    eyeHandleRepresentation_->Modified();
     if (show) handleShown_ = true;
     eyeHandle_->SetEnabled(handleShown_ && !following_);
 }

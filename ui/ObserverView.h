@@ -32,6 +32,8 @@ public:
     // Takes the previous scene's actors out (when there is one) and puts the current one's in.
     void showScene(const ClusterScene* previous, const ClusterScene& current);
     // Puts the eye's handle at `position`; `show` also switches it on (it is off until a mesh is shown).
+    // Its size in pixels becomes a size in the world with the camera it is placed with: place it again
+    // after the camera moved far (a new mesh, Reset).
     void placeEyeHandle(const glm::dvec3& position, bool show = false);
     // While following, cameraMoved() reports every change of the camera.
     // While the eye follows the camera the handle would sit on the camera and fill the view: hidden.

@@ -13,6 +13,7 @@
 #include <QLineEdit>
 #include <QMessageBox>
 #include <QMimeData>
+#include <QTextStream>
 #include <QTimer>
 #include <QUrl>
 #include <QProcess>
@@ -32,6 +33,7 @@
 #include <vtkDataArray.h>
 #include <vtkLegendBoxActor.h>
 #include <vtkPolyData.h>
+#include <vtkPropCollection.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkRendererCollection.h>
@@ -889,6 +891,45 @@ private slots:
         // ResetCamera centres on everything shown (mesh, cones and eye marker): near the mesh centre.
         QVERIFY(glm::length(glm::dvec3(focal[0], focal[1], focal[2]) - center) < 2.0 * window_->preparedMesh()->box.halfDiagonal());
         QVERIFY(glm::length(glm::dvec3(focal[0], focal[1], focal[2]) - glm::dvec3(10.0)) > 5.0);
+    }
+
+    void secondMeshGetsItsOwnScale() {
+        // A mesh a thousand times larger, then the unit cube: the camera, the eye handle and the eye
+        // marker must follow the cube's size, and Reset must frame the cube.
+        const QString large = temporary_.filePath(QStringLiteral("large-cube.off"));
+        {
+            QFile file(large);
+            QVERIFY(file.open(QIODevice::WriteOnly | QIODevice::Text));
+            QTextStream out(&file);
+            out << "OFF\n8 12 0\n";
+            for (int i = 0; i < 8; ++i) out << ((i & 1) ? 500 : -500) << ' ' << ((i & 2) ? 500 : -500) << ' ' << ((i & 4) ? 500 : -500) << '\n';
+            const int faces[12][3] = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
+                                      {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}};
+            for (const auto& face : faces) out << "3 " << face[0] << ' ' << face[1] << ' ' << face[2] << '\n';
+        }
+        QVERIFY(window_->openMeshBlocking(large));
+        QVERIFY(window_->openMeshBlocking(datasetPath("cube.off")));
+        auto cameraDistance = [this]() {
+            vtkCamera* camera = observerRenderer(*window_)->GetActiveCamera();
+            return camera->GetDistance();
+        };
+        const double size = 2.0 * window_->preparedMesh()->box.halfDiagonal();
+        QVERIFY2(cameraDistance() < 20.0 * size, qPrintable(QString::number(cameraDistance())));
+        QVERIFY(glm::length(window_->eyePosition()) < 10.0 * size);
+        // Every prop the observer shows, the eye handle too, is within reach of the cube: nothing sized
+        // for the large mesh.
+        vtkPropCollection* props = observerRenderer(*window_)->GetViewProps();
+        props->InitTraversal();
+        while (vtkProp* prop = props->GetNextProp()) {
+            const double* bounds = prop->GetVisibility() ? prop->GetBounds() : nullptr;
+            for (int i = 0; bounds && i < 6; ++i)
+                QVERIFY2(std::abs(bounds[i]) < 10.0 * size, qPrintable(QString::fromLatin1(prop->GetClassName()) + " " + QString::number(bounds[i])));
+        }
+        vtkCamera* camera = observerRenderer(*window_)->GetActiveCamera();
+        camera->SetPosition(0.0, 0.0, 5000.0);
+        QTest::keyClick(window_.get(), Qt::Key_R);
+        QVERIFY2(cameraDistance() < 20.0 * size, qPrintable(QString::number(cameraDistance())));
+        saveWindowPicture(QStringLiteral("window-second-mesh.png"));
     }
 
     void dropOpensAMesh() {
