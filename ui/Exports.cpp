@@ -4,6 +4,7 @@
 #include <cctype>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <stdexcept>
 
@@ -26,14 +27,19 @@ StatisticsFormat statisticsFormatOf(const std::string& path) {
 RunStatistics exportStatistics(const PreparedMesh& prepared, const ClusterSet& clusters, const Settings& settings,
                                const std::string& path, StatisticsFormat format, const ProgressCallback& progress) {
     RunStatistics run = measureRun(prepared, clusters, settings, progress);
-    std::ofstream out(path, std::ios::binary);
-    if (!out) throw std::runtime_error(path + ": cannot open for writing");
-    if (format == StatisticsFormat::Csv)
-        writeStatisticsCsv(run, out);
-    else
-        writeStatisticsJson(run, out);
-    out.close();
-    if (!out) throw std::runtime_error(path + ": write failed");
+    const auto write = [](const std::string& file, const std::function<void(std::ostream&)>& content) {
+        std::ofstream out(file, std::ios::binary);
+        if (!out) throw std::runtime_error(file + ": cannot open for writing");
+        content(out);
+        out.close();
+        if (!out) throw std::runtime_error(file + ": write failed");
+    };
+    if (format == StatisticsFormat::Csv) {
+        for (const auto& [table, file] : csvTableFiles(path))
+            write(file, [&run, table = table](std::ostream& out) { writeStatisticsCsv(run, out, table); });
+    } else {
+        write(path, [&run](std::ostream& out) { writeStatisticsJson(run, out); });
+    }
     return run;
 }
 

@@ -17,7 +17,8 @@ enum class StatisticsFormat { Json, Csv };
 StatisticsFormat statisticsFormatOf(const std::string& path);
 
 // The run's statistics from the window's stages (measureRun) with `settings` (their eye set for one
-// eye, unset for the orbit), written as `format`: what runStatistics on the mesh as read would give.
+// eye, unset for the orbit), written as `format` (CSV: the totals at `path`, the views and clusters
+// beside it, csvTableFiles): what runStatistics on the mesh as read would give.
 // Throws std::runtime_error naming the path when it cannot be written, OperationCancelled when
 // `progress` cancels.
 RunStatistics exportStatistics(const PreparedMesh& prepared, const ClusterSet& clusters, const Settings& settings,

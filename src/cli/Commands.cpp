@@ -78,6 +78,22 @@ void writeText(const std::string& output, const std::string& text) {
     }
 }
 
+// One tidy table per file: the one asked for (--table) or the totals on stdout; into -o FILE.csv every
+// table the detail keeps, the others beside it (csvTableFiles).
+void writeCsvTables(const RunStatistics& run, const StatsOptions& options) {
+    std::vector<std::pair<CsvTable, std::string>> files;
+    if (!options.table.empty() || options.output.empty())
+        files = {{options.table.empty() ? CsvTable::Totals : parseCsvTable(options.table), options.output}};
+    else
+        files = csvTableFiles(options.output, options.detail);
+    for (const auto& [table, path] : files) {
+        std::ostringstream text;
+        writeStatisticsCsv(run, text, table);
+        writeText(path, text.str());
+        if (!path.empty()) note(options.quiet, "wrote " + path + " (" + toString(table) + ")");
+    }
+}
+
 nlohmann::json meshSummary(const std::string& path, const Mesh& mesh) {
     return {{"name", fileName(path)},
             {"vertices", mesh.positions.size()},
@@ -92,12 +108,15 @@ void runStats(const StatsOptions& options) {
     const Mesh mesh = readMeshNoting(options.mesh, options.quiet);
     const RunStatistics run = runStatistics(mesh, settings, fileName(options.mesh), stderrProgress(options.quiet));
     warnAboutWinding(run, options.quiet);
+    const std::string format = outputFormat(options.format, options.output, "json");
+    if (format != "csv" && !options.table.empty()) throw std::invalid_argument("--table applies to CSV output only");
+    if (format == "csv") {
+        writeCsvTables(run, options);
+        return;
+    }
     // The whole text is made before anything is written, so stdout never gets half a document.
     std::ostringstream text;
-    const std::string format = outputFormat(options.format, options.output, "json");
-    if (format == "csv")
-        writeStatisticsCsv(run, text, options.detail);
-    else if (format == "text")
+    if (format == "text")
         writeStatisticsText(run, text);
     else
         writeStatisticsJson(run, text, options.detail);

@@ -16,6 +16,8 @@ struct StatsOptions {
                                        // on a terminal and json otherwise
     std::string output;                // empty = stdout
     StatisticsDetail detail;
+    std::string table;                 // CSV: "totals", "views" or "clusters"; empty: totals on stdout, every
+                                       // table into -o FILE.csv and its FILE.views.csv / FILE.clusters.csv
     bool quiet = false;
 };
 

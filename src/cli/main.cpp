@@ -62,6 +62,10 @@ int main(int argc, char** argv) {
     statsCommand->add_flag_callback("--no-per-view", [&stats] { stats.detail.views = false; }, "Leave out the per-view table");
     statsCommand->add_flag_callback("--no-per-cluster", [&stats] { stats.detail.clusters = false; },
                                     "Leave out the per-cluster table");
+    statsCommand->add_option("--table", stats.table,
+                             "CSV: the one table to write (default: totals on stdout; with -o FILE.csv every table, the "
+                             "views and clusters in FILE.views.csv and FILE.clusters.csv)")
+        ->check(CLI::IsMember({"totals", "views", "clusters"}));
     statsCommand->add_flag("-q,--quiet", stats.quiet, "No progress messages on stderr");
 
     ClustersOptions clusters;

@@ -3,7 +3,9 @@
 #include "core/SettingsSchema.h"
 
 #include <array>
+#include <cctype>
 #include <charconv>
+#include <stdexcept>
 #include <string>
 #include <variant>
 #include <vector>
@@ -246,23 +248,39 @@ void writeStatisticsJson(const RunStatistics& run, std::ostream& out, const Stat
     out << statisticsToJson(run, detail).dump(2) << '\n';
 }
 
-void writeStatisticsCsv(const RunStatistics& run, std::ostream& out, const StatisticsDetail& detail) {
-    out << "# section: totals\ncone,test,clusters,views";
-    writeHeader(out, totalColumns());
-    writeHeader(out, reportColumns());
-    out << ",winding_fixed_faces,inside_out_components";
-    writeHeader(out, laterTotalColumns());
-    out << '\n';
-    for (const TestStatistics& result : run.results) {
-        out << toString(result.cone) << ',' << toString(result.test) << ',' << run.clusters << ',' << run.viewCount;
-        writeCells(out, totalColumns(), result);
-        writeCells(out, reportColumns(), run.meshReport);
-        out << ',' << run.windingFixedFaces << ',' << run.meshReport.insideOutComponents;
-        writeCells(out, laterTotalColumns(), result);
-        out << '\n';
+std::string toString(CsvTable table) {
+    switch (table) {
+    case CsvTable::Totals: return "totals";
+    case CsvTable::Views: return "views";
+    case CsvTable::Clusters: return "clusters";
     }
-    if (detail.views) {
-        out << "# section: views\ncone,test,view,eye_x,eye_y,eye_z,direction_x,direction_y,direction_z";
+    return "totals";
+}
+
+CsvTable parseCsvTable(const std::string& name) {
+    for (CsvTable table : {CsvTable::Totals, CsvTable::Views, CsvTable::Clusters})
+        if (toString(table) == name) return table;
+    throw std::invalid_argument("unknown table '" + name + "' (expected totals, views or clusters)");
+}
+
+void writeStatisticsCsv(const RunStatistics& run, std::ostream& out, CsvTable table) {
+    if (table == CsvTable::Totals) {
+        out << "cone,test,clusters,views";
+        writeHeader(out, totalColumns());
+        writeHeader(out, reportColumns());
+        out << ",winding_fixed_faces,inside_out_components";
+        writeHeader(out, laterTotalColumns());
+        out << '\n';
+        for (const TestStatistics& result : run.results) {
+            out << toString(result.cone) << ',' << toString(result.test) << ',' << run.clusters << ',' << run.viewCount;
+            writeCells(out, totalColumns(), result);
+            writeCells(out, reportColumns(), run.meshReport);
+            out << ',' << run.windingFixedFaces << ',' << run.meshReport.insideOutComponents;
+            writeCells(out, laterTotalColumns(), result);
+            out << '\n';
+        }
+    } else if (table == CsvTable::Views) {
+        out << "cone,test,view,eye_x,eye_y,eye_z,direction_x,direction_y,direction_z";
         writeHeader(out, viewColumns());
         out << '\n';
         for (const TestStatistics& result : run.results)
@@ -273,9 +291,8 @@ void writeStatisticsCsv(const RunStatistics& run, std::ostream& out, const Stati
                 writeCells(out, viewColumns(), view);
                 out << '\n';
             }
-    }
-    if (detail.clusters) {
-        out << "# section: clusters\ncone,test";
+    } else {
+        out << "cone,test";
         writeHeader(out, clusterColumns());
         out << '\n';
         for (const TestStatistics& result : run.results)
@@ -285,6 +302,20 @@ void writeStatisticsCsv(const RunStatistics& run, std::ostream& out, const Stati
                 out << '\n';
             }
     }
+}
+
+std::vector<std::pair<CsvTable, std::string>> csvTableFiles(const std::string& path, const StatisticsDetail& detail) {
+    // NAME.csv -> NAME.views.csv; a path without the extension gets it appended.
+    std::string stem = path;
+    if (stem.size() >= 4) {
+        std::string tail = stem.substr(stem.size() - 4);
+        for (char& c : tail) c = char(std::tolower(static_cast<unsigned char>(c)));
+        if (tail == ".csv") stem.resize(stem.size() - 4);
+    }
+    std::vector<std::pair<CsvTable, std::string>> files = {{CsvTable::Totals, path}};
+    if (detail.views) files.emplace_back(CsvTable::Views, stem + ".views.csv");
+    if (detail.clusters) files.emplace_back(CsvTable::Clusters, stem + ".clusters.csv");
+    return files;
 }
 
 }  // namespace conescope

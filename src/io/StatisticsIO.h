@@ -1,10 +1,13 @@
-// Statistics files: a RunStatistics as JSON (one nested document) or as CSV (three flat tables in
-// one file). The CLI and the GUI's export both write through here, so the same settings give the
+// Statistics files: a RunStatistics as JSON (one nested document) or as CSV (three tidy tables, one
+// per file, each with one header row: pandas.read_csv and spreadsheets read them as they are). The CLI and the GUI's export both write through here, so the same settings give the
 // same file. Key and column names are plain snake_case and stable; docs/statistics-schema.md lists
 // every one of them.
 #pragma once
 
 #include <ostream>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -35,10 +38,20 @@ nlohmann::json statisticsToJson(const RunStatistics& run, const StatisticsDetail
 // Pretty-printed JSON followed by a newline.
 void writeStatisticsJson(const RunStatistics& run, std::ostream& out, const StatisticsDetail& detail = {});
 
-// "# section: totals", "# section: views", "# section: clusters", each followed by a header row and
-// its rows; the totals rows end with the run's mesh report and winding_fixed_faces. Numbers use the
-// shortest text that reads back to the same value, whatever the locale.
-void writeStatisticsCsv(const RunStatistics& run, std::ostream& out, const StatisticsDetail& detail = {});
+// The CSV tables: one row per (cone, test); per view of each; per cluster of each. Every row starts
+// with cone,test so the tables join on them.
+enum class CsvTable { Totals, Views, Clusters };
+std::string toString(CsvTable table);  // "totals", "views", "clusters"
+CsvTable parseCsvTable(const std::string& name);  // throws std::invalid_argument
+
+// One table: a header row and its rows; the totals rows carry the run's mesh report and
+// winding_fixed_faces. Numbers use the shortest text that reads back to the same value, whatever
+// the locale.
+void writeStatisticsCsv(const RunStatistics& run, std::ostream& out, CsvTable table);
+
+// Where each table of a CSV export goes: the totals at `path` itself, the others beside it as
+// NAME.views.csv and NAME.clusters.csv (path NAME.csv), those the detail keeps.
+std::vector<std::pair<CsvTable, std::string>> csvTableFiles(const std::string& path, const StatisticsDetail& detail = {});
 
 // A worst-cluster table: the given clusters of one result, in that order, with the keys of the
 // per-cluster statistics (an array of objects; a CSV header row and one row each).

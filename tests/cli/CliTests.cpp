@@ -173,37 +173,53 @@ TEST(CliStats, NoFalseCullsOnAnyBundledMeshWithAnyBuilder) {
     EXPECT_GE(runs, 30u);  // 8 bundled meshes
 }
 
-TEST(CliStats, CsvHasThreeSectionsWithOneRowPerViewAndCluster) {
-    const CliRun run = runCli({"stats", dataset("torus.off"), "--format", "csv", "--cone", "minimal,average",
-                               "--test", "vertices,aabb", "--views", "7", "--quiet"});
+// Tidy tables: each file one header row and rows of as many cells, loadable by pandas.read_csv as is.
+std::vector<std::vector<std::string>> csvRows(const std::string& text) {
+    std::vector<std::vector<std::string>> rows;
+    for (const std::string& line : splitLines(text)) {
+        std::vector<std::string> cells;
+        std::istringstream stream(line);
+        for (std::string cell; std::getline(stream, cell, ',');) cells.push_back(cell);
+        EXPECT_TRUE(rows.empty() || cells.size() == rows.front().size()) << line;
+        EXPECT_EQ(line.rfind("#", 0), std::string::npos) << "no comment lines in a tidy table";
+        rows.push_back(cells);
+    }
+    return rows;
+}
+
+TEST(CliStats, CsvTablesAreTidyWithOneRowPerViewAndCluster) {
+    ScratchDirectory scratch;
+    const std::vector<std::string> options = {"--cone", "minimal,average", "--test", "vertices,aabb", "--views", "7"};
+    std::vector<std::string> command = {"stats", dataset("torus.off"), "--quiet", "-o", scratch.file("torus.csv")};
+    command.insert(command.end(), options.begin(), options.end());
+    const CliRun run = runCli(command);
     ASSERT_EQ(run.exitCode, 0) << run.err;
-    const nlohmann::json json =
-        runStatsJson({dataset("torus.off"), "--cone", "minimal,average", "--test", "vertices,aabb", "--views", "7"});
-    const size_t clusters = json["clusters"].get<size_t>();
+    std::vector<std::string> jsonArguments = {dataset("torus.off")};
+    jsonArguments.insert(jsonArguments.end(), options.begin(), options.end());
+    const size_t clusters = runStatsJson(jsonArguments)["clusters"].get<size_t>();
     ASSERT_GT(clusters, 1u);
 
-    std::map<std::string, std::vector<std::string>> rows;
-    std::map<std::string, size_t> columns;
-    std::vector<std::string> order;
-    std::string section;
-    for (const std::string& line : splitLines(run.out)) {
-        if (line.rfind("# section: ", 0) == 0) {
-            section = line.substr(11);
-            order.push_back(section);
-        } else if (!columns.count(section)) {
-            columns[section] = size_t(std::count(line.begin(), line.end(), ',')) + 1;
-            EXPECT_EQ(line.rfind("cone,test,", 0), 0u) << line;
-        } else {
-            EXPECT_EQ(size_t(std::count(line.begin(), line.end(), ',')) + 1, columns[section]) << line;
-            rows[section].push_back(line);
-        }
+    const auto totals = csvRows(readTextFile(scratch.file("torus.csv")));
+    const auto views = csvRows(readTextFile(scratch.file("torus.views.csv")));
+    const auto clusterRows = csvRows(readTextFile(scratch.file("torus.clusters.csv")));
+    ASSERT_EQ(totals.size(), 1u + 4u);
+    EXPECT_EQ(views.size(), 1u + 4u * 7u);
+    EXPECT_EQ(clusterRows.size(), 1u + 4u * clusters);
+    for (const auto* table : {&totals, &views, &clusterRows}) {
+        EXPECT_EQ(table->front().at(0), "cone");
+        EXPECT_EQ(table->front().at(1), "test");
     }
-    EXPECT_EQ(order, (std::vector<std::string>{"totals", "views", "clusters"}));
-    EXPECT_EQ(rows["totals"].size(), 4u);
-    EXPECT_EQ(rows["views"].size(), 4u * 7u);
-    EXPECT_EQ(rows["clusters"].size(), 4u * clusters);
-    EXPECT_EQ(rows["totals"][0].rfind("minimal,vertices,", 0), 0u);
-    EXPECT_EQ(rows["totals"][3].rfind("average,aabb,", 0), 0u);
+    EXPECT_EQ(totals[1][0] + "," + totals[1][1], "minimal,vertices");
+    EXPECT_EQ(totals[4][0] + "," + totals[4][1], "average,aabb");
+
+    // On stdout one table: the totals, or the one --table names.
+    command = {"stats", dataset("torus.off"), "--quiet", "--format", "csv", "--table", "views"};
+    command.insert(command.end(), options.begin(), options.end());
+    const auto shown = csvRows(runCli(command).out);
+    ASSERT_EQ(shown.size(), views.size());
+    EXPECT_EQ(shown.front(), views.front());  // same header (ns_per_cluster differs from run to run)
+    const CliRun wrong = runCli({"stats", dataset("torus.off"), "--quiet", "--format", "json", "--table", "views"});
+    EXPECT_EQ(wrong.exitCode, 2);
 }
 
 TEST(CliStats, OutputFileTakesTheFormatFromItsExtension) {
@@ -213,9 +229,9 @@ TEST(CliStats, OutputFileTakesTheFormatFromItsExtension) {
     ASSERT_EQ(run.exitCode, 0) << run.err;
     EXPECT_EQ(run.out, "");
     EXPECT_NE(run.err.find("%"), std::string::npos) << "progress goes to stderr unless --quiet";
-    EXPECT_EQ(readTextFile(output).rfind("# section: totals\n", 0), 0u);
-    // Only the result is left in the folder: the temporary file was renamed, not copied.
-    EXPECT_EQ(std::distance(std::filesystem::directory_iterator(scratch.path()), {}), 1);
+    EXPECT_EQ(readTextFile(output).rfind("cone,test,clusters,", 0), 0u);
+    // Only the tables are left in the folder: the temporary files were renamed, not copied.
+    EXPECT_EQ(std::distance(std::filesystem::directory_iterator(scratch.path()), {}), 3);
 }
 
 TEST(CliStats, EyeGivesOneView) {
@@ -405,7 +421,7 @@ TEST(CliStats, CsvTotalsCarryTheMeshReport) {
     const CliRun run = runCli(command);
     ASSERT_EQ(run.exitCode, 0) << run.err;
     const std::vector<std::string> lines = splitLines(run.out);
-    ASSERT_EQ(lines.size(), 4u) << run.out;  // section, header, one row per cone
+    ASSERT_EQ(lines.size(), 3u) << run.out;  // header, one row per cone
 
     auto cells = [](const std::string& line) {
         std::vector<std::string> values;
@@ -413,8 +429,8 @@ TEST(CliStats, CsvTotalsCarryTheMeshReport) {
         for (std::string value; std::getline(stream, value, ',');) values.push_back(value);
         return values;
     };
-    const std::vector<std::string> header = cells(lines[1]);
-    for (size_t row = 2; row < lines.size(); ++row) {
+    const std::vector<std::string> header = cells(lines[0]);
+    for (size_t row = 1; row < lines.size(); ++row) {
         const std::vector<std::string> values = cells(lines[row]);
         ASSERT_EQ(values.size(), header.size()) << lines[row];
         std::map<std::string, std::string> byColumn;
@@ -511,16 +527,16 @@ TEST(CliStats, InsideOutMeshIsWarnedAboutEvenWhenQuietAndFixedOnRequest) {
     run = runCli({"stats", mesh, "--views", "4", "--quiet", "--format", "csv", "--no-per-view", "--no-per-cluster"});
     ASSERT_EQ(run.exitCode, 0) << run.err;
     const std::vector<std::string> lines = splitLines(run.out);
-    ASSERT_GE(lines.size(), 3u);
+    ASSERT_GE(lines.size(), 2u);
     auto cells = [](const std::string& line) {
         std::vector<std::string> parts;
         std::stringstream stream(line);
         for (std::string part; std::getline(stream, part, ',');) parts.push_back(part);
         return parts;
     };
-    const std::vector<std::string> header = cells(lines[1]), totals = cells(lines[2]);
+    const std::vector<std::string> header = cells(lines[0]), totals = cells(lines[1]);
     const auto column = std::find(header.begin(), header.end(), "inside_out_components");
-    ASSERT_NE(column, header.end()) << lines[1];
+    ASSERT_NE(column, header.end()) << lines[0];
     EXPECT_EQ(totals.at(size_t(column - header.begin())), "1");
 
     run = runCli({"check", mesh});

@@ -207,55 +207,56 @@ TEST(StatisticsJson, DetailLeavesTablesOut) {
     EXPECT_EQ(noClusters["results"][0]["views"].size(), 2u);
 }
 
-TEST(StatisticsCsv, ExactText) {
+std::string csvText(const RunStatistics& run, CsvTable table) {
     std::ostringstream text;
-    writeStatisticsCsv(smallRun(), text);
-    const std::string expected =
-        "# section: totals\n"
-        "cone,test,clusters,views,clusters_culled,triangles_culled,back_facing_triangles,missed_clusters,false_culls,"
-        "efficiency,expected_efficiency,uncullable_clusters,ns_per_cluster,open_edges,non_manifold_edges,inconsistent_edges,"
-        "duplicate_faces,degenerate_faces,components,orientable,winding_fixed_faces,inside_out_components,"
-        "test_loss_triangles,partition_loss_triangles,mean_view_efficiency,mean_cluster_triangles,mean_cluster_vertices,"
-        "mean_sphere_radius,max_sphere_radius,cull_fraction,oracle_fraction\n"
-        "average,sphere,2,2,1,2,6,1,0,0.3333333333333333,0.25,1,12.5,5,0,4,0,0,1,1,3,0,3,1,0.5,1.5,3.5,0.75,1,0.25,0.375\n"
-        "# section: views\n"
-        "cone,test,view,eye_x,eye_y,eye_z,direction_x,direction_y,direction_z,orthographic,clusters_culled,"
-        "triangles_culled,back_facing_triangles,front_facing_triangles,back_facing_clusters,missed_clusters,false_culls,"
-        "efficiency,ns_per_cluster,test_loss_triangles,partition_loss_triangles\n"
-        "average,sphere,0,0,0,3,0,0,-1,0,1,2,2,1,1,0,0,1,10,0,0\n"
-        "average,sphere,1,0,0,0,0,1,0,1,0,0,4,1,1,1,0,0,15,3,1\n"
-        "# section: clusters\n"
-        "cone,test,cluster,faces,triangles,vertices,half_angle_deg,cullable,times_culled,times_back_facing,false_culls,"
-        "times_missed,test_loss_triangles,partition_loss_triangles,sphere_radius,cull_fraction,oracle_fraction\n"
-        "average,sphere,0,1,2,4,12.75,1,1,2,0,1,3,0,0.5,0.375,0.5\n"
-        "average,sphere,1,1,1,3,90,0,0,0,0,0,0,1,1,0,0\n";
-    EXPECT_EQ(text.str(), expected);
+    writeStatisticsCsv(run, text, table);
+    return text.str();
 }
 
-TEST(StatisticsCsv, DetailLeavesSectionsOut) {
-    std::ostringstream text;
-    writeStatisticsCsv(smallRun(), text, StatisticsDetail{false, false});
-    EXPECT_EQ(text.str().find("# section: views"), std::string::npos);
-    EXPECT_EQ(text.str().find("# section: clusters"), std::string::npos);
-    EXPECT_EQ(text.str().rfind("# section: totals\n", 0), 0u);
+TEST(StatisticsCsv, ExactText) {
+    EXPECT_EQ(csvText(smallRun(), CsvTable::Totals),
+              "cone,test,clusters,views,clusters_culled,triangles_culled,back_facing_triangles,missed_clusters,false_culls,"
+              "efficiency,expected_efficiency,uncullable_clusters,ns_per_cluster,open_edges,non_manifold_edges,inconsistent_edges,"
+              "duplicate_faces,degenerate_faces,components,orientable,winding_fixed_faces,inside_out_components,"
+              "test_loss_triangles,partition_loss_triangles,mean_view_efficiency,mean_cluster_triangles,mean_cluster_vertices,"
+              "mean_sphere_radius,max_sphere_radius,cull_fraction,oracle_fraction\n"
+              "average,sphere,2,2,1,2,6,1,0,0.3333333333333333,0.25,1,12.5,5,0,4,0,0,1,1,3,0,3,1,0.5,1.5,3.5,0.75,1,0.25,0.375\n");
+    EXPECT_EQ(csvText(smallRun(), CsvTable::Views),
+              "cone,test,view,eye_x,eye_y,eye_z,direction_x,direction_y,direction_z,orthographic,clusters_culled,"
+              "triangles_culled,back_facing_triangles,front_facing_triangles,back_facing_clusters,missed_clusters,false_culls,"
+              "efficiency,ns_per_cluster,test_loss_triangles,partition_loss_triangles\n"
+              "average,sphere,0,0,0,3,0,0,-1,0,1,2,2,1,1,0,0,1,10,0,0\n"
+              "average,sphere,1,0,0,0,0,1,0,1,0,0,4,1,1,1,0,0,15,3,1\n");
+    EXPECT_EQ(csvText(smallRun(), CsvTable::Clusters),
+              "cone,test,cluster,faces,triangles,vertices,half_angle_deg,cullable,times_culled,times_back_facing,false_culls,"
+              "times_missed,test_loss_triangles,partition_loss_triangles,sphere_radius,cull_fraction,oracle_fraction\n"
+              "average,sphere,0,1,2,4,12.75,1,1,2,0,1,3,0,0.5,0.375,0.5\n"
+              "average,sphere,1,1,1,3,90,0,0,0,0,0,0,1,1,0,0\n");
+}
+
+TEST(StatisticsCsv, TablesGoBesideTheTotalsFile) {
+    using Files = std::vector<std::pair<CsvTable, std::string>>;
+    EXPECT_EQ(csvTableFiles("out/run.csv"),
+              (Files{{CsvTable::Totals, "out/run.csv"}, {CsvTable::Views, "out/run.views.csv"}, {CsvTable::Clusters, "out/run.clusters.csv"}}));
+    EXPECT_EQ(csvTableFiles("RUN.CSV", StatisticsDetail{false, true}),
+              (Files{{CsvTable::Totals, "RUN.CSV"}, {CsvTable::Clusters, "RUN.clusters.csv"}}));
+    EXPECT_EQ(csvTableFiles("table", StatisticsDetail{false, false}), (Files{{CsvTable::Totals, "table"}}));
+    EXPECT_EQ(parseCsvTable("views"), CsvTable::Views);
+    EXPECT_THROW(parseCsvTable("sections"), std::invalid_argument);
 }
 
 // The CSV headers are the JSON keys: a column cannot exist in one format only.
 TEST(StatisticsCsv, ColumnsAreTheJsonKeys) {
     const RunStatistics run = smallRun();
     const nlohmann::json result = statisticsToJson(run)["results"][0];
-    std::ostringstream text;
-    writeStatisticsCsv(run, text);
-    std::istringstream lines(text.str());
     std::vector<std::set<std::string>> headers;
-    for (std::string line, previous; std::getline(lines, line); previous = line)
-        if (previous.rfind("# section:", 0) == 0) {
-            std::set<std::string> columns;
-            std::istringstream cells(line);
-            for (std::string cell; std::getline(cells, cell, ',');) columns.insert(cell);
-            headers.push_back(columns);
-        }
-    ASSERT_EQ(headers.size(), 3u);
+    for (CsvTable table : {CsvTable::Totals, CsvTable::Views, CsvTable::Clusters}) {
+        const std::string text = csvText(run, table);
+        std::set<std::string> columns;
+        std::istringstream cells(text.substr(0, text.find('\n')));
+        for (std::string cell; std::getline(cells, cell, ',');) columns.insert(cell);
+        headers.push_back(columns);
+    }
 
     std::set<std::string> totals = keysOf(result);
     totals.erase("views");

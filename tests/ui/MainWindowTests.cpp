@@ -601,7 +601,10 @@ private slots:
             QCOMPARE(views[v]["clusters_culled"].get<size_t>(), window_->orbitStatistics()[v].clustersCulled);
         }
         // The CSV holds the same totals as the JSON.
-        const auto totals = readCsvSection(eyeCsv, "totals");
+        // The CSV export is tidy: the totals in the file, the views and clusters beside it, one header each.
+        const auto totals = readCsvTable(eyeCsv);
+        QCOMPARE(readCsvTable(temporary_.filePath(QStringLiteral("eye.views.csv"))).size(), size_t(1));
+        QCOMPARE(readCsvTable(temporary_.filePath(QStringLiteral("eye.clusters.csv"))).size(), window_->clusters()->bounds.count());
         QCOMPARE(totals.size(), size_t(1));
         QCOMPARE(std::stoul(totals[0].at("clusters_culled")), writtenEye["results"][0]["clusters_culled"].get<size_t>());
         QCOMPARE(std::stod(totals[0].at("efficiency")), writtenEye["results"][0]["efficiency"].get<double>());

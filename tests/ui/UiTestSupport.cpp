@@ -31,19 +31,13 @@ std::vector<std::string> splitCsvLine(const std::string& line) {
 }
 }  // namespace
 
-std::vector<std::map<std::string, std::string>> readCsvSection(const QString& path, const std::string& section) {
+std::vector<std::map<std::string, std::string>> readCsvTable(const QString& path) {
     std::ifstream in(path.toStdString());
     std::string line;
     std::vector<std::map<std::string, std::string>> rows;
-    bool inside = false;
     std::vector<std::string> header;
     while (std::getline(in, line)) {
-        if (line.rfind("# section: ", 0) == 0) {
-            inside = line == "# section: " + section;
-            header.clear();
-            continue;
-        }
-        if (!inside || line.empty()) continue;
+        if (line.empty()) continue;
         if (header.empty()) {
             header = splitCsvLine(line);
             continue;

@@ -21,7 +21,7 @@ RunStatistics statisticsInProcess(const QString& meshPath, const Settings& setti
 nlohmann::json readJsonFile(const QString& path);
 
 // The rows of one "# section: NAME" of a statistics CSV, as header -> value maps.
-std::vector<std::map<std::string, std::string>> readCsvSection(const QString& path, const std::string& section);
+std::vector<std::map<std::string, std::string>> readCsvTable(const QString& path);
 
 // "x,y,z" with enough digits to read back the same doubles.
 QString eyeArgument(const glm::dvec3& eye);
