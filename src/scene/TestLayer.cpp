@@ -29,7 +29,7 @@ constexpr Rgb regionColour{0.20, 0.85, 0.35};
 constexpr Rgb axisColour{0.95, 0.95, 0.95};
 constexpr Rgb pointBack{0.20, 0.80, 0.30};
 constexpr Rgb pointFront{0.95, 0.25, 0.20};
-constexpr double regionOpacity = 0.22;
+constexpr double regionOpacity = 0.15;
 
 // The region's boundary as rings of quads around its axis.
 GlyphGeometry regionSurface(const CullRegion& region, int cluster, int segments) {
@@ -52,6 +52,22 @@ GlyphGeometry regionSurface(const CullRegion& region, int cluster, int segments)
             const int64_t a = int64_t(i) * segments, b = a + segments, next = (k + 1) % segments;
             geometry.addCell({a + k, a + next, b + next, b + k}, cluster);
         }
+    return geometry;
+}
+
+// The region's outline: a few lines along it and a few rings across it, so its shape reads at any
+// opacity (the surface alone is a faint veil).
+GlyphGeometry regionOutline(const GlyphGeometry& surface, size_t rings, int segments) {
+    GlyphGeometry geometry;
+    if (rings < 2) return geometry;
+    geometry.points = surface.points;
+    for (int k = 0; k < segments; k += segments / 8)
+        for (size_t i = 0; i + 1 < rings; ++i) geometry.addCell({int64_t(i) * segments + k, int64_t(i + 1) * segments + k}, 0);
+    for (size_t i = rings / 4; i < rings; i += std::max<size_t>(rings / 4, 1))
+        for (int k = 0; k < segments; ++k)
+            geometry.addCell({int64_t(i) * segments + k, int64_t(i) * segments + (k + 1) % segments}, 0);
+    for (int k = 0; k < segments; ++k)
+        geometry.addCell({int64_t(rings - 1) * segments + k, int64_t(rings - 1) * segments + (k + 1) % segments}, 0);
     return geometry;
 }
 
@@ -119,10 +135,12 @@ TestDrawing makeTestDrawing(const CullingInput& input, uint32_t cluster, const E
 }
 
 TestLayer::TestLayer(const SceneData& data)
-    : SceneLayer(data), region_(actorFor(plainMapper(emptyPolyData()))), axis_(lineActor(plainMapper(emptyPolyData()), 3.0)),
+    : SceneLayer(data), region_(actorFor(plainMapper(emptyPolyData()))), regionOutline_(lineActor(plainMapper(emptyPolyData()), 1.5)),
+      axis_(lineActor(plainMapper(emptyPolyData()), 3.0)),
       view_(lineActor(plainMapper(emptyPolyData()), 2.5)), target_(pointActor(12.0)), points_(pointActor(9.0)),
       labels_(vtkSmartPointer<vtkActor2D>::New()) {
     setColour(region_, regionColour);
+    setColour(regionOutline_, regionColour);
     region_->GetProperty()->SetOpacity(regionOpacity);
     region_->GetProperty()->BackfaceCullingOff();
     setColour(axis_, axisColour);
@@ -141,7 +159,7 @@ TestLayer::TestLayer(const SceneData& data)
     applyVisibility();
 }
 
-std::vector<vtkActor*> TestLayer::actors() const { return {region_, axis_, view_, target_, points_}; }
+std::vector<vtkActor*> TestLayer::actors() const { return {region_, regionOutline_, axis_, view_, target_, points_}; }
 std::vector<vtkProp*> TestLayer::overlays() const { return {labels_}; }
 
 void TestLayer::addLegendEntries(FaceColoring, std::vector<LegendEntry>& entries) const {
@@ -167,7 +185,9 @@ void TestLayer::setDrawing(const TestDrawing& drawing) {
     const int c = drawing.cluster;
     const Sphere& sphere = data_.bounds.spheres[c];
     const double length = 1.5 * std::max(sphere.radius, data_.coneFallbackLength());
-    setInput(region_, polyDataFrom(regionSurface(drawing.region, c, coneSegments), CellKind::Polygons));
+    const GlyphGeometry surface = regionSurface(drawing.region, c, coneSegments);
+    setInput(region_, polyDataFrom(surface, CellKind::Polygons));
+    setInput(regionOutline_, polyDataFrom(regionOutline(surface, drawing.region.distances.size(), coneSegments), CellKind::Lines));
     setInput(axis_, polyDataFrom(segment(sphere.center, sphere.center + drawing.why.axis * length, c), CellKind::Lines));
     const glm::dvec3 target = testViewTarget(drawing, sphere);
     const glm::dvec3 from = drawing.eye.orthographic ? target - drawing.eye.direction * (4.0 * length) : drawing.eye.position;

@@ -45,7 +45,7 @@ public:
     const TestDrawing& drawing() const { return drawing_; }
 
 private:
-    vtkSmartPointer<vtkActor> region_, axis_, view_, target_, points_;
+    vtkSmartPointer<vtkActor> region_, regionOutline_, axis_, view_, target_, points_;
     vtkSmartPointer<vtkActor2D> labels_;
     TestDrawing drawing_;
 };

@@ -452,6 +452,32 @@ TEST_F(SceneStructure, HighlightOutlinesThePickedClusterOnly) {
     EXPECT_FALSE(scene.actor(Layer::Highlight)->GetVisibility());
 }
 
+TEST_F(SceneStructure, TestDrawingShowsOnlyForAPickedClusterAndIsNotPicked) {
+    ClusterScene scene = makeScene(*torus_);
+    EXPECT_TRUE(scene.layerVisible(Layer::Test));
+    EXPECT_FALSE(scene.actor(Layer::Test)->GetVisibility());  // nothing drawn yet
+    const CullingInput input{torus_->mesh, torus_->world, torus_->faces, torus_->bounds};
+    const Eye eye = Eye::perspective({0.5, -2.0, 1.5});
+    scene.setTestDrawing(makeTestDrawing(input, 3, eye, CullTest::Aabb));
+    EXPECT_TRUE(scene.actor(Layer::Test)->GetVisibility());
+    EXPECT_EQ(scene.testDrawing().cluster, 3);
+    EXPECT_EQ(scene.clusterOfCell(scene.actor(Layer::Test), 0), -1);
+    // The box test's eight corners, coloured by verdict; the apex test's region as a surface.
+    bool cornersDrawn = false;
+    for (int i = 0; i < scene.legend()->GetNumberOfEntries(); ++i)
+        cornersDrawn |= std::string(scene.legend()->GetEntryString(i)) == "point sees back / may face";
+    EXPECT_TRUE(cornersDrawn);
+    scene.setTestDrawing(makeTestDrawing(input, 3, eye, CullTest::Apex));
+    auto* region = vtkPolyData::SafeDownCast(scene.actor(Layer::Test)->GetMapper()->GetInputAsDataSet());
+    ASSERT_NE(region, nullptr);
+    EXPECT_GT(region->GetNumberOfCells(), 0);
+    TestDrawing outside;
+    outside.cluster = int(scene.clusterCount());
+    EXPECT_THROW(scene.setTestDrawing(outside), std::out_of_range);
+    scene.setTestDrawing({});
+    EXPECT_FALSE(scene.actor(Layer::Test)->GetVisibility());
+}
+
 TEST_F(SceneStructure, LayersSwitchTheirActorsAndTheLegend) {
     ClusterScene scene = makeScene(*torus_);
     EXPECT_TRUE(scene.layerVisible(Layer::Faces));
