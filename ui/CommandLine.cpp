@@ -9,12 +9,15 @@
 #include <QCommandLineParser>
 #include <QCoreApplication>
 
+#include <vtkImageData.h>
+
 #include "Datasets.h"
 #include "core/Pipeline.h"
 #include "MeshLoading.h"
 #include "SceneBinding.h"
 #include "core/SettingsSchema.h"
 #include "io/MeshReader.h"
+#include "scene/GaussMapScene.h"
 #include "scene/SceneRendering.h"
 
 namespace conescope {
@@ -104,14 +107,23 @@ CommandLineResult parseCommandLine(const QStringList& arguments) {
         if (field.kind != SettingKind::Flag) option.setValueName(QString::fromStdString(field.valueName));
         settingOptions.emplace_back(&field, option);
     }
+    QStringList layerNames;
+    for (Layer layer : allLayers()) layerNames << QString::fromStdString(toString(layer));
     const QCommandLineOption layers(
         QStringLiteral("layers"),
-        QStringLiteral("Layers shown, comma separated; all others are hidden (faces, borders, cones, normals, boxes, "
-                       "spheres, eye, highlight, legend). In the window, keys 1-9 still switch them."),
+        QStringLiteral("Layers shown, comma separated; all others are hidden (%1). In the window, keys 1-9 and 0 "
+                       "still switch them.").arg(layerNames.join(QStringLiteral(", "))),
         QStringLiteral("names"));
-    const QCommandLineOption pick(QStringLiteral("pick"), QStringLiteral("Screenshot with this cluster picked (highlighted)."),
+    const QCommandLineOption pick(QStringLiteral("pick"),
+                                  QStringLiteral("Screenshot with this cluster picked: highlighted, its test drawn and "
+                                                 "framed; without --eye the cull eye is at the first orbit view that "
+                                                 "loses the cluster's back faces."),
                                   QStringLiteral("ID"));
-    parser.addOptions({screenshot, size, fromEye, coloring, layers, pick});
+    const QCommandLineOption gaussMap(QStringLiteral("gauss-map"),
+                                      QStringLiteral("With --pick: also write the picked cluster's Gauss map (normals, "
+                                                     "every cone method's cap, the view vector) to this PNG."),
+                                      QStringLiteral("file"));
+    parser.addOptions({screenshot, size, fromEye, coloring, layers, pick, gaussMap});
     for (const auto& [field, option] : settingOptions) parser.addOption(option);
     QStringList extensions;
     for (const std::string& extension : supportedMeshExtensions()) extensions << QString::fromStdString(extension);
@@ -174,6 +186,9 @@ CommandLineResult parseCommandLine(const QStringList& arguments) {
         }
         if (options.screenshot.isEmpty() && (parser.isSet(size) || options.fromEye || options.pick))
             throw std::invalid_argument("--size, --from-eye and --pick only apply to --screenshot");
+        options.gaussMap = parser.value(gaussMap);
+        if (parser.isSet(gaussMap) && (!options.pick || options.gaussMap.isEmpty()))
+            throw std::invalid_argument("--gauss-map needs a file name and --pick");
     } catch (const std::exception& error) {
         result.action = CommandLineResult::Action::ExitFailure;
         result.message = QString::fromStdString(error.what());
@@ -189,7 +204,17 @@ int runHeadlessScreenshot(const AppOptions& options) {
         const PreparedMesh prepared = loadMesh(meshPath.toStdString(), settings.fixWinding);
         const ClusterSet clusters = buildClusters(prepared, settings);
         ClusterScene scene(prepared.mesh(), prepared.world, prepared.faces, clusters.partition, clusters.bounds);
-        const glm::dvec3 eyePosition = options.eye ? *options.eye : startingEyePosition(prepared.box, settings);
+        if (options.pick && *options.pick >= clusters.partition.clusterCount)
+            throw std::invalid_argument("--pick " + std::to_string(*options.pick) + ": the mesh has " +
+                                        std::to_string(clusters.partition.clusterCount) + " clusters (0 to " +
+                                        std::to_string(clusters.partition.clusterCount - 1) + ")");
+        glm::dvec3 eyePosition = options.eye ? *options.eye : startingEyePosition(prepared.box, settings);
+        // A picked cluster is shown where it costs, as the worst-cluster table shows it: from the first
+        // orbit view that loses its back faces (unless --eye says where to look from).
+        if (options.pick && !options.eye) {
+            const long lost = viewMissingCluster(prepared, clusters, settings, uint32_t(*options.pick));
+            if (lost >= 0) eyePosition = orbitOf(settings, prepared.box)[size_t(lost)].position;
+        }
         const EyeMeasurement measurement =
             measureEye(prepared, clusters, eyeAt(settings, eyePosition, prepared.box), displayedTest(settings));
         showMeasurement(scene, prepared, clusters, measurement);
@@ -198,10 +223,6 @@ int runHeadlessScreenshot(const AppOptions& options) {
         for (const auto& [layer, visible] : firstLookLayers()) scene.setLayerVisible(layer, visible);
         if (options.layers) showOnly(*options.layers, scene);
         if (options.pick) {
-            if (*options.pick >= clusters.partition.clusterCount)
-                throw std::invalid_argument("--pick " + std::to_string(*options.pick) + ": the mesh has " +
-                                            std::to_string(clusters.partition.clusterCount) + " clusters (0 to " +
-                                            std::to_string(clusters.partition.clusterCount - 1) + ")");
             scene.setHighlightedCluster(int(*options.pick));
             showTestDrawing(scene, prepared, clusters, int(*options.pick), measurement);
         }
@@ -212,6 +233,12 @@ int runHeadlessScreenshot(const AppOptions& options) {
         render.fromEye = options.fromEye;
         if (options.pick) frameTestDrawing(scene, render);
         renderToPng(scene, render, options.screenshot.toStdString());
+        if (!options.gaussMap.isEmpty()) {
+            GaussMapScene gauss;
+            gauss.show(gaussMapOf(prepared, clusters, uint32_t(*options.pick), scene.testDrawing().why), clusters.bounds.coneMethod,
+                       int(*options.pick));
+            writePng(renderGaussMapToImage(gauss, options.size.height() * 4 / 3, options.size.height()), options.gaussMap.toStdString());
+        }
         return 0;
     } catch (const std::exception& error) {
         std::cerr << "conescope: " << error.what() << '\n';

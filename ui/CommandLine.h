@@ -26,7 +26,8 @@ struct AppOptions {
     bool fromEye = false;             // --from-eye: the screenshot shows what the cull eye sees
     FaceColoring coloring = FaceColoring::CullDecision;  // --coloring, as the window starts
     std::optional<std::vector<Layer>> layers;  // --layers: the layers shown, all others hidden
-    std::optional<size_t> pick;       // --pick: the cluster highlighted in the screenshot
+    std::optional<size_t> pick;       // --pick: the cluster highlighted in the screenshot, its test drawn
+    QString gaussMap;                 // --gauss-map: also write the picked cluster's Gauss map to this PNG
 };
 
 // The scene's names (toString(Layer)). Throws std::invalid_argument.

@@ -97,7 +97,7 @@ public:
     bool hasEye() const;
     const Eye& eye() const;  // Eye{} before setEye
 
-    // -1 = none. Outlines the cluster's faces and draws its cone, box and sphere opaque.
+    // -1 = none. Outlines the cluster's faces and draws its cone (half see-through), box and sphere bright.
     // Throws std::out_of_range for an id outside [-1, K).
     void setHighlightedCluster(int cluster);
     int highlightedCluster() const;

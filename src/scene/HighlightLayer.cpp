@@ -6,6 +6,7 @@
 #include <vtkActor.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
 
 #include "scene/SceneGeometry.h"
 
@@ -15,6 +16,8 @@ HighlightLayer::HighlightLayer(const SceneData& data)
     : SceneLayer(data), outline_(lineActor(plainMapper(emptyPolyData()), 4.0)), cone_(actorFor(plainMapper(emptyPolyData()))),
       box_(lineActor(plainMapper(emptyPolyData()), 3.0)), sphere_(lineActor(plainMapper(emptyPolyData()), 2.5)) {
     for (vtkActor* actor : actors()) setColour(actor, SceneColours::highlight);
+    // Half see-through: the cluster's faces and its test's drawing stay visible behind its cone.
+    cone_->GetProperty()->SetOpacity(0.5);
 }
 
 void HighlightLayer::addLegendEntries(FaceColoring, std::vector<LegendEntry>& entries) const {

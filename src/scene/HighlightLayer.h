@@ -1,4 +1,4 @@
-// Layer::Highlight: the picked cluster's outline, opaque cone, box and sphere in one bright colour,
+// Layer::Highlight: the picked cluster's outline, half see-through cone, box and sphere in one bright colour,
 // shown whatever the Cones / Boxes / Spheres layers say.
 #pragma once
 

@@ -126,7 +126,10 @@ vtkSmartPointer<vtkImageData> renderToImage(const ClusterScene& scene, const Ren
 }
 
 void renderToPng(const ClusterScene& scene, const RenderOptions& options, const std::string& path) {
-    vtkSmartPointer<vtkImageData> image = renderToImage(scene, options);
+    writePng(renderToImage(scene, options), path);
+}
+
+void writePng(vtkImageData* image, const std::string& path) {
     auto writer = vtkSmartPointer<vtkPNGWriter>::New();
     writer->SetFileName(path.c_str());
     writer->SetInputData(image);

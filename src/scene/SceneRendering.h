@@ -55,6 +55,9 @@ vtkSmartPointer<vtkImageData> renderOffScreen(vtkRenderer* renderer, int width, 
 // ("rendering needs an X display; run under xvfb-run") or the window cannot be made.
 vtkSmartPointer<vtkImageData> renderToImage(const ClusterScene& scene, const RenderOptions& options);
 
+// An image as PNG. Throws std::runtime_error naming the path if it cannot be written.
+void writePng(vtkImageData* image, const std::string& path);
+
 // renderToImage, then PNG. Throws std::runtime_error naming the path if it cannot be written.
 void renderToPng(const ClusterScene& scene, const RenderOptions& options, const std::string& path);
 

@@ -31,7 +31,7 @@ enum class Layer {
     Boxes,      // cluster AABBs as wire boxes, 12 lines per cluster
     Spheres,    // bounding spheres as three orthogonal circles per cluster
     Eye,        // the cull eye marker (after setEye)
-    Highlight,  // the picked cluster (after setHighlightedCluster): outline, opaque cone, box and sphere,
+    Highlight,  // the picked cluster (after setHighlightedCluster): outline, half see-through cone, box and sphere,
                 // shown whatever the Cones / Boxes / Spheres layers say
     Test,       // the picked cluster's cull test in 3D (setTestDrawing): axis, view vector, cull region, points
     Legend,     // what the colours mean, for the visible layers
@@ -77,7 +77,7 @@ struct SceneColours {
 Rgb fractionRamp(double t);
 constexpr double maxClusterFraction = 0.5;
 
-// Opacity of the cone glyphs (the highlighted cluster's cone is opaque).
+// Opacity of the cone glyphs (the highlighted cluster's cone: 0.5).
 constexpr double coneOpacity = 0.35;
 // The normals layer draws at most this many arrows: every k-th face on larger meshes.
 constexpr size_t maxNormalArrows = 100000;

@@ -1,5 +1,7 @@
 #include "RenderTestSupport.h"
 
+#include "scene/SceneRendering.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -69,13 +71,6 @@ vtkSmartPointer<vtkImageData> readPng(const std::string& path) {
     auto image = vtkSmartPointer<vtkImageData>::New();
     image->DeepCopy(reader->GetOutput());
     return image;
-}
-
-void writePng(vtkImageData* image, const std::string& path) {
-    auto writer = vtkSmartPointer<vtkPNGWriter>::New();
-    writer->SetFileName(path.c_str());
-    writer->SetInputData(image);
-    writer->Write();
 }
 
 std::string checkAgainstBaseline(vtkImageData* actual, const std::string& name) {

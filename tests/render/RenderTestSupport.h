@@ -45,7 +45,6 @@ constexpr double maxThresholdedError = 10.0;
 constexpr double maxMeanChannelDifference = 1.0;
 
 vtkSmartPointer<vtkImageData> readPng(const std::string& path);
-void writePng(vtkImageData* image, const std::string& path);
 
 // Compares with baselines/<name>.png. With CONESCOPE_UPDATE_BASELINES=1 in the environment it writes
 // the baseline instead and returns an empty string. On a mismatch it writes <name>.actual.png into the
