@@ -192,12 +192,27 @@ QString truthSection(const CullExplanation& why) {
 
 }  // namespace
 
-QString clusterReportHtml(const ClusterReportInput& input) {
+QString clusterReportHtml(const ClusterReportInput& input, const QString& appendix) {
     if (!input.bounds || input.cluster >= input.bounds->count()) return emptyClusterReportHtml();
     QStringList parts;
     parts << clusterSection(input) << coneSection(input) << boundsSection(input) << testSection(input)
-          << truthSection(input.explanation);
+          << truthSection(input.explanation) << appendix;
     return QStringLiteral("<html><body>") + parts.join(QString()) + QStringLiteral("</body></html>");
+}
+
+QString pinnedClusterHtml(const ClusterReportInput& a) {
+    const CullExplanation& why = a.explanation;
+    const ClusterBounds& bounds = *a.bounds;
+    Table table(QStringLiteral("Under A (pinned): cluster %1").arg(a.cluster));
+    table.row(QStringLiteral("triangles"), QString::number(bounds.triangles[a.cluster]))
+        .row(QStringLiteral("cone / test"), QStringLiteral("%1 / %2").arg(QString::fromStdString(toString(bounds.coneMethod)),
+                                                                          QString::fromStdString(toString(a.test))))
+        .row(QStringLiteral("half-angle &alpha;"), why.cullable ? degrees(why.halfAngleDegrees) : QStringLiteral("no cone"));
+    if (!std::isnan(why.margin))
+        table.row(QStringLiteral("margin"), why.margin > 0.0 ? QStringLiteral("passes by %1").arg(number(why.margin))
+                                                             : QStringLiteral("short by %1").arg(number(-why.margin)));
+    table.row(QStringLiteral("<b>decision</b>"), why.culled ? QStringLiteral("<b>culled</b>") : QStringLiteral("<b>drawn</b>"));
+    return table.html();
 }
 
 QString emptyClusterReportHtml() {

@@ -17,7 +17,12 @@ struct ClusterReportInput {
     CullExplanation explanation;
 };
 
-QString clusterReportHtml(const ClusterReportInput& input);
+// `appendix`: more HTML after the page (the cluster under A).
+QString clusterReportHtml(const ClusterReportInput& input, const QString& appendix = {});
+
+// The same cluster's faces under the pinned configuration A, in short: A's cluster holding them, its
+// size, cone and decision from the same eye, after the page of B (the current configuration).
+QString pinnedClusterHtml(const ClusterReportInput& a);
 
 // The page shown before anything is picked.
 QString emptyClusterReportHtml();

@@ -118,6 +118,11 @@ void MainWindow::connectSession() {
     });
     connect(&session_, &Session::eyeMeasured, this, &MainWindow::showEyeMeasurement);
     connect(&session_, &Session::orbitChanged, this, &MainWindow::showOrbit);
+    connect(&session_, &Session::comparisonChanged, this, [this]() {
+        showOrbit();
+        clusterView_->showPick(session_);
+        render();
+    });
     connect(&session_, &Session::pickChanged, this, [this]() {
         clusterView_->showPick(session_);
         gaussMap_->showPick(session_, true);
@@ -168,6 +173,7 @@ void MainWindow::showScene(const ClusterScene* previous, bool newMesh) {
 
 void MainWindow::showEyeMeasurement() {
     const EyeMeasurement* measurement = session_.measurement();
+    statisticsPanel_->showComparison(session_.pinnedSettings(), session_.eyeComparison(), session_.orbitComparison());
     if (measurement) {
         statisticsPanel_->showEye(*measurement);
         eyeView_->showEye(*session_.scene());
@@ -182,7 +188,12 @@ void MainWindow::showEyeMeasurement() {
 }
 
 void MainWindow::showOrbit() {
-    plots_->showOrbit(session_.orbitRows(), session_.orbitStep());
+    // With a pin, A's efficiency per orbit view is the plot's second curve.
+    std::vector<double> pinned;
+    if (const Comparison* comparison = session_.orbitComparison())
+        for (const ViewComparison& view : comparison->views) pinned.push_back(view.efficiencyA);
+    plots_->showOrbit(session_.orbitRows(), session_.orbitStep(), pinned.empty() ? nullptr : &pinned);
+    statisticsPanel_->showComparison(session_.pinnedSettings(), session_.eyeComparison(), session_.orbitComparison());
     worstClusters_->showOrbit(session_.orbitStatistics());
     statisticsPanel_->showOrbit(session_.orbitStatistics());
     statusLine_->showSummary(session_);
@@ -251,6 +262,17 @@ void MainWindow::pickCluster(int cluster) { session_.pickCluster(cluster); }
 QString MainWindow::clusterReportHtml() const { return clusterView_->toHtml(); }
 
 QPoint MainWindow::viewPositionOf(const glm::dvec3& world) const { return view_->viewPositionOf(world); }
+
+void MainWindow::pinAsA() {
+    if (!session_.clusters()) return;
+    session_.pinAsA();
+    setFaceColoring(FaceColoring::Comparison);
+}
+
+void MainWindow::clearPin() {
+    session_.clearPin();
+    if (session_.faceColoring() == FaceColoring::Comparison) setFaceColoring(FaceColoring::CullDecision);
+}
 
 void MainWindow::chooseCluster(int cluster) {
     session_.showClusterWhereItIsLost(cluster);

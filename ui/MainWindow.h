@@ -106,6 +106,10 @@ public:
     void setAnimating(bool animate);
     // Renders every view that is on screen.
     void render();
+    // A/B: pins the current settings as A and colours the faces by the comparison; clearing goes back
+    // to the decision colours.
+    void pinAsA();
+    void clearPin();
     // What a row of the worst-cluster table does: picks the cluster, frames it and moves the eye to
     // the first orbit view that loses its back faces.
     void chooseCluster(int cluster);

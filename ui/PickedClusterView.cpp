@@ -24,7 +24,19 @@ void PickedClusterView::showPick(const Session& session) {
     input.eye = measurement->eye;
     input.test = displayedTest(session.settings());
     input.explanation = explainCull(cullingInput(*session.preparedMesh(), *session.clusters()), input.cluster, input.eye, input.test);
-    setHtml(clusterReportHtml(input));
+    // With a pin, the same faces under A: the A cluster that holds this cluster's first face.
+    QString underA;
+    const int aCluster = session.pinnedClusterOf(picked);
+    if (aCluster >= 0) {
+        ClusterReportInput a;
+        a.cluster = uint32_t(aCluster);
+        a.bounds = &session.pinnedClusters()->bounds;
+        a.eye = input.eye;
+        a.test = displayedTest(*session.pinnedSettings());
+        a.explanation = explainCull(cullingInput(*session.preparedMesh(), *session.pinnedClusters()), a.cluster, a.eye, a.test);
+        underA = pinnedClusterHtml(a);
+    }
+    setHtml(clusterReportHtml(input, underA));
 }
 
 }  // namespace conescope

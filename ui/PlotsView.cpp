@@ -75,9 +75,9 @@ PlotsView::Plot PlotsView::addPlot(const QString& tab, const char* title) {
     return plot;
 }
 
-void PlotsView::showOrbit(const std::vector<ViewStatistics>& views, long currentView) {
+void PlotsView::showOrbit(const std::vector<ViewStatistics>& views, long currentView, const std::vector<double>* pinned) {
     viewCount_ = views.size();
-    plotEfficiencyPerView(efficiency_.chart, views, currentView);
+    plotEfficiencyPerView(efficiency_.chart, views, currentView, pinned);
     render(efficiency_);
 }
 

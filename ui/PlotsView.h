@@ -23,7 +23,8 @@ class PlotsView : public QTabWidget {
 public:
     explicit PlotsView(QWidget* parent = nullptr);
 
-    void showOrbit(const std::vector<ViewStatistics>& views, long currentView);
+    // `pinned`: the pinned configuration A's efficiency per view, drawn as a second curve.
+    void showOrbit(const std::vector<ViewStatistics>& views, long currentView, const std::vector<double>* pinned = nullptr);
     void showHalfAngles(const std::vector<ClusterStatistics>& clusters);
     // Renders the plot on screen, if any.
     void render();

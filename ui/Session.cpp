@@ -7,6 +7,7 @@
 
 #include "MeshLoading.h"
 #include "SceneBinding.h"
+#include "TaskGroups.h"
 
 namespace conescope {
 
@@ -14,10 +15,6 @@ namespace {
 
 constexpr int animationIntervalMs = 150;
 
-const QString loadGroup = QStringLiteral("load");
-const QString clustersGroup = QStringLiteral("clusters");
-const QString orbitGroup = QStringLiteral("orbit");
-const QString exportGroup = QStringLiteral("export");
 
 // Maps a stage's progress into [from, to] of the whole task.
 ProgressCallback scaled(const ProgressCallback& progress, double from, double to) {
@@ -27,13 +24,6 @@ ProgressCallback scaled(const ProgressCallback& progress, double from, double to
 }
 
 }  // namespace
-
-struct Session::SceneResult {
-    std::shared_ptr<const PreparedMesh> prepared;
-    std::shared_ptr<const ClusterSet> clusters;
-    std::unique_ptr<ClusterScene> scene;
-    std::string builderNote;  // why the clusters came from another builder than the settings said
-};
 
 namespace {
 
@@ -68,7 +58,7 @@ void Session::openMesh(const QString& path) {
     const std::string file = path.toStdString();
     const Settings settings = settings_;
     runner_.run<SceneResult>(
-        loadGroup, tr("Loading %1").arg(QFileInfo(path).fileName()),
+        taskgroups::load, tr("Loading %1").arg(QFileInfo(path).fileName()),
         [file, settings](const ProgressCallback& progress) {
             SceneResult result;
             auto prepared = std::make_shared<PreparedMesh>(loadMesh(file, settings.fixWinding, scaled(progress, 0.0, 0.4)));
@@ -105,14 +95,14 @@ void Session::openMesh(const QString& path) {
 
 void Session::requestClusters(bool reprepare) {
     // A mesh still loading picks the current settings up when it arrives.
-    if (!prepared_ || runner_.busy(loadGroup)) return;
-    runner_.cancel(clustersGroup);
-    runner_.cancel(orbitGroup);
+    if (!prepared_ || runner_.busy(taskgroups::load)) return;
+    runner_.cancel(taskgroups::clusters);
+    runner_.cancel(taskgroups::orbit);
     const std::shared_ptr<const PreparedMesh> prepared = prepared_;
     const std::shared_ptr<const ClusterSet> previous = reprepare ? nullptr : clusters_;
     const Settings settings = settings_;
     runner_.run<SceneResult>(
-        clustersGroup, tr("Building clusters"),
+        taskgroups::clusters, tr("Building clusters"),
         [prepared, previous, settings, reprepare](const ProgressCallback& progress) {
             SceneResult result;
             result.prepared = prepared;
@@ -146,12 +136,12 @@ void Session::requestClusters(bool reprepare) {
 
 void Session::requestOrbit() {
     if (!prepared_ || !clusters_) return;
-    runner_.cancel(orbitGroup);
+    runner_.cancel(taskgroups::orbit);
     const std::shared_ptr<const PreparedMesh> prepared = prepared_;
     const std::shared_ptr<const ClusterSet> clusters = clusters_;
     const Settings settings = settings_;
     runner_.run<TestStatistics>(
-        orbitGroup, tr("Orbit statistics"),
+        taskgroups::orbit, tr("Orbit statistics"),
         [prepared, clusters, settings](const ProgressCallback& progress) {
             return measureOrbit(*prepared, *clusters, settings, progress);
         },
@@ -161,6 +151,7 @@ void Session::requestOrbit() {
             emit orbitChanged();
         },
         [this](const QString& error) { emit errorOccurred(tr("Cannot measure the orbit"), error); });
+    requestOrbitComparison();
 }
 
 void Session::showSceneResult(SceneResult& result, bool newMesh) {
@@ -176,6 +167,9 @@ void Session::showSceneResult(SceneResult& result, bool newMesh) {
     if (!samePartition || picked_ >= int(clusters_->partition.clusterCount)) picked_ = -1;
     scene_->setHighlightedCluster(picked_);
     orbit_.reset();
+    orbitComparison_.reset();
+    if (newMesh) clearPin();
+    else dropStalePin();
     if (newMesh) {
         if (!eyeGiven_) eyePosition_ = startingEyePosition(prepared_->box, settings_);
         eyeGiven_ = false;
@@ -202,7 +196,7 @@ void Session::applySettings(const Settings& settings) {
         return;
     }
     // Back to what is built: nothing queued is needed any more.
-    runner_.cancel(clustersGroup);
+    runner_.cancel(taskgroups::clusters);
     const bool eyeChanged = displayedTest(before) != displayedTest(settings) || before.orthographic != settings.orthographic;
     const bool orbitChanged = eyeChanged || before.views != settings.views || before.distance != settings.distance;
     if (eyeChanged) updateEye();
@@ -231,7 +225,7 @@ void Session::startStatisticsExport(const QString& path, StatisticsFormat format
     const Settings settings = exportSettings(settings_, orbit ? std::nullopt : std::optional<glm::dvec3>(eyePosition_));
     const std::string file = path.toStdString();
     runner_.run<RunStatistics>(
-        exportGroup, tr("Exporting statistics"),
+        taskgroups::exports, tr("Exporting statistics"),
         [prepared, clusters, settings, file, format](const ProgressCallback& progress) {
             return conescope::exportStatistics(*prepared, *clusters, settings, file, format, progress);
         },
@@ -338,12 +332,14 @@ void Session::measureCurrentEye() {
         eyeError_ = QString::fromStdString(error.what());
         scene_->clearClusterDecisions();
         scene_->setTestDrawing({});
+        measurePinnedEye();
         return;
     }
     eyeError_.clear();
     showMeasurement(*scene_, *prepared_, *clusters_, *measurement_);
     showEyeColouring(*scene_, *prepared_, *clusters_, *measurement_, coloring_);
     showTestDrawing(*scene_, *prepared_, *clusters_, picked_, *measurement_);
+    measurePinnedEye();
     eyeSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 

@@ -17,6 +17,7 @@
 
 #include "Exports.h"
 #include "TaskRunner.h"
+#include "core/Comparison.h"
 #include "core/Pipeline.h"
 #include "scene/ClusterScene.h"
 
@@ -87,7 +88,27 @@ public:
     // of the test first, else the partition's loss): the view that shows why it costs.
     void showClusterWhereItIsLost(int cluster);
 
+    // --- A/B comparison (SessionComparison.cpp) ----------------------------------------------------
+    // Pins the current settings and clusters as A; the settings from then on are B. The scene then
+    // has the per-face diff of the eye (FaceColoring::Comparison) and the orbit is compared too.
+    void pinAsA();
+    void clearPin();
+    // A's settings and clusters become the current ones and the current ones A: nothing is rebuilt.
+    void swapAB();
+    bool hasPin() const { return pin_.has_value(); }
+    const Settings* pinnedSettings() const { return pin_ ? &pin_->settings : nullptr; }
+    const ClusterSet* pinnedClusters() const { return pin_ ? pin_->clusters.get() : nullptr; }
+    // A from the current eye, and A against B from it; null without a pin or a measured eye.
+    const EyeMeasurement* pinnedMeasurement() const { return pinnedMeasurement_ ? &*pinnedMeasurement_ : nullptr; }
+    const Comparison* eyeComparison() const { return eyeComparison_ ? &*eyeComparison_ : nullptr; }
+    // A against B over the orbit; null until measured.
+    const Comparison* orbitComparison() const { return orbitComparison_ ? &*orbitComparison_ : nullptr; }
+    // A's cluster holding the first face of the current partition's `cluster`; -1 without a pin.
+    int pinnedClusterOf(int cluster) const;
+
 signals:
+    // A pin was set, swapped or cleared, or its comparison with the current settings was measured.
+    void comparisonChanged();
     // A new scene (new mesh or new clusters), its eye already measured. `previous` (null for the
     // first) is still alive: views take its actors out.
     void sceneReplaced(const conescope::ClusterScene* previous, bool newMesh);
@@ -110,7 +131,13 @@ signals:
     void idle();
 
 private:
-    struct SceneResult;
+    // What the clusters stage delivers to the UI thread.
+    struct SceneResult {
+        std::shared_ptr<const PreparedMesh> prepared;
+        std::shared_ptr<const ClusterSet> clusters;
+        std::unique_ptr<ClusterScene> scene;
+        std::string builderNote;  // why the clusters came from another builder than the settings said
+    };
 
     void requestClusters(bool reprepare);
     void requestOrbit();
@@ -120,6 +147,11 @@ private:
     void adoptBuilderOf(const ClusterSet& clusters);
     void updateEye();
     void measureCurrentEye();
+    // A's decisions from the measured eye and the per-face diff in the scene (or none without a pin).
+    void measurePinnedEye();
+    void requestOrbitComparison();
+    // Drops a pin made for another prepared mesh (a new file, another winding repair).
+    void dropStalePin();
 
     TaskRunner runner_;
     Settings settings_;
@@ -138,6 +170,15 @@ private:
     std::map<Layer, bool> layers_;
     FaceColoring coloring_ = FaceColoring::CullDecision;
     int picked_ = -1;
+    struct Pin {
+        Settings settings;
+        std::shared_ptr<const ClusterSet> clusters;
+        std::shared_ptr<const PreparedMesh> prepared;  // the mesh the clusters were made for
+    };
+    std::optional<Pin> pin_;
+    std::optional<EyeMeasurement> pinnedMeasurement_;
+    std::optional<Comparison> eyeComparison_;
+    std::optional<Comparison> orbitComparison_;
 };
 
 }  // namespace conescope

@@ -14,6 +14,24 @@ QString count(size_t value) { return QLocale().toString(qulonglong(value)); }
 QString percent(double fraction) { return QString::number(100.0 * fraction, 'f', 1) + QLatin1Char('%'); }
 QString seconds(double value) { return QString::number(1000.0 * value, 'f', 1) + QStringLiteral(" ms"); }
 
+// What the two sides culled, in triangles: only A, only B, both.
+QString culledBy(const Comparison& comparison) {
+    return QObject::tr("%1 only by A, %2 only by B, %3 by both")
+        .arg(count(comparison.trianglesCulledOnlyA), count(comparison.trianglesCulledOnlyB), count(comparison.trianglesCulledBoth));
+}
+
+QString efficiencies(const Comparison& comparison) {
+    return QObject::tr("A %1, B %2").arg(percent(comparison.efficiencyA), percent(comparison.efficiencyB));
+}
+
+QString configuration(const Settings& settings) {
+    return QStringLiteral("%1, %2 / %3, %4/%5")
+        .arg(QString::fromStdString(toString(settings.builder)), QString::fromStdString(toString(displayedCone(settings))),
+             QString::fromStdString(toString(displayedTest(settings))))
+        .arg(settings.limits.maxVertices)
+        .arg(settings.limits.maxTriangles);
+}
+
 }  // namespace
 
 StatisticsPanel::StatisticsPanel(QWidget* parent) : QWidget(parent) {
@@ -26,6 +44,8 @@ StatisticsPanel::StatisticsPanel(QWidget* parent) : QWidget(parent) {
                              "cone / test", "build time", "orbit efficiency", "lost over the orbit", "expected efficiency",
                              "cull / oracle fraction", "cluster fill", "sphere radius"})
         addRow(QString::fromLatin1(name));
+    for (const QString& name : comparisonRows()) addRow(name);
+    showComparison(nullptr, nullptr, nullptr);
     clear();
 }
 
@@ -114,6 +134,35 @@ void StatisticsPanel::showEye(const EyeMeasurement& measurement) {
                                               : QStringLiteral("color: #207020;"));
     values_["time per test"]->setText(tr("%1 ns per cluster").arg(view.nanosecondsPerCluster, 0, 'f', 1));
     values_["uncullable clusters"]->setText(count(measurement.statistics.uncullableClusters));
+}
+
+QStringList StatisticsPanel::comparisonRows() {
+    return {QStringLiteral("A (pinned)"), QStringLiteral("A / B efficiency"), QStringLiteral("A / B culled"),
+            QStringLiteral("A / B over the orbit"), QStringLiteral("A / B culled over the orbit"), QStringLiteral("A / B clusters")};
+}
+
+void StatisticsPanel::showComparison(const Settings* a, const Comparison* eye, const Comparison* orbit) {
+    for (const QString& row : comparisonRows()) {
+        values_[row]->setVisible(a != nullptr);
+        if (QWidget* label = form_->labelForField(values_[row])) label->setVisible(a != nullptr);
+    }
+    if (!a) return;
+    values_["A (pinned)"]->setText(configuration(*a));
+    values_["A / B efficiency"]->setText(eye ? efficiencies(*eye) : QStringLiteral("-"));
+    values_["A / B culled"]->setText(eye ? culledBy(*eye) : QStringLiteral("-"));
+    values_["A / B over the orbit"]->setText(orbit ? efficiencies(*orbit) : tr("measuring..."));
+    values_["A / B culled over the orbit"]->setText(orbit ? culledBy(*orbit) : tr("measuring..."));
+    const Comparison* counts = orbit ? orbit : eye;
+    QLabel* clusters = values_["A / B clusters"];
+    if (!counts) {
+        clusters->setText(QStringLiteral("-"));
+        return;
+    }
+    const std::string warning = clusterCountWarning(*counts);
+    clusters->setText(tr("A %1, B %2").arg(count(counts->clustersA), count(counts->clustersB)) +
+                      (warning.empty() ? QString() : QStringLiteral("<br>") + QString::fromStdString(warning)));
+    // Unequal counts make the comparison unfair: say so where it is read.
+    clusters->setStyleSheet(warning.empty() ? QString() : QStringLiteral("color: #b05000; font-weight: bold;"));
 }
 
 void StatisticsPanel::showEyeError(const QString& message) {

@@ -3,8 +3,10 @@
 // test. Formatting only; the numbers come from the pipeline.
 #pragma once
 
+#include <QStringList>
 #include <QWidget>
 
+#include "core/Comparison.h"
 #include "core/Pipeline.h"
 
 class QFormLayout;
@@ -22,6 +24,9 @@ public:
     // The partition's summary over the orbit (measureOrbit); "measuring..." while there is none.
     void showOrbit(const TestStatistics* orbit);
     void showEyeError(const QString& message);
+    // A against B (the pinned configuration against the current one) for the eye and over the
+    // orbit, and the cluster-count warning; `a` null hides the comparison rows.
+    void showComparison(const Settings* a, const Comparison* eye, const Comparison* orbit);
     void clear();
 
     // The label text of a row, by its name ("clusters culled", "false culls", ...), for tests.
@@ -29,6 +34,7 @@ public:
 
 private:
     QLabel* addRow(const QString& name);
+    static QStringList comparisonRows();
 
     QFormLayout* form_ = nullptr;
     std::map<QString, QLabel*> values_;

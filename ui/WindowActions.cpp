@@ -160,6 +160,12 @@ void WindowActions::createCullingMenu() {
     add(culling, tr("Next &cone method"), QKeySequence(tr("C")), [this]() { changeSettings(withNextCone); });
     add(culling, tr("Next &builder"), QKeySequence(tr("B")), [this]() { changeSettings(withNextBuilder); });
     add(culling, tr("Clear the picked cluster"), QKeySequence(Qt::Key_Escape), [this]() { window_->pickCluster(-1); });
+    culling->addSeparator();
+    // A/B: pin what is shown as A, change the settings (B), compare; X swaps them.
+    add(culling, tr("&Pin as A (compare with what comes next)"), QKeySequence(tr("A")), [this]() { window_->pinAsA(); },
+        tr("Keep these clusters and settings as A; the faces show what A and B cull"));
+    add(culling, tr("Swap A and B"), QKeySequence(tr("X")), [this]() { session_->swapAB(); });
+    add(culling, tr("Clear A"), QKeySequence(tr("Shift+A")), [this]() { window_->clearPin(); });
 }
 
 void WindowActions::createToolBar() {

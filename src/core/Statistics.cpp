@@ -56,9 +56,12 @@ ClusterTruth truthForView(const CullingInput& input, const std::vector<Facing>& 
     return truth;
 }
 
-double ratio(size_t culled, size_t back) { return back == 0 ? 1.0 : double(culled) / double(back); }
 
 }  // namespace
+
+double cullEfficiency(size_t trianglesCulled, size_t backFacingTriangles) {
+    return backFacingTriangles == 0 ? 1.0 : double(trianglesCulled) / double(backFacingTriangles);
+}
 
 TestStatistics measureCulling(const CullingInput& input, const std::vector<Eye>& views, CullTest test,
                               const ProgressCallback& progress) {
@@ -132,7 +135,7 @@ TestStatistics measureCulling(const CullingInput& input, const std::vector<Eye>&
                 cluster.partitionLossTriangles += truth.backTriangles[c];
             }
         }
-        view.efficiency = ratio(view.trianglesCulled, view.backFacingTriangles);
+        view.efficiency = cullEfficiency(view.trianglesCulled, view.backFacingTriangles);
         result.meanViewEfficiency += view.efficiency / double(views.size());
         result.testLossTriangles += view.testLossTriangles;
         result.partitionLossTriangles += view.partitionLossTriangles;
@@ -143,7 +146,7 @@ TestStatistics measureCulling(const CullingInput& input, const std::vector<Eye>&
         result.falseCulls += view.falseCulls;
         result.views.push_back(view);
     }
-    result.efficiency = ratio(result.trianglesCulled, result.backFacingTriangles);
+    result.efficiency = cullEfficiency(result.trianglesCulled, result.backFacingTriangles);
     result.nanosecondsPerCluster =
         clusterCount && !views.empty() ? totalNanoseconds / double(clusterCount * views.size()) : 0.0;
     return result;

@@ -93,6 +93,9 @@ struct RunStatistics {
 Partition buildPartition(const Mesh& mesh, const FaceGeometry& faces, const Settings& settings,
                          const ProgressCallback& progress = {});
 
+// Triangles culled / back-facing triangles; 1 when nothing faces away (nothing to cull, nothing lost).
+double cullEfficiency(size_t trianglesCulled, size_t backFacingTriangles);
+
 // Statistics for one (cone, test) over the given views from prepared bounds. `progress` hears of
 // every 16th view and may cancel there (OperationCancelled).
 TestStatistics measureCulling(const CullingInput& input, const std::vector<Eye>& views, CullTest test,

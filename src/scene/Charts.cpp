@@ -65,7 +65,8 @@ HalfAngleHistogram halfAngleHistogram(const std::vector<ClusterStatistics>& clus
     return histogram;
 }
 
-void plotEfficiencyPerView(vtkChartXY* chart, const std::vector<ViewStatistics>& views, long currentView) {
+void plotEfficiencyPerView(vtkChartXY* chart, const std::vector<ViewStatistics>& views, long currentView,
+                           const std::vector<double>* pinned) {
     chart->ClearPlots();
     std::vector<double> index, efficiency;
     for (const ViewStatistics& view : views) {
@@ -78,6 +79,15 @@ void plotEfficiencyPerView(vtkChartXY* chart, const std::vector<ViewStatistics>&
         line->SetInputData(twoColumnTable("view", index, "efficiency", efficiency), 0, 1);
         line->SetColor(40, 110, 220, 255);
         line->SetWidth(2.0);
+        line->SetLabel(pinned ? "B (current)" : "efficiency");
+    }
+    const bool comparing = pinned && pinned->size() == views.size() && views.size() >= 2;
+    if (comparing) {
+        vtkPlot* line = chart->AddPlot(vtkChart::LINE);
+        line->SetInputData(twoColumnTable("view", index, "A (pinned)", *pinned), 0, 1);
+        line->SetColor(245, 130, 15, 255);
+        line->SetWidth(2.0);
+        line->SetLabel("A (pinned)");
     }
     if (currentView >= 0 && size_t(currentView) < views.size()) {
         vtkPlot* marker = chart->AddPlot(vtkChart::POINTS);
@@ -85,12 +95,13 @@ void plotEfficiencyPerView(vtkChartXY* chart, const std::vector<ViewStatistics>&
             twoColumnTable("view", {index[size_t(currentView)]}, "current view", {efficiency[size_t(currentView)]}), 0, 1);
         marker->SetColor(230, 30, 200, 255);
         marker->SetWidth(8.0);
+        marker->SetLabel("current view");
         if (auto* points = vtkPlotPoints::SafeDownCast(marker)) points->SetMarkerStyle(vtkPlotPoints::CIRCLE);
     }
     setAxes(chart, "orbit view", "efficiency");
     fixRange(chart->GetAxis(vtkAxis::LEFT), 0.0, 1.0);
     fixRange(chart->GetAxis(vtkAxis::BOTTOM), 0.0, std::max(1.0, double(views.size()) - 1.0));
-    chart->SetShowLegend(false);
+    chart->SetShowLegend(comparing);
     chart->Modified();
 }
 

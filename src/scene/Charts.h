@@ -23,7 +23,10 @@ HalfAngleHistogram halfAngleHistogram(const std::vector<ClusterStatistics>& clus
 
 // Replaces the chart's plots: efficiency (triangles culled / back-facing) per view as a line, and
 // the current view as a marked point when currentView is a row index. Axes: view, efficiency [0, 1].
-void plotEfficiencyPerView(vtkChartXY* chart, const std::vector<ViewStatistics>& views, long currentView = -1);
+// With `pinned` (one efficiency per view of a pinned configuration A), A's curve too and a legend
+// naming the two.
+void plotEfficiencyPerView(vtkChartXY* chart, const std::vector<ViewStatistics>& views, long currentView = -1,
+                           const std::vector<double>* pinned = nullptr);
 
 // Replaces the chart's plots: bars of halfAngleHistogram at the bin centres, and one bar for the
 // uncullable clusters past 90 degrees in another colour. Axes: half-angle (degrees), clusters.

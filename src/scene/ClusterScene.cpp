@@ -142,6 +142,11 @@ void ClusterScene::setFaceLoss(const std::vector<FaceLoss>& loss) {
     impl_->updateLegend();
 }
 
+void ClusterScene::setFaceComparison(const std::vector<uint8_t>& comparison) {
+    impl_->faces.setFaceComparison(comparison);
+    impl_->updateLegend();
+}
+
 void ClusterScene::setClusterFractions(const std::vector<double>& cullFraction, const std::vector<double>& oracleFraction,
                                        const std::vector<uint8_t>& cullable) {
     impl_->data.tables.setFractions(cullFraction, oracleFraction, cullable);

@@ -80,6 +80,9 @@ public:
     void setFaceFacing(const std::vector<Facing>& facing);
     // What happened to each face from the eye (core faceLosses). Writes the per-face "loss" array.
     void setFaceLoss(const std::vector<FaceLoss>& loss);
+    // The A/B comparison per face for the eye (core FaceDiff values); empty clears it. Writes the
+    // per-face "comparison" array.
+    void setFaceComparison(const std::vector<uint8_t>& comparison);
     // The cull map's per-cluster shares (ClusterSet::cullMap) for the fraction colourings, and which
     // clusters have a cone at all. Rewrites K table entries. Throws std::invalid_argument on a size mismatch.
     void setClusterFractions(const std::vector<double>& cullFraction, const std::vector<double>& oracleFraction,

@@ -30,7 +30,8 @@ void setEntry(vtkLookupTable* table, size_t index, const Rgb& colour, double alp
 ClusterTables::ClusterTables(const std::vector<Rgb>& clusterColours)
     : palette(indexedTable(clusterColours.size())), decision(indexedTable(clusterColours.size())),
       visible(indexedTable(clusterColours.size())), facing(indexedTable(4)), cullFraction(indexedTable(clusterColours.size())),
-      oracleFraction(indexedTable(clusterColours.size())), loss(indexedTable(5)), colours_(clusterColours) {
+      oracleFraction(indexedTable(clusterColours.size())), loss(indexedTable(5)), comparison(indexedTable(5)),
+      colours_(clusterColours) {
     for (size_t c = 0; c < colours_.size(); ++c) setEntry(palette, c, colours_[c]);
     fill(nullptr, nullptr);
     setEntry(facing, size_t(Facing::Front), SceneColours::front);
@@ -47,6 +48,11 @@ ClusterTables::ClusterTables(const std::vector<Rgb>& clusterColours)
     setEntry(loss, 2, SceneColours::testLoss);
     setEntry(loss, 3, SceneColours::partitionLoss);
     setEntry(loss, 4, SceneColours::unclassified);
+    setEntry(comparison, 0, SceneColours::culledByNeither);
+    setEntry(comparison, 1, SceneColours::onlyA);
+    setEntry(comparison, 2, SceneColours::onlyB);
+    setEntry(comparison, 3, SceneColours::culledByBoth);
+    setEntry(comparison, 4, SceneColours::unclassified);
 }
 
 void ClusterTables::setFractions(const std::vector<double>& cull, const std::vector<double>& oracle,
@@ -83,7 +89,8 @@ void ClusterTables::clearDecisions() {
 vtkLookupTable* ClusterTables::forGlyphs(FaceColoring coloring) const {
     switch (coloring) {
     case FaceColoring::CullDecision:
-    case FaceColoring::Loss: return decision;
+    case FaceColoring::Loss:
+    case FaceColoring::Comparison: return decision;
     case FaceColoring::CullFraction: return cullFraction;
     case FaceColoring::OracleFraction: return oracleFraction;
     case FaceColoring::Cluster:

@@ -51,6 +51,7 @@ public:
     vtkSmartPointer<vtkLookupTable> facing;    // 4 entries: one per Facing value and "not classified"
     vtkSmartPointer<vtkLookupTable> cullFraction, oracleFraction;  // K entries each: the fraction ramp
     vtkSmartPointer<vtkLookupTable> loss;      // 5 entries: one per FaceLoss value and "not measured"
+    vtkSmartPointer<vtkLookupTable> comparison;  // 5 entries: one per FaceDiff value and "not compared"
 
 private:
     void fill(const std::vector<uint8_t>* culled, const std::vector<uint8_t>* allBackFacing);

@@ -25,6 +25,9 @@ void FacesLayer::recolour(FaceColoring coloring) {
     } else if (coloring == FaceColoring::Loss) {
         mapper_->SelectColorArray(lossArrayName);
         mapper_->SetLookupTable(data_.tables.loss);
+    } else if (coloring == FaceColoring::Comparison) {
+        mapper_->SelectColorArray(comparisonArrayName);
+        mapper_->SetLookupTable(data_.tables.comparison);
     } else {
         mapper_->SelectColorArray(clusterIdArrayName);
         mapper_->SetLookupTable(data_.tables.forGlyphs(coloring));
@@ -59,6 +62,15 @@ void FacesLayer::addLegendEntries(FaceColoring coloring, std::vector<LegendEntry
         entries.push_back({"lost to the test" + countLabel(lossCounts_[2]), {SceneColours::testLoss}});
         entries.push_back({"lost to the partition" + countLabel(lossCounts_[3]), {SceneColours::partitionLoss}});
         entries.push_back({"visible or degenerate" + countLabel(lossCounts_[0]), {SceneColours::drawn}});
+    } else if (coloring == FaceColoring::Comparison) {
+        if (!hasComparison_) {
+            entries.push_back({"no A to compare with (pin one)", {SceneColours::unclassified}});
+            return;
+        }
+        entries.push_back({"culled by A only" + countLabel(comparisonTriangles_[1]) + " tris", {SceneColours::onlyA}});
+        entries.push_back({"culled by B only" + countLabel(comparisonTriangles_[2]) + " tris", {SceneColours::onlyB}});
+        entries.push_back({"culled by both" + countLabel(comparisonTriangles_[3]) + " tris", {SceneColours::culledByBoth}});
+        entries.push_back({"culled by neither" + countLabel(comparisonTriangles_[0]) + " tris", {SceneColours::culledByNeither}});
     } else {
         if (!hasFacing_) entries.push_back({"faces not classified yet", {SceneColours::unclassified}});
         entries.push_back({"front-facing face", {SceneColours::front}});
@@ -77,6 +89,22 @@ void FacesLayer::setFaceFacing(const std::vector<Facing>& facing) {
               data_.facing->GetPointer(0));
     data_.facing->Modified();
     hasFacing_ = true;
+}
+
+void FacesLayer::setFaceComparison(const std::vector<uint8_t>& comparison) {
+    const size_t faceCount = data_.clusterOfFace.size();
+    if (!comparison.empty() && comparison.size() != faceCount)
+        throw std::invalid_argument("setFaceComparison: expected " + std::to_string(faceCount) + " faces, got " +
+                                    std::to_string(comparison.size()));
+    comparisonTriangles_ = {};
+    uint8_t* values = data_.comparison->GetPointer(0);
+    for (size_t f = 0; f < faceCount; ++f) {
+        values[f] = comparison.empty() ? 4 : std::min<uint8_t>(comparison[f], 3);
+        // Triangles, as the comparison's statistics count them.
+        if (!comparison.empty()) comparisonTriangles_[values[f]] += data_.mesh.faceSize(f) - 2;
+    }
+    data_.comparison->Modified();
+    hasComparison_ = !comparison.empty();
 }
 
 void FacesLayer::setFaceLoss(const std::vector<FaceLoss>& loss) {

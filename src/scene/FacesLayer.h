@@ -26,6 +26,9 @@ public:
     // The eye's per-face loss classes (faceLosses) into the mesh's "loss" array, counted for the legend
     // in faces. Throws std::invalid_argument on a size mismatch.
     void setFaceLoss(const std::vector<FaceLoss>& loss);
+    // Per face the A/B comparison for the eye (core FaceDiff values), counted in triangles for the
+    // legend; empty: nothing compared. Throws std::invalid_argument on a size mismatch.
+    void setFaceComparison(const std::vector<uint8_t>& comparison);
 
 private:
     vtkSmartPointer<vtkPolyDataMapper> mapper_;
@@ -33,6 +36,8 @@ private:
     bool hasFacing_ = false;
     bool hasLoss_ = false;
     std::array<size_t, 4> lossCounts_{};
+    bool hasComparison_ = false;
+    std::array<size_t, 4> comparisonTriangles_{};
 };
 
 }  // namespace conescope

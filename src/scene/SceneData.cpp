@@ -28,7 +28,8 @@ SceneData::SceneData(const Mesh& mesh, const std::vector<glm::vec3>& world, cons
     : clusterOfFace(partition.clusterOfFace), bounds(bounds), palette(clusterPalette(clusterAdjacency(mesh, partition))),
       worldBox(computeAabb(world)), meanEdge(meanEdgeLength(mesh, world)), points(pointsFrom(world)),
       meshData(meshPolyData(mesh, points, partition)), facing(vtkSmartPointer<vtkUnsignedCharArray>::New()),
-      loss(vtkSmartPointer<vtkUnsignedCharArray>::New()), tables(palette) {
+      loss(vtkSmartPointer<vtkUnsignedCharArray>::New()), comparison(vtkSmartPointer<vtkUnsignedCharArray>::New()),
+      tables(palette) {
     this->mesh.faceStarts = mesh.faceStarts;
     this->mesh.faceVertices = mesh.faceVertices;
     facing->SetName(facingArrayName);
@@ -39,6 +40,10 @@ SceneData::SceneData(const Mesh& mesh, const std::vector<glm::vec3>& world, cons
     loss->SetNumberOfTuples(vtkIdType(mesh.faceCount()));
     loss->FillValue(4);
     meshData->GetCellData()->AddArray(loss);
+    comparison->SetName(comparisonArrayName);
+    comparison->SetNumberOfTuples(vtkIdType(mesh.faceCount()));
+    comparison->FillValue(4);
+    meshData->GetCellData()->AddArray(comparison);
 }
 
 }  // namespace conescope

@@ -50,9 +50,10 @@ struct SceneData {
     double meanEdge = 0.0;
 
     vtkSmartPointer<vtkPoints> points;       // world positions, shared by the mesh, the borders and the outline
-    vtkSmartPointer<vtkPolyData> meshData;   // one polygon per face; cell arrays cluster_id, facing and loss
+    vtkSmartPointer<vtkPolyData> meshData;   // one polygon per face; cell arrays cluster_id, facing, loss and comparison
     vtkSmartPointer<vtkUnsignedCharArray> facing;  // meshData's "facing" array
     vtkSmartPointer<vtkUnsignedCharArray> loss;    // meshData's "loss" array
+    vtkSmartPointer<vtkUnsignedCharArray> comparison;  // meshData's "comparison" array
     ClusterTables tables;
 };
 

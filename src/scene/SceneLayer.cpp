@@ -102,7 +102,7 @@ std::vector<Rgb> fractionLegendColours() {
 
 // Glyphs take the faces' cluster colours, or the decision colours in decision mode.
 std::vector<Rgb> glyphLegendColours(FaceColoring coloring) {
-    if (coloring == FaceColoring::CullDecision || coloring == FaceColoring::Loss)
+    if (coloring == FaceColoring::CullDecision || coloring == FaceColoring::Loss || coloring == FaceColoring::Comparison)
         return {SceneColours::culled, SceneColours::missedCull, SceneColours::drawn};
     if (coloring == FaceColoring::CullFraction || coloring == FaceColoring::OracleFraction) return fractionLegendColours();
     return clusterLegendColours();

@@ -30,7 +30,8 @@ std::string toString(Layer layer) {
 const std::vector<FaceColoring>& allFaceColorings() {
     static const std::vector<FaceColoring> colorings = {FaceColoring::Cluster,      FaceColoring::CullDecision,
                                                         FaceColoring::FaceFacing,   FaceColoring::CullFraction,
-                                                        FaceColoring::OracleFraction, FaceColoring::Loss};
+                                                        FaceColoring::OracleFraction, FaceColoring::Loss,
+                                                        FaceColoring::Comparison};
     return colorings;
 }
 
@@ -53,6 +54,7 @@ std::string toString(FaceColoring coloring) {
     case FaceColoring::CullFraction: return "cull-fraction";
     case FaceColoring::OracleFraction: return "oracle-fraction";
     case FaceColoring::Loss: return "loss";
+    case FaceColoring::Comparison: return "compare";
     }
     return "unknown";
 }

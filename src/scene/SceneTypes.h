@@ -18,6 +18,9 @@ inline const char* const facingArrayName = "facing";
 // Per-face FaceLoss value (core/Pipeline.h: 0 visible, 1 culled, 2 test loss, 3 partition loss; 4 not
 // measured yet), written by setFaceLoss.
 inline const char* const lossArrayName = "loss";
+// Per-face A/B comparison for the eye (core FaceDiff: 0 culled by neither, 1 by A only, 2 by B only,
+// 3 by both; 4 not compared), written by setFaceComparison.
+inline const char* const comparisonArrayName = "comparison";
 
 // Switchable parts of the scene. Default visibility: Faces, Borders, Cones, Eye, Highlight, Test, Legend on;
 // Normals, Boxes, Spheres off.
@@ -47,6 +50,7 @@ enum class FaceColoring {
     CullFraction,  // per cluster, the share of directions the test culls it from (setClusterFractions)
     OracleFraction,  // per cluster, the share from which every face faces away (setClusterFractions)
     Loss,          // per face for the eye: visible / culled / test loss / partition loss (setFaceLoss)
+    Comparison,    // per face for the eye: culled by A only / B only / both / neither (setFaceComparison)
 };
 const std::vector<FaceColoring>& allFaceColorings();
 std::string toString(FaceColoring);
@@ -71,6 +75,11 @@ struct SceneColours {
     // The loss classes: a back face drawn because of the test, because of the partition.
     static constexpr Rgb testLoss{1.00, 0.55, 0.05};
     static constexpr Rgb partitionLoss{0.85, 0.20, 0.55};
+    // The A/B comparison: culled by one configuration only, by both, by neither.
+    static constexpr Rgb onlyA{1.00, 0.50, 0.05};
+    static constexpr Rgb onlyB{0.15, 0.75, 0.95};
+    static constexpr Rgb culledByBoth{0.62, 0.62, 0.66};
+    static constexpr Rgb culledByNeither{0.22, 0.24, 0.30};
 };
 // The colour ramp of the fraction colourings at t in [0, 1] (dark blue through teal to yellow), and
 // the largest fraction a cluster can have: (1 - sin 0) / 2, a flat cluster.

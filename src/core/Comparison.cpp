@@ -1,0 +1,167 @@
+#include "Comparison.h"
+
+#include <algorithm>
+#include <optional>
+#include <stdexcept>
+
+#include "BatchCulling.h"
+#include "SettingsSchema.h"
+
+namespace conescope {
+
+namespace {
+
+// Both sides see the same mesh from the same eyes: these are given once, for both.
+bool sharedOption(const std::string& flag) {
+    return flag == "views" || flag == "distance" || flag == "eye" || flag == "ortho" || flag == "fix-winding";
+}
+
+const SettingField* configurationField(const std::string& key) {
+    for (const SettingField& field : settingFields())
+        if (field.flag == key && !sharedOption(key)) return &field;
+    return nullptr;
+}
+
+std::string joined(const std::vector<std::string>& items) {
+    std::string text;
+    for (const std::string& item : items) text += (text.empty() ? "" : ", ") + item;
+    return text;
+}
+
+struct ConfigurationPair {
+    std::string key;
+    std::optional<std::string> value;  // none: "K" alone
+};
+
+// "K=V" pieces split at commas; a piece that does not start with a known option continues the value
+// before it.
+std::vector<ConfigurationPair> configurationPairs(const std::string& text) {
+    std::vector<ConfigurationPair> pairs;
+    size_t start = 0;
+    while (start <= text.size()) {
+        const size_t comma = std::min(text.find(',', start), text.size());
+        const std::string piece = text.substr(start, comma - start);
+        const size_t equals = piece.find('=');
+        const std::string key = piece.substr(0, equals);
+        if (pairs.empty() || sharedOption(key) || configurationField(key)) {
+            pairs.push_back({key, equals == std::string::npos ? std::nullopt : std::optional(piece.substr(equals + 1))});
+        } else {
+            std::optional<std::string>& value = pairs.back().value;
+            value = (value ? *value : std::string()) + "," + piece;
+        }
+        start = comma + 1;
+    }
+    return pairs;
+}
+
+// An on/off option: K alone or K=on/off.
+bool flagValue(const std::string& key, const std::optional<std::string>& value) {
+    if (!value || *value == "on" || *value == "true" || *value == "1") return true;
+    if (*value == "off" || *value == "false" || *value == "0") return false;
+    throw std::invalid_argument(key + "=" + *value + ": expected " + key + " alone or " + key + "=on/off");
+}
+
+}  // namespace
+
+std::vector<std::string> configurationKeys() {
+    std::vector<std::string> keys;
+    for (const SettingField& field : settingFields())
+        if (!sharedOption(field.flag)) keys.push_back(field.flag);
+    return keys;
+}
+
+Settings parseConfiguration(const std::string& text, const Settings& base) {
+    Settings settings = base;
+    if (text.empty()) return settings;
+    for (const auto& [key, value] : configurationPairs(text)) {
+        if (sharedOption(key))
+            throw std::invalid_argument("'" + key + "' is shared by both sides: give it as --" + key + " outside --a and --b");
+        const SettingField* field = configurationField(key);
+        if (!field)
+            throw std::invalid_argument("unknown option '" + key + "' in a configuration (expected K=V with K one of: " +
+                                        joined(configurationKeys()) + ")");
+        if (field->kind == SettingKind::Flag) {
+            field->assign(settings, flagValue(key, value));
+            continue;
+        }
+        if (!value) throw std::invalid_argument("'" + key + "' needs a value: " + key + "=" + field->valueName);
+        parseSetting(*field, *value, settings);
+    }
+    return settings;
+}
+
+bool Comparison::clusterCountsDiffer() const {
+    const size_t smaller = std::min(clustersA, clustersB), larger = std::max(clustersA, clustersB);
+    return double(larger) > 1.05 * double(smaller);
+}
+
+std::string clusterCountWarning(const Comparison& comparison) {
+    if (!comparison.clusterCountsDiffer()) return {};
+    return "A has " + std::to_string(comparison.clustersA) + " clusters and B " + std::to_string(comparison.clustersB) +
+           ", more than 5% apart: smaller clusters cull more for free, so compare at equal counts (--clusters K)";
+}
+
+std::vector<FaceDiff> faceDiff(const ClusterSet& a, const std::vector<uint8_t>& culledA, const ClusterSet& b,
+                               const std::vector<uint8_t>& culledB) {
+    const std::vector<uint32_t>& clusterA = a.partition.clusterOfFace;
+    const std::vector<uint32_t>& clusterB = b.partition.clusterOfFace;
+    if (clusterA.size() != clusterB.size()) throw std::invalid_argument("faceDiff: A and B partition different meshes");
+    std::vector<FaceDiff> diff(clusterA.size());
+    for (size_t f = 0; f < diff.size(); ++f)
+        diff[f] = FaceDiff((culledA[clusterA[f]] ? 1 : 0) | (culledB[clusterB[f]] ? 2 : 0));
+    return diff;
+}
+
+Comparison compareClusterSets(const PreparedMesh& prepared, const ClusterSet& a, const ClusterSet& b,
+                              const std::vector<Eye>& views, const ProgressCallback& progress) {
+    const Mesh& mesh = prepared.mesh();
+    if (a.partition.clusterOfFace.size() != mesh.faceCount() || b.partition.clusterOfFace.size() != mesh.faceCount())
+        throw std::invalid_argument("compareClusterSets: A and B must partition the prepared mesh");
+    Comparison comparison;
+    comparison.testA = displayedTest(a.settings), comparison.testB = displayedTest(b.settings);
+    comparison.coneA = a.bounds.coneMethod, comparison.coneB = b.bounds.coneMethod;
+    comparison.clustersA = a.bounds.count(), comparison.clustersB = b.bounds.count();
+    comparison.viewsCulledOnlyA.assign(mesh.faceCount(), 0);
+    comparison.viewsCulledOnlyB.assign(mesh.faceCount(), 0);
+    // Each side's float batch once, as measureCulling makes it for its views.
+    const ClusterBatch batchA = makeClusterBatch(a.bounds), batchB = makeClusterBatch(b.bounds);
+    const CullingInput inputA{mesh, prepared.world, prepared.faces, a.bounds, &batchA};
+    const CullingInput inputB{mesh, prepared.world, prepared.faces, b.bounds, &batchB};
+    size_t culledA = 0, culledB = 0;
+    for (size_t v = 0; v < views.size(); ++v) {
+        if (progress && v % 16 == 0 && !progress(double(v) / double(views.size()), "views")) throw OperationCancelled();
+        const Eye& eye = views[v];
+        const std::vector<Facing> facing = classifyFaces(mesh, prepared.world, prepared.faces, eye);
+        const std::vector<FaceDiff> diff =
+            faceDiff(a, cullClusters(inputA, eye, comparison.testA), b, cullClusters(inputB, eye, comparison.testB));
+        ViewComparison view;
+        view.view = v;
+        view.eye = eye;
+        for (size_t f = 0; f < diff.size(); ++f) {
+            if (facing[f] != Facing::Back) continue;  // as triangles_culled: back-facing triangles only
+            const size_t triangles = mesh.faceSize(f) - 2;
+            view.backFacingTriangles += triangles;
+            switch (diff[f]) {
+                case FaceDiff::OnlyA: view.trianglesCulledOnlyA += triangles, ++comparison.viewsCulledOnlyA[f]; break;
+                case FaceDiff::OnlyB: view.trianglesCulledOnlyB += triangles, ++comparison.viewsCulledOnlyB[f]; break;
+                case FaceDiff::Both: view.trianglesCulledBoth += triangles; break;
+                case FaceDiff::Neither: break;
+            }
+        }
+        const size_t viewA = view.trianglesCulledOnlyA + view.trianglesCulledBoth;
+        const size_t viewB = view.trianglesCulledOnlyB + view.trianglesCulledBoth;
+        view.efficiencyA = cullEfficiency(viewA, view.backFacingTriangles);
+        view.efficiencyB = cullEfficiency(viewB, view.backFacingTriangles);
+        culledA += viewA, culledB += viewB;
+        comparison.trianglesCulledOnlyA += view.trianglesCulledOnlyA;
+        comparison.trianglesCulledOnlyB += view.trianglesCulledOnlyB;
+        comparison.trianglesCulledBoth += view.trianglesCulledBoth;
+        comparison.backFacingTriangles += view.backFacingTriangles;
+        comparison.views.push_back(view);
+    }
+    comparison.efficiencyA = cullEfficiency(culledA, comparison.backFacingTriangles);
+    comparison.efficiencyB = cullEfficiency(culledB, comparison.backFacingTriangles);
+    return comparison;
+}
+
+}  // namespace conescope

@@ -1,0 +1,68 @@
+// Two configurations (A and B) of the same prepared mesh compared over the same eyes: which
+// back-facing triangles each culls that the other does not. A and B may differ in anything that
+// makes clusters or decides a cull (builder, cluster file, limits, cluster count, cone, sphere, test,
+// cone weight); the mesh, its winding repair and the views are shared. Each side culls with its
+// displayed (first) cone and test, as the product does (measureEye).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "Pipeline.h"
+
+namespace conescope {
+
+// "K=V,K=V" on top of `base`: K a run option's flag without the dashes (builder=meshopt, max-tris=64,
+// cone=average, test=sphere, cluster-file=ids.txt, ...), V its text as the option takes it; an on/off
+// option takes K alone or K=on/off (true/false, 1/0). A piece without "=" whose text is not an option
+// continues the value before it, so lists and paths keep their commas (cone=minimal,average). The
+// shared options (views, distance, eye, ortho, fix-winding) are refused: both sides use the same.
+// Throws std::invalid_argument naming the key and what it accepts.
+Settings parseConfiguration(const std::string& text, const Settings& base);
+
+// The run options a configuration text may set (every schema flag but the shared ones).
+std::vector<std::string> configurationKeys();
+
+struct ViewComparison {
+    size_t view = 0;
+    Eye eye;
+    size_t trianglesCulledOnlyA = 0, trianglesCulledOnlyB = 0, trianglesCulledBoth = 0;
+    size_t backFacingTriangles = 0;
+    double efficiencyA = 0.0, efficiencyB = 0.0;
+};
+
+// What a face's clusters did from one eye.
+enum class FaceDiff : uint8_t { Neither = 0, OnlyA = 1, OnlyB = 2, Both = 3 };
+
+struct Comparison {
+    CullTest testA = CullTest::Apex, testB = CullTest::Apex;
+    ConeMethod coneA = ConeMethod::Minimal, coneB = ConeMethod::Minimal;
+    std::vector<ViewComparison> views;
+    // Summed over the views. Back-facing triangles only, as triangles_culled counts them: only A +
+    // both is A's triangles_culled and only B + both is B's, view by view and in total.
+    size_t trianglesCulledOnlyA = 0, trianglesCulledOnlyB = 0, trianglesCulledBoth = 0, backFacingTriangles = 0;
+    double efficiencyA = 0.0, efficiencyB = 0.0;
+    // Per face of the mesh: the views in which it faced away and only A (only B) culled it.
+    std::vector<uint32_t> viewsCulledOnlyA, viewsCulledOnlyB;
+    size_t clustersA = 0, clustersB = 0;
+    // More than 5 % apart, relative to the smaller count: smaller clusters cull more for free.
+    bool clusterCountsDiffer() const;
+};
+
+// A sentence for people when the cluster counts differ by more than 5 %, else "".
+std::string clusterCountWarning(const Comparison& comparison);
+
+// Per face, from each side's per-cluster decisions for one eye (EyeMeasurement::culled): whether
+// its cluster in A, in B was culled. By decision alone: a degenerate face in a culled cluster
+// counts as culled here, where the statistics count back-facing triangles only.
+std::vector<FaceDiff> faceDiff(const ClusterSet& a, const std::vector<uint8_t>& culledA, const ClusterSet& b,
+                               const std::vector<uint8_t>& culledB);
+
+// A (`a`) against B (`b`), both of `prepared`, from every eye of `views`; each side with its
+// displayed test through the product's path (cullClusters), so each side's numbers are its
+// measureCulling's. The views of a run are viewsFor(settings, prepared.box). `progress` hears of every 16th view and may cancel (OperationCancelled).
+Comparison compareClusterSets(const PreparedMesh& prepared, const ClusterSet& a, const ClusterSet& b,
+                              const std::vector<Eye>& views, const ProgressCallback& progress = {});
+
+}  // namespace conescope

@@ -1,0 +1,159 @@
+// A/B comparison: identities against each side's own statistics, A = B, the cluster-count warning
+// and the K=V configuration text.
+#include <gtest/gtest.h>
+
+#include <memory>
+
+#include "TestMeshes.h"
+#include "core/Comparison.h"
+
+using namespace conescope;
+
+namespace {
+
+PreparedMesh preparedTorus() {
+    return prepareMesh(std::make_shared<Mesh>(testmesh::torus(1.0, 0.35, 64, 24)), "torus", false);
+}
+
+Settings withBuilder(Builder builder, size_t maxTriangles = 48) {
+    Settings settings;
+    settings.builder = builder;
+    settings.limits.maxTriangles = maxTriangles;
+    settings.views = 24;
+    return settings;
+}
+
+// only A + both is A's triangles_culled, only B + both is B's, view by view and in total.
+void expectIdentities(const PreparedMesh& prepared, const ClusterSet& a, const ClusterSet& b, const std::vector<Eye>& views) {
+    const Comparison comparison = compareClusterSets(prepared, a, b, views);
+    const TestStatistics statsA = measureCulling(cullingInput(prepared, a), views, displayedTest(a.settings));
+    const TestStatistics statsB = measureCulling(cullingInput(prepared, b), views, displayedTest(b.settings));
+    ASSERT_EQ(comparison.views.size(), views.size());
+    for (size_t v = 0; v < views.size(); ++v) {
+        const ViewComparison& view = comparison.views[v];
+        EXPECT_EQ(view.trianglesCulledOnlyA + view.trianglesCulledBoth, statsA.views[v].trianglesCulled) << "view " << v;
+        EXPECT_EQ(view.trianglesCulledOnlyB + view.trianglesCulledBoth, statsB.views[v].trianglesCulled) << "view " << v;
+        EXPECT_EQ(view.backFacingTriangles, statsA.views[v].backFacingTriangles);
+        EXPECT_DOUBLE_EQ(view.efficiencyA, statsA.views[v].efficiency);
+        EXPECT_DOUBLE_EQ(view.efficiencyB, statsB.views[v].efficiency);
+    }
+    EXPECT_EQ(comparison.trianglesCulledOnlyA + comparison.trianglesCulledBoth, statsA.trianglesCulled);
+    EXPECT_EQ(comparison.trianglesCulledOnlyB + comparison.trianglesCulledBoth, statsB.trianglesCulled);
+    EXPECT_DOUBLE_EQ(comparison.efficiencyA, statsA.efficiency);
+    EXPECT_DOUBLE_EQ(comparison.efficiencyB, statsB.efficiency);
+    // The per-face view counts add up to the triangles (all faces are triangles here).
+    size_t onlyA = 0, onlyB = 0;
+    for (size_t f = 0; f < comparison.viewsCulledOnlyA.size(); ++f)
+        onlyA += comparison.viewsCulledOnlyA[f], onlyB += comparison.viewsCulledOnlyB[f];
+    EXPECT_EQ(onlyA, comparison.trianglesCulledOnlyA);
+    EXPECT_EQ(onlyB, comparison.trianglesCulledOnlyB);
+}
+
+}  // namespace
+
+TEST(Comparison, SameConfigurationDiffersNowhere) {
+    const PreparedMesh prepared = preparedTorus();
+    const ClusterSet clusters = buildClusters(prepared, withBuilder(Builder::Optimized));
+    const std::vector<Eye> views = orbitOf(clusters.settings, prepared.box);
+    const Comparison comparison = compareClusterSets(prepared, clusters, clusters, views);
+    for (const ViewComparison& view : comparison.views) {
+        EXPECT_EQ(view.trianglesCulledOnlyA, 0u);
+        EXPECT_EQ(view.trianglesCulledOnlyB, 0u);
+        EXPECT_DOUBLE_EQ(view.efficiencyA, view.efficiencyB);
+    }
+    EXPECT_GT(comparison.trianglesCulledBoth, 0u);
+    for (size_t f = 0; f < comparison.viewsCulledOnlyA.size(); ++f) {
+        EXPECT_EQ(comparison.viewsCulledOnlyA[f], 0u);
+        EXPECT_EQ(comparison.viewsCulledOnlyB[f], 0u);
+    }
+    EXPECT_FALSE(comparison.clusterCountsDiffer());
+    EXPECT_EQ(clusterCountWarning(comparison), "");
+}
+
+TEST(Comparison, EachSideAddsUpToItsOwnStatistics) {
+    const PreparedMesh prepared = preparedTorus();
+    const Settings base = withBuilder(Builder::Optimized);
+    const ClusterSet optimized = buildClusters(prepared, base);
+    const ClusterSet meshopt = buildClusters(prepared, withBuilder(Builder::Meshopt));
+    Settings averageSphere = base;
+    averageSphere.cones = {ConeMethod::Average};
+    averageSphere.tests = {CullTest::Sphere};
+    const ClusterSet average = buildClusters(prepared, averageSphere);
+    Settings orthographic = base;
+    orthographic.orthographic = true;
+    for (const std::vector<Eye>& views : {orbitOf(base, prepared.box), orbitOf(orthographic, prepared.box)}) {
+        expectIdentities(prepared, optimized, meshopt, views);
+        expectIdentities(prepared, meshopt, optimized, views);
+        expectIdentities(prepared, optimized, average, views);
+    }
+    // Different partitions really do cull different faces.
+    const Comparison comparison = compareClusterSets(prepared, optimized, meshopt, orbitOf(base, prepared.box));
+    EXPECT_GT(comparison.trianglesCulledOnlyA + comparison.trianglesCulledOnlyB, 0u);
+}
+
+TEST(Comparison, FaceDiffFollowsEachSidesClusterDecision) {
+    const PreparedMesh prepared = preparedTorus();
+    const ClusterSet a = buildClusters(prepared, withBuilder(Builder::Optimized));
+    const ClusterSet b = buildClusters(prepared, withBuilder(Builder::Meshlet));
+    const Eye eye = Eye::perspective({0.5, -2.0, 2.5});
+    const EyeMeasurement measuredA = measureEye(prepared, a, eye, CullTest::Apex);
+    const EyeMeasurement measuredB = measureEye(prepared, b, eye, CullTest::Apex);
+    const std::vector<FaceDiff> diff = faceDiff(a, measuredA.culled, b, measuredB.culled);
+    ASSERT_EQ(diff.size(), prepared.mesh().faceCount());
+    size_t counts[4] = {0, 0, 0, 0};
+    for (size_t f = 0; f < diff.size(); ++f) {
+        const bool byA = measuredA.culled[a.partition.clusterOfFace[f]], byB = measuredB.culled[b.partition.clusterOfFace[f]];
+        EXPECT_EQ(diff[f], FaceDiff((byA ? 1 : 0) | (byB ? 2 : 0)));
+        ++counts[size_t(diff[f])];
+    }
+    EXPECT_GT(counts[0], 0u);
+    EXPECT_GT(counts[3], 0u);
+}
+
+TEST(Comparison, ClusterCountsMoreThanFivePercentApartAreWarnedAbout) {
+    const PreparedMesh prepared = preparedTorus();
+    const ClusterSet large = buildClusters(prepared, withBuilder(Builder::Meshlet, 96));
+    const ClusterSet small = buildClusters(prepared, withBuilder(Builder::Meshlet, 24));
+    const Comparison comparison = compareClusterSets(prepared, large, small, {Eye::perspective({0, 0, 4})});
+    EXPECT_EQ(comparison.clustersA, large.bounds.count());
+    EXPECT_EQ(comparison.clustersB, small.bounds.count());
+    EXPECT_TRUE(comparison.clusterCountsDiffer());
+    EXPECT_NE(clusterCountWarning(comparison).find("more than 5%"), std::string::npos);
+    Comparison close = comparison;
+    close.clustersA = 100, close.clustersB = 105;
+    EXPECT_FALSE(close.clusterCountsDiffer());
+    close.clustersB = 106;
+    EXPECT_TRUE(close.clusterCountsDiffer());
+}
+
+TEST(Comparison, ConfigurationTextSetsOptionsOnTopOfTheBase) {
+    Settings base;
+    base.limits.maxTriangles = 100;
+    const Settings a = parseConfiguration("builder=meshopt,max-verts=32", base);
+    EXPECT_EQ(a.builder, Builder::Meshopt);
+    EXPECT_EQ(a.limits.maxVertices, 32u);
+    EXPECT_EQ(a.limits.maxTriangles, 100u);  // from the base
+    const Settings lists = parseConfiguration("cone=average,minimal,test=sphere", base);
+    EXPECT_EQ(lists.cones, (std::vector<ConeMethod>{ConeMethod::Average, ConeMethod::Minimal}));
+    EXPECT_EQ(lists.tests, (std::vector<CullTest>{CullTest::Sphere}));
+    EXPECT_EQ(parseConfiguration("builder=file,cluster-file=ids,a.txt", base).clusterFile, "ids,a.txt");
+    EXPECT_EQ(parseConfiguration("", base).limits.maxTriangles, 100u);
+}
+
+TEST(Comparison, ConfigurationTextRefusesSharedUnknownAndBadOptions) {
+    auto message = [](const std::string& text) {
+        try {
+            parseConfiguration(text, Settings{});
+        } catch (const std::invalid_argument& error) {
+            return std::string(error.what());
+        }
+        return std::string("accepted");
+    };
+    EXPECT_NE(message("views=3").find("shared by both sides"), std::string::npos);
+    EXPECT_NE(message("fix-winding").find("shared by both sides"), std::string::npos);
+    EXPECT_NE(message("colour=red").find("unknown option 'colour'"), std::string::npos);
+    EXPECT_NE(message("colour=red").find("max-tris"), std::string::npos) << "lists what it accepts";
+    EXPECT_NE(message("max-tris=0"), "accepted");
+    EXPECT_NE(message("cone=widest"), "accepted");
+    EXPECT_NE(message("builder").find("needs a value"), std::string::npos);
+}
