@@ -39,12 +39,15 @@ StatisticsPanel::StatisticsPanel(QWidget* parent) : QWidget(parent) {
     form_->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
     // The current eye's numbers first: they change as the eye moves; the mesh's below.
     for (const char* name : {"eye", "clusters culled", "triangles culled", "back-facing triangles", "efficiency",
-                             "false culls", "missed clusters", "time per test", "mesh", "faces", "triangles",
-                             "degenerate faces", "mesh problems", "clusters", "uncullable clusters", "builder",
-                             "cone / test", "build time", "orbit efficiency", "lost over the orbit", "expected efficiency",
-                             "cull / oracle fraction", "cluster fill", "sphere radius"})
+                             "false culls", "missed clusters", "time per test"})
         addRow(QString::fromLatin1(name));
+    // With a pin, A against B right under the eye's own numbers.
     for (const QString& name : comparisonRows()) addRow(name);
+    for (const char* name : {"mesh", "faces", "triangles", "degenerate faces", "mesh problems", "clusters",
+                             "uncullable clusters", "builder", "cone / test", "build time", "orbit efficiency",
+                             "lost over the orbit", "expected efficiency", "cull / oracle fraction", "cluster fill",
+                             "sphere radius"})
+        addRow(QString::fromLatin1(name));
     showComparison(nullptr, nullptr, nullptr);
     clear();
 }

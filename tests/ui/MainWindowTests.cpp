@@ -10,6 +10,7 @@
 #include <QDoubleSpinBox>
 #include <QFile>
 #include <QImage>
+#include <QLabel>
 #include <QLineEdit>
 #include <QMessageBox>
 #include <QMimeData>
@@ -560,6 +561,78 @@ private slots:
         QVERIFY(legendText(*window_->scene()).contains(QStringLiteral("lost to the test (%1)").arg(testLoss)));
         saveWindowPicture(QStringLiteral("window-loss.png"));
         QTest::keyClick(window_.get(), Qt::Key_2, Qt::ControlModifier);
+    }
+
+    void pinnedAComparesWithTheCurrentSettings() {
+        QVERIFY(window_->openMeshBlocking(datasetPath("elephant.off")));
+        window_->setEyePosition({0.6, 0.3, 1.4});
+        QVERIFY(!window_->session().hasPin());
+        QVERIFY(!window_->statisticsPanel()->findChild<QLabel*>(QStringLiteral("A (pinned)"))->isVisibleTo(window_->statisticsPanel()));
+        // A: the default builder. B: meshoptimizer's builder.
+        QTest::keyClick(window_.get(), Qt::Key_A);
+        QVERIFY(window_->session().hasPin());
+        QCOMPARE(int(window_->scene()->faceColoring()), int(FaceColoring::Comparison));
+        Settings b = window_->settings();
+        b.builder = Builder::Meshopt;
+        window_->setSettings(b);
+        window_->waitUntilIdle();
+        QVERIFY(window_->settings().builder == Builder::Meshopt);
+        QVERIFY(window_->session().pinnedSettings()->builder == Builder::Optimized);
+
+        // The scene's per-face diff is the core's for the eye, and the legend counts its triangles.
+        const PreparedMesh& prepared = *window_->preparedMesh();
+        const ClusterSet& a = *window_->session().pinnedClusters();
+        const ClusterSet& current = *window_->clusters();
+        const Eye eye = window_->currentStatistics()->eye;
+        const std::vector<FaceDiff> diff = faceDiff(a, measureEye(prepared, a, eye, displayedTest(a.settings)).culled, current,
+                                                    window_->currentStatistics()->culled);
+        vtkDataArray* shown = window_->scene()->meshPolyData()->GetCellData()->GetArray(comparisonArrayName);
+        QVERIFY(shown);
+        size_t onlyA = 0;
+        for (size_t f = 0; f < diff.size(); ++f) {
+            QCOMPARE(shown->GetTuple1(vtkIdType(f)), double(diff[f]));
+            onlyA += diff[f] == FaceDiff::OnlyA;
+        }
+        QVERIFY(legendText(*window_->scene()).contains(QStringLiteral("culled by A only (%1) tris").arg(onlyA)));
+        // The paired statistics over the orbit are the core's comparison.
+        QTRY_VERIFY(window_->session().orbitComparison());
+        const Comparison expected = compareClusterSets(prepared, a, current, orbitOf(window_->settings(), prepared.box));
+        const Comparison& orbit = *window_->session().orbitComparison();
+        QCOMPARE(orbit.trianglesCulledOnlyA, expected.trianglesCulledOnlyA);
+        QCOMPARE(orbit.trianglesCulledOnlyB, expected.trianglesCulledOnlyB);
+        QVERIFY(window_->statisticsPanel()->value(QStringLiteral("A / B culled over the orbit"))
+                    .contains(QLocale().toString(qulonglong(expected.trianglesCulledOnlyA))));
+        QVERIFY(window_->statisticsPanel()->findChild<QLabel*>(QStringLiteral("A (pinned)"))->isVisibleTo(window_->statisticsPanel()));
+        // The picked cluster is shown under A too.
+        window_->pickCluster(0);
+        QVERIFY(window_->clusterReportHtml().contains(QStringLiteral("Under A (pinned): cluster %1").arg(window_->session().pinnedClusterOf(0))));
+        saveWindowPicture(QStringLiteral("window-compare.png"));
+
+        // X swaps: the current settings are A's, A is what was current; nothing is rebuilt.
+        const ClusterSet* clustersOfA = &a;
+        QTest::keyClick(window_.get(), Qt::Key_X);
+        window_->waitUntilIdle();
+        QVERIFY(window_->settings().builder == Builder::Optimized);
+        QVERIFY(window_->session().pinnedSettings()->builder == Builder::Meshopt);
+        QCOMPARE(window_->clusters(), clustersOfA);
+        QVERIFY(window_->settingsPanel()->settings().builder == Builder::Optimized);
+        QTRY_VERIFY(window_->session().orbitComparison());
+        QCOMPARE(window_->session().orbitComparison()->trianglesCulledOnlyA, expected.trianglesCulledOnlyB);
+        // Unequal cluster counts are said in the panel.
+        const std::string warning = clusterCountWarning(*window_->session().orbitComparison());
+        QCOMPARE(window_->statisticsPanel()->value(QStringLiteral("A / B clusters")).contains(QStringLiteral("more than 5%")), !warning.empty());
+
+        // Shift+A clears the pin and goes back to the decision colours; a new mesh clears it too.
+        QTest::keyClick(window_.get(), Qt::Key_A, Qt::ShiftModifier);
+        QVERIFY(!window_->session().hasPin());
+        QCOMPARE(int(window_->scene()->faceColoring()), int(FaceColoring::CullDecision));
+        QTest::keyClick(window_.get(), Qt::Key_A);
+        QVERIFY(window_->openMeshBlocking(datasetPath("torus.off")));
+        QVERIFY(!window_->session().hasPin());
+        window_->pickCluster(-1);
+        window_->setFaceColoring(FaceColoring::CullDecision);
+        window_->setSettings(Settings{});
+        window_->waitUntilIdle();
     }
 
     void exportsMatchTheCore() {
