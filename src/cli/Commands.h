@@ -31,6 +31,16 @@ struct ClustersOptions {
     bool quiet = false;
 };
 
+struct CompareOptions {
+    std::string mesh;
+    SettingsOptions run;               // the options both sides share (and start from)
+    std::string a, b;                  // "K=V,K=V": what each side sets on top of them
+    std::string format;                // "json", "csv", "text" or empty: as for stats
+    std::string output;                // empty = stdout
+    StatisticsDetail detail;           // of the `a` and `b` objects
+    bool quiet = false;
+};
+
 struct CheckOptions {
     std::string mesh;
     bool fixWinding = false;
@@ -49,6 +59,9 @@ void runStats(const StatsOptions& options);
 
 // The worst clusters of the displayed (first) cone and test, ranked by options.sort.
 void runClusters(const ClustersOptions& options);
+
+// A against B on the same mesh and views: each side as `stats` writes it, and what only each culls.
+void runCompare(const CompareOptions& options);
 
 // Mesh problems as JSON on stdout; with fixWinding also the repaired mesh.
 void runCheck(const CheckOptions& options);

@@ -8,6 +8,7 @@
 #include "cli/Commands.h"
 #include "cli/OutputFiles.h"
 #include "core/ClusterRanking.h"
+#include "core/Comparison.h"
 #include "io/MeshReader.h"
 #include "io/MeshWriter.h"
 
@@ -92,6 +93,27 @@ int main(int argc, char** argv) {
     clustersCommand->add_option("-o,--output", clusters.output, "Output file, replaced only when the run succeeds (default: stdout)");
     clustersCommand->add_flag("-q,--quiet", clusters.quiet, "No progress messages on stderr");
 
+    CompareOptions compare;
+    CLI::App* compareCommand = app.add_subcommand(
+        "compare", "Two configurations A and B of one mesh over the same views: what each culls that the other does not");
+    compareCommand->add_option("mesh", compare.mesh, meshFileHelp)->required();
+    std::string keys;
+    for (const std::string& key : conescope::configurationKeys()) keys += (keys.empty() ? "" : ", ") + key;
+    compareCommand->add_option("--a", compare.a, "A's options on top of the common ones, as K=V[,K=V...] with K one of: " + keys)
+        ->required();
+    compareCommand->add_option("--b", compare.b, "B's options, as for --a (empty: the common options)")->required();
+    addBuilderOptions(*compareCommand, compare.run);
+    addCullingOptions(*compareCommand, compare.run);
+    compareCommand->add_option("--format", compare.format,
+                               "Output format (default: from the output's extension; on a terminal text, else json)")
+        ->check(CLI::IsMember({"json", "csv", "text"}));
+    compareCommand->add_option("-o,--output", compare.output, "Output file, replaced only when the run succeeds (default: stdout)");
+    compareCommand->add_flag_callback("--no-per-view", [&compare] { compare.detail.views = false; },
+                                      "Leave the per-view tables out of `a` and `b`");
+    compareCommand->add_flag_callback("--no-per-cluster", [&compare] { compare.detail.clusters = false; },
+                                      "Leave the per-cluster tables out of `a` and `b`");
+    compareCommand->add_flag("-q,--quiet", compare.quiet, "No progress messages on stderr");
+
     CheckOptions check;
     CLI::App* checkCommand = app.add_subcommand("check", "Mesh problems that make culling wrong, as JSON");
     checkCommand->add_option("mesh", check.mesh, meshFileHelp)->required();
@@ -121,6 +143,7 @@ int main(int argc, char** argv) {
     try {
         if (statsCommand->parsed()) runStats(stats);
         if (clustersCommand->parsed()) runClusters(clusters);
+        if (compareCommand->parsed()) runCompare(compare);
         if (checkCommand->parsed()) runCheck(check);
         if (partitionCommand->parsed()) runPartition(partition);
     } catch (const std::invalid_argument& error) {

@@ -18,6 +18,14 @@ namespace conescope {
 
 const char* conescopeVersion() { return CONESCOPE_VERSION; }
 
+// Shortest round-trip form from to_chars, which ignores the C locale (a decimal comma would break
+// the table).
+std::string csvNumber(double value) {
+    std::array<char, 64> buffer{};
+    const auto end = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value).ptr;
+    return std::string(buffer.data(), end);
+}
+
 namespace {
 
 // One scalar of a table row. The JSON object and the CSV row of a row type are both made from one
@@ -163,14 +171,6 @@ nlohmann::json settingToJson(const SettingField& field, const SettingValue& valu
     if (const size_t* count = std::get_if<size_t>(&value)) return nlohmann::json(*count);
     if (const double* number = std::get_if<double>(&value)) return nlohmann::json(*number);
     return nlohmann::json(std::get<bool>(value));
-}
-
-// CSV text of a number: shortest round-trip form from to_chars, which ignores the C locale (a
-// decimal comma would break the table).
-std::string csvNumber(double value) {
-    std::array<char, 64> buffer{};
-    const auto end = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value).ptr;
-    return std::string(buffer.data(), end);
 }
 
 std::string csvCell(const Cell& cell) {

@@ -16,6 +16,10 @@
 
 namespace conescope {
 
+// A number as every CSV here writes it: the shortest text that reads back to the same value, with
+// '.' whatever the locale.
+std::string csvNumber(double value);
+
 // The version string written as "conescope_version".
 const char* conescopeVersion();
 

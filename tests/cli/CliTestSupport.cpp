@@ -1,5 +1,7 @@
 #include "CliTestSupport.h"
 
+#include <gtest/gtest.h>
+
 #include <fstream>
 #include <random>
 #include <sstream>
@@ -77,6 +79,30 @@ CliRun runCli(const std::vector<std::string>& arguments) {
     run.out = readTextFile(outPath);
     run.err = readTextFile(errPath);
     return run;
+}
+
+nlohmann::json runStatsJson(const std::vector<std::string>& arguments) {
+    std::vector<std::string> command = {"stats", "--quiet"};
+    command.insert(command.end(), arguments.begin(), arguments.end());
+    const CliRun run = runCli(command);
+    EXPECT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_EQ(run.err, "");
+    try {
+        return nlohmann::json::parse(run.out);
+    } catch (const nlohmann::json::parse_error& error) {
+        ADD_FAILURE() << "stdout is not JSON: " << error.what() << "\n" << run.out.substr(0, 500);
+        return {};
+    }
+}
+
+// Timings differ between any two runs; everything else is deterministic.
+void removeTimings(nlohmann::json& json) {
+    if (json.is_object()) {
+        json.erase("ns_per_cluster");
+        for (auto& [key, value] : json.items()) removeTimings(value);
+    } else if (json.is_array()) {
+        for (nlohmann::json& value : json) removeTimings(value);
+    }
 }
 
 }  // namespace conescope::clitest

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 namespace conescope::clitest {
 
 std::filesystem::path datasetsDir();
@@ -37,6 +39,12 @@ struct CliRun {
 CliRun runCli(const std::vector<std::string>& arguments);
 
 std::string readTextFile(const std::string& path);
+
+// `conescope-cli stats --quiet ARGUMENTS` parsed as JSON (a test failure when it is not).
+nlohmann::json runStatsJson(const std::vector<std::string>& arguments);
+
+// Timings differ between any two runs; everything else is deterministic: drops every ns_per_cluster.
+void removeTimings(nlohmann::json& json);
 
 // Lines of a text, without the newlines.
 std::vector<std::string> splitLines(const std::string& text);

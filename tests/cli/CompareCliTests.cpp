@@ -1,0 +1,118 @@
+// conescope-cli compare end to end: each side is the plain stats run, the diff adds up to them, A = B
+// differs nowhere, the CSV is one tidy table and bad configurations are usage errors.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "CliTestSupport.h"
+
+namespace conescope {
+namespace {
+
+using clitest::CliRun;
+using clitest::dataset;
+using clitest::removeTimings;
+using clitest::runCli;
+using clitest::runStatsJson;
+using clitest::splitLines;
+
+nlohmann::json runCompareJson(const std::vector<std::string>& arguments, std::string* err = nullptr) {
+    std::vector<std::string> command = {"compare", "--quiet", "--format", "json"};
+    command.insert(command.end(), arguments.begin(), arguments.end());
+    const CliRun run = runCli(command);
+    EXPECT_EQ(run.exitCode, 0) << run.err;
+    if (err) *err = run.err;
+    return nlohmann::json::parse(run.out);
+}
+
+void expectSame(nlohmann::json actual, nlohmann::json expected) {
+    removeTimings(actual);
+    removeTimings(expected);
+    const nlohmann::json differences = nlohmann::json::diff(expected, actual);
+    EXPECT_TRUE(differences.empty()) << differences.dump().substr(0, 1500);
+}
+
+TEST(CliCompare, EachSideIsThePlainStatsRunAndTheDiffAddsUpToThem) {
+    const std::string mesh = dataset("elephant.off");
+    std::string err;
+    const nlohmann::json json =
+        runCompareJson({mesh, "--views", "12", "--max-tris", "96", "--a", "builder=meshopt,cone=meshopt", "--b", "test=sphere"}, &err);
+    expectSame(json["a"], runStatsJson({mesh, "--views", "12", "--max-tris", "96", "--builder", "meshopt", "--cone", "meshopt"}));
+    expectSame(json["b"], runStatsJson({mesh, "--views", "12", "--max-tris", "96", "--test", "sphere"}));
+    const nlohmann::json& diff = json["diff"];
+    const nlohmann::json& a = json["a"]["results"][0];
+    const nlohmann::json& b = json["b"]["results"][0];
+    EXPECT_EQ(diff["triangles_culled_only_a"].get<size_t>() + diff["triangles_culled_both"].get<size_t>(), a["triangles_culled"]);
+    EXPECT_EQ(diff["triangles_culled_only_b"].get<size_t>() + diff["triangles_culled_both"].get<size_t>(), b["triangles_culled"]);
+    EXPECT_EQ(diff["back_facing_triangles"], a["back_facing_triangles"]);
+    EXPECT_EQ(diff["efficiency_a"], a["efficiency"]);
+    EXPECT_EQ(diff["efficiency_b"], b["efficiency"]);
+    EXPECT_EQ(diff["test_a"], "apex");
+    EXPECT_EQ(diff["cone_a"], "meshopt");
+    EXPECT_EQ(diff["test_b"], "sphere");
+    EXPECT_EQ(diff["clusters_a"], json["a"]["clusters"]);
+    EXPECT_EQ(diff["clusters_b"], json["b"]["clusters"]);
+    ASSERT_EQ(diff["views"].size(), 12u);
+    for (size_t v = 0; v < 12; ++v) {
+        const nlohmann::json& view = diff["views"][v];
+        EXPECT_EQ(view["eye"], a["views"][v]["eye"]);
+        EXPECT_EQ(view["triangles_culled_only_a"].get<size_t>() + view["triangles_culled_both"].get<size_t>(),
+                  a["views"][v]["triangles_culled"]);
+        EXPECT_EQ(view["triangles_culled_only_b"].get<size_t>() + view["triangles_culled_both"].get<size_t>(),
+                  b["views"][v]["triangles_culled"]);
+    }
+    EXPECT_GT(diff["triangles_culled_only_a"].get<size_t>() + diff["triangles_culled_only_b"].get<size_t>(), 0u);
+}
+
+TEST(CliCompare, SameConfigurationDiffersNowhere) {
+    const nlohmann::json diff = runCompareJson({dataset("torus.off"), "--views", "9", "--a", "", "--b", ""})["diff"];
+    EXPECT_EQ(diff["triangles_culled_only_a"], 0);
+    EXPECT_EQ(diff["triangles_culled_only_b"], 0);
+    EXPECT_GT(diff["triangles_culled_both"].get<size_t>(), 0u);
+    for (const nlohmann::json& view : diff["views"]) {
+        EXPECT_EQ(view["triangles_culled_only_a"], 0);
+        EXPECT_EQ(view["triangles_culled_only_b"], 0);
+    }
+    EXPECT_TRUE(diff["cluster_count_warning"].is_null());
+}
+
+TEST(CliCompare, UnequalClusterCountsAreWarnedAboutEvenWhenQuiet) {
+    std::string err;
+    const nlohmann::json diff =
+        runCompareJson({dataset("elephant.off"), "--views", "4", "--a", "max-tris=32,max-verts=32", "--b", ""}, &err)["diff"];
+    ASSERT_TRUE(diff["cluster_count_warning"].is_string());
+    EXPECT_NE(diff["cluster_count_warning"].get<std::string>().find("more than 5%"), std::string::npos);
+    EXPECT_NE(err.find("conescope-cli: warning: A has"), std::string::npos) << err;
+}
+
+TEST(CliCompare, CsvIsOneTidyTableAndTextASummary) {
+    const CliRun csv = runCli({"compare", dataset("torus.off"), "--views", "5", "--a", "cone=average", "--b", "", "--format", "csv", "-q"});
+    ASSERT_EQ(csv.exitCode, 0) << csv.err;
+    const std::vector<std::string> lines = splitLines(csv.out);
+    ASSERT_EQ(lines.size(), 6u);
+    EXPECT_EQ(lines[0], "view,eye_x,eye_y,eye_z,back_facing_triangles,triangles_culled_only_a,triangles_culled_only_b,"
+                        "triangles_culled_both,efficiency_a,efficiency_b");
+    for (const std::string& line : lines) EXPECT_EQ(std::count(line.begin(), line.end(), ','), 9) << line;
+    const CliRun text = runCli({"compare", dataset("torus.off"), "--views", "5", "--a", "cone=average", "--b", "", "--format", "text", "-q"});
+    ASSERT_EQ(text.exitCode, 0) << text.err;
+    EXPECT_NE(text.out.find("A: cone=average"), std::string::npos) << text.out;
+    EXPECT_NE(text.out.find("culled by A only"), std::string::npos) << text.out;
+    EXPECT_LT(splitLines(text.out).size(), 10u);
+}
+
+TEST(CliCompare, BadConfigurationsAreUsageErrors) {
+    for (const std::vector<std::string>& sides : {std::vector<std::string>{"--a", "colour=red", "--b", ""},
+                                                  std::vector<std::string>{"--a", "", "--b", "views=3"},
+                                                  std::vector<std::string>{"--a", "max-tris=0", "--b", ""}}) {
+        std::vector<std::string> command = {"compare", dataset("cube.off"), "-q"};
+        command.insert(command.end(), sides.begin(), sides.end());
+        const CliRun run = runCli(command);
+        EXPECT_EQ(run.exitCode, 2) << sides[1] << sides[3];
+        EXPECT_NE(run.err.find("conescope-cli: error: "), std::string::npos) << run.err;
+        EXPECT_EQ(run.out, "");
+    }
+    EXPECT_EQ(runCli({"compare", dataset("cube.off"), "--b", ""}).exitCode, 2) << "--a is required";
+}
+
+}  // namespace
+}  // namespace conescope
