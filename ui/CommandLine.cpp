@@ -12,6 +12,7 @@
 #include <vtkImageData.h>
 
 #include "Datasets.h"
+#include "core/Comparison.h"
 #include "core/Pipeline.h"
 #include "MeshLoading.h"
 #include "SceneBinding.h"
@@ -123,7 +124,12 @@ CommandLineResult parseCommandLine(const QStringList& arguments) {
                                       QStringLiteral("With --pick: also write the picked cluster's Gauss map (normals, "
                                                      "every cone method's cap, the view vector) to this PNG."),
                                       QStringLiteral("file"));
-    parser.addOptions({screenshot, size, fromEye, coloring, layers, pick, gaussMap});
+    const QCommandLineOption compare(QStringLiteral("compare"),
+                                     QStringLiteral("Screenshot of an A/B comparison: A is the options given changed by "
+                                                    "K=V[,K=V...] (as conescope-cli compare --a), B the options given; faces "
+                                                    "coloured by what only A, only B or both cull."),
+                                     QStringLiteral("K=V"));
+    parser.addOptions({screenshot, size, fromEye, coloring, layers, pick, gaussMap, compare});
     for (const auto& [field, option] : settingOptions) parser.addOption(option);
     QStringList extensions;
     for (const std::string& extension : supportedMeshExtensions()) extensions << QString::fromStdString(extension);
@@ -187,6 +193,12 @@ CommandLineResult parseCommandLine(const QStringList& arguments) {
         if (options.screenshot.isEmpty() && (parser.isSet(size) || options.fromEye || options.pick))
             throw std::invalid_argument("--size, --from-eye and --pick only apply to --screenshot");
         options.gaussMap = parser.value(gaussMap);
+        if (parser.isSet(compare)) {
+            if (options.screenshot.isEmpty()) throw std::invalid_argument("--compare only applies to --screenshot");
+            options.compare = parser.value(compare).toStdString();
+            parseConfiguration(*options.compare, settings);  // a typo fails before anything is read
+            if (!parser.isSet(coloring)) options.coloring = FaceColoring::Comparison;
+        }
         if (parser.isSet(gaussMap) && (!options.pick || options.gaussMap.isEmpty()))
             throw std::invalid_argument("--gauss-map needs a file name and --pick");
     } catch (const std::exception& error) {
@@ -220,6 +232,15 @@ int runHeadlessScreenshot(const AppOptions& options) {
         showMeasurement(scene, prepared, clusters, measurement);
         scene.setFaceColoring(options.coloring);
         showEyeColouring(scene, prepared, clusters, measurement, options.coloring);
+        if (options.compare) {
+            // A: the options changed by --compare; B: the clusters shown. The diff of this eye per face.
+            const ClusterSet a = buildClusters(prepared, parseConfiguration(*options.compare, settings));
+            const EyeMeasurement measuredA = measureEye(prepared, a, measurement.eye, displayedTest(a.settings));
+            const std::vector<FaceDiff> diff = faceDiff(a, measuredA.culled, clusters, measurement.culled);
+            const std::string warning = clusterCountWarning(compareClusterSets(prepared, a, clusters, {measurement.eye}));
+            scene.setFaceComparison(diff, warning);
+            if (!warning.empty()) std::cerr << "conescope: warning: " << warning << '\n';
+        }
         for (const auto& [layer, visible] : firstLookLayers()) scene.setLayerVisible(layer, visible);
         if (options.layers) showOnly(*options.layers, scene);
         if (options.pick) {
@@ -232,6 +253,8 @@ int runHeadlessScreenshot(const AppOptions& options) {
         render.height = options.size.height();
         render.fromEye = options.fromEye;
         if (options.pick) frameTestDrawing(scene, render);
+        // A comparison is about back faces: seen from behind, the mesh filling the picture.
+        if (options.compare) render.frameEye = false, render.fromBehind = true;
         renderToPng(scene, render, options.screenshot.toStdString());
         if (!options.gaussMap.isEmpty()) {
             GaussMapScene gauss;

@@ -28,6 +28,7 @@ struct AppOptions {
     std::optional<std::vector<Layer>> layers;  // --layers: the layers shown, all others hidden
     std::optional<size_t> pick;       // --pick: the cluster highlighted in the screenshot, its test drawn
     QString gaussMap;                 // --gauss-map: also write the picked cluster's Gauss map to this PNG
+    std::optional<std::string> compare;  // --compare K=V,...: A for an A/B screenshot (B: the options given)
 };
 
 // The scene's names (toString(Layer)). Throws std::invalid_argument.

@@ -7,17 +7,6 @@
 
 namespace conescope {
 
-namespace {
-
-// FaceDiff values as the scene's per-face bytes.
-std::vector<uint8_t> diffBytes(const std::vector<FaceDiff>& diff) {
-    std::vector<uint8_t> bytes(diff.size());
-    for (size_t f = 0; f < diff.size(); ++f) bytes[f] = uint8_t(diff[f]);
-    return bytes;
-}
-
-}  // namespace
-
 void Session::pinAsA() {
     if (!prepared_ || !clusters_) return;
     pin_ = Pin{settings_, clusters_, prepared_};
@@ -76,7 +65,8 @@ void Session::measurePinnedEye() {
     const Eye& eye = measurement_->eye;
     pinnedMeasurement_ = measureEye(*prepared_, *pin_->clusters, eye, displayedTest(pin_->settings));
     eyeComparison_ = compareClusterSets(*prepared_, *pin_->clusters, *clusters_, {eye});
-    scene_->setFaceComparison(diffBytes(faceDiff(*pin_->clusters, pinnedMeasurement_->culled, *clusters_, measurement_->culled)));
+    scene_->setFaceComparison(faceDiff(*pin_->clusters, pinnedMeasurement_->culled, *clusters_, measurement_->culled),
+                              clusterCountWarning(*eyeComparison_));
 }
 
 void Session::requestOrbitComparison() {

@@ -142,8 +142,8 @@ void ClusterScene::setFaceLoss(const std::vector<FaceLoss>& loss) {
     impl_->updateLegend();
 }
 
-void ClusterScene::setFaceComparison(const std::vector<uint8_t>& comparison) {
-    impl_->faces.setFaceComparison(comparison);
+void ClusterScene::setFaceComparison(const std::vector<FaceDiff>& comparison, const std::string& warning) {
+    impl_->faces.setFaceComparison(comparison, warning);
     impl_->updateLegend();
 }
 

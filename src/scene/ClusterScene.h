@@ -24,6 +24,7 @@
 #include <vtkType.h>
 
 #include "core/ClusterBounds.h"
+#include "core/Comparison.h"
 #include "core/Culling.h"
 #include "core/Mesh.h"
 #include "core/Partition.h"
@@ -80,9 +81,9 @@ public:
     void setFaceFacing(const std::vector<Facing>& facing);
     // What happened to each face from the eye (core faceLosses). Writes the per-face "loss" array.
     void setFaceLoss(const std::vector<FaceLoss>& loss);
-    // The A/B comparison per face for the eye (core FaceDiff values); empty clears it. Writes the
-    // per-face "comparison" array.
-    void setFaceComparison(const std::vector<uint8_t>& comparison);
+    // The A/B comparison per face for the eye (core faceDiff); empty clears it. Writes the per-face
+    // "comparison" array. `warning` (clusterCountWarning) goes into the legend when not empty.
+    void setFaceComparison(const std::vector<FaceDiff>& comparison, const std::string& warning = {});
     // The cull map's per-cluster shares (ClusterSet::cullMap) for the fraction colourings, and which
     // clusters have a cone at all. Rewrites K table entries. Throws std::invalid_argument on a size mismatch.
     void setClusterFractions(const std::vector<double>& cullFraction, const std::vector<double>& oracleFraction,

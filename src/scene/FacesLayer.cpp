@@ -67,10 +67,14 @@ void FacesLayer::addLegendEntries(FaceColoring coloring, std::vector<LegendEntry
             entries.push_back({"no A to compare with (pin one)", {SceneColours::unclassified}});
             return;
         }
-        entries.push_back({"culled by A only" + countLabel(comparisonTriangles_[1]) + " tris", {SceneColours::onlyA}});
-        entries.push_back({"culled by B only" + countLabel(comparisonTriangles_[2]) + " tris", {SceneColours::onlyB}});
-        entries.push_back({"culled by both" + countLabel(comparisonTriangles_[3]) + " tris", {SceneColours::culledByBoth}});
-        entries.push_back({"culled by neither" + countLabel(comparisonTriangles_[0]) + " tris", {SceneColours::culledByNeither}});
+        const auto triangles = [](size_t n) { return " (" + std::to_string(n) + " tris)"; };
+        entries.push_back({"culled by A only" + triangles(comparisonTriangles_[1]), {SceneColours::onlyA}});
+        entries.push_back({"culled by B only" + triangles(comparisonTriangles_[2]), {SceneColours::onlyB}});
+        entries.push_back({"culled by both" + triangles(comparisonTriangles_[3]), {SceneColours::culledByBoth}});
+        entries.push_back({"culled by neither" + triangles(comparisonTriangles_[0]), {SceneColours::culledByNeither}});
+        // Unequal cluster counts: the comparison is not fair, and the picture says so.
+        if (!comparisonWarning_.empty())
+            entries.push_back({"unequal cluster counts: see the statistics", {SceneColours::wronglyCulled}});
     } else {
         if (!hasFacing_) entries.push_back({"faces not classified yet", {SceneColours::unclassified}});
         entries.push_back({"front-facing face", {SceneColours::front}});
@@ -91,7 +95,7 @@ void FacesLayer::setFaceFacing(const std::vector<Facing>& facing) {
     hasFacing_ = true;
 }
 
-void FacesLayer::setFaceComparison(const std::vector<uint8_t>& comparison) {
+void FacesLayer::setFaceComparison(const std::vector<FaceDiff>& comparison, const std::string& warning) {
     const size_t faceCount = data_.clusterOfFace.size();
     if (!comparison.empty() && comparison.size() != faceCount)
         throw std::invalid_argument("setFaceComparison: expected " + std::to_string(faceCount) + " faces, got " +
@@ -99,12 +103,13 @@ void FacesLayer::setFaceComparison(const std::vector<uint8_t>& comparison) {
     comparisonTriangles_ = {};
     uint8_t* values = data_.comparison->GetPointer(0);
     for (size_t f = 0; f < faceCount; ++f) {
-        values[f] = comparison.empty() ? 4 : std::min<uint8_t>(comparison[f], 3);
+        values[f] = comparison.empty() ? 4 : uint8_t(comparison[f]);
         // Triangles, as the comparison's statistics count them.
         if (!comparison.empty()) comparisonTriangles_[values[f]] += data_.mesh.faceSize(f) - 2;
     }
     data_.comparison->Modified();
     hasComparison_ = !comparison.empty();
+    comparisonWarning_ = comparison.empty() ? std::string() : warning;
 }
 
 void FacesLayer::setFaceLoss(const std::vector<FaceLoss>& loss) {

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/Culling.h"
+#include "core/Comparison.h"
 #include "core/Pipeline.h"
 #include "scene/SceneLayer.h"
 
@@ -26,9 +27,10 @@ public:
     // The eye's per-face loss classes (faceLosses) into the mesh's "loss" array, counted for the legend
     // in faces. Throws std::invalid_argument on a size mismatch.
     void setFaceLoss(const std::vector<FaceLoss>& loss);
-    // Per face the A/B comparison for the eye (core FaceDiff values), counted in triangles for the
-    // legend; empty: nothing compared. Throws std::invalid_argument on a size mismatch.
-    void setFaceComparison(const std::vector<uint8_t>& comparison);
+    // Per face the A/B comparison for the eye (core faceDiff), counted in triangles for the legend,
+    // with the cluster-count warning if any; empty: nothing compared. Throws std::invalid_argument on
+    // a size mismatch.
+    void setFaceComparison(const std::vector<FaceDiff>& comparison, const std::string& warning);
 
 private:
     vtkSmartPointer<vtkPolyDataMapper> mapper_;
@@ -38,6 +40,7 @@ private:
     std::array<size_t, 4> lossCounts_{};
     bool hasComparison_ = false;
     std::array<size_t, 4> comparisonTriangles_{};
+    std::string comparisonWarning_;
 };
 
 }  // namespace conescope

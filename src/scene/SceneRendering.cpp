@@ -44,7 +44,7 @@ void placeObserverCamera(const ClusterScene& scene, const RenderOptions& options
                 glm::dvec3 side = glm::cross(towardsEye, options.viewUp);
                 if (glm::length(side) < 1e-6) side = glm::cross(towardsEye, glm::dvec3(1, 0, 0));
                 side = glm::normalize(side);
-                from = glm::normalize(0.5 * towardsEye + std::sqrt(0.75) * side);
+                from = glm::normalize((options.fromBehind ? -0.5 : 0.5) * towardsEye + std::sqrt(0.75) * side);
             }
         }
         // Far enough that the bounding sphere fills the view angle.

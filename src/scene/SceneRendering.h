@@ -30,6 +30,9 @@ struct RenderOptions {
     glm::dvec3 viewUp{0.0, 1.0, 0.0};
     // With an unset position, fit the cull eye (a perspective one) into the picture with the mesh.
     bool frameEye = false;
+    // With an unset position, look from the side facing away from the cull eye (60 degrees off the
+    // opposite of its direction): where the back faces are, and so what culling is about.
+    bool fromBehind = false;
     double viewAngleDegrees = 30.0;
     Rgb background{0.12, 0.13, 0.16};
     // Render what the cull eye sees instead of the observer view: camera from applyEyeToCamera, only

@@ -79,7 +79,7 @@ struct SceneColours {
     static constexpr Rgb onlyA{1.00, 0.50, 0.05};
     static constexpr Rgb onlyB{0.15, 0.75, 0.95};
     static constexpr Rgb culledByBoth{0.62, 0.62, 0.66};
-    static constexpr Rgb culledByNeither{0.22, 0.24, 0.30};
+    static constexpr Rgb culledByNeither{0.36, 0.38, 0.46};
 };
 // The colour ramp of the fraction colourings at t in [0, 1] (dark blue through teal to yellow), and
 // the largest fraction a cluster can have: (1 - sin 0) / 2, a flat cluster.

@@ -11,6 +11,7 @@
 
 #include "RenderTestSupport.h"
 #include "core/Culling.h"
+#include "core/Comparison.h"
 #include "core/Pipeline.h"
 #include "core/TestGeometry.h"
 #include "scene/ClusterScene.h"
@@ -253,6 +254,34 @@ TEST_F(RenderImages, FacesColouredByLossClass) {
     RenderOptions options = observer();
     options.cameraPosition = glm::dvec3(3.9, -3.6, -2.1);
     const std::string failure = rendertest::checkAgainstBaseline(renderToImage(scene, options), "loss");
+    EXPECT_TRUE(failure.empty()) << failure;
+}
+
+TEST_F(RenderImages, FacesColouredByAnABComparison) {
+    // A: the torus in clusters of at most 64 triangles; B: at most 16. Seen from behind the eye.
+    PreparedMesh prepared;
+    prepared.culled = std::make_shared<Mesh>(torus_->mesh);
+    prepared.world = torus_->world;
+    prepared.faces = torus_->faces;
+    ClusterSet a;
+    a.partition = torus_->partition;
+    a.bounds = torus_->bounds;
+    const rendertest::SceneInput small = rendertest::loadDataset("torus.off", 16);
+    ClusterSet b;
+    b.partition = small.partition;
+    b.bounds = small.bounds;
+    ClusterScene scene = ClusterScene(small.mesh, small.world, small.faces, small.partition, small.bounds);
+    const EyeMeasurement measuredA = measureEye(prepared, a, decisionEye, CullTest::Apex);
+    const EyeMeasurement measuredB = measureEye(prepared, b, decisionEye, CullTest::Apex);
+    const Comparison comparison = compareClusterSets(prepared, a, b, {decisionEye});
+    scene.setFaceComparison(faceDiff(a, measuredA.culled, b, measuredB.culled), clusterCountWarning(comparison));
+    scene.setFaceColoring(FaceColoring::Comparison);
+    scene.setLayerVisible(Layer::Cones, false);
+    scene.setEye(decisionEye, {0, 0, 0});
+    RenderOptions options = observer();
+    options.cameraPosition.reset();
+    options.fromBehind = true;
+    const std::string failure = rendertest::checkAgainstBaseline(renderToImage(scene, options), "comparison");
     EXPECT_TRUE(failure.empty()) << failure;
 }
 

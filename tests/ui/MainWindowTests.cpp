@@ -593,7 +593,7 @@ private slots:
             QCOMPARE(shown->GetTuple1(vtkIdType(f)), double(diff[f]));
             onlyA += diff[f] == FaceDiff::OnlyA;
         }
-        QVERIFY(legendText(*window_->scene()).contains(QStringLiteral("culled by A only (%1) tris").arg(onlyA)));
+        QVERIFY(legendText(*window_->scene()).contains(QStringLiteral("culled by A only (%1 tris)").arg(onlyA)));
         // The paired statistics over the orbit are the core's comparison.
         QTRY_VERIFY(window_->session().orbitComparison());
         const Comparison expected = compareClusterSets(prepared, a, current, orbitOf(window_->settings(), prepared.box));
