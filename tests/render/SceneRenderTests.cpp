@@ -196,6 +196,22 @@ TEST_F(RenderImages, SpheresEyeAndPickedCluster) {
     EXPECT_TRUE(failure.empty()) << failure;
 }
 
+// The torus input as the pipeline's stages, for the core functions the debugger pictures draw.
+PreparedMesh preparedOf(const SceneInput& input) {
+    PreparedMesh prepared;
+    prepared.culled = std::make_shared<Mesh>(input.mesh);
+    prepared.world = input.world;
+    prepared.faces = input.faces;
+    return prepared;
+}
+
+ClusterSet clustersOf(const SceneInput& input) {
+    ClusterSet clusters;
+    clusters.partition = input.partition;
+    clusters.bounds = input.bounds;
+    return clusters;
+}
+
 // The picked cluster's test drawn in 3D, framed as the headless --pick screenshot frames it: for the
 // apex test the cone of eye positions from the apex, for the box test the numbered corners.
 std::string renderTestDrawing(const SceneInput& input, CullTest test, uint32_t cluster, const std::string& baseline) {
@@ -222,13 +238,8 @@ TEST_F(RenderImages, BoxTestCornersNumberedWithTheirVerdicts) {
 }
 
 TEST_F(RenderImages, GaussMapShowsNormalsCapsAndViewHorizon) {
-    PreparedMesh prepared;
-    prepared.culled = std::make_shared<Mesh>(torus_->mesh);
-    prepared.world = torus_->world;
-    prepared.faces = torus_->faces;
-    ClusterSet clusters;
-    clusters.partition = torus_->partition;
-    clusters.bounds = torus_->bounds;
+    const PreparedMesh prepared = preparedOf(*torus_);
+    const ClusterSet clusters = clustersOf(*torus_);
     const CullingInput cullInput{torus_->mesh, torus_->world, torus_->faces, torus_->bounds};
     const CullExplanation why = explainCull(cullInput, 5, decisionEye, CullTest::Apex);
     GaussMapScene gauss;
@@ -239,13 +250,8 @@ TEST_F(RenderImages, GaussMapShowsNormalsCapsAndViewHorizon) {
 
 TEST_F(RenderImages, FacesColouredByLossClass) {
     ClusterScene scene = makeScene(*torus_);
-    PreparedMesh prepared;
-    prepared.culled = std::make_shared<Mesh>(torus_->mesh);
-    prepared.world = torus_->world;
-    prepared.faces = torus_->faces;
-    ClusterSet clusters;
-    clusters.partition = torus_->partition;
-    clusters.bounds = torus_->bounds;
+    const PreparedMesh prepared = preparedOf(*torus_);
+    const ClusterSet clusters = clustersOf(*torus_);
     const EyeMeasurement measurement = measureEye(prepared, clusters, decisionEye, CullTest::Sphere);
     scene.setFaceLoss(faceLosses(clusters, measurement, classifyFaces(torus_->mesh, torus_->world, torus_->faces, decisionEye)));
     scene.setFaceColoring(FaceColoring::Loss);
@@ -259,17 +265,10 @@ TEST_F(RenderImages, FacesColouredByLossClass) {
 
 TEST_F(RenderImages, FacesColouredByAnABComparison) {
     // A: the torus in clusters of at most 64 triangles; B: at most 16. Seen from behind the eye.
-    PreparedMesh prepared;
-    prepared.culled = std::make_shared<Mesh>(torus_->mesh);
-    prepared.world = torus_->world;
-    prepared.faces = torus_->faces;
-    ClusterSet a;
-    a.partition = torus_->partition;
-    a.bounds = torus_->bounds;
+    const PreparedMesh prepared = preparedOf(*torus_);
+    const ClusterSet a = clustersOf(*torus_);
     const rendertest::SceneInput small = rendertest::loadDataset("torus.off", 16);
-    ClusterSet b;
-    b.partition = small.partition;
-    b.bounds = small.bounds;
+    const ClusterSet b = clustersOf(small);
     ClusterScene scene = ClusterScene(small.mesh, small.world, small.faces, small.partition, small.bounds);
     const EyeMeasurement measuredA = measureEye(prepared, a, decisionEye, CullTest::Apex);
     const EyeMeasurement measuredB = measureEye(prepared, b, decisionEye, CullTest::Apex);

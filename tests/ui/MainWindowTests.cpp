@@ -46,6 +46,7 @@
 #include "SettingsPanel.h"
 #include "StatisticsPanel.h"
 #include "UiTestSupport.h"
+#include "WindowTestSupport.h"
 #include "PlotsView.h"
 #include "WorstClustersView.h"
 #include "io/MeshReader.h"
@@ -69,10 +70,6 @@ void typeInto(QDoubleSpinBox* box, double value) {
     box->selectAll();
     QTest::keyClicks(box, QString::number(value, 'g', 10));
     QTest::keyClick(box, Qt::Key_Return);
-}
-
-vtkRenderer* observerRenderer(MainWindow& window) {
-    return window.observerView()->renderWindow()->GetRenderers()->GetFirstRenderer();
 }
 
 glm::dvec3 cameraPosition(MainWindow& window) {
@@ -106,44 +103,11 @@ void compareWithCore(MainWindow& window) {
 
 }  // namespace
 
-// Every legend entry's text, one per line.
-QString legendText(const ClusterScene& scene) {
-    QString text;
-    vtkLegendBoxActor* legend = scene.legend();
-    for (int i = 0; i < legend->GetNumberOfEntries(); ++i) text += QString::fromUtf8(legend->GetEntryString(i)) + '\n';
-    return text;
-}
-
-class MainWindowTests : public QObject {
+class MainWindowTests : public QObject, private WindowFixture {
     Q_OBJECT
 
-private:
-    std::unique_ptr<MainWindow> window_;
-    QString outputDir_;
-    QTemporaryDir temporary_;
-
-    void saveWindowPicture(const QString& name) {
-        // The whole window as the user sees it, for looking at when a test fails.
-        QApplication::processEvents();
-        window_->grab().save(QDir(outputDir_).filePath(name));
-    }
-
 private slots:
-    void initTestCase() {
-        QStandardPaths::setTestModeEnabled(true);
-        QCoreApplication::setOrganizationName(QStringLiteral("ConeScopeTests"));
-        QCoreApplication::setApplicationName(QStringLiteral("conescope-ui-tests"));
-        outputDir_ = qEnvironmentVariable("CONESCOPE_UI_TEST_OUTPUT", QDir::tempPath());
-        QVERIFY(temporary_.isValid());
-        window_ = std::make_unique<MainWindow>();
-        window_->setErrorDialogsEnabled(false);
-        window_->resize(1280, 960);
-        window_->show();
-        QVERIFY(QTest::qWaitForWindowExposed(window_.get()));
-        // No window manager under Xvfb: make the window the active one so its shortcuts apply.
-        QApplication::setActiveWindow(window_.get());
-        QCOMPARE(QApplication::activeWindow(), window_.get());
-    }
+    void initTestCase() { openWindow(); }
 
     void init() { window_->observerView()->setFocus(); }
 
@@ -496,145 +460,6 @@ private slots:
         window_->pickCluster(-1);
     }
 
-    void pickDrawsTheTestTheMarginAndTheGaussMap() {
-        QVERIFY(window_->openMeshBlocking(datasetPath("torus.off")));
-        window_->setEyePosition({0.4, -2.2, 1.3});
-        QVERIFY(window_->layerVisible(Layer::Test));
-        const ClusterScene& scene = *window_->scene();
-        QCOMPARE(scene.testDrawing().cluster, -1);
-        QVERIFY(!scene.actor(Layer::Test)->GetVisibility());
-        QVERIFY(!window_->gaussMapView()->scene().hasMap());
-        const Eye eye = window_->currentStatistics()->eye;
-        const CullingInput input = cullingInput(*window_->preparedMesh(), *window_->clusters());
-        const CullTest test = displayedTest(window_->settings());
-        // Every cluster: the drawing and the margin are the core's for this eye and test.
-        size_t culled = 0, drawn = 0;
-        for (uint32_t c = 0; c < window_->clusters()->bounds.count(); c += 4) {
-            window_->pickCluster(int(c));
-            const CullExplanation why = explainCull(input, c, eye, test);
-            QCOMPARE(window_->scene()->testDrawing().cluster, int(c));
-            QCOMPARE(window_->scene()->testDrawing().why.margin, why.margin);
-            QVERIFY(window_->scene()->actor(Layer::Test)->GetVisibility());
-            QVERIFY(window_->gaussMapView()->scene().hasMap());
-            const QString report = window_->clusterReportHtml();
-            if (std::isnan(why.margin)) continue;
-            QVERIFY(report.contains(why.margin > 0.0 ? QStringLiteral("passes by") : QStringLiteral("short by")));
-            (why.culled ? culled : drawn)++;
-        }
-        QVERIFY(culled > 0 && drawn > 0);
-        // The drawing follows the eye.
-        const double before = window_->scene()->testDrawing().why.margin;
-        window_->setEyePosition({-1.0, 2.5, -1.5});
-        QVERIFY(window_->scene()->testDrawing().why.margin != before);
-        QCOMPARE(window_->scene()->testDrawing().eye.position, window_->currentStatistics()->eye.position);
-        QTest::keyClick(window_.get(), Qt::Key_G);
-        saveWindowPicture(QStringLiteral("window-gauss-map.png"));
-        window_->pickCluster(-1);
-        QCOMPARE(window_->scene()->testDrawing().cluster, -1);
-        QVERIFY(!window_->gaussMapView()->scene().hasMap());
-    }
-
-    void fractionAndLossColourings() {
-        QVERIFY(window_->openMeshBlocking(datasetPath("elephant.off")));
-        const ClusterSet& clusters = *window_->clusters();
-        // Ctrl+4: cull fraction, one entry per cluster on the ramp, uncullable clusters apart and counted.
-        QTest::keyClick(window_.get(), Qt::Key_4, Qt::ControlModifier);
-        QCOMPARE(int(window_->scene()->faceColoring()), int(FaceColoring::CullFraction));
-        size_t uncullable = 0;
-        for (const ConeOfNormals& cone : clusters.bounds.cones) uncullable += !cone.cullable;
-        QVERIFY(uncullable > 0);
-        QVERIFY(legendText(*window_->scene()).contains(QStringLiteral("uncullable: no cone (%1)").arg(uncullable)));
-        // Ctrl+6: the loss class of every face is the core's for the current eye.
-        QTest::keyClick(window_.get(), Qt::Key_6, Qt::ControlModifier);
-        QCOMPARE(int(window_->scene()->faceColoring()), int(FaceColoring::Loss));
-        const PreparedMesh& prepared = *window_->preparedMesh();
-        const std::vector<FaceLoss> expected = faceLosses(
-            clusters, *window_->currentStatistics(),
-            classifyFaces(prepared.mesh(), prepared.world, prepared.faces, window_->currentStatistics()->eye));
-        vtkDataArray* loss = window_->scene()->meshPolyData()->GetCellData()->GetArray(lossArrayName);
-        QVERIFY(loss);
-        size_t testLoss = 0;
-        for (size_t f = 0; f < expected.size(); ++f) {
-            QCOMPARE(loss->GetTuple1(vtkIdType(f)), double(expected[f]));
-            testLoss += expected[f] == FaceLoss::Test;
-        }
-        QVERIFY(legendText(*window_->scene()).contains(QStringLiteral("lost to the test (%1)").arg(testLoss)));
-        saveWindowPicture(QStringLiteral("window-loss.png"));
-        QTest::keyClick(window_.get(), Qt::Key_2, Qt::ControlModifier);
-    }
-
-    void pinnedAComparesWithTheCurrentSettings() {
-        QVERIFY(window_->openMeshBlocking(datasetPath("elephant.off")));
-        window_->setEyePosition({0.6, 0.3, 1.4});
-        QVERIFY(!window_->session().hasPin());
-        QVERIFY(!window_->statisticsPanel()->findChild<QLabel*>(QStringLiteral("A (pinned)"))->isVisibleTo(window_->statisticsPanel()));
-        // A: the default builder. B: meshoptimizer's builder.
-        QTest::keyClick(window_.get(), Qt::Key_A);
-        QVERIFY(window_->session().hasPin());
-        QCOMPARE(int(window_->scene()->faceColoring()), int(FaceColoring::Comparison));
-        Settings b = window_->settings();
-        b.builder = Builder::Meshopt;
-        window_->setSettings(b);
-        window_->waitUntilIdle();
-        QVERIFY(window_->settings().builder == Builder::Meshopt);
-        QVERIFY(window_->session().pinnedSettings()->builder == Builder::Optimized);
-
-        // The scene's per-face diff is the core's for the eye, and the legend counts its triangles.
-        const PreparedMesh& prepared = *window_->preparedMesh();
-        const ClusterSet& a = *window_->session().pinnedClusters();
-        const ClusterSet& current = *window_->clusters();
-        const Eye eye = window_->currentStatistics()->eye;
-        const std::vector<FaceDiff> diff = faceDiff(a, measureEye(prepared, a, eye, displayedTest(a.settings)).culled, current,
-                                                    window_->currentStatistics()->culled);
-        vtkDataArray* shown = window_->scene()->meshPolyData()->GetCellData()->GetArray(comparisonArrayName);
-        QVERIFY(shown);
-        size_t onlyA = 0;
-        for (size_t f = 0; f < diff.size(); ++f) {
-            QCOMPARE(shown->GetTuple1(vtkIdType(f)), double(diff[f]));
-            onlyA += diff[f] == FaceDiff::OnlyA;
-        }
-        QVERIFY(legendText(*window_->scene()).contains(QStringLiteral("culled by A only (%1 tris)").arg(onlyA)));
-        // The paired statistics over the orbit are the core's comparison.
-        QTRY_VERIFY(window_->session().orbitComparison());
-        const Comparison expected = compareClusterSets(prepared, a, current, orbitOf(window_->settings(), prepared.box));
-        const Comparison& orbit = *window_->session().orbitComparison();
-        QCOMPARE(orbit.trianglesCulledOnlyA, expected.trianglesCulledOnlyA);
-        QCOMPARE(orbit.trianglesCulledOnlyB, expected.trianglesCulledOnlyB);
-        QVERIFY(window_->statisticsPanel()->value(QStringLiteral("A / B culled over the orbit"))
-                    .contains(QLocale().toString(qulonglong(expected.trianglesCulledOnlyA))));
-        QVERIFY(window_->statisticsPanel()->findChild<QLabel*>(QStringLiteral("A (pinned)"))->isVisibleTo(window_->statisticsPanel()));
-        // The picked cluster is shown under A too.
-        window_->pickCluster(0);
-        QVERIFY(window_->clusterReportHtml().contains(QStringLiteral("Under A (pinned): cluster %1").arg(window_->session().pinnedClusterOf(0))));
-        saveWindowPicture(QStringLiteral("window-compare.png"));
-
-        // X swaps: the current settings are A's, A is what was current; nothing is rebuilt.
-        const ClusterSet* clustersOfA = &a;
-        QTest::keyClick(window_.get(), Qt::Key_X);
-        window_->waitUntilIdle();
-        QVERIFY(window_->settings().builder == Builder::Optimized);
-        QVERIFY(window_->session().pinnedSettings()->builder == Builder::Meshopt);
-        QCOMPARE(window_->clusters(), clustersOfA);
-        QVERIFY(window_->settingsPanel()->settings().builder == Builder::Optimized);
-        QTRY_VERIFY(window_->session().orbitComparison());
-        QCOMPARE(window_->session().orbitComparison()->trianglesCulledOnlyA, expected.trianglesCulledOnlyB);
-        // Unequal cluster counts are said in the panel.
-        const std::string warning = clusterCountWarning(*window_->session().orbitComparison());
-        QCOMPARE(window_->statisticsPanel()->value(QStringLiteral("A / B clusters")).contains(QStringLiteral("more than 5%")), !warning.empty());
-
-        // Shift+A clears the pin and goes back to the decision colours; a new mesh clears it too.
-        QTest::keyClick(window_.get(), Qt::Key_A, Qt::ShiftModifier);
-        QVERIFY(!window_->session().hasPin());
-        QCOMPARE(int(window_->scene()->faceColoring()), int(FaceColoring::CullDecision));
-        QTest::keyClick(window_.get(), Qt::Key_A);
-        QVERIFY(window_->openMeshBlocking(datasetPath("torus.off")));
-        QVERIFY(!window_->session().hasPin());
-        window_->pickCluster(-1);
-        window_->setFaceColoring(FaceColoring::CullDecision);
-        window_->setSettings(Settings{});
-        window_->waitUntilIdle();
-    }
-
     void exportsMatchTheCore() {
         QVERIFY(window_->openMeshBlocking(datasetPath("torus.off")));
         window_->setEyePosition({0.3, 2.0, 1.5});
@@ -967,45 +792,6 @@ private slots:
         // ResetCamera centres on everything shown (mesh, cones and eye marker): near the mesh centre.
         QVERIFY(glm::length(glm::dvec3(focal[0], focal[1], focal[2]) - center) < 2.0 * window_->preparedMesh()->box.halfDiagonal());
         QVERIFY(glm::length(glm::dvec3(focal[0], focal[1], focal[2]) - glm::dvec3(10.0)) > 5.0);
-    }
-
-    void secondMeshGetsItsOwnScale() {
-        // A mesh a thousand times larger, then the unit cube: the camera, the eye handle and the eye
-        // marker must follow the cube's size, and Reset must frame the cube.
-        const QString large = temporary_.filePath(QStringLiteral("large-cube.off"));
-        {
-            QFile file(large);
-            QVERIFY(file.open(QIODevice::WriteOnly | QIODevice::Text));
-            QTextStream out(&file);
-            out << "OFF\n8 12 0\n";
-            for (int i = 0; i < 8; ++i) out << ((i & 1) ? 500 : -500) << ' ' << ((i & 2) ? 500 : -500) << ' ' << ((i & 4) ? 500 : -500) << '\n';
-            const int faces[12][3] = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
-                                      {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}};
-            for (const auto& face : faces) out << "3 " << face[0] << ' ' << face[1] << ' ' << face[2] << '\n';
-        }
-        QVERIFY(window_->openMeshBlocking(large));
-        QVERIFY(window_->openMeshBlocking(datasetPath("cube.off")));
-        auto cameraDistance = [this]() {
-            vtkCamera* camera = observerRenderer(*window_)->GetActiveCamera();
-            return camera->GetDistance();
-        };
-        const double size = 2.0 * window_->preparedMesh()->box.halfDiagonal();
-        QVERIFY2(cameraDistance() < 20.0 * size, qPrintable(QString::number(cameraDistance())));
-        QVERIFY(glm::length(window_->eyePosition()) < 10.0 * size);
-        // Every prop the observer shows, the eye handle too, is within reach of the cube: nothing sized
-        // for the large mesh.
-        vtkPropCollection* props = observerRenderer(*window_)->GetViewProps();
-        props->InitTraversal();
-        while (vtkProp* prop = props->GetNextProp()) {
-            const double* bounds = prop->GetVisibility() ? prop->GetBounds() : nullptr;
-            for (int i = 0; bounds && i < 6; ++i)
-                QVERIFY2(std::abs(bounds[i]) < 10.0 * size, qPrintable(QString::fromLatin1(prop->GetClassName()) + " " + QString::number(bounds[i])));
-        }
-        vtkCamera* camera = observerRenderer(*window_)->GetActiveCamera();
-        camera->SetPosition(0.0, 0.0, 5000.0);
-        QTest::keyClick(window_.get(), Qt::Key_R);
-        QVERIFY2(cameraDistance() < 20.0 * size, qPrintable(QString::number(cameraDistance())));
-        saveWindowPicture(QStringLiteral("window-second-mesh.png"));
     }
 
     void dropOpensAMesh() {

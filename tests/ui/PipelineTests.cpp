@@ -291,6 +291,30 @@ private slots:
         QVERIFY2(errors.contains(QStringLiteral("clusters (0 to")), qPrintable(errors));
     }
 
+    void headlessScreenshotDrawsTheGaussMapAndAComparison() {
+        auto run = [&](const QStringList& extra, QString* errors = nullptr) {
+            QStringList arguments{QStringLiteral("--size"), QStringLiteral("240x180"), datasetPath("elephant.off")};
+            return runApplication(arguments + extra, errors);
+        };
+        // --gauss-map writes the picked cluster's Gauss map beside the screenshot; it needs --pick.
+        const QString shot = temporary_.filePath(QStringLiteral("pick.png")), gauss = temporary_.filePath(QStringLiteral("gauss.png"));
+        QCOMPARE(run({QStringLiteral("--screenshot"), shot, QStringLiteral("--pick"), QStringLiteral("2"), QStringLiteral("--gauss-map"), gauss}), 0);
+        QVERIFY(!QImage(shot).isNull());
+        QCOMPARE(QImage(gauss).size(), QSize(240, 180));
+        QString errors;
+        QCOMPARE(run({QStringLiteral("--screenshot"), shot, QStringLiteral("--gauss-map"), gauss}, &errors), 1);
+        QVERIFY2(errors.contains(QStringLiteral("--gauss-map needs")), qPrintable(errors));
+        // --compare: the diff colouring; unequal cluster counts are warned about; a bad K=V is refused.
+        const QString compared = temporary_.filePath(QStringLiteral("compare.png")), decided = temporary_.filePath(QStringLiteral("decide.png"));
+        QCOMPARE(run({QStringLiteral("--screenshot"), compared, QStringLiteral("--compare"), QStringLiteral("builder=meshopt")}, &errors), 0);
+        QCOMPARE(run({QStringLiteral("--screenshot"), decided}), 0);
+        QVERIFY(!QImage(compared).isNull() && QImage(compared) != QImage(decided));
+        QCOMPARE(run({QStringLiteral("--screenshot"), compared, QStringLiteral("--compare"), QStringLiteral("max-tris=24,max-verts=24")}, &errors), 0);
+        QVERIFY2(errors.contains(QStringLiteral("warning: A has")), qPrintable(errors));
+        QCOMPARE(run({QStringLiteral("--screenshot"), compared, QStringLiteral("--compare"), QStringLiteral("views=3")}, &errors), 1);
+        QVERIFY2(errors.contains(QStringLiteral("shared by both sides")), qPrintable(errors));
+    }
+
     void headlessScreenshotErrors() {
         const QString garbage = temporary_.filePath(QStringLiteral("garbage.off"));
         QFile file(garbage);

@@ -1,0 +1,66 @@
+// What the window test programs share: the window opened as a user sees it, pictures of it for
+// looking at when a test fails, and small readers of its views.
+#pragma once
+
+#include <memory>
+
+#include <QApplication>
+#include <QCoreApplication>
+#include <QDir>
+#include <QStandardPaths>
+#include <QString>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <QVTKOpenGLNativeWidget.h>
+#include <vtkLegendBoxActor.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkRendererCollection.h>
+
+#include "MainWindow.h"
+
+namespace conescope::testing {
+
+struct WindowFixture {
+    std::unique_ptr<MainWindow> window_;
+    QString outputDir_;
+    QTemporaryDir temporary_;
+
+    // The window at a fixed size, shown, active (no window manager under Xvfb: its shortcuts apply
+    // only so), with error dialogs off and the tests' own settings.
+    void openWindow() {
+        QStandardPaths::setTestModeEnabled(true);
+        QCoreApplication::setOrganizationName(QStringLiteral("ConeScopeTests"));
+        QCoreApplication::setApplicationName(QStringLiteral("conescope-ui-tests"));
+        outputDir_ = qEnvironmentVariable("CONESCOPE_UI_TEST_OUTPUT", QDir::tempPath());
+        QVERIFY(temporary_.isValid());
+        window_ = std::make_unique<MainWindow>();
+        window_->setErrorDialogsEnabled(false);
+        window_->resize(1280, 960);
+        window_->show();
+        QVERIFY(QTest::qWaitForWindowExposed(window_.get()));
+        QApplication::setActiveWindow(window_.get());
+        QCOMPARE(QApplication::activeWindow(), window_.get());
+    }
+
+    // The whole window as the user sees it, for looking at when a test fails.
+    void saveWindowPicture(const QString& name) {
+        QApplication::processEvents();
+        window_->grab().save(QDir(outputDir_).filePath(name));
+    }
+};
+
+inline vtkRenderer* observerRenderer(MainWindow& window) {
+    return window.observerView()->renderWindow()->GetRenderers()->GetFirstRenderer();
+}
+
+// Every legend entry's text, one per line.
+inline QString legendText(const ClusterScene& scene) {
+    QString text;
+    vtkLegendBoxActor* legend = scene.legend();
+    for (int i = 0; i < legend->GetNumberOfEntries(); ++i) text += QString::fromUtf8(legend->GetEntryString(i)) + '\n';
+    return text;
+}
+
+}  // namespace conescope::testing
