@@ -12,9 +12,10 @@
 
 namespace conescope {
 
-// The budget used when none is given: clusters 68% full, min(maxTriangles, 2 maxVertices) being
-// what a round patch within both limits can hold; at 64/124 about the count meshoptimizer's
-// builder reaches with cone weight 1.
+// The budget used when none is given: the count meshoptimizer's builder reaches at the same limits
+// with cone weight 1, so that a comparison at defaults is at equal counts. For limits meshoptimizer
+// does not take: clusters 68% full, min(maxTriangles, 2 maxVertices) being what a round patch within
+// both limits can hold.
 size_t defaultClusterBudget(const Mesh& mesh, const MeshletLimits& limits);
 
 // Optimises expectedCullRate under the vertex/triangle limits with clusters that stay connected
@@ -27,8 +28,10 @@ size_t defaultClusterBudget(const Mesh& mesh, const MeshletLimits& limits);
 // Annealing gets a fixed budget of face visits; a mesh too large for a few slow-cooling sweeps
 // gets none. A mesh of more than 2^17 faces is cut at median centroids into parts of at most that
 // many, which share the budget by triangles and are optimised independently, on all cores.
-// targetClusters = 0 uses defaultClusterBudget. The result has at most targetClusters clusters
-// whenever the reduction gets there (it stops a few above on meshes that do not allow it).
+// targetClusters = 0 uses defaultClusterBudget. Clusters merge across gaps between separate pieces
+// (with their nearest clusters) when that is what reaching the budget takes, and a run that stays
+// above it starts again from meshoptimizer's meshlets (which pack vertices tighter): the result has
+// at most targetClusters clusters whenever the limits allow meshoptimizer's count.
 // Deterministic: the same input gives the same partition, on any number of cores.
 // `progress` hears (parts done / parts, "clusters") as parts finish, on the calling thread;
 // returning false stops the parts not yet started and throws OperationCancelled.

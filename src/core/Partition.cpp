@@ -205,9 +205,13 @@ Partition buildKMeans(const Mesh& mesh, const FaceGeometry& faces, size_t cluste
     return compact(std::move(assignment));
 }
 
+bool meshoptTakesLimits(const MeshletLimits& limits) {
+    return limits.maxVertices >= 3 && limits.maxVertices <= 255 && limits.maxTriangles >= 1 && limits.maxTriangles <= 512 &&
+           limits.maxTriangles % 4 == 0;
+}
+
 Partition buildMeshoptMeshlets(const Mesh& mesh, const MeshletLimits& limits, float coneWeight) {
-    if (limits.maxVertices < 3 || limits.maxVertices > 255 || limits.maxTriangles < 1 || limits.maxTriangles > 512 ||
-        limits.maxTriangles % 4 != 0)
+    if (!meshoptTakesLimits(limits))
         throw std::invalid_argument("meshoptimizer needs 3 <= max vertices <= 255 and max triangles <= 512, divisible by 4 (got " +
                                     std::to_string(limits.maxVertices) + "/" + std::to_string(limits.maxTriangles) + ")");
     // Fan triangulation, remembering which face each triangle came from.

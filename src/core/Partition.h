@@ -32,6 +32,9 @@ Partition buildKMeans(const Mesh& mesh, const FaceGeometry& faces, size_t cluste
 // meshoptimizer's meshopt_buildMeshlets on the fan triangulation. A polygon goes to the meshlet
 // holding its first fan triangle.
 Partition buildMeshoptMeshlets(const Mesh& mesh, const MeshletLimits& limits, float coneWeight);
+// Whether meshoptimizer's builder takes these limits (3..255 vertices, at most 512 triangles, a
+// multiple of 4); buildMeshoptMeshlets throws std::invalid_argument otherwise.
+bool meshoptTakesLimits(const MeshletLimits& limits);
 
 // Ids given per face (from a mesh array or a text file), renumbered densely in order of first use.
 // Throws std::runtime_error if the count does not match or an id is negative / not an integer.

@@ -79,7 +79,9 @@ TEST(ClusterOptimizer, RespectsLimitsAndAssignsEveryFace) {
             SCOPED_TRACE(std::to_string(limits.maxVertices) + "/" + std::to_string(limits.maxTriangles));
             const Partition partition = buildOptimizedClusters(mesh, faces, limits);
             expectValidWithinLimits(mesh, partition, limits);
-            EXPECT_EQ(disconnectedClusters(mesh, partition), 0u);
+            EXPECT_LE(partition.clusterCount, defaultClusterBudget(mesh, limits));
+            // In one piece, but where only a merge across a gap reaches the budget: rarely.
+            EXPECT_LE(double(disconnectedClusters(mesh, partition)), std::max(1.0, 0.02 * double(partition.clusterCount)));
         }
     }
 }
@@ -125,13 +127,52 @@ TEST(ClusterOptimizer, MeetsTheBudget) {
     const Mesh mesh = testmesh::torus(1.0, 0.3, 64, 32);
     const FaceGeometry faces = computeFaceGeometry(mesh);
     const MeshletLimits limits{64, 124};
-    EXPECT_EQ(defaultClusterBudget(mesh, limits), size_t(std::ceil(4096.0 / (0.68 * 124.0))));
+    // By default: meshoptimizer's own count at cone weight 1, for a fair comparison at defaults.
+    EXPECT_EQ(defaultClusterBudget(mesh, limits), buildMeshoptMeshlets(mesh, limits, 1.0f).clusterCount);
+    // Limits meshoptimizer does not take: clusters about 68% full.
+    EXPECT_EQ(defaultClusterBudget(mesh, MeshletLimits{300, 124}), size_t(std::ceil(4096.0 / (0.68 * 124.0))));
     for (size_t budget : {size_t(50), size_t(60), size_t(90)}) {
         const Partition partition = buildOptimizedClusters(mesh, faces, limits, budget);
         expectValidWithinLimits(mesh, partition, limits);
         EXPECT_EQ(partition.clusterCount, budget);
     }
     EXPECT_EQ(buildOptimizedClusters(mesh, faces, limits).clusterCount, defaultClusterBudget(mesh, limits));
+}
+
+// Many separate pieces: each used to be a cluster at least. Clusters now merge across the gaps
+// with their nearest ones, within the limits, to reach any budget the limits allow.
+TEST(ClusterOptimizer, ManyPiecesReachABudgetBelowTheirCount) {
+    Mesh mesh;
+    for (int piece = 0; piece < 40; ++piece) {
+        Mesh ball = testmesh::icosphere(0);  // 20 triangles, 12 vertices
+        const uint32_t offset = uint32_t(mesh.positions.size());
+        for (glm::vec3 p : ball.positions) mesh.positions.push_back(0.2f * p + glm::vec3(float(piece % 8), float(piece / 8), 0.0f));
+        for (size_t f = 0; f < ball.faceCount(); ++f) {
+            std::vector<uint32_t> face(ball.faceBegin(f), ball.faceBegin(f) + ball.faceSize(f));
+            for (uint32_t& v : face) v += offset;
+            mesh.addFace(face.data(), face.size());
+        }
+    }
+    const FaceGeometry faces = computeFaceGeometry(mesh);
+    const MeshletLimits limits{64, 124};
+    // Budget, and the widest a cluster may be: 2, 3 and 5 pieces of the 8 x 5 grid (diagonal 8.1),
+    // side by side.
+    for (const auto& [budget, widest] : {std::pair{size_t(30), 2.5f}, std::pair{size_t(15), 3.5f}, std::pair{size_t(8), 5.0f}}) {
+        const Partition partition = buildOptimizedClusters(mesh, faces, limits, budget);
+        expectValidWithinLimits(mesh, partition, limits);
+        EXPECT_EQ(partition.clusterCount, budget);
+        EXPECT_EQ(buildOptimizedClusters(mesh, faces, limits, budget).clusterOfFace, partition.clusterOfFace);
+        // Merged pieces are near ones.
+        std::vector<glm::vec3> low(budget, glm::vec3(1e9f)), high(budget, glm::vec3(-1e9f));
+        for (size_t f = 0; f < mesh.faceCount(); ++f) {
+            const glm::vec3 p = mesh.positions[mesh.faceBegin(f)[0]];
+            low[partition.clusterOfFace[f]] = glm::min(low[partition.clusterOfFace[f]], p);
+            high[partition.clusterOfFace[f]] = glm::max(high[partition.clusterOfFace[f]], p);
+        }
+        for (size_t c = 0; c < budget; ++c) EXPECT_LT(glm::length(high[c] - low[c]), widest) << "cluster " << c << " of " << budget;
+    }
+    // Below what the limits allow (800 triangles need 7 clusters of 124), it gets as close as it can.
+    EXPECT_GE(buildOptimizedClusters(mesh, faces, limits, 2).clusterCount, 7u);
 }
 
 TEST(ClusterOptimizer, BeatsTheGreedyBuildersAtTheirClusterCount) {
@@ -211,11 +252,13 @@ TEST(ClusterOptimizer, LargeMeshesAreOptimisedInPartsAndStayValid) {
     const size_t budget = defaultClusterBudget(mesh, limits);
     const Partition partition = buildOptimizedClusters(mesh, faces, limits);
     expectValidWithinLimits(mesh, partition, limits);
-    EXPECT_EQ(disconnectedClusters(mesh, partition), 0u);
-    // The parts' shares add up to the budget; on this regular mesh the reduction stops a little
-    // above it, cut or not (2016 here, 2023 in one piece), well within the 5% of a fair comparison.
-    EXPECT_GE(partition.clusterCount, budget);
-    EXPECT_LE(double(partition.clusterCount), 1.05 * double(budget));
+    // The parts' shares add up to the budget. On this perfectly regular mesh growth and reduction
+    // stop above a part's share (about 3%), so each part starts again from meshoptimizer's meshlets,
+    // which get within a cluster or two of it (and cull more here after the local search); some of
+    // those meshlets are in more than one piece. Left: 0.3% above the budget on this mesh.
+    EXPECT_LE(double(partition.clusterCount), 1.005 * double(budget));
+    EXPECT_GE(double(partition.clusterCount), 0.98 * double(budget));
+    EXPECT_LE(double(disconnectedClusters(mesh, partition)), 0.15 * double(partition.clusterCount));
     // Same input, same partition, whatever order the parts finished in; progress is heard as
     // parts finish, rising to 1, on the calling thread.
     std::vector<double> fractions;

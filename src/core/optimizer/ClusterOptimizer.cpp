@@ -39,7 +39,28 @@ size_t annealingSweeps(size_t faceCount) {
     return sweeps < kMinSweeps ? 0 : sweeps;
 }
 
-// One run of the whole optimisation on a mesh, `sweeps` annealing sweeps (0: none).
+// The sum of the objective over the clusters: which of two runs to keep at the same count.
+double objectiveOf(const optimizer::State& state) {
+    double value = 0.0;
+    for (const optimizer::Cluster& cluster : state.clusters)
+        if (!cluster.faces.empty()) value += optimizer::valueOf(cluster.triangles, cluster.cap);
+    return value;
+}
+
+// Reduction to the budget and local search from the clusters `state` holds.
+void reduceAndSearch(optimizer::State& state, size_t target, size_t sweeps) {
+    optimizer::reduceTo(state, target);
+    optimizer::refine(state);
+    if (sweeps > 0) {
+        optimizer::anneal(state, sweeps);
+        optimizer::refine(state);
+    }
+}
+
+// One run of the whole optimisation on a mesh, `sweeps` annealing sweeps (0: none). Where growth
+// and reduction cannot get down to the budget (the limits bind: thin strips, many vertices per
+// triangle), they start again from meshoptimizer's meshlets, which pack vertices tighter, and the
+// run with fewer clusters (or the better objective at the same count) is kept.
 Partition optimizeClusters(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits, size_t target,
                            size_t sweeps) {
     optimizer::State state(mesh, faces, limits);
@@ -49,18 +70,21 @@ Partition optimizeClusters(const Mesh& mesh, const FaceGeometry& faces, const Me
         optimizer::clear(state);
         optimizer::grow(state, std::min(double(limits.maxTriangles), triangles / double(target)));
     }
-    optimizer::reduceTo(state, target);
-    optimizer::refine(state);
-    if (sweeps > 0) {
-        optimizer::anneal(state, sweeps);
-        optimizer::refine(state);
-    }
-    return optimizer::result(state);
+    reduceAndSearch(state, target, sweeps);
+    if (state.liveClusters <= target || !meshoptTakesLimits(limits)) return optimizer::result(state);
+    optimizer::State packed(mesh, faces, limits);
+    optimizer::assign(packed, buildMeshoptMeshlets(mesh, limits, 1.0f));
+    reduceAndSearch(packed, target, sweeps);
+    const bool better = packed.liveClusters < state.liveClusters ||
+                        (packed.liveClusters == state.liveClusters && objectiveOf(packed) > objectiveOf(state));
+    return optimizer::result(better ? packed : state);
 }
 
 }  // namespace
 
 size_t defaultClusterBudget(const Mesh& mesh, const MeshletLimits& limits) {
+    // meshoptimizer's own count at cone weight 1: the fair comparison at defaults.
+    if (meshoptTakesLimits(limits) && mesh.faceCount() > 0) return buildMeshoptMeshlets(mesh, limits, 1.0f).clusterCount;
     const double roundPatch = double(std::min(limits.maxTriangles, 2 * limits.maxVertices));
     const double perCluster = std::max(1.0, kDefaultFill * roundPatch);
     return std::max<size_t>(1, size_t(std::ceil(double(triangleCount(mesh)) / perCluster)));

@@ -1,7 +1,8 @@
 // Reduction to the budget: growth leaves more clusters than the budget, many small. The smallest
 // are dissolved face by face into their neighbours; where that gets stuck, whole clusters merge
 // (cheapest loss first), faces that save a vertex move to make room, and three clusters are cut
-// again into two.
+// again into two. Last, clusters merge with near ones they do not touch, so a mesh of many
+// separate pieces reaches the budget too.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -303,9 +304,48 @@ void mergeInto(State& state, uint32_t into, uint32_t from, const Cap& merged) {
     --state.liveClusters;
 }
 
+// How many of the nearest clusters (by centre) a cluster may merge with across a gap: near enough
+// that the merged cluster stays compact for frustum and occlusion culling. Where the limits stop
+// every such merge, farther ones are tried.
+constexpr size_t kNearestAcrossGaps[] = {6, 24, 96};
+
+constexpr double kSprawlWeight = 0.05;
+
+// The diagonal of the box around the face centroids: the scale distances are weighed against.
+double meshDiagonal(const State& state) {
+    glm::dvec3 low(std::numeric_limits<double>::max()), high(-std::numeric_limits<double>::max());
+    for (const glm::dvec3& c : state.geometry.centroids) low = glm::min(low, c), high = glm::max(high, c);
+    return state.faceCount ? glm::length(high - low) : 0.0;
+}
+
+// Triangle-weighted centre of each cluster's face centroids.
+glm::dvec3 clusterCentre(const State& state, uint32_t cluster) {
+    glm::dvec3 sum(0.0);
+    double weight = 0.0;
+    for (uint32_t f : state.clusters[cluster].faces) {
+        sum += double(state.faceTriangles[f]) * state.geometry.centroids[f];
+        weight += state.faceTriangles[f];
+    }
+    return weight > 0.0 ? sum / weight : sum;
+}
+
+// The `limit` live clusters nearest to `cluster` by centre, whether they touch it or not.
+void nearestClusters(const State& state, uint32_t cluster, const std::vector<glm::dvec3>& centres, size_t limit,
+                     std::vector<uint32_t>& out) {
+    std::vector<std::pair<double, uint32_t>> byDistance;
+    for (uint32_t c = 0; c < state.clusters.size(); ++c)
+        if (c != cluster && !state.clusters[c].faces.empty())
+            byDistance.emplace_back(glm::length(centres[c] - centres[cluster]), c);
+    const size_t kept = std::min(limit, byDistance.size());
+    std::partial_sort(byDistance.begin(), byDistance.begin() + long(kept), byDistance.end());
+    out.clear();
+    for (size_t i = 0; i < kept; ++i) out.push_back(byDistance[i].second);
+}
+
 // Whole-cluster merges, cheapest objective loss first (lazy heap: an entry is stale once either
-// cluster changed since it was pushed).
-void mergeCheapest(State& state, size_t count) {
+// cluster changed since it was pushed). Between clusters that share an edge (acrossGaps 0), or
+// between each cluster and its acrossGaps nearest: what lets a mesh of many pieces reach any budget.
+void mergeCheapest(State& state, size_t count, size_t acrossGaps) {
     struct Entry {
         double loss;
         uint32_t a, b, versionA, versionB;
@@ -318,11 +358,23 @@ void mergeCheapest(State& state, size_t count) {
     std::vector<uint32_t> version(state.clusters.size(), 0);
     std::priority_queue<Entry> heap;
     std::vector<uint32_t> neighbours;
+    std::vector<glm::dvec3> centres(state.clusters.size());
+    if (acrossGaps)
+        for (uint32_t c = 0; c < state.clusters.size(); ++c) centres[c] = clusterCentre(state, c);
+    const double diagonal = std::max(meshDiagonal(state), 1e-300);
     auto pushPairs = [&](uint32_t a) {
-        clustersAround(state, a, std::numeric_limits<size_t>::max(), neighbours);
+        if (acrossGaps)
+            nearestClusters(state, a, centres, acrossGaps, neighbours);
+        else
+            clustersAround(state, a, std::numeric_limits<size_t>::max(), neighbours);
         for (uint32_t b : neighbours) {
             Cap merged;
-            const double loss = mergeLoss(state, a, b, &merged);
+            double loss = mergeLoss(state, a, b, &merged);
+            // Across a gap the farther pair pays for its sprawl (what frustum and occlusion culling
+            // see): 5% of its triangles per mesh diagonal apart, so near pieces merge first.
+            if (acrossGaps)
+                loss += kSprawlWeight * double(state.clusters[a].triangles + state.clusters[b].triangles) *
+                        glm::length(centres[a] - centres[b]) / diagonal;
             const uint32_t low = std::min(a, b), high = std::max(a, b);
             if (std::isfinite(loss)) heap.push({loss, low, high, version[low], version[high]});
         }
@@ -336,11 +388,12 @@ void mergeCheapest(State& state, size_t count) {
         if (version[top.a] != top.versionA || version[top.b] != top.versionB) continue;
         if (state.clusters[top.a].faces.empty() || state.clusters[top.b].faces.empty()) continue;
         Cap merged;
-        if (!std::isfinite(mergeLoss(state, top.a, top.b, &merged))) continue;
+        if (!std::isfinite(mergeLoss(state, top.a, top.b, &merged))) continue;  // the entry's loss was this one's
         mergeInto(state, top.a, top.b, merged);
         ++version[top.a];
         ++version[top.b];
         ++done;
+        if (acrossGaps) centres[top.a] = clusterCentre(state, top.a);
         pushPairs(top.a);
     }
 }
@@ -370,6 +423,29 @@ size_t compact(State& state) {
     return moves;
 }
 
+// Empties a cluster into the clusters nearest to it, touching or not, each face where the objective
+// loses least: when whole clusters are too full to merge, their faces still fit one by one.
+// Undone (false) if some face fits nowhere.
+bool dissolveAcrossGaps(State& state, uint32_t cluster, const std::vector<glm::dvec3>& centres, size_t nearest) {
+    std::vector<uint32_t> targets;
+    nearestClusters(state, cluster, centres, nearest, targets);
+    state.undo.clear();
+    state.members = state.clusters[cluster].faces;
+    for (uint32_t face : state.members) {
+        const uint32_t to = cheapestHome(state, face, targets.data(), targets.size());
+        if (to == kNone) {
+            for (size_t i = state.undo.size(); i-- > 0;) move(state, state.undo[i].first, state.undo[i].second);
+            recomputeTouchedCaps(state);
+            return false;
+        }
+        state.undo.emplace_back(face, cluster);
+        moveGrowingCap(state, face, to);
+    }
+    recomputeTouchedCaps(state);
+    --state.liveClusters;
+    return true;
+}
+
 // Dissolving, smallest clusters first, while above the target.
 void dissolveSmallest(State& state, size_t target) {
     for (uint32_t c : clustersBySize(state)) {
@@ -382,7 +458,7 @@ void dissolveSmallest(State& state, size_t target) {
 
 void reduceTo(State& state, size_t target) {
     dissolveSmallest(state, target);
-    if (state.liveClusters > target) mergeCheapest(state, state.liveClusters - target);
+    if (state.liveClusters > target) mergeCheapest(state, state.liveClusters - target, 0);
     // Where every neighbour is full, three clusters become two, which frees room for more dissolving.
     for (int round = 0; round < 4 && state.liveClusters > target; ++round) {
         const size_t before = state.liveClusters;
@@ -394,6 +470,20 @@ void reduceTo(State& state, size_t target) {
         }
         dissolveSmallest(state, target);
         if (state.liveClusters == before) break;
+    }
+    // Still above: separate pieces (each at least one cluster) or clusters boxed in by full
+    // neighbours. The nearest ones merge across the gap, cheapest first.
+    for (size_t nearest : kNearestAcrossGaps) {
+        if (state.liveClusters > target) mergeCheapest(state, state.liveClusters - target, nearest);
+        if (state.liveClusters <= target) break;
+        // No whole pair fits: the smallest clusters go face by face into their nearest ones.
+        std::vector<glm::dvec3> centres(state.clusters.size());
+        for (uint32_t c = 0; c < state.clusters.size(); ++c) centres[c] = clusterCentre(state, c);
+        for (uint32_t c : clustersBySize(state)) {
+            if (state.liveClusters <= target) break;
+            if (dissolveAcrossGaps(state, c, centres, nearest))
+                for (const auto& [face, from] : state.undo) centres[state.clusterOf[face]] = clusterCentre(state, state.clusterOf[face]);
+        }
     }
 }
 

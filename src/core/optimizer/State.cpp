@@ -184,6 +184,17 @@ void clear(State& state) {
     state.liveClusters = 0;
 }
 
+void assign(State& state, const Partition& partition) {
+    clear(state);
+    state.clusters.resize(partition.clusterCount);
+    for (uint32_t f = 0; f < state.faceCount; ++f) attach(state, f, partition.clusterOfFace[f]);
+    for (uint32_t c = 0; c < state.clusters.size(); ++c) {
+        if (state.clusters[c].faces.empty()) continue;
+        state.clusters[c].cap = exactCap(state, c);
+        ++state.liveClusters;
+    }
+}
+
 Partition result(const State& state) {
     std::vector<uint32_t> renumber(state.clusters.size(), kNone);
     Partition partition;

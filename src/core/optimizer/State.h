@@ -137,6 +137,8 @@ bool staysConnectedWithout(State& state, uint32_t face);
 
 // No clusters: every face unassigned again.
 void clear(State& state);
+// The clusters of `partition` (covering every face), with their counts and exact caps.
+void assign(State& state, const Partition& partition);
 // The clusters as a partition, numbered in order of first use.
 Partition result(const State& state);
 
