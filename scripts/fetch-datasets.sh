@@ -6,6 +6,7 @@
 # and unpack only the meshes listed below. Running it again skips meshes already present.
 #
 #   scripts/fetch-datasets.sh              # into <repo>/datasets/cgal
+#   scripts/fetch-datasets.sh --all        # every mesh of the package (139) into <repo>/datasets/cgal-all
 #   CONESCOPE_CGAL_DEB=/path/to/libcgal-demo_*.deb scripts/fetch-datasets.sh   # offline
 #
 # Exit status is non-zero, with a message on stderr, if anything could not be fetched.
@@ -31,13 +32,25 @@ fail() {
 
 repository_root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 target_dir="${repository_root}/datasets/cgal"
+all=0
+if [[ "${1:-}" == "--all" ]]; then
+  all=1
+  target_dir="${repository_root}/datasets/cgal-all"
+elif [[ $# -gt 0 ]]; then
+  fail "unknown argument '$1' (expected --all or nothing)"
+fi
 mkdir -p "${target_dir}" || fail "cannot create ${target_dir}"
 
 missing=()
 for mesh in "${MESHES[@]}"; do
   [[ -s "${target_dir}/${mesh}" ]] || missing+=("${mesh}")
 done
-if [[ ${#missing[@]} -eq 0 ]]; then
+# --all: done once the folder holds the package's meshes (written last, as a marker).
+if [[ $all -eq 1 && -f "${target_dir}/.complete" ]]; then
+  echo "fetch-datasets: every mesh already present in ${target_dir}"
+  exit 0
+fi
+if [[ $all -eq 0 && ${#missing[@]} -eq 0 ]]; then
   echo "fetch-datasets: all ${#MESHES[@]} meshes already present in ${target_dir}"
   exit 0
 fi
@@ -74,6 +87,19 @@ fi
 dpkg-deb -x "${package}" "${work_dir}/package" || fail "cannot unpack ${package}"
 data_archive="${work_dir}/package/usr/share/doc/libcgal-dev/data.tar.gz"
 [[ -f "${data_archive}" ]] || fail "${package} has no usr/share/doc/libcgal-dev/data.tar.gz"
+
+if [[ $all -eq 1 ]]; then
+  tar -xzf "${data_archive}" -C "${work_dir}" data/meshes || fail "data.tar.gz has no data/meshes"
+  count=0
+  for source_file in "${work_dir}"/data/meshes/*; do
+    [[ -f "${source_file}" ]] || continue
+    cp "${source_file}" "${target_dir}/"
+    count=$((count + 1))
+  done
+  touch "${target_dir}/.complete"
+  echo "fetch-datasets: ${count} files into ${target_dir}"
+  exit 0
+fi
 
 members=()
 for mesh in "${missing[@]}"; do members+=("data/meshes/${mesh}"); done

@@ -80,8 +80,9 @@ TEST(ClusterOptimizer, RespectsLimitsAndAssignsEveryFace) {
             const Partition partition = buildOptimizedClusters(mesh, faces, limits);
             expectValidWithinLimits(mesh, partition, limits);
             EXPECT_LE(partition.clusterCount, defaultClusterBudget(mesh, limits));
-            // In one piece, but where only a merge across a gap reaches the budget: rarely.
-            EXPECT_LE(double(disconnectedClusters(mesh, partition)), std::max(1.0, 0.02 * double(partition.clusterCount)));
+            // In one piece mostly: a run started from meshoptimizer's meshlets (kept when it does
+            // better) can keep a meshlet that is in two pieces.
+            EXPECT_LE(double(disconnectedClusters(mesh, partition)), std::max(1.0, 0.15 * double(partition.clusterCount)));
         }
     }
 }

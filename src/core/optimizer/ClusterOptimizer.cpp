@@ -47,6 +47,15 @@ double objectiveOf(const optimizer::State& state) {
     return value;
 }
 
+// Whether run `a` is the one to keep over run `b`: within the budget first, then the nearer count to
+// it (fewer clusters cull less, and only equal counts compare fairly), then the better objective.
+bool closerToTheBudget(const optimizer::State& a, const optimizer::State& b, size_t target) {
+    const bool aAbove = a.liveClusters > target, bAbove = b.liveClusters > target;
+    if (aAbove != bAbove) return !aAbove;
+    if (a.liveClusters != b.liveClusters) return aAbove ? a.liveClusters < b.liveClusters : a.liveClusters > b.liveClusters;
+    return objectiveOf(a) > objectiveOf(b);
+}
+
 // Reduction to the budget and local search from the clusters `state` holds.
 void reduceAndSearch(optimizer::State& state, size_t target, size_t sweeps) {
     optimizer::reduceTo(state, target);
@@ -57,10 +66,16 @@ void reduceAndSearch(optimizer::State& state, size_t target, size_t sweeps) {
     }
 }
 
+// Below this many faces the search also starts from meshoptimizer's meshlets every time: on small
+// meshes of few clusters growth can end below meshoptimizer's own objective (CGAL's patch-01,
+// dragknob, patch-13), and the second start costs little there.
+constexpr size_t kBothStartsBelowFaces = size_t(1) << 14;
+
 // One run of the whole optimisation on a mesh, `sweeps` annealing sweeps (0: none). Where growth
 // and reduction cannot get down to the budget (the limits bind: thin strips, many vertices per
-// triangle), they start again from meshoptimizer's meshlets, which pack vertices tighter, and the
-// run with fewer clusters (or the better objective at the same count) is kept.
+// triangle), and always on small meshes, they start again from meshoptimizer's meshlets, which pack
+// vertices tighter, and the run with fewer clusters (or the better objective at the same count) is
+// kept.
 Partition optimizeClusters(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits, size_t target,
                            size_t sweeps) {
     optimizer::State state(mesh, faces, limits);
@@ -71,13 +86,12 @@ Partition optimizeClusters(const Mesh& mesh, const FaceGeometry& faces, const Me
         optimizer::grow(state, std::min(double(limits.maxTriangles), triangles / double(target)));
     }
     reduceAndSearch(state, target, sweeps);
-    if (state.liveClusters <= target || !meshoptTakesLimits(limits)) return optimizer::result(state);
+    const bool small = mesh.faceCount() < kBothStartsBelowFaces;
+    if ((state.liveClusters <= target && !small) || !meshoptTakesLimits(limits)) return optimizer::result(state);
     optimizer::State packed(mesh, faces, limits);
     optimizer::assign(packed, buildMeshoptMeshlets(mesh, limits, 1.0f));
     reduceAndSearch(packed, target, sweeps);
-    const bool better = packed.liveClusters < state.liveClusters ||
-                        (packed.liveClusters == state.liveClusters && objectiveOf(packed) > objectiveOf(state));
-    return optimizer::result(better ? packed : state);
+    return optimizer::result(closerToTheBudget(packed, state, target) ? packed : state);
 }
 
 }  // namespace
