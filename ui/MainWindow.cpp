@@ -84,13 +84,13 @@ void MainWindow::createDocks() {
     QDockWidget* gaussDock = dock(tr("Gauss map"), "gaussMapDock", gaussMap_, Qt::RightDockWidgetArea);
     tabifyDockWidget(sideDocks_[3], gaussDock);
     sideDocks_[3]->raise();
-    auto* showGauss = new QAction(tr("Show the Gauss map"), this);
-    showGauss->setShortcut(QKeySequence(tr("G")));
-    connect(showGauss, &QAction::triggered, gaussDock, [gaussDock]() {
+    showGaussMap_ = new QAction(tr("Show the Gauss map"), this);
+    showGaussMap_->setShortcut(QKeySequence(tr("G")));
+    connect(showGaussMap_, &QAction::triggered, gaussDock, [gaussDock]() {
         gaussDock->show();
         gaussDock->raise();
     });
-    addAction(showGauss);
+    addAction(showGaussMap_);
     connect(gaussDock, &QDockWidget::visibilityChanged, this, [this](bool visible) {
         if (visible) gaussMap_->render();
     });
@@ -321,7 +321,7 @@ void MainWindow::setFaceColoring(FaceColoring coloring) {
 
 QVTKOpenGLNativeWidget* MainWindow::observerView() const { return view_; }
 QVTKOpenGLNativeWidget* MainWindow::eyeView() const { return eyeView_; }
-QList<QAction*> MainWindow::shortcutActions() const { return actions_->shortcutActions(); }
+QList<QAction*> MainWindow::shortcutActions() const { return actions_->shortcutActions() << showGaussMap_; }
 QAction* MainWindow::animateAction() const { return actions_->animateAction(); }
 QAction* MainWindow::followAction() const { return actions_->followAction(); }
 QStringList MainWindow::recentFiles() const { return WindowActions::recentFiles(); }

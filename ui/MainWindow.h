@@ -149,6 +149,7 @@ private:
     PlotsView* plots_ = nullptr;
     PickedClusterView* clusterView_ = nullptr;
     GaussMapView* gaussMap_ = nullptr;
+    QAction* showGaussMap_ = nullptr;
     WorstClustersView* worstClusters_ = nullptr;
     SettingsPanel* settingsPanel_ = nullptr;
     EyePanel* eyePanel_ = nullptr;

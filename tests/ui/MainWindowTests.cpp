@@ -820,8 +820,13 @@ private slots:
         const QString html = HelpDialog::shortcutsHtml(window_->shortcutActions());
         for (const char* key : {"Ctrl+O", "Ctrl+S", "Ctrl+Shift+S", "F1", "Space"})
             QVERIFY2(html.contains(QLatin1String(key)), key);
-        for (const char* text : {"Look from here", "Reset camera", "Animate along the orbit", "Show faces"})
+        for (const char* text : {"Look from here", "Reset camera", "Animate along the orbit", "Show faces", "Pin as A",
+                                 "Swap A and B", "Show the Gauss map"})
             QVERIFY2(html.contains(QLatin1String(text)), text);
+        // Every shortcut the window answers to is in the list.
+        for (QAction* action : window_->findChildren<QAction*>())
+            if (!action->shortcut().isEmpty())
+                QVERIFY2(window_->shortcutActions().contains(action), qPrintable(action->text() + " " + action->shortcut().toString()));
     }
 };
 
