@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <random>
 #include <set>
@@ -174,6 +175,27 @@ TEST(ClusterOptimizer, ManyPiecesReachABudgetBelowTheirCount) {
     }
     // Below what the limits allow (800 triangles need 7 clusters of 124), it gets as close as it can.
     EXPECT_GE(buildOptimizedClusters(mesh, faces, limits, 2).clusterCount, 7u);
+}
+
+// A mesh of quads: meshoptimizer's meshlets (the second start) hold fan triangles, and a quad split
+// across two of them would overfill one; the result stays within the limits all the same.
+TEST(ClusterOptimizer, QuadMeshesStayWithinTheLimits) {
+    Mesh mesh;
+    const int n = 40;
+    for (int i = 0; i <= n; ++i)
+        for (int j = 0; j <= n; ++j)
+            mesh.positions.emplace_back(float(i), float(j), 0.3f * std::sin(0.4f * float(i)) * std::cos(0.3f * float(j)));
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) {
+            const uint32_t a = uint32_t(i * (n + 1) + j);
+            mesh.addFace({a, a + uint32_t(n + 1), a + uint32_t(n + 2), a + 1});
+        }
+    const FaceGeometry faces = computeFaceGeometry(mesh);
+    for (MeshletLimits limits : {MeshletLimits{64, 124}, MeshletLimits{32, 64}, MeshletLimits{16, 16}}) {
+        SCOPED_TRACE(std::to_string(limits.maxVertices) + "/" + std::to_string(limits.maxTriangles));
+        const Partition partition = buildOptimizedClusters(mesh, faces, limits);
+        expectValidWithinLimits(mesh, partition, limits);
+    }
 }
 
 TEST(ClusterOptimizer, BeatsTheGreedyBuildersAtTheirClusterCount) {

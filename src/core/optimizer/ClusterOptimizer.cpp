@@ -47,6 +47,12 @@ double objectiveOf(const optimizer::State& state) {
     return value;
 }
 
+bool withinLimits(const optimizer::State& state) {
+    for (const optimizer::Cluster& cluster : state.clusters)
+        if (cluster.triangles > state.limits.maxTriangles || cluster.vertices > state.limits.maxVertices) return false;
+    return true;
+}
+
 // Whether run `a` is the one to keep over run `b`: within the budget first, then the nearer count to
 // it (fewer clusters cull less, and only equal counts compare fairly), then the better objective.
 bool closerToTheBudget(const optimizer::State& a, const optimizer::State& b, size_t target) {
@@ -90,6 +96,9 @@ Partition optimizeClusters(const Mesh& mesh, const FaceGeometry& faces, const Me
     if ((state.liveClusters <= target && !small) || !meshoptTakesLimits(limits)) return optimizer::result(state);
     optimizer::State packed(mesh, faces, limits);
     optimizer::assign(packed, buildMeshoptMeshlets(mesh, limits, 1.0f));
+    // A polygon goes whole to the meshlet of its first fan triangle, which can then hold more than
+    // the limits: such a start is not taken (the search keeps limits, it does not restore them).
+    if (!withinLimits(packed)) return optimizer::result(state);
     reduceAndSearch(packed, target, sweeps);
     return optimizer::result(closerToTheBudget(packed, state, target) ? packed : state);
 }
