@@ -31,6 +31,8 @@ std::string differences(const Settings& settings, const Settings& base) {
     return text.empty() ? "(the common options)" : text;
 }
 
+std::string clusters(size_t count) { return std::to_string(count) + (count == 1 ? " cluster" : " clusters"); }
+
 std::string percent(double fraction) {
     char text[32];
     std::snprintf(text, sizeof text, "%.1f%%", 100.0 * fraction);
@@ -78,9 +80,9 @@ void writeComparisonText(const RunStatistics& a, const RunStatistics& b, const C
                          std::ostream& out) {
     const double back = double(std::max<size_t>(comparison.backFacingTriangles, 1));
     out << a.meshName << ": " << a.triangles << " triangles, " << comparison.views.size() << " views\n";
-    out << "A: " << differences(a.settings, base) << "\n   " << comparison.clustersA << " clusters, "
+    out << "A: " << differences(a.settings, base) << "\n   " << clusters(comparison.clustersA) << ", "
         << toString(comparison.coneA) << " / " << toString(comparison.testA) << ", efficiency " << percent(comparison.efficiencyA) << '\n';
-    out << "B: " << differences(b.settings, base) << "\n   " << comparison.clustersB << " clusters, "
+    out << "B: " << differences(b.settings, base) << "\n   " << clusters(comparison.clustersB) << ", "
         << toString(comparison.coneB) << " / " << toString(comparison.testB) << ", efficiency " << percent(comparison.efficiencyB) << '\n';
     out << "back-facing triangles culled by A only: " << comparison.trianglesCulledOnlyA << " ("
         << percent(double(comparison.trianglesCulledOnlyA) / back) << "), by B only: " << comparison.trianglesCulledOnlyB << " ("
