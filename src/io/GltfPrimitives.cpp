@@ -67,7 +67,11 @@ void checkInView(const GltfJson& gltf, const std::string& where, size_t view, ui
 // Sparse accessors replace `count` elements of their base; their index and value lists must fit too.
 void checkSparse(const GltfJson& gltf, const json& sparse, const std::string& where, uint64_t accessorCount,
                  uint64_t elementSize, GltfBufferUse& buffers) {
+    // Required and at least 1 (glTF 2.0, 3.6.2.3): without it assimp 5.2.5 copies past its buffers
+    // (found by fuzzing).
+    if (!gltf.member(sparse, "count", where)) gltf.fail(where, "has no count");
     const uint64_t count = gltf.countOr(sparse, "count", 0, where);
+    if (count == 0) gltf.fail(where + ".count", "must be at least 1");
     if (count > accessorCount)
         gltf.fail(where + ".count", std::to_string(count) + " replaced elements, more than the accessor's " +
                                         std::to_string(accessorCount));

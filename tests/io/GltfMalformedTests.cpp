@@ -97,6 +97,11 @@ TEST(GltfRefusal, AccessorsOutsideTheirBufferViews) {
     EXPECT_READ_ERROR(changedGltf(scratch, "sparse.gltf", "sparse.gltf",
                                   [](json& d) { d["accessors"][0]["sparse"]["count"] = 25; }),
                       "accessors[0].sparse.count: 25 replaced elements, more than the accessor's 24");
+    // Without a count (or with 0) assimp 5.2.5 copies past its buffers: refused before it sees the file.
+    EXPECT_READ_ERROR(changedGltf(scratch, "sparse.gltf", "sparse.gltf", [](json& d) { d["accessors"][0]["sparse"].erase("count"); }),
+                      "accessors[0].sparse: has no count");
+    EXPECT_READ_ERROR(changedGltf(scratch, "sparse.gltf", "sparse.gltf", [](json& d) { d["accessors"][0]["sparse"]["count"] = 0; }),
+                      "accessors[0].sparse.count: must be at least 1");
 }
 
 TEST(GltfRefusal, AccessorsOfTheWrongType) {
