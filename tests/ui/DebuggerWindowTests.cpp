@@ -157,6 +157,14 @@ private slots:
         const std::string warning = clusterCountWarning(*window_->session().orbitComparison());
         QCOMPARE(window_->statisticsPanel()->value(QStringLiteral("A / B clusters")).contains(QStringLiteral("more than 5%")), !warning.empty());
 
+        // Another winding repair makes another prepared mesh: A was made for the old one and goes.
+        Settings repaired = window_->settings();
+        repaired.fixWinding = true;
+        window_->setSettings(repaired);
+        window_->waitUntilIdle();
+        QVERIFY(!window_->session().hasPin());
+        QTest::keyClick(window_.get(), Qt::Key_A);
+        QVERIFY(window_->session().hasPin());
         // Shift+A clears the pin and goes back to the decision colours; a new mesh clears it too.
         QTest::keyClick(window_.get(), Qt::Key_A, Qt::ShiftModifier);
         QVERIFY(!window_->session().hasPin());
