@@ -210,11 +210,16 @@ bool meshoptTakesLimits(const MeshletLimits& limits) {
            limits.maxTriangles % 4 == 0;
 }
 
-Partition buildMeshoptMeshlets(const Mesh& mesh, const MeshletLimits& limits, float coneWeight) {
+namespace {
+
+void requireMeshoptLimits(const MeshletLimits& limits) {
     if (!meshoptTakesLimits(limits))
         throw std::invalid_argument("meshoptimizer needs 3 <= max vertices <= 255 and max triangles <= 512, divisible by 4 (got " +
                                     std::to_string(limits.maxVertices) + "/" + std::to_string(limits.maxTriangles) + ")");
-    // Fan triangulation, remembering which face each triangle came from.
+}
+
+// The faces as fan triangles, in face order: what meshoptimizer's builder takes.
+std::vector<uint32_t> fanTriangles(const Mesh& mesh) {
     std::vector<uint32_t> indices;
     indices.reserve(triangleCount(mesh) * 3);
     for (size_t f = 0; f < mesh.faceCount(); ++f) {
@@ -225,6 +230,28 @@ Partition buildMeshoptMeshlets(const Mesh& mesh, const MeshletLimits& limits, fl
             indices.push_back(face[k + 1]);
         }
     }
+    return indices;
+}
+
+}  // namespace
+
+size_t meshoptMeshletCount(const Mesh& mesh, const MeshletLimits& limits, float coneWeight) {
+    requireMeshoptLimits(limits);
+    const std::vector<uint32_t> indices = fanTriangles(mesh);
+    if (indices.empty()) return 0;
+    const size_t maxMeshlets = meshopt_buildMeshletsBound(indices.size(), limits.maxVertices, limits.maxTriangles);
+    std::vector<meshopt_Meshlet> meshlets(maxMeshlets);
+    std::vector<unsigned int> meshletVertices(maxMeshlets * limits.maxVertices);
+    std::vector<unsigned char> meshletTriangles(maxMeshlets * limits.maxTriangles * 3);
+    return meshopt_buildMeshlets(meshlets.data(), meshletVertices.data(), meshletTriangles.data(), indices.data(),
+                                 indices.size(), &mesh.positions[0].x, mesh.positions.size(), sizeof(glm::vec3),
+                                 limits.maxVertices, limits.maxTriangles, coneWeight);
+}
+
+Partition buildMeshoptMeshlets(const Mesh& mesh, const MeshletLimits& limits, float coneWeight) {
+    requireMeshoptLimits(limits);
+    // Fan triangulation; which face each triangle came from is found again below.
+    std::vector<uint32_t> indices = fanTriangles(mesh);
     // meshoptimizer reorders triangles inside meshlets, so the face of each output triangle is found
     // again by its sorted vertex triple (a list per triple handles duplicate faces).
     struct TripleHash {

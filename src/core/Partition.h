@@ -32,6 +32,9 @@ Partition buildKMeans(const Mesh& mesh, const FaceGeometry& faces, size_t cluste
 // meshoptimizer's meshopt_buildMeshlets on the fan triangulation. A polygon goes to the meshlet
 // holding its first fan triangle.
 Partition buildMeshoptMeshlets(const Mesh& mesh, const MeshletLimits& limits, float coneWeight);
+// How many meshlets buildMeshoptMeshlets makes, without mapping them back to faces (the default
+// budget of the optimized builder). Throws std::invalid_argument as buildMeshoptMeshlets does.
+size_t meshoptMeshletCount(const Mesh& mesh, const MeshletLimits& limits, float coneWeight);
 // Whether meshoptimizer's builder takes these limits (3..255 vertices, at most 512 triangles, a
 // multiple of 4); buildMeshoptMeshlets throws std::invalid_argument otherwise.
 bool meshoptTakesLimits(const MeshletLimits& limits);

@@ -107,7 +107,7 @@ Partition optimizeClusters(const Mesh& mesh, const FaceGeometry& faces, const Me
 
 size_t defaultClusterBudget(const Mesh& mesh, const MeshletLimits& limits) {
     // meshoptimizer's own count at cone weight 1: the fair comparison at defaults.
-    if (meshoptTakesLimits(limits) && mesh.faceCount() > 0) return buildMeshoptMeshlets(mesh, limits, 1.0f).clusterCount;
+    if (meshoptTakesLimits(limits) && mesh.faceCount() > 0) return meshoptMeshletCount(mesh, limits, 1.0f);
     const double roundPatch = double(std::min(limits.maxTriangles, 2 * limits.maxVertices));
     const double perCluster = std::max(1.0, kDefaultFill * roundPatch);
     return std::max<size_t>(1, size_t(std::ceil(double(triangleCount(mesh)) / perCluster)));
