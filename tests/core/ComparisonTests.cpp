@@ -15,6 +15,30 @@ PreparedMesh preparedTorus() {
     return prepareMesh(std::make_shared<Mesh>(testmesh::torus(1.0, 0.35, 64, 24)), "torus", false);
 }
 
+// The torus as quads, every third ring of quad pairs merged into hexagons, and a zero-area triangle
+// on every eighth ring: polygons weigh their triangles and degenerate faces never face away.
+PreparedMesh preparedPolygonTorus() {
+    const int rings = 48, sides = 24;
+    Mesh mesh = testmesh::torus(1.0, 0.35, rings, sides);
+    mesh.faceStarts = {0};
+    mesh.faceVertices.clear();
+    auto index = [&](int i, int j) { return uint32_t((i % rings) * sides + (j % sides)); };
+    for (int i = 0; i < rings; ++i) {
+        for (int j = 0; j < sides; j += (i % 3 == 0 ? 2 : 1)) {
+            if (i % 3 == 0)
+                mesh.addFace({index(i, j), index(i, j + 1), index(i, j + 2), index(i + 1, j + 2), index(i + 1, j + 1), index(i + 1, j)});
+            else
+                mesh.addFace({index(i, j), index(i, j + 1), index(i + 1, j + 1), index(i + 1, j)});
+        }
+        if (i % 8 == 0) {
+            const glm::vec3 middle = 0.5f * (mesh.positions[index(i, 0)] + mesh.positions[index(i + 1, 0)]);
+            mesh.positions.push_back(middle);
+            mesh.addFace({index(i, 0), uint32_t(mesh.positions.size() - 1), index(i + 1, 0)});
+        }
+    }
+    return prepareMesh(std::make_shared<Mesh>(mesh), "polygon torus", false);
+}
+
 Settings withBuilder(Builder builder, size_t maxTriangles = 48) {
     Settings settings;
     settings.builder = builder;
@@ -41,10 +65,12 @@ void expectIdentities(const PreparedMesh& prepared, const ClusterSet& a, const C
     EXPECT_EQ(comparison.trianglesCulledOnlyB + comparison.trianglesCulledBoth, statsB.trianglesCulled);
     EXPECT_DOUBLE_EQ(comparison.efficiencyA, statsA.efficiency);
     EXPECT_DOUBLE_EQ(comparison.efficiencyB, statsB.efficiency);
-    // The per-face view counts add up to the triangles (all faces are triangles here).
+    // The per-face view counts, each face weighted by its triangles, add up to the triangle totals.
+    const Mesh& mesh = prepared.mesh();
+    ASSERT_EQ(comparison.viewsCulledOnlyA.size(), mesh.faceCount());
     size_t onlyA = 0, onlyB = 0;
-    for (size_t f = 0; f < comparison.viewsCulledOnlyA.size(); ++f)
-        onlyA += comparison.viewsCulledOnlyA[f], onlyB += comparison.viewsCulledOnlyB[f];
+    for (size_t f = 0; f < mesh.faceCount(); ++f)
+        onlyA += comparison.viewsCulledOnlyA[f] * (mesh.faceSize(f) - 2), onlyB += comparison.viewsCulledOnlyB[f] * (mesh.faceSize(f) - 2);
     EXPECT_EQ(onlyA, comparison.trianglesCulledOnlyA);
     EXPECT_EQ(onlyB, comparison.trianglesCulledOnlyB);
 }
@@ -91,6 +117,39 @@ TEST(Comparison, EachSideAddsUpToItsOwnStatistics) {
     expectIdentities(prepared, optimized, meshlet, orbitOf(base, prepared.box));
     const Comparison comparison = compareClusterSets(prepared, optimized, meshlet, orbitOf(base, prepared.box));
     EXPECT_GT(comparison.trianglesCulledOnlyA + comparison.trianglesCulledOnlyB, 0u);
+}
+
+TEST(Comparison, PolygonsWeighTheirTrianglesAndDegenerateFacesNeverCount) {
+    const PreparedMesh prepared = preparedPolygonTorus();
+    ASSERT_GT(prepared.faces.degenerateCount, 0u);
+    ASSERT_GT(triangleCount(prepared.mesh()), prepared.mesh().faceCount());  // most faces are not triangles
+    const Settings base = withBuilder(Builder::Optimized, 32);
+    Settings averageSphere = withBuilder(Builder::Meshlet, 32);
+    averageSphere.cones = {ConeMethod::Average};
+    averageSphere.tests = {CullTest::Sphere};
+    const ClusterSet optimized = buildClusters(prepared, base);
+    const ClusterSet meshlet = buildClusters(prepared, averageSphere);
+    const std::vector<Eye> views = orbitOf(base, prepared.box);
+    expectIdentities(prepared, optimized, meshlet, views);
+    const Comparison comparison = compareClusterSets(prepared, optimized, meshlet, views);
+    EXPECT_GT(comparison.trianglesCulledOnlyA + comparison.trianglesCulledOnlyB, 0u);
+    for (size_t f = 0; f < prepared.mesh().faceCount(); ++f)
+        if (prepared.faces.degenerate[f]) EXPECT_EQ(comparison.viewsCulledOnlyA[f] + comparison.viewsCulledOnlyB[f], 0u) << f;
+}
+
+TEST(Comparison, ProgressHearsOfTheViewsAndMayCancel) {
+    const PreparedMesh prepared = preparedTorus();
+    const ClusterSet clusters = buildClusters(prepared, withBuilder(Builder::Optimized));
+    const std::vector<Eye> views = orbitOf(clusters.settings, prepared.box);
+    size_t calls = 0;
+    compareClusterSets(prepared, clusters, clusters, views, [&calls](double fraction, const std::string&) {
+        EXPECT_GE(fraction, 0.0);
+        EXPECT_LT(fraction, 1.0);
+        return ++calls > 0;
+    });
+    EXPECT_EQ(calls, (views.size() + 15) / 16);
+    EXPECT_THROW(compareClusterSets(prepared, clusters, clusters, views, [](double, const std::string&) { return false; }),
+                 OperationCancelled);
 }
 
 TEST(Comparison, FaceDiffFollowsEachSidesClusterDecision) {
