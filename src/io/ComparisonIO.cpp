@@ -31,7 +31,8 @@ std::string differences(const Settings& settings, const Settings& base) {
     return text.empty() ? "(the common options)" : text;
 }
 
-std::string clusters(size_t count) { return std::to_string(count) + (count == 1 ? " cluster" : " clusters"); }
+// "1 cluster", "2 clusters": the summary is read by people.
+std::string counted(size_t count, const std::string& noun) { return std::to_string(count) + " " + noun + (count == 1 ? "" : "s"); }
 
 std::string percent(double fraction) {
     char text[32];
@@ -79,10 +80,10 @@ void writeComparisonCsv(const Comparison& comparison, std::ostream& out) {
 void writeComparisonText(const RunStatistics& a, const RunStatistics& b, const Comparison& comparison, const Settings& base,
                          std::ostream& out) {
     const double back = double(std::max<size_t>(comparison.backFacingTriangles, 1));
-    out << a.meshName << ": " << a.triangles << " triangles, " << comparison.views.size() << " views\n";
-    out << "A: " << differences(a.settings, base) << "\n   " << clusters(comparison.clustersA) << ", "
+    out << a.meshName << ": " << a.triangles << " triangles, " << counted(comparison.views.size(), "view") << '\n';
+    out << "A: " << differences(a.settings, base) << "\n   " << counted(comparison.clustersA, "cluster") << ", "
         << toString(comparison.coneA) << " / " << toString(comparison.testA) << ", efficiency " << percent(comparison.efficiencyA) << '\n';
-    out << "B: " << differences(b.settings, base) << "\n   " << clusters(comparison.clustersB) << ", "
+    out << "B: " << differences(b.settings, base) << "\n   " << counted(comparison.clustersB, "cluster") << ", "
         << toString(comparison.coneB) << " / " << toString(comparison.testB) << ", efficiency " << percent(comparison.efficiencyB) << '\n';
     out << "back-facing triangles culled by A only: " << comparison.trianglesCulledOnlyA << " ("
         << percent(double(comparison.trianglesCulledOnlyA) / back) << "), by B only: " << comparison.trianglesCulledOnlyB << " ("

@@ -14,6 +14,7 @@ using clitest::dataset;
 using clitest::removeTimings;
 using clitest::runCli;
 using clitest::runStatsJson;
+using clitest::ScratchDirectory;
 using clitest::splitLines;
 
 nlohmann::json runCompareJson(const std::vector<std::string>& arguments, std::string* err = nullptr) {
@@ -76,6 +77,29 @@ TEST(CliCompare, SameConfigurationDiffersNowhere) {
     EXPECT_TRUE(diff["cluster_count_warning"].is_null());
 }
 
+// An imported partition is a side like any other, a path with a comma in it included; one eye is one row.
+TEST(CliCompare, AClusterFileSideIsTheStatsRunOfThatFile) {
+    const std::string mesh = dataset("torus.off");
+    const size_t faces = runStatsJson({mesh, "--views", "1"})["mesh"]["faces"].get<size_t>();
+    ScratchDirectory scratch;
+    std::string ids;
+    for (size_t f = 0; f < faces; ++f) ids += std::to_string(f / 12) + "\n";  // runs of 12 faces
+    const std::string idFile = scratch.writeFile("ids,rings.txt", ids);
+    const nlohmann::json json =
+        runCompareJson({mesh, "--eye", "0.3,-0.4,3", "--a", "builder=file,cluster-file=" + idFile + ",test=sphere", "--b", ""});
+    expectSame(json["a"], runStatsJson({mesh, "--eye", "0.3,-0.4,3", "--builder", "file", "--cluster-file", idFile, "--test", "sphere"}));
+    expectSame(json["b"], runStatsJson({mesh, "--eye", "0.3,-0.4,3"}));
+    const nlohmann::json& diff = json["diff"];
+    EXPECT_EQ(diff["clusters_a"], (faces + 11) / 12);
+    ASSERT_EQ(diff["views"].size(), 1u);
+    EXPECT_EQ(diff["views"][0]["back_facing_triangles"], diff["back_facing_triangles"]);
+    EXPECT_GT(diff["triangles_culled_only_a"].get<size_t>() + diff["triangles_culled_only_b"].get<size_t>(), 0u);
+    EXPECT_EQ(diff["triangles_culled_only_a"].get<size_t>() + diff["triangles_culled_both"].get<size_t>(),
+              json["a"]["results"][0]["triangles_culled"]);
+    EXPECT_EQ(diff["triangles_culled_only_b"].get<size_t>() + diff["triangles_culled_both"].get<size_t>(),
+              json["b"]["results"][0]["triangles_culled"]);
+}
+
 TEST(CliCompare, UnequalClusterCountsAreWarnedAboutEvenWhenQuiet) {
     std::string err;
     const nlohmann::json diff =
@@ -98,6 +122,9 @@ TEST(CliCompare, CsvIsOneTidyTableAndTextASummary) {
     EXPECT_NE(text.out.find("A: cone=average"), std::string::npos) << text.out;
     EXPECT_NE(text.out.find("culled by A only"), std::string::npos) << text.out;
     EXPECT_LT(splitLines(text.out).size(), 10u);
+    const CliRun oneEye = runCli({"compare", dataset("cube.off"), "--eye", "0,0,5", "--a", "", "--b", "", "--format", "text", "-q"});
+    ASSERT_EQ(oneEye.exitCode, 0) << oneEye.err;
+    EXPECT_NE(oneEye.out.find(" triangles, 1 view\n"), std::string::npos) << oneEye.out;
 }
 
 TEST(CliCompare, BadConfigurationsAreUsageErrors) {
