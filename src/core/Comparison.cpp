@@ -33,8 +33,9 @@ struct ConfigurationPair {
     std::optional<std::string> value;  // none: "K" alone
 };
 
-// "K=V" pieces split at commas; a piece that does not start with a known option continues the value
-// before it.
+// "K=V" pieces split at commas; a piece without "=" that is not an option continues the value before
+// it (lists, paths with commas), while any piece with "=" is a pair of its own, so a mistyped key is
+// named as unknown rather than read as part of the value before it.
 std::vector<ConfigurationPair> configurationPairs(const std::string& text) {
     std::vector<ConfigurationPair> pairs;
     size_t start = 0;
@@ -43,7 +44,7 @@ std::vector<ConfigurationPair> configurationPairs(const std::string& text) {
         const std::string piece = text.substr(start, comma - start);
         const size_t equals = piece.find('=');
         const std::string key = piece.substr(0, equals);
-        if (pairs.empty() || sharedOption(key) || configurationField(key)) {
+        if (pairs.empty() || equals != std::string::npos || sharedOption(key) || configurationField(key)) {
             pairs.push_back({key, equals == std::string::npos ? std::nullopt : std::optional(piece.substr(equals + 1))});
         } else {
             std::optional<std::string>& value = pairs.back().value;

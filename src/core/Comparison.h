@@ -16,8 +16,10 @@ namespace conescope {
 // "K=V,K=V" on top of `base`: K a run option's flag without the dashes (builder=meshopt, max-tris=64,
 // cone=average, test=sphere, cluster-file=ids.txt, ...), V its text as the option takes it; an on/off
 // option takes K alone or K=on/off (true/false, 1/0). A piece without "=" whose text is not an option
-// continues the value before it, so lists and paths keep their commas (cone=minimal,average). The
-// shared options (views, distance, eye, ortho, fix-winding) are refused: both sides use the same.
+// continues the value before it, so lists and paths keep their commas (cone=minimal,average); a
+// piece with "=" always starts an option of its own (a mistyped key is named, and a value cannot
+// hold ",x="). The shared options (views, distance, eye, ortho, fix-winding) are refused: both
+// sides use the same.
 // Throws std::invalid_argument naming the key and what it accepts.
 Settings parseConfiguration(const std::string& text, const Settings& base);
 

@@ -214,6 +214,9 @@ TEST(Comparison, ConfigurationTextRefusesSharedUnknownAndBadOptions) {
     EXPECT_NE(message("fix-winding").find("shared by both sides"), std::string::npos);
     EXPECT_NE(message("colour=red").find("unknown option 'colour'"), std::string::npos);
     EXPECT_NE(message("colour=red").find("max-tris"), std::string::npos) << "lists what it accepts";
+    EXPECT_NE(message("max-tris=64,max-trs=32").find("unknown option 'max-trs'"), std::string::npos) << "not part of 64";
+    EXPECT_NE(message("builder=meshopt,colour=red").find("unknown option 'colour'"), std::string::npos);
+    EXPECT_NE(message("cone=minimal,averag").find("averag"), std::string::npos) << "a continued list names its bad item";
     EXPECT_NE(message("max-tris=0"), "accepted");
     EXPECT_NE(message("cone=widest"), "accepted");
     EXPECT_NE(message("builder").find("needs a value"), std::string::npos);
