@@ -235,10 +235,7 @@ int runHeadlessScreenshot(const AppOptions& options) {
         if (options.compare) {
             // A: the options changed by --compare; B: the clusters shown. The diff of this eye per face.
             const ClusterSet a = buildClusters(prepared, parseConfiguration(*options.compare, settings));
-            const EyeMeasurement measuredA = measureEye(prepared, a, measurement.eye, displayedTest(a.settings));
-            const std::vector<FaceDiff> diff = faceDiff(a, measuredA.culled, clusters, measurement.culled);
-            const std::string warning = clusterCountWarning(compareClusterSets(prepared, a, clusters, {measurement.eye}));
-            scene.setFaceComparison(diff, warning);
+            const std::string warning = clusterCountWarning(showComparison(scene, prepared, a, clusters, measurement));
             if (!warning.empty()) std::cerr << "conescope: warning: " << warning << '\n';
         }
         for (const auto& [layer, visible] : firstLookLayers()) scene.setLayerVisible(layer, visible);

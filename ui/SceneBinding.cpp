@@ -37,6 +37,15 @@ void showEyeColouring(ClusterScene& scene, const PreparedMesh& prepared, const C
     else scene.setFaceLoss(faceLosses(clusters, measurement, facing));
 }
 
+Comparison showComparison(ClusterScene& scene, const PreparedMesh& prepared, const ClusterSet& a, const ClusterSet& b,
+                          const EyeMeasurement& measurement) {
+    const std::vector<uint8_t> culledA = cullClusters(cullingInput(prepared, a), measurement.eye, displayedTest(a.settings));
+    std::vector<FaceDiff> diff;
+    Comparison comparison = compareAtEye(prepared, a, culledA, b, measurement.culled, measurement.eye, diff);
+    scene.setFaceComparison(diff, clusterCountWarning(comparison));
+    return comparison;
+}
+
 void showTestDrawing(ClusterScene& scene, const PreparedMesh& prepared, const ClusterSet& clusters, int cluster,
                      const EyeMeasurement& measurement) {
     if (cluster < 0 || cluster >= int(clusters.bounds.count())) {

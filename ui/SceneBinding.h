@@ -5,6 +5,7 @@
 #include <map>
 #include <memory>
 
+#include "core/Comparison.h"
 #include "core/Pipeline.h"
 #include "scene/ClusterScene.h"
 
@@ -26,6 +27,12 @@ void showMeasurement(ClusterScene& scene, const PreparedMesh& prepared, const Cl
 // at every eye move is left to the colourings that show it.
 void showEyeColouring(ClusterScene& scene, const PreparedMesh& prepared, const ClusterSet& clusters,
                       const EyeMeasurement& measurement, FaceColoring coloring);
+
+// A (`a`, pinned or from --compare) against B (the scene's clusters, measured from the eye): A's
+// decisions from that eye, the per-face diff and the cluster-count warning into the scene. Returns
+// the eye's comparison, for the statistics.
+Comparison showComparison(ClusterScene& scene, const PreparedMesh& prepared, const ClusterSet& a, const ClusterSet& b,
+                          const EyeMeasurement& measurement);
 
 // The picked cluster's test from the measured eye (Layer::Test); cluster -1 clears it.
 void showTestDrawing(ClusterScene& scene, const PreparedMesh& prepared, const ClusterSet& clusters, int cluster,

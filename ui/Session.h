@@ -98,8 +98,7 @@ public:
     bool hasPin() const { return pin_.has_value(); }
     const Settings* pinnedSettings() const { return pin_ ? &pin_->settings : nullptr; }
     const ClusterSet* pinnedClusters() const { return pin_ ? pin_->clusters.get() : nullptr; }
-    // A from the current eye, and A against B from it; null without a pin or a measured eye.
-    const EyeMeasurement* pinnedMeasurement() const { return pinnedMeasurement_ ? &*pinnedMeasurement_ : nullptr; }
+    // A against B from the current eye; null without a pin or a measured eye.
     const Comparison* eyeComparison() const { return eyeComparison_ ? &*eyeComparison_ : nullptr; }
     // A against B over the orbit; null until measured.
     const Comparison* orbitComparison() const { return orbitComparison_ ? &*orbitComparison_ : nullptr; }
@@ -147,7 +146,7 @@ private:
     void adoptBuilderOf(const ClusterSet& clusters);
     void updateEye();
     void measureCurrentEye();
-    // A's decisions from the measured eye and the per-face diff in the scene (or none without a pin).
+    // A against B from the measured eye, its per-face diff in the scene (or none without a pin).
     void measurePinnedEye();
     void requestOrbitComparison();
     // Drops a pin made for another prepared mesh (a new file, another winding repair).
@@ -176,7 +175,6 @@ private:
         std::shared_ptr<const PreparedMesh> prepared;  // the mesh the clusters were made for
     };
     std::optional<Pin> pin_;
-    std::optional<EyeMeasurement> pinnedMeasurement_;
     std::optional<Comparison> eyeComparison_;
     std::optional<Comparison> orbitComparison_;
 };

@@ -20,7 +20,6 @@ void Session::clearPin() {
     if (!pin_) return;
     runner_.cancel(taskgroups::comparison);
     pin_.reset();
-    pinnedMeasurement_.reset();
     eyeComparison_.reset();
     orbitComparison_.reset();
     if (scene_) scene_->setFaceComparison({});
@@ -55,18 +54,13 @@ void Session::dropStalePin() {
 }
 
 void Session::measurePinnedEye() {
-    pinnedMeasurement_.reset();
     eyeComparison_.reset();
     if (!scene_) return;
     if (!pin_ || !measurement_ || !prepared_ || !clusters_) {
         scene_->setFaceComparison({});
         return;
     }
-    const Eye& eye = measurement_->eye;
-    pinnedMeasurement_ = measureEye(*prepared_, *pin_->clusters, eye, displayedTest(pin_->settings));
-    eyeComparison_ = compareClusterSets(*prepared_, *pin_->clusters, *clusters_, {eye});
-    scene_->setFaceComparison(faceDiff(*pin_->clusters, pinnedMeasurement_->culled, *clusters_, measurement_->culled),
-                              clusterCountWarning(*eyeComparison_));
+    eyeComparison_ = showComparison(*scene_, *prepared_, *pin_->clusters, *clusters_, *measurement_);
 }
 
 void Session::requestOrbitComparison() {

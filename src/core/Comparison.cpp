@@ -55,11 +55,46 @@ std::vector<ConfigurationPair> configurationPairs(const std::string& text) {
     return pairs;
 }
 
-// An on/off option: K alone or K=on/off.
-bool flagValue(const std::string& key, const std::optional<std::string>& value) {
-    if (!value || *value == "on" || *value == "true" || *value == "1") return true;
-    if (*value == "off" || *value == "false" || *value == "0") return false;
-    throw std::invalid_argument(key + "=" + *value + ": expected " + key + " alone or " + key + "=on/off");
+// An empty comparison of A and B: what both sides are, and per-face counts at zero.
+Comparison emptyComparison(const PreparedMesh& prepared, const ClusterSet& a, const ClusterSet& b) {
+    const size_t faceCount = prepared.mesh().faceCount();
+    if (a.partition.clusterOfFace.size() != faceCount || b.partition.clusterOfFace.size() != faceCount)
+        throw std::invalid_argument("compareClusterSets: A and B must partition the prepared mesh");
+    Comparison comparison;
+    comparison.testA = displayedTest(a.settings), comparison.testB = displayedTest(b.settings);
+    comparison.coneA = a.bounds.coneMethod, comparison.coneB = b.bounds.coneMethod;
+    comparison.clustersA = a.bounds.count(), comparison.clustersB = b.bounds.count();
+    comparison.viewsCulledOnlyA.assign(faceCount, 0);
+    comparison.viewsCulledOnlyB.assign(faceCount, 0);
+    return comparison;
+}
+
+// One view's faces into the comparison: back-facing triangles only, as triangles_culled counts them.
+void addView(Comparison& comparison, const Mesh& mesh, const Eye& eye, const std::vector<Facing>& facing,
+             const std::vector<FaceDiff>& diff) {
+    ViewComparison view;
+    view.view = comparison.views.size();
+    view.eye = eye;
+    for (size_t f = 0; f < diff.size(); ++f) {
+        if (facing[f] != Facing::Back) continue;
+        const size_t triangles = mesh.faceSize(f) - 2;
+        view.backFacingTriangles += triangles;
+        switch (diff[f]) {
+            case FaceDiff::OnlyA: view.trianglesCulledOnlyA += triangles, ++comparison.viewsCulledOnlyA[f]; break;
+            case FaceDiff::OnlyB: view.trianglesCulledOnlyB += triangles, ++comparison.viewsCulledOnlyB[f]; break;
+            case FaceDiff::Both: view.trianglesCulledBoth += triangles; break;
+            case FaceDiff::Neither: break;
+        }
+    }
+    view.efficiencyA = cullEfficiency(view.trianglesCulledOnlyA + view.trianglesCulledBoth, view.backFacingTriangles);
+    view.efficiencyB = cullEfficiency(view.trianglesCulledOnlyB + view.trianglesCulledBoth, view.backFacingTriangles);
+    comparison.trianglesCulledOnlyA += view.trianglesCulledOnlyA;
+    comparison.trianglesCulledOnlyB += view.trianglesCulledOnlyB;
+    comparison.trianglesCulledBoth += view.trianglesCulledBoth;
+    comparison.backFacingTriangles += view.backFacingTriangles;
+    comparison.efficiencyA = cullEfficiency(comparison.trianglesCulledOnlyA + comparison.trianglesCulledBoth, comparison.backFacingTriangles);
+    comparison.efficiencyB = cullEfficiency(comparison.trianglesCulledOnlyB + comparison.trianglesCulledBoth, comparison.backFacingTriangles);
+    comparison.views.push_back(view);
 }
 
 }  // namespace
@@ -81,12 +116,10 @@ Settings parseConfiguration(const std::string& text, const Settings& base) {
         if (!field)
             throw std::invalid_argument("unknown option '" + key + "' in a configuration (expected K=V with K one of: " +
                                         joined(configurationKeys()) + ")");
-        if (field->kind == SettingKind::Flag) {
-            field->assign(settings, flagValue(key, value));
-            continue;
-        }
-        if (!value) throw std::invalid_argument("'" + key + "' needs a value: " + key + "=" + field->valueName);
-        parseSetting(*field, *value, settings);
+        // An on/off option alone is on; the schema reads K=on/off (and every other kind) as the CLI does.
+        if (!value && field->kind != SettingKind::Flag)
+            throw std::invalid_argument("'" + key + "' needs a value: " + key + "=" + field->valueName);
+        parseSetting(*field, value.value_or(""), settings);
     }
     return settings;
 }
@@ -115,53 +148,26 @@ std::vector<FaceDiff> faceDiff(const ClusterSet& a, const std::vector<uint8_t>& 
 
 Comparison compareClusterSets(const PreparedMesh& prepared, const ClusterSet& a, const ClusterSet& b,
                               const std::vector<Eye>& views, const ProgressCallback& progress) {
+    Comparison comparison = emptyComparison(prepared, a, b);
     const Mesh& mesh = prepared.mesh();
-    if (a.partition.clusterOfFace.size() != mesh.faceCount() || b.partition.clusterOfFace.size() != mesh.faceCount())
-        throw std::invalid_argument("compareClusterSets: A and B must partition the prepared mesh");
-    Comparison comparison;
-    comparison.testA = displayedTest(a.settings), comparison.testB = displayedTest(b.settings);
-    comparison.coneA = a.bounds.coneMethod, comparison.coneB = b.bounds.coneMethod;
-    comparison.clustersA = a.bounds.count(), comparison.clustersB = b.bounds.count();
-    comparison.viewsCulledOnlyA.assign(mesh.faceCount(), 0);
-    comparison.viewsCulledOnlyB.assign(mesh.faceCount(), 0);
     // Each side's float batch once, as measureCulling makes it for its views.
     const ClusterBatch batchA = makeClusterBatch(a.bounds), batchB = makeClusterBatch(b.bounds);
     const CullingInput inputA{mesh, prepared.world, prepared.faces, a.bounds, &batchA};
     const CullingInput inputB{mesh, prepared.world, prepared.faces, b.bounds, &batchB};
-    size_t culledA = 0, culledB = 0;
     for (size_t v = 0; v < views.size(); ++v) {
         if (progress && v % 16 == 0 && !progress(double(v) / double(views.size()), "views")) throw OperationCancelled();
         const Eye& eye = views[v];
-        const std::vector<Facing> facing = classifyFaces(mesh, prepared.world, prepared.faces, eye);
-        const std::vector<FaceDiff> diff =
-            faceDiff(a, cullClusters(inputA, eye, comparison.testA), b, cullClusters(inputB, eye, comparison.testB));
-        ViewComparison view;
-        view.view = v;
-        view.eye = eye;
-        for (size_t f = 0; f < diff.size(); ++f) {
-            if (facing[f] != Facing::Back) continue;  // as triangles_culled: back-facing triangles only
-            const size_t triangles = mesh.faceSize(f) - 2;
-            view.backFacingTriangles += triangles;
-            switch (diff[f]) {
-                case FaceDiff::OnlyA: view.trianglesCulledOnlyA += triangles, ++comparison.viewsCulledOnlyA[f]; break;
-                case FaceDiff::OnlyB: view.trianglesCulledOnlyB += triangles, ++comparison.viewsCulledOnlyB[f]; break;
-                case FaceDiff::Both: view.trianglesCulledBoth += triangles; break;
-                case FaceDiff::Neither: break;
-            }
-        }
-        const size_t viewA = view.trianglesCulledOnlyA + view.trianglesCulledBoth;
-        const size_t viewB = view.trianglesCulledOnlyB + view.trianglesCulledBoth;
-        view.efficiencyA = cullEfficiency(viewA, view.backFacingTriangles);
-        view.efficiencyB = cullEfficiency(viewB, view.backFacingTriangles);
-        culledA += viewA, culledB += viewB;
-        comparison.trianglesCulledOnlyA += view.trianglesCulledOnlyA;
-        comparison.trianglesCulledOnlyB += view.trianglesCulledOnlyB;
-        comparison.trianglesCulledBoth += view.trianglesCulledBoth;
-        comparison.backFacingTriangles += view.backFacingTriangles;
-        comparison.views.push_back(view);
+        addView(comparison, mesh, eye, classifyFaces(mesh, prepared.world, prepared.faces, eye),
+                faceDiff(a, cullClusters(inputA, eye, comparison.testA), b, cullClusters(inputB, eye, comparison.testB)));
     }
-    comparison.efficiencyA = cullEfficiency(culledA, comparison.backFacingTriangles);
-    comparison.efficiencyB = cullEfficiency(culledB, comparison.backFacingTriangles);
+    return comparison;
+}
+
+Comparison compareAtEye(const PreparedMesh& prepared, const ClusterSet& a, const std::vector<uint8_t>& culledA,
+                        const ClusterSet& b, const std::vector<uint8_t>& culledB, const Eye& eye, std::vector<FaceDiff>& diff) {
+    Comparison comparison = emptyComparison(prepared, a, b);
+    diff = faceDiff(a, culledA, b, culledB);
+    addView(comparison, prepared.mesh(), eye, classifyFaces(prepared.mesh(), prepared.world, prepared.faces, eye), diff);
     return comparison;
 }
 

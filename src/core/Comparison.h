@@ -67,4 +67,10 @@ std::vector<FaceDiff> faceDiff(const ClusterSet& a, const std::vector<uint8_t>& 
 Comparison compareClusterSets(const PreparedMesh& prepared, const ClusterSet& a, const ClusterSet& b,
                               const std::vector<Eye>& views, const ProgressCallback& progress = {});
 
+// One eye from decisions already made (each side's cullClusters, EyeMeasurement::culled): that view's
+// comparison, and each face's FaceDiff in `diff`. What the window does at every eye move and the
+// headless screenshot once, without culling either side again.
+Comparison compareAtEye(const PreparedMesh& prepared, const ClusterSet& a, const std::vector<uint8_t>& culledA,
+                        const ClusterSet& b, const std::vector<uint8_t>& culledB, const Eye& eye, std::vector<FaceDiff>& diff);
+
 }  // namespace conescope

@@ -171,6 +171,33 @@ TEST(Comparison, FaceDiffFollowsEachSidesClusterDecision) {
     EXPECT_GT(counts[3], 0u);
 }
 
+// The window's and the headless path: one eye from decisions already made is the same comparison as
+// culling both sides again.
+TEST(Comparison, OneEyeFromMeasuredDecisionsIsTheFullComparison) {
+    const PreparedMesh prepared = preparedTorus();
+    const ClusterSet a = buildClusters(prepared, withBuilder(Builder::Optimized));
+    Settings sphere = withBuilder(Builder::Meshlet);
+    sphere.tests = {CullTest::Sphere};
+    const ClusterSet b = buildClusters(prepared, sphere);
+    for (const Eye& eye : {Eye::perspective({0.5, -2.0, 2.5}), Eye::perspective({-3.0, 0.2, 0.4})}) {
+        std::vector<FaceDiff> diff;
+        const Comparison atEye = compareAtEye(prepared, a, measureEye(prepared, a, eye, CullTest::Apex).culled, b,
+                                              measureEye(prepared, b, eye, CullTest::Sphere).culled, eye, diff);
+        const Comparison full = compareClusterSets(prepared, a, b, {eye});
+        ASSERT_EQ(atEye.views.size(), 1u);
+        EXPECT_EQ(atEye.trianglesCulledOnlyA, full.trianglesCulledOnlyA);
+        EXPECT_EQ(atEye.trianglesCulledOnlyB, full.trianglesCulledOnlyB);
+        EXPECT_EQ(atEye.trianglesCulledBoth, full.trianglesCulledBoth);
+        EXPECT_EQ(atEye.backFacingTriangles, full.backFacingTriangles);
+        EXPECT_DOUBLE_EQ(atEye.efficiencyA, full.efficiencyA);
+        EXPECT_DOUBLE_EQ(atEye.efficiencyB, full.efficiencyB);
+        EXPECT_EQ(atEye.viewsCulledOnlyA, full.viewsCulledOnlyA);
+        EXPECT_EQ(atEye.clustersB, b.bounds.count());
+        EXPECT_EQ(diff.size(), prepared.mesh().faceCount());
+        EXPECT_GT(full.trianglesCulledOnlyA + full.trianglesCulledOnlyB + full.trianglesCulledBoth, 0u);
+    }
+}
+
 TEST(Comparison, ClusterCountsMoreThanFivePercentApartAreWarnedAbout) {
     const PreparedMesh prepared = preparedTorus();
     const ClusterSet large = buildClusters(prepared, withBuilder(Builder::Meshlet, 96));

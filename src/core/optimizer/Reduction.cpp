@@ -481,8 +481,13 @@ void reduceTo(State& state, size_t target) {
         for (uint32_t c = 0; c < state.clusters.size(); ++c) centres[c] = clusterCentre(state, c);
         for (uint32_t c : clustersBySize(state)) {
             if (state.liveClusters <= target) break;
-            if (dissolveAcrossGaps(state, c, centres, nearest))
-                for (const auto& [face, from] : state.undo) centres[state.clusterOf[face]] = clusterCentre(state, state.clusterOf[face]);
+            if (!dissolveAcrossGaps(state, c, centres, nearest)) continue;
+            // The clusters that took faces move their centres (each once).
+            state.members.clear();
+            for (const auto& [face, from] : state.undo) state.members.push_back(state.clusterOf[face]);
+            std::sort(state.members.begin(), state.members.end());
+            state.members.erase(std::unique(state.members.begin(), state.members.end()), state.members.end());
+            for (uint32_t taker : state.members) centres[taker] = clusterCentre(state, taker);
         }
     }
 }
