@@ -81,6 +81,10 @@ SettingsPanel::SettingsPanel(QWidget* parent) : QWidget(parent) {
     clusterCount_->setToolTip(tr("Cluster budget. Auto: the optimized builder aims at about the count meshoptimizer "
                                  "reaches at these limits; k-means uses triangles / max triangles; the meshlet and "
                                  "meshopt builders always choose their own count."));
+    effort_ = enumBox(allEfforts(), this);
+    effort_->setToolTip(tr("optimized builder: how long it searches. fast refines meshoptimizer's meshlets; balanced "
+                           "(default) adds a few annealing sweeps; best grows its own clusters and searches longest, "
+                           "several times slower (docs/benchmarks.md has the measured trade)"));
     clusterFile_ = new QLineEdit(this);
     clusterFile_->setPlaceholderText(tr("the mesh's cluster_id array"));
     clusterFile_->setClearButtonEnabled(true);
@@ -112,6 +116,7 @@ SettingsPanel::SettingsPanel(QWidget* parent) : QWidget(parent) {
     clustersForm->addRow(tr("Max vertices"), maxVertices_);
     clustersForm->addRow(tr("Max triangles"), maxTriangles_);
     clustersForm->addRow(tr("Clusters (K)"), clusterCount_);
+    clustersForm->addRow(tr("&Effort"), effort_);
     clustersForm->addRow(tr("Cluster file"), clusterFileRow);
     clustersForm->addRow(tr("Normal weight"), normalWeight_);
     clustersForm->addRow(tr("Cone weight"), coneWeight_);
@@ -137,7 +142,7 @@ SettingsPanel::SettingsPanel(QWidget* parent) : QWidget(parent) {
 
     setSettings(Settings{});
 
-    for (QComboBox* box : {builder_, cone_, test_, sphere_, projection_})
+    for (QComboBox* box : {builder_, effort_, cone_, test_, sphere_, projection_})
         connect(box, qOverload<int>(&QComboBox::currentIndexChanged), this, &SettingsPanel::emitChanged);
     for (QSpinBox* box : {maxVertices_, maxTriangles_, clusterCount_, views_})
         connect(box, qOverload<int>(&QSpinBox::valueChanged), this, &SettingsPanel::emitChanged);
@@ -156,6 +161,7 @@ Settings SettingsPanel::settings() const {
     settings.limits.maxVertices = size_t(maxVertices_->value());
     settings.limits.maxTriangles = size_t(maxTriangles_->value());
     settings.clusterCount = size_t(clusterCount_->value());
+    settings.effort = enumOf<Effort>(effort_);
     settings.clusterFile = clusterFile_->text().toStdString();
     settings.normalWeight = normalWeight_->value();
     settings.meshoptConeWeight = float(coneWeight_->value());
@@ -173,7 +179,7 @@ void SettingsPanel::setSettings(const Settings& settings) {
     base_ = settings;
     const QSignalBlocker blockers[] = {
         QSignalBlocker(builder_),      QSignalBlocker(maxVertices_), QSignalBlocker(maxTriangles_),
-        QSignalBlocker(clusterCount_), QSignalBlocker(clusterFile_), QSignalBlocker(normalWeight_),
+        QSignalBlocker(clusterCount_), QSignalBlocker(effort_),      QSignalBlocker(clusterFile_), QSignalBlocker(normalWeight_),
         QSignalBlocker(coneWeight_),   QSignalBlocker(cone_),        QSignalBlocker(test_),
         QSignalBlocker(sphere_),       QSignalBlocker(projection_),  QSignalBlocker(fixWinding_),
         QSignalBlocker(views_),        QSignalBlocker(distance_)};
@@ -181,6 +187,7 @@ void SettingsPanel::setSettings(const Settings& settings) {
     maxVertices_->setValue(int(settings.limits.maxVertices));
     maxTriangles_->setValue(int(settings.limits.maxTriangles));
     clusterCount_->setValue(int(settings.clusterCount));
+    selectEnum(effort_, settings.effort);
     clusterFile_->setText(QString::fromStdString(settings.clusterFile));
     normalWeight_->setValue(settings.normalWeight);
     coneWeight_->setValue(double(settings.meshoptConeWeight));
@@ -205,7 +212,7 @@ void SettingsPanel::enableForBuilder() {
     const Settings current = settings();
     const std::pair<const char*, std::vector<QWidget*>> widgetsOfField[] = {
         {"max_vertices", {maxVertices_}},   {"max_triangles", {maxTriangles_}},
-        {"clusters_target", {clusterCount_}}, {"cluster_file", {clusterFile_, browseClusterFile_}},
+        {"clusters_target", {clusterCount_}}, {"effort", {effort_}}, {"cluster_file", {clusterFile_, browseClusterFile_}},
         {"normal_weight", {normalWeight_}}, {"cone_weight", {coneWeight_}}};
     for (const auto& [key, widgets] : widgetsOfField)
         for (QWidget* widget : widgets) widget->setEnabled(fieldMatters(settingField(key), current));

@@ -1,4 +1,4 @@
-// The side panel that edits conescope::Settings: builder and its limits, cone method, cull test,
+// The side panel that edits conescope::Settings: builder, its limits and effort, cone method, cull test,
 // sphere method, projection, orbit. It only maps widgets to fields; the window decides what to
 // recompute when settingsChanged() arrives.
 #pragma once
@@ -34,6 +34,7 @@ public:
     QSpinBox* maxVerticesBox() const { return maxVertices_; }
     QSpinBox* maxTrianglesBox() const { return maxTriangles_; }
     QSpinBox* clusterCountBox() const { return clusterCount_; }
+    QComboBox* effortBox() const { return effort_; }
     QCheckBox* fixWindingBox() const { return fixWinding_; }
 
 signals:
@@ -50,6 +51,7 @@ private:
     QSpinBox* maxVertices_ = nullptr;
     QSpinBox* maxTriangles_ = nullptr;
     QSpinBox* clusterCount_ = nullptr;
+    QComboBox* effort_ = nullptr;
     QLineEdit* clusterFile_ = nullptr;
     QPushButton* browseClusterFile_ = nullptr;
     QDoubleSpinBox* normalWeight_ = nullptr;

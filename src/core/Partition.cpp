@@ -19,8 +19,17 @@ namespace conescope {
 namespace {
 constexpr uint32_t kUnassigned = std::numeric_limits<uint32_t>::max();
 
-// Renumbers cluster ids densely (0..K-1) in order of first use, dropping empty ids.
-Partition compact(std::vector<uint32_t> clusterOfFace) {
+}  // namespace
+
+Partition renumberClusters(std::vector<uint32_t> clusterOfFace) {
+    // Ids from builders are small: a table; ids from files can be anything: a map.
+    const uint32_t largest = clusterOfFace.empty() ? 0 : *std::max_element(clusterOfFace.begin(), clusterOfFace.end());
+    if (size_t(largest) < 4 * clusterOfFace.size() + 1024) {
+        std::vector<uint32_t> table(size_t(largest) + 1, kUnassigned);
+        uint32_t next = 0;
+        for (uint32_t& id : clusterOfFace) id = table[id] == kUnassigned ? (table[id] = next++) : table[id];
+        return {std::move(clusterOfFace), next};
+    }
     std::unordered_map<uint32_t, uint32_t> renumber;
     for (uint32_t& id : clusterOfFace) {
         auto [it, inserted] = renumber.try_emplace(id, uint32_t(renumber.size()));
@@ -28,7 +37,25 @@ Partition compact(std::vector<uint32_t> clusterOfFace) {
     }
     return {std::move(clusterOfFace), uint32_t(renumber.size())};
 }
-}  // namespace
+
+Partition connectedPieces(const Partition& partition, const Rows& acrossEdge) {
+    // Union-find over faces, joined across every edge inside a cluster; a piece is named by its root.
+    std::vector<uint32_t> parent(partition.clusterOfFace.size());
+    for (uint32_t f = 0; f < parent.size(); ++f) parent[f] = f;
+    auto root = [&](uint32_t f) {
+        while (parent[f] != f) f = parent[f] = parent[parent[f]];
+        return f;
+    };
+    for (uint32_t f = 0; f < parent.size(); ++f)
+        for (const uint32_t* g = acrossEdge.begin(f); g != acrossEdge.end(f); ++g)
+            if (partition.clusterOfFace[*g] == partition.clusterOfFace[f]) {
+                const uint32_t a = root(f), b = root(*g);
+                if (a != b) parent[std::max(a, b)] = std::min(a, b);
+            }
+    std::vector<uint32_t> pieces(parent.size());
+    for (uint32_t f = 0; f < parent.size(); ++f) pieces[f] = root(f);
+    return renumberClusters(std::move(pieces));
+}
 
 Partition buildMeshlets(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits, double normalWeight) {
     const size_t faceCount = mesh.faceCount();
@@ -202,7 +229,7 @@ Partition buildKMeans(const Mesh& mesh, const FaceGeometry& faces, size_t cluste
             centerNormals[k] = length > 0.0 ? normalSums[k] / length * normalWeight : glm::dvec3(0.0);
         }
     }
-    return compact(std::move(assignment));
+    return renumberClusters(std::move(assignment));
 }
 
 bool meshoptTakesLimits(const MeshletLimits& limits) {
@@ -248,28 +275,10 @@ size_t meshoptMeshletCount(const Mesh& mesh, const MeshletLimits& limits, float 
                                  limits.maxVertices, limits.maxTriangles, coneWeight);
 }
 
-Partition buildMeshoptMeshlets(const Mesh& mesh, const MeshletLimits& limits, float coneWeight) {
+Partition buildMeshoptMeshlets(const Mesh& mesh, const MeshletLimits& limits, float coneWeight, size_t* meshletCount) {
     requireMeshoptLimits(limits);
     // Fan triangulation; which face each triangle came from is found again below.
-    std::vector<uint32_t> indices = fanTriangles(mesh);
-    // meshoptimizer reorders triangles inside meshlets, so the face of each output triangle is found
-    // again by its sorted vertex triple (a list per triple handles duplicate faces).
-    struct TripleHash {
-        size_t operator()(const std::array<uint32_t, 3>& t) const {
-            return (size_t(t[0]) * 73856093u) ^ (size_t(t[1]) * 19349663u) ^ (size_t(t[2]) * 83492791u);
-        }
-    };
-    std::unordered_map<std::array<uint32_t, 3>, std::vector<uint32_t>, TripleHash> faceOfTriangle;
-    faceOfTriangle.reserve(indices.size() / 3);
-    {
-        size_t t = 0;
-        for (size_t f = 0; f < mesh.faceCount(); ++f)
-            for (size_t k = 1; k + 1 < mesh.faceSize(f); ++k, ++t) {
-                std::array<uint32_t, 3> key = {indices[3 * t], indices[3 * t + 1], indices[3 * t + 2]};
-                std::sort(key.begin(), key.end());
-                faceOfTriangle[key].push_back(uint32_t(f));
-            }
-    }
+    const std::vector<uint32_t> indices = fanTriangles(mesh);
     const size_t maxMeshlets = meshopt_buildMeshletsBound(indices.size(), limits.maxVertices, limits.maxTriangles);
     std::vector<meshopt_Meshlet> meshlets(maxMeshlets);
     std::vector<unsigned int> meshletVertices(maxMeshlets * limits.maxVertices);
@@ -278,19 +287,38 @@ Partition buildMeshoptMeshlets(const Mesh& mesh, const MeshletLimits& limits, fl
                                                indices.data(), indices.size(), &mesh.positions[0].x,
                                                mesh.positions.size(), sizeof(glm::vec3), limits.maxVertices,
                                                limits.maxTriangles, coneWeight);
+    if (meshletCount) *meshletCount = count;
+    // meshoptimizer reorders triangles inside meshlets, so each output triangle's face is found
+    // again among the faces around its first corner: the face with a fan triangle of the same three
+    // corners not yet matched (so duplicate faces each get one). A polygon goes with its first match.
+    const Rows facesAround = facesAroundVertices(mesh);
+    std::vector<uint32_t> firstTriangle(mesh.faceCount() + 1, 0);
+    for (size_t f = 0; f < mesh.faceCount(); ++f)
+        firstTriangle[f + 1] = firstTriangle[f] + uint32_t(mesh.faceSize(f) >= 2 ? mesh.faceSize(f) - 2 : 0);
+    std::vector<uint8_t> matched(firstTriangle.back(), 0);
+    auto sorted = [](uint32_t a, uint32_t b, uint32_t c) {
+        if (a > b) std::swap(a, b);
+        if (b > c) std::swap(b, c);
+        if (a > b) std::swap(a, b);
+        return std::array<uint32_t, 3>{a, b, c};
+    };
     std::vector<uint32_t> clusterOfFace(mesh.faceCount(), kUnassigned);
     for (size_t m = 0; m < count; ++m) {
         const meshopt_Meshlet& meshlet = meshlets[m];
         for (size_t t = 0; t < meshlet.triangle_count; ++t) {
-            std::array<uint32_t, 3> key;
-            for (int c = 0; c < 3; ++c)
-                key[c] = meshletVertices[meshlet.vertex_offset + meshletTriangles[meshlet.triangle_offset + 3 * t + c]];
-            std::sort(key.begin(), key.end());
-            auto it = faceOfTriangle.find(key);
-            if (it == faceOfTriangle.end() || it->second.empty()) continue;
-            const uint32_t f = it->second.back();
-            it->second.pop_back();
-            if (clusterOfFace[f] == kUnassigned) clusterOfFace[f] = uint32_t(m);
+            const unsigned char* local = &meshletTriangles[meshlet.triangle_offset + 3 * t];
+            const uint32_t* vertices = &meshletVertices[meshlet.vertex_offset];
+            const std::array<uint32_t, 3> key = sorted(vertices[local[0]], vertices[local[1]], vertices[local[2]]);
+            bool found = false;
+            for (const uint32_t* f = facesAround.begin(key[0]); f != facesAround.end(key[0]) && !found; ++f) {
+                const uint32_t* face = mesh.faceBegin(*f);
+                for (size_t k = 1; k + 1 < mesh.faceSize(*f) && !found; ++k) {
+                    const uint32_t triangle = firstTriangle[*f] + uint32_t(k - 1);
+                    if (matched[triangle] || sorted(face[0], face[k], face[k + 1]) != key) continue;
+                    matched[triangle] = 1, found = true;
+                    if (clusterOfFace[*f] == kUnassigned) clusterOfFace[*f] = uint32_t(m);
+                }
+            }
         }
     }
     // meshoptimizer drops nothing but fully degenerate index triples may not come back; give them a cluster.
@@ -299,7 +327,7 @@ Partition buildMeshoptMeshlets(const Mesh& mesh, const MeshletLimits& limits, fl
         if (id == kUnassigned) id = last;
         last = id;
     }
-    return compact(std::move(clusterOfFace));
+    return renumberClusters(std::move(clusterOfFace));
 }
 
 Partition partitionFromIds(const std::vector<double>& ids, size_t faceCount, const std::string& source) {
@@ -316,7 +344,7 @@ Partition partitionFromIds(const std::vector<double>& ids, size_t faceCount, con
         }
         clusterOfFace[f] = uint32_t(id);
     }
-    return compact(std::move(clusterOfFace));
+    return renumberClusters(std::move(clusterOfFace));
 }
 
 std::vector<double> readClusterIdFile(const std::string& path) {

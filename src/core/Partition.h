@@ -30,8 +30,10 @@ Partition buildKMeans(const Mesh& mesh, const FaceGeometry& faces, size_t cluste
                       size_t iterations = 12, uint64_t seed = 1);
 
 // meshoptimizer's meshopt_buildMeshlets on the fan triangulation. A polygon goes to the meshlet
-// holding its first fan triangle.
-Partition buildMeshoptMeshlets(const Mesh& mesh, const MeshletLimits& limits, float coneWeight);
+// holding its first fan triangle. `meshletCount`, when given, receives meshoptimizer's own count
+// (what meshoptMeshletCount returns; meshlets of nothing but degenerate triangles leave no cluster).
+Partition buildMeshoptMeshlets(const Mesh& mesh, const MeshletLimits& limits, float coneWeight,
+                               size_t* meshletCount = nullptr);
 // How many meshlets buildMeshoptMeshlets makes, without mapping them back to faces (the default
 // budget of the optimized builder). Throws std::invalid_argument as buildMeshoptMeshlets does.
 size_t meshoptMeshletCount(const Mesh& mesh, const MeshletLimits& limits, float coneWeight);
@@ -45,6 +47,14 @@ Partition partitionFromIds(const std::vector<double>& ids, size_t faceCount, con
 
 // One id per face, whitespace separated; '#' starts a comment.
 std::vector<double> readClusterIdFile(const std::string& path);
+
+// Each cluster cut into its pieces connected across edges (acrossEdge: facesAcrossEdges), numbered
+// in order of first use: a cluster in one piece keeps its faces.
+struct Rows;
+Partition connectedPieces(const Partition& partition, const Rows& acrossEdge);
+
+// Cluster ids renumbered densely (0..K-1) in order of first use; ids no face has are dropped.
+Partition renumberClusters(std::vector<uint32_t> clusterOfFace);
 
 // Faces of each cluster, as offsets into one array (compressed rows).
 struct ClusterFaces {

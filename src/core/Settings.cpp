@@ -33,6 +33,10 @@ const NameTable<SphereMethod>& sphereNames() {
     static const NameTable<SphereMethod> names = {{SphereMethod::Ritter, "ritter"}, {SphereMethod::Minimal, "minimal"}};
     return names;
 }
+const NameTable<Effort>& effortNames() {
+    static const NameTable<Effort> names = {{Effort::Fast, "fast"}, {Effort::Balanced, "balanced"}, {Effort::Best, "best"}};
+    return names;
+}
 
 template <typename Enum>
 std::string nameOf(const NameTable<Enum>& table, Enum value) {
@@ -63,10 +67,12 @@ std::string toString(Builder value) { return nameOf(builderNames(), value); }
 std::string toString(ConeMethod value) { return nameOf(coneNames(), value); }
 std::string toString(CullTest value) { return nameOf(testNames(), value); }
 std::string toString(SphereMethod value) { return nameOf(sphereNames(), value); }
+std::string toString(Effort value) { return nameOf(effortNames(), value); }
 Builder parseBuilder(const std::string& text) { return parseName(builderNames(), text, "builder"); }
 ConeMethod parseConeMethod(const std::string& text) { return parseName(coneNames(), text, "cone method"); }
 CullTest parseCullTest(const std::string& text) { return parseName(testNames(), text, "cull test"); }
 SphereMethod parseSphereMethod(const std::string& text) { return parseName(sphereNames(), text, "sphere method"); }
+Effort parseEffort(const std::string& text) { return parseName(effortNames(), text, "effort"); }
 
 namespace {
 // Every entry of an enum's table, made once per enum type.
@@ -81,6 +87,7 @@ const std::vector<ConeMethod>& allConeMethods() { return allOf(coneNames()); }
 const std::vector<CullTest>& allCullTests() { return allOf(testNames()); }
 const std::vector<Builder>& allBuilders() { return allOf(builderNames()); }
 const std::vector<SphereMethod>& allSphereMethods() { return allOf(sphereNames()); }
+const std::vector<Effort>& allEfforts() { return allOf(effortNames()); }
 
 std::vector<Eye> viewsFor(const Settings& settings, const Aabb& worldBox) {
     if (settings.eye) {

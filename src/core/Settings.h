@@ -9,6 +9,7 @@
 #include <glm/glm.hpp>
 
 #include "ClusterBounds.h"
+#include "ClusterOptimizer.h"
 #include "Culling.h"
 #include "Partition.h"
 
@@ -21,6 +22,7 @@ struct Settings {
     // minimal cones, the apex test.
     Builder builder = Builder::Optimized;
     MeshletLimits limits;
+    Effort effort = Effort::Balanced; // how long the optimized builder searches
     size_t clusterCount = 0;          // kmeans target (0 = triangles / maxTriangles); optimized budget (0 = defaultClusterBudget)
     std::string clusterFile;          // file builder: text file of ids; empty = the mesh's cluster_id array
     double normalWeight = 1.0;        // meshlet / kmeans preference for narrow cones
@@ -39,15 +41,18 @@ std::string toString(Builder);
 std::string toString(ConeMethod);
 std::string toString(CullTest);
 std::string toString(SphereMethod);
+std::string toString(Effort);
 // Throw std::invalid_argument listing the accepted names.
 Builder parseBuilder(const std::string&);
 ConeMethod parseConeMethod(const std::string&);
 CullTest parseCullTest(const std::string&);
 SphereMethod parseSphereMethod(const std::string&);
+Effort parseEffort(const std::string&);
 const std::vector<ConeMethod>& allConeMethods();
 const std::vector<CullTest>& allCullTests();
 const std::vector<Builder>& allBuilders();
 const std::vector<SphereMethod>& allSphereMethods();
+const std::vector<Effort>& allEfforts();
 
 // The views a run uses: the single eye if set, else the standard orbit around the world AABB.
 std::vector<Eye> viewsFor(const Settings& settings, const Aabb& worldBox);

@@ -171,6 +171,13 @@ std::vector<SettingField> makeFields() {
     f.assign = [](Settings& s, const SettingValue& v) { s.clusterCount = std::get<size_t>(v); };
     row(f);
 
+    f = describe("effort", "effort", "LEVEL", "How long the optimized builder searches (docs/benchmarks.md has the trade)",
+                 SettingKind::Name, true, Stage::Clusters, {Builder::Optimized});
+    f.names = [] { return namesOf(allEfforts()); };
+    f.value = [](const Settings& s) -> SettingValue { return toString(s.effort); };
+    f.assign = [](Settings& s, const SettingValue& v) { s.effort = parseEffort(std::get<std::string>(v)); };
+    row(f);
+
     f = describe("cluster_file", "cluster-file", "PATH",
          "file builder: text file with one cluster id per face (default: the mesh's cluster_id array)", SettingKind::Path,
          true, Stage::Clusters, {Builder::File});

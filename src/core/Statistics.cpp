@@ -22,7 +22,7 @@ Partition buildPartition(const Mesh& mesh, const FaceGeometry& faces, const Sett
             return buildKMeans(mesh, faces, target, settings.normalWeight);
         }
         case Builder::Meshopt: return buildMeshoptMeshlets(mesh, settings.limits, settings.meshoptConeWeight);
-        case Builder::Optimized: return buildOptimizedClusters(mesh, faces, settings.limits, settings.clusterCount, progress);
+        case Builder::Optimized: return buildOptimizedClusters(mesh, faces, settings.limits, settings.clusterCount, progress, settings.effort);
         case Builder::File: {
             if (!settings.clusterFile.empty())
                 return partitionFromIds(readClusterIdFile(settings.clusterFile), mesh.faceCount(), settings.clusterFile);

@@ -123,11 +123,12 @@ TEST(StatisticsJson, HasEveryKeyWithItsValue) {
 
     const nlohmann::json& settings = json["settings"];
     EXPECT_EQ(keysOf(settings),
-              (std::set<std::string>{"builder", "max_vertices", "max_triangles", "clusters_target", "cluster_file",
+              (std::set<std::string>{"builder", "max_vertices", "max_triangles", "clusters_target", "effort", "cluster_file",
                                      "normal_weight", "cone_weight", "cones", "tests", "sphere", "views", "distance",
                                      "orthographic", "eye", "fix_winding"}));
     EXPECT_EQ(settings["builder"], "kmeans");
     EXPECT_EQ(settings["clusters_target"], 2);
+    EXPECT_EQ(settings["effort"], "balanced");  // recorded whatever the builder
     EXPECT_TRUE(settings["cluster_file"].is_null());
     EXPECT_EQ(settings["cone_weight"].get<double>(), 0.3);  // the float's shortest text, not 0.30000001...
     EXPECT_EQ(settings["cones"], nlohmann::json::array({"average"}));

@@ -16,6 +16,7 @@ Settings unusualSettings() {
     settings.builder = Builder::KMeans;
     settings.limits = {100, 200};
     settings.clusterCount = 17;
+    settings.effort = Effort::Best;
     settings.clusterFile = "ids.txt";
     settings.normalWeight = 2.5;
     settings.meshoptConeWeight = 0.3f;
@@ -57,7 +58,7 @@ TEST(SettingsSchema, KeysAndFlagsAreUniqueAndFindable) {
         EXPECT_EQ(&settingField(field.flag), &field);
         EXPECT_FALSE(settingHelp(field).empty());
     }
-    EXPECT_EQ(settingFields().size(), 15u);
+    EXPECT_EQ(settingFields().size(), 16u);
     EXPECT_THROW(settingField("no-such-setting"), std::out_of_range);
 }
 

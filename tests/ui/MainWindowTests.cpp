@@ -171,6 +171,17 @@ private slots:
         clusterCounts.insert(window_->clusters()->partition.clusterCount);
         compareWithCore(*window_);
 
+        // The effort box is the optimized builder's only: off for the others, and each level rebuilds.
+        QVERIFY(!panel->effortBox()->isEnabled());
+        chooseInCombo(panel->builderBox(), toString(Builder::Optimized));
+        QVERIFY(panel->effortBox()->isEnabled());
+        for (Effort effort : allEfforts()) {
+            chooseInCombo(panel->effortBox(), toString(effort));
+            window_->waitUntilIdle();
+            QVERIFY(window_->clusters()->settings.effort == effort);
+            compareWithCore(*window_);
+        }
+        chooseInCombo(panel->builderBox(), toString(Builder::Meshopt));
         panel->maxTrianglesBox()->setValue(64);
         window_->waitUntilIdle();
         QCOMPARE(window_->clusters()->settings.limits.maxTriangles, size_t(64));

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <memory>
+#include <optional>
 #include <vector>
 
 #include "Parts.h"
@@ -24,19 +26,31 @@ constexpr double kDefaultFill = 0.68;
 // exactly the mean, every cluster ends up the same size and the reduction can get stuck a few
 // clusters above the budget on regular meshes; the margin lets some grow larger instead.
 constexpr double kGrowthCap = 1.25;
-// Sweeps over all faces: the most a small mesh gets, and the face visits the budget allows below
-// that (each visit costs well under a microsecond). Fewer than kMinSweeps cool too fast to pay:
-// measured on armadillo subdivided to 0.8M and 3.3M triangles, 6 and 4 sweeps added 0.7% and
-// 0.4% to the objective for 1.4 s and 2.9 s, half the whole preparation; such meshes get none.
-constexpr size_t kMaxSweeps = 100;
-constexpr size_t kMinSweeps = 8;
-constexpr double kSweepFaceVisits = 5.0e6;
+// How one effort level searches: where it starts, and its annealing. Sweeps go over all faces; a
+// level gets at most maxSweeps, and no more face visits than sweepFaceVisits (each visit costs well
+// under a microsecond). Fewer than minSweeps cool too fast to pay: measured on armadillo subdivided
+// to 0.8M and 3.3M triangles, 6 and 4 sweeps added 0.7% and 0.4% to the objective for 1.4 s and
+// 2.9 s, half the whole preparation; such meshes get none.
+struct SearchPlan {
+    bool growthStart;  // false: start from meshoptimizer's meshlets where they are within the limits
+    size_t maxSweeps, minSweeps;
+    double sweepFaceVisits;
+};
 
-// The annealing sweeps the face-visit budget buys for a mesh of this size; too few to cool slowly
-// are not worth their time (0).
-size_t annealingSweeps(size_t faceCount) {
-    const size_t sweeps = std::min<size_t>(size_t(kSweepFaceVisits / double(faceCount)), kMaxSweeps);
-    return sweeps < kMinSweeps ? 0 : sweeps;
+SearchPlan planFor(Effort effort) {
+    switch (effort) {
+        case Effort::Fast: return {false, 0, 0, 0.0};
+        case Effort::Balanced: return {false, 30, 4, 3.0e6};
+        case Effort::Best: break;
+    }
+    return {true, 100, 8, 5.0e6};
+}
+
+// The annealing sweeps the plan buys for a mesh of this size; too few to cool slowly are not worth
+// their time (0).
+size_t annealingSweeps(const SearchPlan& plan, size_t faceCount) {
+    const size_t sweeps = std::min<size_t>(size_t(plan.sweepFaceVisits / double(faceCount)), plan.maxSweeps);
+    return sweeps < plan.minSweeps ? 0 : sweeps;
 }
 
 // The sum of the objective over the clusters: which of two runs to keep at the same count.
@@ -72,18 +86,45 @@ void reduceAndSearch(optimizer::State& state, size_t target, size_t sweeps) {
     }
 }
 
-// Below this many faces the search also starts from meshoptimizer's meshlets every time: on small
-// meshes of few clusters growth can end below meshoptimizer's own objective (CGAL's patch-01,
+// Below this many faces the best effort also starts from meshoptimizer's meshlets every time: on
+// small meshes of few clusters growth can end below meshoptimizer's own objective (CGAL's patch-01,
 // dragknob, patch-13), and the second start costs little there.
 constexpr size_t kBothStartsBelowFaces = size_t(1) << 14;
 
-// One run of the whole optimisation on a mesh, `sweeps` annealing sweeps (0: none). Where growth
-// and reduction cannot get down to the budget (the limits bind: thin strips, many vertices per
-// triangle), and always on small meshes, they start again from meshoptimizer's meshlets, which pack
-// vertices tighter, and the run with fewer clusters (or the better objective at the same count) is
-// kept.
+// meshoptimizer's meshlets as a search state, or nothing when a polygon split across meshlets
+// makes one hold more than the limits (the search keeps limits, it does not restore them). A
+// meshlet in several pieces (meshoptimizer packs by distance, across gaps too) gives its smaller
+// pieces to its neighbours where they have room (absorbPieces), so fewer clusters sprawl.
+std::unique_ptr<optimizer::State> meshletStart(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits,
+                                                const Partition& meshlets) {
+    auto state = std::make_unique<optimizer::State>(mesh, faces, limits);
+    optimizer::assign(*state, meshlets);
+    if (!withinLimits(*state)) return nullptr;
+    optimizer::absorbPieces(*state);
+    return state;
+}
+
+// One run of the whole optimisation on a mesh. The fast levels start from meshoptimizer's meshlets
+// (`meshlets` when given, else built) when the budget is at most their count, as the default
+// budget is, and keep that run when it reaches the budget. Otherwise, and at the best level,
+// clusters are grown and reduced; where that cannot get down to the budget (the limits bind: thin
+// strips, many vertices per triangle), and always on small meshes at the best level,
+// meshoptimizer's start is searched too, and the run nearer the budget (then the better objective)
+// is kept.
 Partition optimizeClusters(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits, size_t target,
-                           size_t sweeps) {
+                           const SearchPlan& plan, size_t sweeps, const Partition* meshlets = nullptr) {
+    const bool takesMeshlets = meshoptTakesLimits(limits);
+    std::optional<Partition> built;
+    auto meshletsOnce = [&]() -> const Partition& {
+        if (!meshlets) meshlets = &built.emplace(buildMeshoptMeshlets(mesh, limits, 1.0f));
+        return *meshlets;
+    };
+    std::unique_ptr<optimizer::State> packed;
+    if (!plan.growthStart && takesMeshlets && target <= meshletsOnce().clusterCount &&
+        (packed = meshletStart(mesh, faces, limits, meshletsOnce()))) {
+        reduceAndSearch(*packed, target, sweeps);
+        if (packed->liveClusters <= target) return optimizer::result(*packed);
+    }
     optimizer::State state(mesh, faces, limits);
     const double triangles = double(triangleCount(mesh));
     optimizer::grow(state, std::min(double(limits.maxTriangles), kGrowthCap * triangles / double(target)));
@@ -92,15 +133,14 @@ Partition optimizeClusters(const Mesh& mesh, const FaceGeometry& faces, const Me
         optimizer::grow(state, std::min(double(limits.maxTriangles), triangles / double(target)));
     }
     reduceAndSearch(state, target, sweeps);
-    const bool small = mesh.faceCount() < kBothStartsBelowFaces;
-    if ((state.liveClusters <= target && !small) || !meshoptTakesLimits(limits)) return optimizer::result(state);
-    optimizer::State packed(mesh, faces, limits);
-    optimizer::assign(packed, buildMeshoptMeshlets(mesh, limits, 1.0f));
-    // A polygon goes whole to the meshlet of its first fan triangle, which can then hold more than
-    // the limits: such a start is not taken (the search keeps limits, it does not restore them).
-    if (!withinLimits(packed)) return optimizer::result(state);
-    reduceAndSearch(packed, target, sweeps);
-    return optimizer::result(closerToTheBudget(packed, state, target) ? packed : state);
+    const bool small = plan.growthStart && mesh.faceCount() < kBothStartsBelowFaces;
+    if ((state.liveClusters <= target && !small) || !takesMeshlets) return optimizer::result(state);
+    if (!packed && plan.growthStart) {
+        packed = meshletStart(mesh, faces, limits, meshletsOnce());
+        if (packed) reduceAndSearch(*packed, target, sweeps);
+    }
+    if (!packed) return optimizer::result(state);
+    return optimizer::result(closerToTheBudget(*packed, state, target) ? *packed : state);
 }
 
 }  // namespace
@@ -114,21 +154,33 @@ size_t defaultClusterBudget(const Mesh& mesh, const MeshletLimits& limits) {
 }
 
 Partition buildOptimizedClusters(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits,
-                                 size_t targetClusters, const ProgressCallback& progress) {
+                                 size_t targetClusters, const ProgressCallback& progress, Effort effort) {
     const size_t faceCount = mesh.faceCount();
     if (faceCount == 0) return {};
-    const size_t target = targetClusters > 0 ? targetClusters : defaultClusterBudget(mesh, limits);
-    const size_t sweeps = annealingSweeps(faceCount);
-    const optimizer::Parts parts = optimizer::splitIntoParts(faces, target);
+    const SearchPlan plan = planFor(effort);
+    const size_t sweeps = annealingSweeps(plan, faceCount);
+    // The default budget is the count of meshoptimizer's meshlets; where those are also the start,
+    // they are built once, and a large mesh is cut into parts between whole meshlets, each part's
+    // budget being the meshlets it holds: the counts add up to meshoptimizer's, no part needs
+    // reducing.
+    std::optional<Partition> meshlets;
+    size_t target = targetClusters;
+    if (target == 0 && !plan.growthStart && meshoptTakesLimits(limits)) {
+        meshlets.emplace(buildMeshoptMeshlets(mesh, limits, 1.0f, &target));
+    } else if (target == 0) {
+        target = defaultClusterBudget(mesh, limits);
+    }
+    const optimizer::Parts parts = optimizer::splitIntoParts(faces, target, meshlets ? &*meshlets : nullptr);
     if (parts.count() == 1) {
-        Partition whole = optimizeClusters(mesh, faces, limits, target, sweeps);
+        Partition whole = optimizeClusters(mesh, faces, limits, target, plan, sweeps, meshlets ? &*meshlets : nullptr);
         if (progress && !progress(1.0, "clusters")) throw OperationCancelled();
         return whole;
     }
 
     // Parts are optimised independently, as many at once as the machine has cores; the result does
     // not depend on that number.
-    const std::vector<size_t> targets = optimizer::partTargets(mesh, parts, target);
+    std::vector<size_t> targets;
+    if (!meshlets) targets = optimizer::partTargets(mesh, parts, target);
     std::vector<Partition> results(parts.count());
     std::vector<std::vector<uint32_t>> newIndex(threadsFor(parts.count()));  // per thread: kNone per mesh vertex
     // Progress is reported by the calling thread (worker 0) only, so the callback needs no lock; a
@@ -139,7 +191,12 @@ Partition buildOptimizedClusters(const Mesh& mesh, const FaceGeometry& faces, co
         if (cancelled) return;
         if (newIndex[worker].empty()) newIndex[worker].assign(mesh.positions.size(), optimizer::kNone);
         const optimizer::MeshPart part = optimizer::extractPart(mesh, faces, parts.begin(i), parts.size(i), newIndex[worker]);
-        results[i] = optimizeClusters(part.mesh, part.faces, limits, targets[i], sweeps);
+        if (meshlets) {
+            const Partition start = optimizer::partOfPartition(*meshlets, parts.begin(i), parts.size(i));
+            results[i] = optimizeClusters(part.mesh, part.faces, limits, start.clusterCount, plan, sweeps, &start);
+        } else {
+            results[i] = optimizeClusters(part.mesh, part.faces, limits, targets[i], plan, sweeps);
+        }
         const size_t done = ++partsDone;
         if (worker == 0 && progress && !progress(double(done) / double(parts.count()), "clusters")) cancelled = true;
     });

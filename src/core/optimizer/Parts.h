@@ -20,9 +20,17 @@ struct Parts {
     const uint32_t* begin(size_t i) const { return faces.data() + starts[i]; }
 };
 
+// Whether a mesh of this many faces is too large for one part (splitIntoParts may still keep it
+// whole when its budget is tiny).
+bool cutIntoParts(size_t faceCount);
+
 // Halves of halves until every part has at most kPartFaces faces, as long as each part still gets
-// a few clusters of the `target` budget. One part (the whole mesh) when it is small enough.
-Parts splitIntoParts(const FaceGeometry& faces, size_t target);
+// a few clusters of the `target` budget. One part (the whole mesh) when it is small enough. With
+// `clusters`, whole clusters go to one side of each cut (by their centres).
+Parts splitIntoParts(const FaceGeometry& faces, size_t target, const Partition* clusters = nullptr);
+
+// The clusters of `whole` that the part's faces are in, renumbered densely for the part.
+Partition partOfPartition(const Partition& whole, const uint32_t* faceIds, size_t faceCount);
 
 // Each part's share of the `target` budget, by its triangles (at least 1 each); the shares add up
 // to the budget.

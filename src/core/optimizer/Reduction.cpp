@@ -5,6 +5,7 @@
 // separate pieces reaches the budget too.
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <queue>
 #include <vector>
@@ -16,6 +17,8 @@ namespace conescope::optimizer {
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
+constexpr size_t kFailuresPerRemoval = 4;
+constexpr size_t kFailuresAtLeast = 32;
 
 // Live clusters, smallest first (ties by id): the order in which dissolving is tried.
 std::vector<uint32_t> clustersBySize(const State& state) {
@@ -108,24 +111,25 @@ void recomputeTouchedCaps(State& state) {
     for (uint32_t c : state.members) state.clusters[c].cap = state.clusters[c].faces.empty() ? Cap{} : exactCap(state, c);
 }
 
-// Empties a cluster by handing each of its faces, from its border inwards, to the neighbouring
-// cluster where the objective loses least; a full neighbour first passes one of its own border
-// faces on. Caps are grown approximately on the way and recomputed at the end. Undone (returns
-// false) if some face finds no room.
-bool dissolve(State& state, uint32_t cluster) {
-    if (state.clusters[cluster].faces.empty()) return false;
+// Empties a cluster of the faces `leaving` (all of its faces, or a piece of it) by handing each,
+// from the cluster's border inwards, to the neighbouring cluster where the objective loses least;
+// a full neighbour first passes one of its own border faces on. Caps are grown approximately on
+// the way and recomputed at the end. Undone (returns false) if some face finds no room.
+bool dissolveFaces(State& state, uint32_t cluster, const std::vector<uint32_t>& leaving) {
     state.undo.clear();
     std::vector<uint32_t>& queue = state.queue;
+    size_t left = leaving.size();
     uint32_t queued = 0;  // faceStamp of faces in the queue (other checks may overwrite some: harmless)
     auto refill = [&]() {
         queued = ++state.stamp;
         queue.clear();
-        for (uint32_t f : state.clusters[cluster].faces)
+        for (uint32_t f : leaving)
             for (const uint32_t* g = state.acrossEdge.begin(f); g != state.acrossEdge.end(f); ++g)
-                if (state.clusterOf[*g] != cluster && state.faceStamp[f] != queued) state.faceStamp[f] = queued, queue.push_back(f);
+                if (state.clusterOf[f] == cluster && state.clusterOf[*g] != cluster && state.faceStamp[f] != queued)
+                    state.faceStamp[f] = queued, queue.push_back(f);
     };
     refill();
-    for (int round = 0; round < 4 && !state.clusters[cluster].faces.empty(); ++round) {
+    for (int round = 0; round < 4 && left > 0; ++round) {
         const bool pushing = round >= 2;  // plain moves everywhere first, then make room
         for (size_t i = 0; i < queue.size(); ++i) {
             const uint32_t face = queue[i];
@@ -139,17 +143,25 @@ bool dissolve(State& state, uint32_t cluster) {
             if (bestTarget == kNone) continue;
             state.undo.emplace_back(face, cluster);
             moveGrowingCap(state, face, bestTarget);
+            --left;
+            // Its neighbours in the cluster are of the same piece: next in line.
             for (const uint32_t* g = state.acrossEdge.begin(face); g != state.acrossEdge.end(face); ++g)
                 if (state.clusterOf[*g] == cluster && state.faceStamp[*g] != queued) state.faceStamp[*g] = queued, queue.push_back(*g);
         }
         refill();
     }
-    const bool emptied = state.clusters[cluster].faces.empty();
-    if (!emptied)
+    if (left > 0)
         for (size_t i = state.undo.size(); i-- > 0;) move(state, state.undo[i].first, state.undo[i].second);
     recomputeTouchedCaps(state);
-    if (emptied) --state.liveClusters;
-    return emptied;
+    if (state.clusters[cluster].faces.empty()) --state.liveClusters;
+    return left == 0;
+}
+
+// The whole cluster, face by face (dissolveFaces).
+bool dissolve(State& state, uint32_t cluster) {
+    if (state.clusters[cluster].faces.empty()) return false;
+    state.leaving = state.clusters[cluster].faces;
+    return dissolveFaces(state, cluster, state.leaving);
 }
 
 // The two faces of state.pool farthest apart, roughly: the one farthest from the pool's centre,
@@ -446,15 +458,44 @@ bool dissolveAcrossGaps(State& state, uint32_t cluster, const std::vector<glm::d
     return true;
 }
 
-// Dissolving, smallest clusters first, while above the target.
+// Dissolving, smallest clusters first, while above the target. A failed try costs as much as a
+// success and is undone; where most fail (full neighbours all round), the pass stops after a few
+// times as many failures as there are clusters still to remove, and the steps after it (three into
+// two, merges) take over.
 void dissolveSmallest(State& state, size_t target) {
+    if (state.liveClusters <= target) return;
+    size_t failuresLeft = kFailuresPerRemoval * (state.liveClusters - target) + kFailuresAtLeast;
     for (uint32_t c : clustersBySize(state)) {
         if (state.liveClusters <= target) return;
-        dissolve(state, c);
+        if (!dissolve(state, c) && --failuresLeft == 0) return;
     }
 }
 
 }  // namespace
+
+void absorbPieces(State& state) {
+    const Partition clusters = result(state);
+    const Partition pieces = connectedPieces(clusters, state.acrossEdge);
+    if (pieces.clusterCount == clusters.clusterCount) return;
+    const ClusterFaces facesOfPiece = facesByCluster(pieces);
+    // Per cluster of `clusters`: its largest piece, which stays.
+    std::vector<uint32_t> largest(clusters.clusterCount, kNone), clusterOfPiece(pieces.clusterCount), order;
+    auto size = [&](uint32_t piece) { return facesOfPiece.starts[piece + 1] - facesOfPiece.starts[piece]; };
+    for (uint32_t piece = 0; piece < pieces.clusterCount; ++piece) {
+        const uint32_t first = facesOfPiece.faces[facesOfPiece.starts[piece]];
+        clusterOfPiece[piece] = state.clusterOf[first];
+        uint32_t& kept = largest[clusters.clusterOfFace[first]];
+        if (kept == kNone || size(piece) > size(kept)) kept = piece;
+    }
+    for (uint32_t piece = 0; piece < pieces.clusterCount; ++piece)
+        if (largest[clusters.clusterOfFace[facesOfPiece.faces[facesOfPiece.starts[piece]]]] != piece) order.push_back(piece);
+    std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return size(a) < size(b); });
+    for (uint32_t piece : order) {
+        state.leaving.assign(facesOfPiece.faces.begin() + facesOfPiece.starts[piece],
+                             facesOfPiece.faces.begin() + facesOfPiece.starts[piece + 1]);
+        dissolveFaces(state, clusterOfPiece[piece], state.leaving);
+    }
+}
 
 void reduceTo(State& state, size_t target) {
     dissolveSmallest(state, target);
