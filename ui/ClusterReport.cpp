@@ -1,6 +1,7 @@
 #include "ClusterReport.h"
 
 #include <cmath>
+#include <tuple>
 
 #include <QStringList>
 
@@ -75,15 +76,40 @@ QString boundsSection(const ClusterReportInput& input) {
         .html();
 }
 
-QString cornerTable(const CullExplanation& why) {
-    QString html = QStringLiteral(
-        "<table border='1' cellspacing='0' cellpadding='3'><tr><th>corner k</th><th>position</th>"
-        "<th>v&middot;V1, v = (k &minus; e)/|k &minus; e|</th><th>verdict</th></tr>");
-    for (int i = 0; i < 8; ++i)
-        html += QStringLiteral("<tr><td>%1</td><td>%2</td><td>%3</td><td>%4</td></tr>")
-                    .arg(i)
-                    .arg(vector3(why.corners[i]), number(why.cornerDotAxis[i]), verdict(why.cornerBack[i]));
+// Eight points or directions a test looks at, each with the value it compared and its verdict.
+template <typename Row>
+QString eightRowTable(const QString& what, const QString& position, const QString& value, Row row) {
+    QString html = QStringLiteral("<table border='1' cellspacing='0' cellpadding='3'><tr><th>%1</th><th>%2</th><th>%3</th>"
+                                  "<th>verdict</th></tr>")
+                       .arg(what, position, value);
+    for (int i = 0; i < 8; ++i) {
+        const auto [point, compared, back] = row(i);
+        html += QStringLiteral("<tr><td>%1</td><td>%2</td><td>%3</td><td>%4</td></tr>").arg(i).arg(vector3(point), number(compared), verdict(back));
+    }
     return html + QStringLiteral("</table>");
+}
+
+QString cornerTable(const CullExplanation& why) {
+    return eightRowTable(QStringLiteral("corner k"), QStringLiteral("position"), QStringLiteral("v&middot;V1, v = (k &minus; e)/|k &minus; e|"),
+                         [&](int i) { return std::tuple(why.corners[i], why.cornerDotAxis[i], why.cornerBack[i]); });
+}
+
+QString edgeTable(const CullExplanation& why) {
+    return eightRowTable(QStringLiteral("edge k"), QStringLiteral("direction g"), QStringLiteral("g&middot;v"), [&](int i) {
+        return std::tuple(why.octagonEdges[i], why.edgeDotView[i], why.edgeDotView[i] > why.threshold);
+    });
+}
+
+// The octagon test's rows: what it compares (the orthographic and perspective forms differ only in v).
+void octagonRows(Table& table, const CullExplanation& why, bool orthographic) {
+    table.row(QStringLiteral("rule"), QStringLiteral("the normals fit in an eight-sided cone with edges g; culled iff g&middot;v &gt; 0 "
+                                                     "for every edge, v = %1")
+                                          .arg(orthographic ? QStringLiteral("d") : QStringLiteral("(apex &minus; e)/|apex &minus; e|: "
+                                                                                                   "the apex lies behind every face plane")));
+    if (!orthographic) table.row(QStringLiteral("apex"), vector3(why.apex));
+    table.row(QStringLiteral("v"), vector3(why.view))
+        .row(QStringLiteral("threshold (margin)"), number(why.threshold))
+        .row(QStringLiteral("edges seeing the back"), QStringLiteral("%1 of 8").arg(why.edgesBack));
 }
 
 // The steps of the chosen test with the numbers it compared.
@@ -102,6 +128,9 @@ QString testSection(const ClusterReportInput& input) {
                                                          "at every vertex q (exact, per face)"));
     } else if (!why.cullable) {
         table.row(QStringLiteral("rule"), QStringLiteral("no cone: the cluster is never culled"));
+    } else if (input.test == CullTest::Octagon) {
+        octagonRows(table, why, eye.orthographic);
+        steps = edgeTable(why);
     } else if (eye.orthographic) {
         table.row(QStringLiteral("rule"), QStringLiteral("from infinitely far every view vector is d: culled iff d&middot;V1 &gt; sin &alpha;"))
             .row(QStringLiteral("d&middot;V1"), number(why.viewDotAxis))
@@ -157,11 +186,13 @@ QString testSection(const ClusterReportInput& input) {
                     .row(QStringLiteral("v&middot;V1"), number(why.viewDotAxis))
                     .row(QStringLiteral("sin &alpha; (+ margin)"), number(why.threshold));
                 break;
-            case CullTest::Oracle: break;
+            case CullTest::Oracle:
+            case CullTest::Octagon: break;
         }
     }
     if (!std::isnan(why.margin))
-        table.row(QStringLiteral("margin (tightest v&middot;V1 &minus; threshold)"),
+        table.row(input.test == CullTest::Octagon ? QStringLiteral("margin (tightest g&middot;v &minus; threshold)")
+                                                  : QStringLiteral("margin (tightest v&middot;V1 &minus; threshold)"),
                   why.margin > 0.0 ? QStringLiteral("passes by %1").arg(number(why.margin))
                                    : QStringLiteral("<b>short by %1</b>").arg(number(-why.margin)));
     table.row(QStringLiteral("<b>decision</b>"), why.culled ? QStringLiteral("<b>culled</b>") : QStringLiteral("<b>drawn</b>"));

@@ -31,7 +31,9 @@
 //  - so the float dot product is at most v.V1 + 5.3 u M + 4.8 u |v|, and the float length is
 //    within 3 u |v| + 6 u M of |v|;
 //  - every test adds error = 16 u length + 64 u M to its threshold and compares strictly, and its
-//    sin(alpha) carries kBatchSinMargin (> 9.3 u) for the rounding of the product with it.
+//    sin(alpha) carries kBatchSinMargin (> 9.3 u) for the rounding of the product with it;
+//  - the octagon test compares v.g with that error for each unit edge g, stored in float as the
+//    axis is: the same bound holds for each.
 // Hence a float "cull" implies the exact inequality on the double bounds, which is what makes the
 // double test conservative (Culling.h). The tests in tests/core/BatchCullingTests.cpp check the
 // result against the per-face oracle.
@@ -219,7 +221,27 @@ inline void sphereKernel(const ClusterBatch& batch, const EyeConstants& constant
     });
 }
 
-enum class Kernel { Sphere, Apex, MeshoptSphere };
+// Every edge of the octagon must see v from behind. All eight are tested, the masks joined in the
+// lanes: some cluster of a group of eight is nearly always still in after the first edges.
+template <class Lanes>
+inline void octagonKernel(const ClusterBatch& batch, const EyeConstants& constants, uint8_t* culled) {
+    using F = typename Lanes::F;
+    const EyeLanes<Lanes> eye = broadcastEye<Lanes>(constants);
+    for (size_t i = 0; i < batch.count; i += Lanes::width) {
+        const float* block = &batch.octagonBlocks[i / 8 * ClusterBatch::kOctagonFields * 8 + i % 8];
+        auto field = [&](size_t f) { return Lanes::load(block + 8 * f); };
+        const F vx = field(0) - eye.x;
+        const F vy = field(1) - eye.y;
+        const F vz = field(2) - eye.z;
+        const F error = eye.relative * Lanes::sqrt(vx * vx + vy * vy + vz * vz) + eye.slack;
+        auto edgeSeesBack = [&](size_t k) { return Lanes::greater(vx * field(3 + 3 * k) + vy * field(4 + 3 * k) + vz * field(5 + 3 * k), error); };
+        auto all = Lanes::both(edgeSeesBack(0), edgeSeesBack(1));
+        for (size_t k = 2; k < 8; ++k) all = Lanes::both(all, edgeSeesBack(k));
+        storeBits<Lanes>(Lanes::bits(all), culled, i, batch.count);
+    }
+}
+
+enum class Kernel { Sphere, Apex, MeshoptSphere, Octagon };
 
 template <class Lanes>
 inline void runKernel(Kernel kernel, const ClusterBatch& batch, const EyeConstants& eye, uint8_t* culled) {
@@ -227,6 +249,7 @@ inline void runKernel(Kernel kernel, const ClusterBatch& batch, const EyeConstan
         case Kernel::Sphere: sphereKernel<Lanes>(batch, eye, culled); break;
         case Kernel::Apex: apexKernel<Lanes>(batch, eye, culled); break;
         case Kernel::MeshoptSphere: meshoptSphereKernel<Lanes>(batch, eye, culled); break;
+        case Kernel::Octagon: octagonKernel<Lanes>(batch, eye, culled); break;
     }
 }
 
@@ -273,6 +296,7 @@ ClusterBatch makeClusterBatch(const ClusterBounds& bounds) {
                                        &batch.centerZ, &batch.radius, &batch.apexX, &batch.apexY, &batch.apexZ,
                                        &batch.cosHalfAngleUp, &batch.cosHalfAngleDown})
         column->assign(padded, 0.0f);
+    batch.octagonBlocks.assign(padded * ClusterBatch::kOctagonFields, 0.0f);
     batch.sinHalfAngle.assign(padded, kNeverCulledSin);
     double maxCoordinate = 0.0;
     for (size_t c = 0; c < batch.count; ++c) {
@@ -298,6 +322,13 @@ ClusterBatch makeClusterBatch(const ClusterBounds& bounds) {
         batch.sinHalfAngle[c] = roundUp(sine + kBatchSinMargin);
         batch.cosHalfAngleUp[c] = roundUp(cosine + kBatchSinMargin);
         batch.cosHalfAngleDown[c] = std::max(0.0f, roundDown(cosine - kBatchSinMargin));
+        const OctagonCone& octagon = bounds.octagons[c];
+        if (!octagon.cullable) continue;  // zero edges: g.v = 0 never passes
+        float* block = &batch.octagonBlocks[c / 8 * ClusterBatch::kOctagonFields * 8 + c % 8];
+        const glm::dvec3* points[9] = {&apex};
+        for (size_t k = 0; k < 8; ++k) points[k + 1] = &octagon.edges[k];
+        for (size_t p = 0; p < 9; ++p)
+            for (int axis = 0; axis < 3; ++axis) block[8 * (3 * p + axis)] = float((*points[p])[axis]);
     }
     batch.maxCoordinate = maxCoordinate;
     return batch;
@@ -337,8 +368,12 @@ void cullMeshoptSphereBatch(const ClusterBatch& batch, const glm::dvec3& eye, ui
     dispatch(Kernel::MeshoptSphere, batch, eye, culled, level);
 }
 
+void cullOctagonBatch(const ClusterBatch& batch, const glm::dvec3& eye, uint8_t* culled, SimdLevel level) {
+    dispatch(Kernel::Octagon, batch, eye, culled, level);
+}
+
 bool batchSupports(CullTest test) {
-    return test == CullTest::Sphere || test == CullTest::Apex || test == CullTest::MeshoptSphere;
+    return test == CullTest::Sphere || test == CullTest::Apex || test == CullTest::MeshoptSphere || test == CullTest::Octagon;
 }
 
 void cullBatch(const ClusterBatch& batch, const glm::dvec3& eye, CullTest test, uint8_t* culled, SimdLevel level) {
@@ -346,6 +381,7 @@ void cullBatch(const ClusterBatch& batch, const glm::dvec3& eye, CullTest test, 
         case CullTest::Sphere: return cullSphereBatch(batch, eye, culled, level);
         case CullTest::Apex: return cullApexBatch(batch, eye, culled, level);
         case CullTest::MeshoptSphere: return cullMeshoptSphereBatch(batch, eye, culled, level);
+        case CullTest::Octagon: return cullOctagonBatch(batch, eye, culled, level);
         default: break;
     }
     throw std::invalid_argument("no batched form of the " + toString(test) + " test");

@@ -38,6 +38,11 @@ struct ClusterBatch {
     std::vector<float> centerX, centerY, centerZ;
     std::vector<float> radius;                  // rounded up
     std::vector<float> apexX, apexY, apexZ;
+    // The octagon test's apex and eight unit edges (zero for a cluster that is not cullable), all
+    // of a group of 8 clusters together: field f of cluster c at [c / 8 * 27 * 8 + f * 8 + c % 8],
+    // fields apex x, y, z, then x, y, z of each edge. One stream of loads instead of 27.
+    static constexpr size_t kOctagonFields = 27;
+    std::vector<float> octagonBlocks;
     // Largest |coordinate| of any centre (plus its radius) or apex: scales the absolute slack.
     double maxCoordinate = 0.0;
 
@@ -67,8 +72,11 @@ void cullApexBatch(const ClusterBatch& batch, const glm::dvec3& eye, uint8_t* cu
 // meshoptimizer's sphere test (CullTest::MeshoptSphere): (c - e).V1 > sin(alpha) |c - e| + r.
 void cullMeshoptSphereBatch(const ClusterBatch& batch, const glm::dvec3& eye, uint8_t* culled,
                             SimdLevel level = bestSimdLevel());
+// The octagon test (CullTest::Octagon): (a - e).g > 0 for each of the eight edges g.
+void cullOctagonBatch(const ClusterBatch& batch, const glm::dvec3& eye, uint8_t* culled,
+                      SimdLevel level = bestSimdLevel());
 
-// The three tests above by CullTest; batchSupports says which tests have a batched form.
+// The four tests above by CullTest; batchSupports says which tests have a batched form.
 bool batchSupports(CullTest test);
 void cullBatch(const ClusterBatch& batch, const glm::dvec3& eye, CullTest test, uint8_t* culled,
                SimdLevel level = bestSimdLevel());

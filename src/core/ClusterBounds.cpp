@@ -118,6 +118,7 @@ ClusterBounds computeClusterBounds(const Mesh& mesh, const std::vector<glm::vec3
     bounds.boxes.resize(clusterCount);
     bounds.spheres.resize(clusterCount);
     bounds.apexes.resize(clusterCount);
+    bounds.octagons.resize(clusterCount);
     // Clusters are bounded independently, in consecutive pieces on all cores; each piece lists its
     // clusters' vertices on its own, and the lists are joined in cluster order afterwards.
     const size_t pieces = piecesFor(clusterCount, 1024);
@@ -163,10 +164,11 @@ ClusterBounds computeClusterBounds(const Mesh& mesh, const std::vector<glm::vec3
                 } else {
                     bounds.apexes[c] = bounds.spheres[c].center;
                 }
-                continue;
+            } else {
+                bounds.cones[c] = coneByMethod(coneMethod, normals);
+                bounds.apexes[c] = coneApex(bounds.cones[c], bounds.spheres[c].center, mesh, world, faces, clusterFaces, faceCount);
             }
-            bounds.cones[c] = coneByMethod(coneMethod, normals);
-            bounds.apexes[c] = coneApex(bounds.cones[c], bounds.spheres[c].center, mesh, world, faces, clusterFaces, faceCount);
+            bounds.octagons[c] = octagonCone(bounds.cones[c], normals.data(), normals.size());
         }
     });
     for (size_t c = 0; c < clusterCount; ++c) bounds.vertexStarts[c + 1] += bounds.vertexStarts[c];

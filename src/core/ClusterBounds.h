@@ -1,5 +1,6 @@
 // Everything a cull test reads about a cluster, computed once per partition: its faces and
-// vertices, a cone of normals, an AABB, a bounding sphere and the apex of meshoptimizer's apex test.
+// vertices, a cone of normals (round, and eight-sided around the same axis), an AABB, a bounding
+// sphere and the apex of meshoptimizer's apex test.
 #pragma once
 
 #include <cstdint>
@@ -10,6 +11,7 @@
 
 #include "Cones.h"
 #include "Mesh.h"
+#include "OctagonCones.h"
 #include "Partition.h"
 #include "Spheres.h"
 
@@ -30,6 +32,8 @@ struct ClusterBounds {
     std::vector<Sphere> spheres;
     // Apex test: the cone's apex, placed on the back side of every face plane of the cluster.
     std::vector<glm::dvec3> apexes;
+    // Octagon test: the eight-sided cone of normals around the cone's axis (same apex).
+    std::vector<OctagonCone> octagons;
 
     size_t count() const { return cones.size(); }
 };

@@ -29,8 +29,8 @@ enum class Effort { Fast, Balanced, Best };
 size_t defaultClusterBudget(const Mesh& mesh, const MeshletLimits& limits);
 
 // Optimises expectedCullRate under the vertex/triangle limits, from one of two starts:
-//  - meshoptimizer's meshlets, whose smaller pieces (a meshlet may hold triangles of separate parts)
-//    are given to their neighbours where those have room;
+//  - meshoptimizer's meshlets as they are (a meshlet may hold triangles of separate parts, as
+//    meshoptimizer packs by distance);
 //  - growth of small clusters of like normals (cone first, a little locality and vertex economy),
 //    then reduction to the budget: clusters are dissolved face by face into neighbours with room (a
 //    full neighbour first passes one of its own faces on), three are cut into two, and clusters

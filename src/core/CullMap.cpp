@@ -36,7 +36,7 @@ double oracleShare(const std::vector<glm::dvec3>& normals, const ConeOfNormals& 
 
 CullMap computeCullMap(const FaceGeometry& faces, const ClusterBounds& bounds, size_t directionCount) {
     const size_t clusterCount = bounds.count();
-    CullMap map{std::vector<double>(clusterCount, 0.0), std::vector<double>(clusterCount, 0.0)};
+    CullMap map{std::vector<double>(clusterCount, 0.0), std::vector<double>(clusterCount, 0.0), std::vector<double>(clusterCount, 0.0)};
     const std::vector<glm::dvec3> directions = spiralDirections(directionCount);
     // Clusters are independent: each core takes a range of them.
     forRangesInParallel(clusterCount, 16, [&](size_t begin, size_t end) {
@@ -47,14 +47,18 @@ CullMap computeCullMap(const FaceGeometry& faces, const ClusterBounds& bounds, s
             normals.clear();
             for (uint32_t i = bounds.faces.starts[c]; i < bounds.faces.starts[c + 1]; ++i)
                 if (!faces.degenerate[bounds.faces.faces[i]]) normals.push_back(faces.normals[bounds.faces.faces[i]]);
-            map.oracleFraction[c] = oracleShare(normals, cone, directions);
+            map.octagonFraction[c] = octagonCullShare(bounds.octagons[c]);
+            // The octagon's region lies inside the oracle's, exactly measured: the sampled estimate
+            // is never let below it.
+            map.oracleFraction[c] = std::max(oracleShare(normals, cone, directions), map.octagonFraction[c]);
         }
     });
     return map;
 }
 
 double cullFraction(const CullMap& map, uint32_t cluster, CullTest test) {
-    return test == CullTest::Oracle ? map.oracleFraction[cluster] : map.coneFraction[cluster];
+    if (test == CullTest::Oracle) return map.oracleFraction[cluster];
+    return test == CullTest::Octagon ? map.octagonFraction[cluster] : map.coneFraction[cluster];
 }
 
 }  // namespace conescope

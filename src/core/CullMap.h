@@ -3,7 +3,9 @@
 //
 // At infinity every conservative cone test (vertices, aabb, sphere, apex, meshopt-sphere) reduces to
 // the cone test v.axis > sin(alpha), culled from a cap of half-angle 90 - alpha: a share
-// (1 - sin alpha)/2 of the directions, exactly. The oracle culls from every direction u with n.u < 0
+// (1 - sin alpha)/2 of the directions, exactly. The octagon test culls from the cross-section of its
+// pyramid, a spherical octagon whose area is known exactly too (octagonCullShare). The oracle culls
+// from every direction u with n.u < 0
 // for each non-degenerate face normal n, a convex spherical polygon that holds that cap; its share is
 // counted over cullMapDirections spiral directions (Views.h), which the tests check against exact
 // areas (caps, octants) to well within 0.005.
@@ -22,14 +24,16 @@ namespace conescope {
 constexpr size_t cullMapDirections = size_t(1) << 15;
 
 struct CullMap {
-    std::vector<double> coneFraction;    // per cluster: (1 - sin alpha)/2, 0 when not cullable
-    std::vector<double> oracleFraction;  // per cluster: share of directions with every face back-facing
+    std::vector<double> coneFraction;     // per cluster: (1 - sin alpha)/2, 0 when not cullable
+    std::vector<double> octagonFraction;  // per cluster: octagonCullShare, 0 when not cullable
+    std::vector<double> oracleFraction;   // per cluster: share of directions with every face back-facing
 };
 
 // Face normals from `faces` (world space), cones from `bounds`.
 CullMap computeCullMap(const FaceGeometry& faces, const ClusterBounds& bounds, size_t directions = cullMapDirections);
 
-// The share for `test`: the oracle's own for CullTest::Oracle, the cone's for every other test.
+// The share for `test`: the oracle's own for CullTest::Oracle, the octagon's for CullTest::Octagon,
+// the round cone's for every other test.
 double cullFraction(const CullMap& map, uint32_t cluster, CullTest test);
 
 }  // namespace conescope

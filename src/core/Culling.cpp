@@ -87,8 +87,11 @@ bool cullCluster(const CullingInput& input, uint32_t cluster, const Eye& eye, Cu
     const ClusterBounds& bounds = input.bounds;
     const ConeOfNormals& cone = bounds.cones[cluster];
     if (!cone.cullable) return false;
-    // From infinitely far every view vector is the view direction: all bounds give the same answer.
-    if (eye.orthographic) return viewDirectionSeesBack(cone, eye.direction);
+    // From infinitely far every view vector is the view direction: all bounds give the same answer,
+    // the cone's (round, or eight-sided for the octagon test).
+    if (eye.orthographic)
+        return test == CullTest::Octagon ? octagonSeesBack(bounds.octagons[cluster], eye.direction)
+                                         : viewDirectionSeesBack(cone, eye.direction);
     switch (test) {
         case CullTest::Vertices:
             for (uint32_t i = bounds.vertexStarts[cluster]; i < bounds.vertexStarts[cluster + 1]; ++i)
@@ -105,6 +108,7 @@ bool cullCluster(const CullingInput& input, uint32_t cluster, const Eye& eye, Cu
         case CullTest::Sphere: return sphereSeesBack(cone, bounds.spheres[cluster], eye.position);
         case CullTest::Apex: return vectorSeesBack(cone, bounds.apexes[cluster] - eye.position);
         case CullTest::MeshoptSphere: return meshoptSphereSeesBack(cone, bounds.spheres[cluster], eye.position);
+        case CullTest::Octagon: return octagonSeesBack(bounds.octagons[cluster], bounds.apexes[cluster] - eye.position);
         case CullTest::Oracle: break;
     }
     return false;
@@ -145,8 +149,8 @@ CullExplanation explainCull(const CullingInput& input, uint32_t cluster, const E
     why.viewDotAxis = glm::dot(why.view, cone.axis);
     why.eyeInsideSphere = !eye.orthographic && !(why.distance > sphere.radius);
     why.sphereAngleDegrees = why.eyeInsideSphere ? 90.0 : glm::degrees(std::asin(sphere.radius / why.distance));
-    // The apex test's view vector runs from the eye to the apex, not to the sphere's centre.
-    if (test == CullTest::Apex && !eye.orthographic) {
+    // The apex tests' view vector runs from the eye to the apex, not to the sphere's centre.
+    if ((test == CullTest::Apex || test == CullTest::Octagon) && !eye.orthographic) {
         const glm::dvec3 toApex = why.apex - eye.position;
         const double length = glm::length(toApex);
         why.view = length > 0.0 ? toApex / length : glm::dvec3(0.0);
@@ -181,13 +185,24 @@ CullExplanation explainCull(const CullingInput& input, uint32_t cluster, const E
         why.pointsBack = size_t(std::count(why.cornerBack.begin(), why.cornerBack.end(), true));
         tightest = *std::min_element(why.cornerDotAxis.begin(), why.cornerDotAxis.end());
     }
+    const OctagonCone& octagon = bounds.octagons[cluster];
+    why.octagonEdges = octagon.edges;
+    for (size_t k = 0; k < 8; ++k) {
+        why.edgeDotView[k] = glm::dot(octagon.edges[k], why.view);
+        why.edgesBack += octagon.cullable && why.edgeDotView[k] > kCullMargin;
+    }
+    if (test == CullTest::Octagon) {
+        // Each edge's g.v must pass kCullMargin: the margin is the tightest edge's.
+        why.threshold = kCullMargin;
+        tightest = octagonTightest(octagon, why.view);
+    }
     why.margin = tightest - why.threshold;
     if (test == CullTest::MeshoptSphere && !eye.orthographic)
         why.margin -= why.distance > 0.0 ? why.radius / why.distance : std::numeric_limits<double>::infinity();
     // Inside the sphere, or seeing it wider than B, the sphere test compares nothing; without a cone no test does.
     const bool sphereNeverCulls = test == CullTest::Sphere && !eye.orthographic &&
                                   (why.eyeInsideSphere || !(why.angleBDegrees - why.sphereAngleDegrees > 0.0));
-    if (test == CullTest::Oracle || !cone.cullable || sphereNeverCulls)
+    if (test == CullTest::Oracle || !cone.cullable || sphereNeverCulls || (test == CullTest::Octagon && !octagon.cullable))
         why.margin = std::numeric_limits<double>::quiet_NaN();
     const ClusterFaces& rows = bounds.faces;
     for (uint32_t i = rows.starts[cluster]; i < rows.starts[cluster + 1]; ++i) {

@@ -12,7 +12,7 @@
 
 namespace conescope {
 
-enum class CullTest { Oracle, Vertices, Aabb, AabbFast, Sphere, Apex, MeshoptSphere };
+enum class CullTest { Oracle, Vertices, Aabb, AabbFast, Sphere, Apex, MeshoptSphere, Octagon };
 
 // Margin added to every threshold a cluster test compares against: it absorbs the rounding of the
 // double-precision dot products so that a face exactly edge-on is never culled.
@@ -84,6 +84,11 @@ struct CullExplanation {
     double sphereAngleDegrees = 0.0;  // asin(r/d)
     bool eyeInsideSphere = false;
     glm::dvec3 apex{0.0};
+    // Octagon test: the eight edges of the cone of normals and g.v for each (v the unit view vector
+    // to the apex); all must exceed kCullMargin.
+    std::array<glm::dvec3, 8> octagonEdges{};
+    std::array<double, 8> edgeDotView{};
+    size_t edgesBack = 0;
     std::array<glm::dvec3, 8> corners{};
     std::array<double, 8> cornerDotAxis{};
     std::array<bool, 8> cornerBack{};

@@ -38,25 +38,6 @@ Partition renumberClusters(std::vector<uint32_t> clusterOfFace) {
     return {std::move(clusterOfFace), uint32_t(renumber.size())};
 }
 
-Partition connectedPieces(const Partition& partition, const Rows& acrossEdge) {
-    // Union-find over faces, joined across every edge inside a cluster; a piece is named by its root.
-    std::vector<uint32_t> parent(partition.clusterOfFace.size());
-    for (uint32_t f = 0; f < parent.size(); ++f) parent[f] = f;
-    auto root = [&](uint32_t f) {
-        while (parent[f] != f) f = parent[f] = parent[parent[f]];
-        return f;
-    };
-    for (uint32_t f = 0; f < parent.size(); ++f)
-        for (const uint32_t* g = acrossEdge.begin(f); g != acrossEdge.end(f); ++g)
-            if (partition.clusterOfFace[*g] == partition.clusterOfFace[f]) {
-                const uint32_t a = root(f), b = root(*g);
-                if (a != b) parent[std::max(a, b)] = std::min(a, b);
-            }
-    std::vector<uint32_t> pieces(parent.size());
-    for (uint32_t f = 0; f < parent.size(); ++f) pieces[f] = root(f);
-    return renumberClusters(std::move(pieces));
-}
-
 Partition buildMeshlets(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits, double normalWeight) {
     const size_t faceCount = mesh.faceCount();
     const Rows facesAround = facesAroundVertices(mesh);

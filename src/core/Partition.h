@@ -48,11 +48,6 @@ Partition partitionFromIds(const std::vector<double>& ids, size_t faceCount, con
 // One id per face, whitespace separated; '#' starts a comment.
 std::vector<double> readClusterIdFile(const std::string& path);
 
-// Each cluster cut into its pieces connected across edges (acrossEdge: facesAcrossEdges), numbered
-// in order of first use: a cluster in one piece keeps its faces.
-struct Rows;
-Partition connectedPieces(const Partition& partition, const Rows& acrossEdge);
-
 // Cluster ids renumbered densely (0..K-1) in order of first use; ids no face has are dropped.
 Partition renumberClusters(std::vector<uint32_t> clusterOfFace);
 

@@ -26,7 +26,7 @@ const NameTable<CullTest>& testNames() {
     static const NameTable<CullTest> names = {{CullTest::Oracle, "oracle"},     {CullTest::Vertices, "vertices"},
                                               {CullTest::Aabb, "aabb"},         {CullTest::AabbFast, "aabb-fast"},
                                               {CullTest::Sphere, "sphere"},     {CullTest::Apex, "apex"},
-                                              {CullTest::MeshoptSphere, "meshopt-sphere"}};
+                                              {CullTest::Octagon, "octagon"},   {CullTest::MeshoptSphere, "meshopt-sphere"}};
     return names;
 }
 const NameTable<SphereMethod>& sphereNames() {

@@ -30,10 +30,24 @@ CullRegion cullRegion(const ClusterBounds& bounds, uint32_t cluster, CullTest te
     CullRegion region;
     const ConeOfNormals& cone = bounds.cones[cluster];
     const Sphere& sphere = bounds.spheres[cluster];
-    const bool drawable = orthographic || test == CullTest::Apex || test == CullTest::Sphere || test == CullTest::MeshoptSphere;
+    const bool drawable = orthographic || test == CullTest::Apex || test == CullTest::Sphere ||
+                          test == CullTest::MeshoptSphere || test == CullTest::Octagon;
     if (!cone.cullable || !drawable || test == CullTest::Oracle) return region;
-    region.origin = (test == CullTest::Apex && !orthographic) ? bounds.apexes[cluster] : sphere.center;
+    const bool fromApex = (test == CullTest::Apex || test == CullTest::Octagon) && !orthographic;
+    region.origin = fromApex ? bounds.apexes[cluster] : sphere.center;
     region.direction = -cone.axis;
+    if (test == CullTest::Octagon) {
+        const OctagonCone& octagon = bounds.octagons[cluster];
+        if (!octagon.cullable) return region;
+        const std::array<glm::dvec3, 8> edges = octagonPyramidEdges(octagon);
+        region.edges.assign(edges.begin(), edges.end());
+        samples = std::max<size_t>(samples, 2);
+        for (size_t i = 0; i < samples; ++i) {
+            region.distances.push_back(reach * double(i) / double(samples - 1));
+            region.angles.push_back(0.0);
+        }
+        return region;
+    }
     const double start = regionStart(test, orthographic, cone.sinHalfAngle, cone.cosHalfAngle, sphere.radius);
     if (!(start < reach)) return region;
     samples = std::max<size_t>(samples, 2);
@@ -57,6 +71,7 @@ GaussMap gaussMapOf(const PreparedMesh& prepared, const ClusterSet& clusters, ui
         if (!prepared.faces.degenerate[faces[i]]) map.normals.push_back(prepared.faces.normals[faces[i]]);
     for (ConeMethod method : allConeMethods())
         map.cones.emplace_back(method, clusterCone(prepared.mesh(), prepared.world, prepared.faces, faces, count, method));
+    map.octagon = clusters.bounds.octagons[cluster];
     map.view = why.view;
     return map;
 }

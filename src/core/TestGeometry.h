@@ -21,14 +21,19 @@ namespace conescope {
 //   sphere: origin = centre, angle = B - asin(r/d) from d = r / sin B on;
 //   meshopt-sphere: origin = centre, angle = acos(sin alpha + r/d) from d = r / (1 - sin alpha) on;
 //   orthographic eyes: the directions, angle = B around -V1 (drawn at the centre).
+// The octagon test's region is no solid of revolution but a pyramid: `edges` holds its eight edge
+// directions from the origin (the apex, or the centre for orthographic eyes), `distances` how far
+// along them it is described, and the angles are 0.
 // Empty (no distances) for the oracle, for a cluster without a cone and for the vertex and box tests,
 // whose region is an intersection of one such cone per point (their points carry the verdicts).
 struct CullRegion {
     glm::dvec3 origin{0.0};
     glm::dvec3 direction{0.0};
     std::vector<double> distances;
-    std::vector<double> angles;  // radians, in (0, pi/2)
+    std::vector<double> angles;      // radians, in (0, pi/2)
+    std::vector<glm::dvec3> edges;   // the octagon test's pyramid; empty for the solids of revolution
     bool empty() const { return distances.empty(); }
+    bool pyramid() const { return !edges.empty(); }
 };
 // `reach`: how far from the origin to describe it; `samples`: how many distances (at least 2).
 CullRegion cullRegion(const ClusterBounds& bounds, uint32_t cluster, CullTest test, bool orthographic, double reach,
@@ -38,6 +43,7 @@ CullRegion cullRegion(const ClusterBounds& bounds, uint32_t cluster, CullTest te
 struct GaussMap {
     std::vector<glm::dvec3> normals;                          // unit face normals (degenerate faces left out)
     std::vector<std::pair<ConeMethod, ConeOfNormals>> cones;  // allConeMethods(), in that order
+    OctagonCone octagon;                                      // around the displayed method's axis
     glm::dvec3 view{0.0};  // the test's unit view vector: a face is back-facing when n.v > 0 for every point
 };
 GaussMap gaussMapOf(const PreparedMesh& prepared, const ClusterSet& clusters, uint32_t cluster, const CullExplanation& why);

@@ -30,6 +30,7 @@ namespace {
 
 constexpr Rgb sphereColour{0.55, 0.58, 0.65};
 constexpr Rgb normalColour{0.95, 0.95, 0.95};
+constexpr Rgb octagonColour{1.00, 0.90, 0.20};
 constexpr int circleSegments = 96;
 
 // Two unit vectors perpendicular to `axis` and to each other.
@@ -73,6 +74,23 @@ GlyphGeometry capSurface(const glm::dvec3& axis, double angle, double radius) {
             const int64_t a = 1 + int64_t(r - 1) * segments, b = a + segments, next = (k + 1) % segments;
             geometry.addCell({a + k, a + next, b + next, b + k}, 0);
         }
+    return geometry;
+}
+
+// The octagon on the sphere: great-circle arcs between its neighbouring edges.
+GlyphGeometry octagonOnSphere(const OctagonCone& octagon, double radius) {
+    GlyphGeometry geometry;
+    constexpr int steps = 12;
+    for (size_t k = 0; k < 8; ++k) {
+        const glm::dvec3 &a = octagon.edges[k], &b = octagon.edges[(k + 1) % 8];
+        for (int i = 0; i < steps; ++i) {
+            const double t = double(i) / steps;
+            const glm::dvec3 p = (1.0 - t) * a + t * b;
+            geometry.points.emplace_back(radius * (glm::length(p) > 0.0 ? glm::normalize(p) : a));
+        }
+    }
+    const int64_t count = int64_t(geometry.points.size());
+    for (int64_t i = 0; i < count; ++i) geometry.addCell({i, (i + 1) % count}, 0);
     return geometry;
 }
 
@@ -120,6 +138,7 @@ struct GaussMapScene::Impl {
     vtkSmartPointer<vtkActor> normals = pointsActor(normalColour, 7.0);
     std::vector<vtkSmartPointer<vtkActor>> rims;  // one per cone method, in allConeMethods() order
     vtkSmartPointer<vtkActor> cap = actorFor(plainMapper(emptyPolyData()));
+    vtkSmartPointer<vtkActor> octagon = lineActor(plainMapper(emptyPolyData()), 2.5);
     vtkSmartPointer<vtkActor> view = lineActor(plainMapper(emptyPolyData()), 3.0);
     vtkSmartPointer<vtkActor> viewTip = pointsActor(SceneColours::eye, 12.0);
     vtkSmartPointer<vtkActor> horizon = lineActor(plainMapper(emptyPolyData()), 2.0);
@@ -128,7 +147,7 @@ struct GaussMapScene::Impl {
     ConeMethod displayed = ConeMethod::Minimal;
 
     std::vector<vtkActor*> actors() const {
-        std::vector<vtkActor*> all = {sphere, cap, horizon, view, viewTip, normals};
+        std::vector<vtkActor*> all = {sphere, cap, octagon, horizon, view, viewTip, normals};
         for (const auto& rim : rims) all.push_back(rim);
         return all;
     }
@@ -148,6 +167,7 @@ GaussMapScene::GaussMapScene() : impl_(std::make_unique<Impl>()) {
     impl_->cap->GetProperty()->LightingOff();
     setColour(impl_->view, SceneColours::eye);
     setColour(impl_->horizon, SceneColours::eye);
+    setColour(impl_->octagon, octagonColour);
     for (size_t i = 0; i < allConeMethods().size(); ++i) impl_->rims.push_back(lineActor(plainMapper(emptyPolyData()), 3.0));
     impl_->legend.setVisible(true);
     show(std::nullopt, ConeMethod::Minimal);
@@ -184,6 +204,15 @@ void GaussMapScene::show(const std::optional<GaussMap>& map, ConeMethod displaye
             setColour(impl_->cap, coneMethodColour(method));
             impl_->cap->SetVisibility(true);
         }
+    }
+    // The octagon test's cone, around the displayed method's axis: tighter than the cap where the
+    // normals spread one way.
+    impl_->octagon->SetVisibility(map->octagon.cullable);
+    if (map->octagon.cullable) {
+        setInput(impl_->octagon, polyDataFrom(octagonOnSphere(map->octagon, 1.007), CellKind::Lines));
+        char share[64];
+        std::snprintf(share, sizeof share, "octagon: culled from %.1f%% of views", 100.0 * octagonCullShare(map->octagon));
+        entries.push_back({share, {octagonColour}});
     }
     // v from the centre to the sphere, and its horizon: the normals of a back-facing cluster lie on v's side.
     GlyphGeometry line;

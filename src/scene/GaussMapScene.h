@@ -1,6 +1,6 @@
 // The Gauss-map inspector's picture: a cluster's face normals as points on the unit sphere, the cap of
 // every cone method around them (average, seed-sphere, minimal, meshopt; the displayed one filled),
-// and the test's view vector v with its horizon, the great circle bounding the hemisphere n.v > 0
+// the octagon test's eight-sided cone around the displayed method's axis, and the test's view vector v with its horizon, the great circle bounding the hemisphere n.v > 0
 // where every normal of a back-facing cluster lies. A cone test culls when the cap clears the
 // horizon by the margin, which is why the smallest cap (the minimal cone) culls most. VTK only.
 #pragma once

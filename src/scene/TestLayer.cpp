@@ -31,10 +31,14 @@ constexpr Rgb pointBack{0.20, 0.80, 0.30};
 constexpr Rgb pointFront{0.95, 0.25, 0.20};
 constexpr double regionOpacity = 0.15;
 
-// The region's boundary as rings of quads around its axis.
-GlyphGeometry regionSurface(const CullRegion& region, int cluster, int segments) {
+// Points around a region's boundary at one distance: a circle, or the pyramid's eight edges.
+int ringSegments(const CullRegion& region) { return region.pyramid() ? int(region.edges.size()) : coneSegments; }
+
+// The region's boundary as rings of quads around its axis (around the pyramid's edges).
+GlyphGeometry regionSurface(const CullRegion& region, int cluster) {
     GlyphGeometry geometry;
     if (region.empty()) return geometry;
+    const int segments = ringSegments(region);
     const glm::dvec3 axis = glm::normalize(region.direction);
     const glm::dvec3 helper = std::abs(axis.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
     const glm::dvec3 u = glm::normalize(glm::cross(axis, helper)), w = glm::cross(axis, u);
@@ -44,7 +48,8 @@ GlyphGeometry regionSurface(const CullRegion& region, int cluster, int segments)
         const double radius = d * std::sin(angle);
         for (int k = 0; k < segments; ++k) {
             const double phi = 2.0 * M_PI * k / segments;
-            geometry.points.emplace_back(centre + radius * (std::cos(phi) * u + std::sin(phi) * w));
+            geometry.points.emplace_back(region.pyramid() ? region.origin + d * region.edges[size_t(k)]
+                                                          : centre + radius * (std::cos(phi) * u + std::sin(phi) * w));
         }
     }
     for (size_t i = 0; i + 1 < region.distances.size(); ++i)
@@ -61,7 +66,7 @@ GlyphGeometry regionOutline(const GlyphGeometry& surface, size_t rings, int segm
     GlyphGeometry geometry;
     if (rings < 2) return geometry;
     geometry.points = surface.points;
-    for (int k = 0; k < segments; k += segments / 8)
+    for (int k = 0; k < segments; k += std::max(segments / 8, 1))
         for (size_t i = 0; i + 1 < rings; ++i) geometry.addCell({int64_t(i) * segments + k, int64_t(i + 1) * segments + k}, 0);
     for (size_t i = rings / 4; i < rings; i += std::max<size_t>(rings / 4, 1))
         for (int k = 0; k < segments; ++k)
@@ -115,7 +120,8 @@ vtkSmartPointer<vtkActor> pointActor(double size) {
 }  // namespace
 
 glm::dvec3 testViewTarget(const TestDrawing& drawing, const Sphere& sphere) {
-    return drawing.test == CullTest::Apex && !drawing.eye.orthographic ? drawing.why.apex : sphere.center;
+    const bool apexTest = drawing.test == CullTest::Apex || drawing.test == CullTest::Octagon;
+    return apexTest && !drawing.eye.orthographic ? drawing.why.apex : sphere.center;
 }
 
 TestDrawing makeTestDrawing(const CullingInput& input, uint32_t cluster, const Eye& eye, CullTest test) {
@@ -185,9 +191,10 @@ void TestLayer::setDrawing(const TestDrawing& drawing) {
     const int c = drawing.cluster;
     const Sphere& sphere = data_.bounds.spheres[c];
     const double length = 1.5 * std::max(sphere.radius, data_.coneFallbackLength());
-    const GlyphGeometry surface = regionSurface(drawing.region, c, coneSegments);
+    const GlyphGeometry surface = regionSurface(drawing.region, c);
     setInput(region_, polyDataFrom(surface, CellKind::Polygons));
-    setInput(regionOutline_, polyDataFrom(regionOutline(surface, drawing.region.distances.size(), coneSegments), CellKind::Lines));
+    setInput(regionOutline_, polyDataFrom(regionOutline(surface, drawing.region.distances.size(), ringSegments(drawing.region)),
+                                          CellKind::Lines));
     setInput(axis_, polyDataFrom(segment(sphere.center, sphere.center + drawing.why.axis * length, c), CellKind::Lines));
     const glm::dvec3 target = testViewTarget(drawing, sphere);
     const glm::dvec3 from = drawing.eye.orthographic ? target - drawing.eye.direction * (4.0 * length) : drawing.eye.position;

@@ -1,7 +1,7 @@
 // Layer::Test: the picked cluster's cull test drawn in 3D for the current eye. The cone axis V1 from
 // the sphere centre, the point the view vector aims at (the apex, or the sphere centre), the view
 // vector from the eye, the region of eye positions from which the test culls the cluster
-// (translucent, core/TestGeometry.h), and the points a vertex or box test looks at, coloured by
+// (translucent, core/TestGeometry.h: a round cone or funnel, the octagon test's pyramid), and the points a vertex or box test looks at, coloured by
 // their verdict, box corners numbered as in the picked-cluster panel.
 #pragma once
 
@@ -25,7 +25,8 @@ struct TestDrawing {
 // explainCull and cullRegion for the drawing; the region reaches eight sphere radii or to the eye,
 // whichever is nearer (four radii for an orthographic eye).
 TestDrawing makeTestDrawing(const CullingInput& input, uint32_t cluster, const Eye& eye, CullTest test);
-// The point the drawing's view vector aims at: the apex for a perspective apex test, else the sphere centre.
+// The point the drawing's view vector aims at: the apex for a perspective apex or octagon test, else
+// the sphere centre.
 glm::dvec3 testViewTarget(const TestDrawing& drawing, const Sphere& sphere);
 
 class TestLayer : public SceneLayer {

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <glm/gtc/matrix_transform.hpp>
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -19,19 +20,12 @@
 #include "core/Settings.h"
 
 using namespace conescope;
+using testmesh::randomUnit;
 
 namespace {
 
-const std::vector<CullTest> kBatchedTests = {CullTest::Sphere, CullTest::Apex, CullTest::MeshoptSphere};
+const std::vector<CullTest> kBatchedTests = {CullTest::Sphere, CullTest::Apex, CullTest::MeshoptSphere, CullTest::Octagon};
 const std::vector<SimdLevel> kLevels = {SimdLevel::Scalar, SimdLevel::Sse2, SimdLevel::Avx2};
-
-glm::dvec3 randomUnit(std::mt19937_64& random) {
-    std::normal_distribution<double> gauss;
-    glm::dvec3 v;
-    do v = {gauss(random), gauss(random), gauss(random)};
-    while (glm::length(v) < 1e-9);
-    return glm::normalize(v);
-}
 
 // Triangles scattered around the origin whose normals spread up to spreadDegrees around one axis.
 Mesh randomSoup(std::mt19937_64& random, size_t triangles, double spreadDegrees) {
@@ -191,8 +185,11 @@ TEST(BatchCulling, LayoutIsPaddedAndUncullableClustersNeverPass) {
     EXPECT_EQ(batch.paddedCount(), 16u);
     for (const std::vector<float>* column : {&batch.axisX, &batch.sinHalfAngle, &batch.cosHalfAngleUp, &batch.radius, &batch.apexZ})
         EXPECT_EQ(column->size(), 16u);
+    EXPECT_EQ(batch.octagonBlocks.size(), 16u * ClusterBatch::kOctagonFields);
     EXPECT_GT(batch.sinHalfAngle[12], 1.0f);
     EXPECT_EQ(batch.axisX[12], 0.0f);
+    for (size_t field = 3; field < ClusterBatch::kOctagonFields; ++field)  // the uncullable cluster's edges are zero
+        EXPECT_EQ(batch.octagonBlocks[8 * ClusterBatch::kOctagonFields + 8 * field + 4], 0.0f);
     // Rounding goes the safe way: thresholds and radii never smaller than the double values.
     for (size_t c = 0; c < 12; ++c) {
         EXPECT_GE(double(batch.sinHalfAngle[c]), bounds.cones[c].sinHalfAngle + kBatchSinMargin);
@@ -209,12 +206,13 @@ TEST(BatchCulling, LayoutIsPaddedAndUncullableClustersNeverPass) {
             for (size_t i = 0; i < 13; ++i) EXPECT_LE(culled[i], 1) << toString(test);
         }
     // The centre of the sphere sees the back of every face: the single-face clusters are culled by the
-    // apex and meshopt-sphere tests; the big cluster never is.
-    for (SimdLevel level : kLevels) {
-        const std::vector<uint8_t> culled = cullBatch(batch, glm::dvec3(0.0), CullTest::Apex, level);
-        for (size_t c = 0; c < 12; ++c) EXPECT_EQ(culled[c], 1) << c << " " << toString(level);
-        EXPECT_EQ(culled[12], 0);
-    }
+    // apex and octagon tests; the big cluster never is.
+    for (CullTest test : {CullTest::Apex, CullTest::Octagon})
+        for (SimdLevel level : kLevels) {
+            const std::vector<uint8_t> culled = cullBatch(batch, glm::dvec3(0.0), test, level);
+            for (size_t c = 0; c < 12; ++c) EXPECT_EQ(culled[c], 1) << c << " " << toString(test) << " " << toString(level);
+            EXPECT_EQ(culled[12], 0);
+        }
 }
 
 TEST(BatchCulling, FlatClusterEdgeOnIsNeverCulledAndJustBehindIs) {
@@ -258,9 +256,9 @@ TEST(BatchCulling, SphereTestNeverCullsWithTheEyeInsideTheSphere) {
     }
 }
 
-TEST(BatchCulling, OnlySphereApexAndMeshoptSphereHaveABatchedForm) {
+TEST(BatchCulling, OnlySphereApexOctagonAndMeshoptSphereHaveABatchedForm) {
     for (CullTest test : allCullTests()) {
-        const bool batched = test == CullTest::Sphere || test == CullTest::Apex || test == CullTest::MeshoptSphere;
+        const bool batched = std::find(kBatchedTests.begin(), kBatchedTests.end(), test) != kBatchedTests.end();
         EXPECT_EQ(batchSupports(test), batched) << toString(test);
         if (!batched) EXPECT_THROW(cullBatch(ClusterBatch{}, glm::dvec3(0.0), test), std::invalid_argument);
     }

@@ -2,19 +2,13 @@
 
 #include <random>
 
+#include "TestMeshes.h"
 #include "core/Cones.h"
 
 using namespace conescope;
+using testmesh::randomUnit;
 
 namespace {
-
-glm::dvec3 randomUnit(std::mt19937_64& random) {
-    std::normal_distribution<double> gauss;
-    glm::dvec3 v;
-    do v = {gauss(random), gauss(random), gauss(random)};
-    while (glm::length(v) < 1e-6);
-    return glm::normalize(v);
-}
 
 // Normals within `spread` radians of a random axis, some of them exactly on the rim.
 std::vector<glm::dvec3> randomNormals(std::mt19937_64& random, size_t count, double spread) {

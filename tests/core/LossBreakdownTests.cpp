@@ -2,6 +2,7 @@
 // shares against exact areas and against each other.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -45,8 +46,9 @@ void expectLossIdentity(const RunStatistics& run) {
     }
 }
 
-// The cull map's promises: every cone test's share is (1 - sin alpha)/2 of its cone, the oracle's
-// share is never below it, and the means are the triangle-weighted means.
+// The cull map's promises: every round cone test's share is (1 - sin alpha)/2 of its cone, the
+// octagon test's the area of its pyramid's cross-section, the oracle's share is never below either,
+// and the means are the triangle-weighted means.
 void expectCullMapShares(const RunStatistics& run, const Mesh& mesh, const Settings& settings) {
     const FaceGeometry faces = computeFaceGeometry(mesh);
     const Partition partition = buildPartition(mesh, faces, settings);
@@ -56,11 +58,14 @@ void expectCullMapShares(const RunStatistics& run, const Mesh& mesh, const Setti
         for (const ClusterStatistics& cluster : result.clusters) {
             const ConeOfNormals& cone = bounds.cones[cluster.cluster];
             const double coneShare = cone.cullable ? (1.0 - cone.sinHalfAngle) / 2.0 : 0.0;
+            const double octagonShare = octagonCullShare(bounds.octagons[cluster.cluster]);
             if (result.test == CullTest::Oracle)
                 EXPECT_EQ(cluster.cullFraction, cluster.oracleFraction);
+            else if (result.test == CullTest::Octagon)
+                EXPECT_DOUBLE_EQ(cluster.cullFraction, octagonShare);
             else
                 EXPECT_DOUBLE_EQ(cluster.cullFraction, coneShare) << toString(result.test);
-            EXPECT_GE(cluster.oracleFraction, coneShare) << "the oracle culls wherever a conservative test does";
+            EXPECT_GE(cluster.oracleFraction, std::max(coneShare, octagonShare)) << "the oracle culls wherever a conservative test does";
             EXPECT_LE(cluster.oracleFraction, 0.5) << "a closed cluster of faces faces away from at most half the sphere";
             weighted += cluster.cullFraction * double(cluster.triangles);
             triangles += double(cluster.triangles);
@@ -142,6 +147,32 @@ TEST(CullMap, OracleShareMatchesExactAreas) {
         EXPECT_NEAR(oracleShareOf(rotatedCorner(rotation, 1)), 0.5, 0.002) << round;
         EXPECT_NEAR(oracleShareOf(rotatedCorner(rotation, 2)), 0.25, 0.002) << round;
         EXPECT_NEAR(oracleShareOf(rotatedCorner(rotation, 3)), 0.125, 0.002) << round;
+    }
+}
+
+TEST(CullMap, OctagonShareMatchesExactAreas) {
+    // One normal: the octagon is a point, its pyramid the hemisphere behind it; two at right angles:
+    // a segment, the lune of a quarter; three (an octant's): more than the round cone's cap, less
+    // than the octant the oracle culls from.
+    std::mt19937_64 random(9);
+    std::uniform_real_distribution<double> angle(0.0, 6.283185307179586);
+    for (int round = 0; round < 8; ++round) {
+        const glm::dmat3 rotation(glm::rotate(glm::dmat4(1.0), angle(random), glm::normalize(glm::dvec3(angle(random) - 3.0, 1.0, angle(random) - 3.0))));
+        const double expected[3] = {0.5, 0.25, 0.0};
+        for (int normals = 1; normals <= 3; ++normals) {
+            const Mesh mesh = rotatedCorner(rotation, normals);
+            const FaceGeometry faces = computeFaceGeometry(mesh);
+            const Partition one = partitionFromIds(std::vector<double>(mesh.faceCount(), 0.0), mesh.faceCount(), "test");
+            const ClusterBounds bounds = computeClusterBounds(mesh, worldPositions(mesh), faces, one, ConeMethod::Minimal);
+            const CullMap map = computeCullMap(faces, bounds);
+            EXPECT_DOUBLE_EQ(cullFraction(map, 0, CullTest::Octagon), octagonCullShare(bounds.octagons[0]));
+            if (normals < 3) {
+                EXPECT_NEAR(map.octagonFraction[0], expected[normals - 1], 1e-6) << round << " " << normals;
+            } else {
+                EXPECT_GT(map.octagonFraction[0], map.coneFraction[0] + 0.005) << round;
+                EXPECT_LT(map.octagonFraction[0], 0.125) << round;
+            }
+        }
     }
 }
 

@@ -12,6 +12,7 @@
 #include "core/Settings.h"
 
 using namespace conescope;
+using testmesh::randomUnit;
 
 namespace {
 
@@ -19,14 +20,6 @@ size_t scaleFromEnvironment() {
     const char* text = std::getenv("CONESCOPE_PROPERTY_SCALE");
     const long value = text ? std::strtol(text, nullptr, 10) : 1;
     return value > 0 ? size_t(value) : 1;
-}
-
-glm::dvec3 randomUnit(std::mt19937_64& random) {
-    std::normal_distribution<double> gauss;
-    glm::dvec3 v;
-    do v = {gauss(random), gauss(random), gauss(random)};
-    while (glm::length(v) < 1e-9);
-    return glm::normalize(v);
 }
 
 // A random triangle soup around the origin whose normals may span any range, hemisphere or more.

@@ -10,6 +10,7 @@
 #include "core/TestGeometry.h"
 
 using namespace conescope;
+using testmesh::randomUnit;
 
 namespace {
 
@@ -27,12 +28,6 @@ Prepared preparedTorus(ConeMethod cone) {
     PreparedMesh mesh = prepareMesh(std::make_shared<Mesh>(testmesh::torus(1.0, 0.35, 48, 24)), "torus", false);
     ClusterSet clusters = buildClusters(mesh, settings);
     return {std::move(mesh), std::move(clusters)};
-}
-
-glm::dvec3 randomUnit(std::mt19937_64& random) {
-    std::normal_distribution<double> normal;
-    glm::dvec3 v(normal(random), normal(random), normal(random));
-    return glm::normalize(v);
 }
 
 // Some direction perpendicular to `axis`.
@@ -53,7 +48,8 @@ TEST(TestGeometry, MarginIsPositiveExactlyWhenTheExactTestCulls) {
         eye.orthographic = trial % 5 == 4;
         eye.direction = randomUnit(random);
         eye.position = randomUnit(random) * (1.2 + 3.0 * (trial % 4));
-        for (CullTest test : {CullTest::Vertices, CullTest::Aabb, CullTest::Sphere, CullTest::Apex, CullTest::MeshoptSphere}) {
+        for (CullTest test : {CullTest::Vertices, CullTest::Aabb, CullTest::Sphere, CullTest::Apex, CullTest::MeshoptSphere,
+                              CullTest::Octagon}) {
             for (uint32_t c = 0; c < p.clusters.bounds.count(); c += 3) {
                 const CullExplanation why = explainCull(input, c, eye, test);
                 if (std::isnan(why.margin)) {
@@ -117,6 +113,38 @@ TEST(TestGeometry, CullRegionIsWhereTheExactTestCulls) {
         }
         EXPECT_GT(checked, 200u);
     }
+}
+
+// The octagon test's pyramid: eyes just inside each of its faces are culled, eyes just outside not.
+TEST(TestGeometry, OctagonPyramidIsWhereTheExactTestCulls) {
+    const Prepared p = preparedTorus(ConeMethod::Minimal);
+    const CullingInput input = cullingInput(p.mesh, p.clusters);
+    size_t checked = 0;
+    for (bool orthographic : {false, true})
+        for (uint32_t c = 0; c < p.clusters.bounds.count(); c += 2) {
+            const CullRegion region = cullRegion(p.clusters.bounds, c, CullTest::Octagon, orthographic, 20.0);
+            if (region.empty()) continue;
+            ASSERT_TRUE(region.pyramid());
+            ASSERT_EQ(region.edges.size(), 8u);
+            glm::dvec3 centre(0.0);
+            for (const glm::dvec3& edge : region.edges) centre += edge;
+            centre = glm::normalize(centre);
+            for (size_t k = 0; k < 8; ++k) {
+                const glm::dvec3 face = glm::normalize(region.edges[k] + region.edges[(k + 1) % 8]);
+                if (glm::length(region.edges[k] - region.edges[(k + 1) % 8]) < 1e-3) continue;  // a repeated edge
+                for (double toward : {0.03, -0.03}) {
+                    const glm::dvec3 direction = glm::normalize(face + toward * (centre - face));
+                    Eye eye;
+                    eye.orthographic = orthographic;
+                    eye.direction = -direction;
+                    eye.position = region.origin + 5.0 * direction;
+                    EXPECT_EQ(cullCluster(input, c, eye, CullTest::Octagon), toward > 0.0)
+                        << (orthographic ? "ortho " : "") << "cluster " << c << " face " << k;
+                    ++checked;
+                }
+            }
+        }
+    EXPECT_GT(checked, 200u);
 }
 
 TEST(TestGeometry, RegionIsEmptyWhereTheTestHasNoSolidOfRevolution) {

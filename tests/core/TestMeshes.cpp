@@ -67,6 +67,14 @@ Mesh quadCube() {
     return mesh;
 }
 
+glm::dvec3 randomUnit(std::mt19937_64& random) {
+    std::normal_distribution<double> gauss;
+    glm::dvec3 v;
+    do v = {gauss(random), gauss(random), gauss(random)};
+    while (glm::length(v) < 1e-9);
+    return glm::normalize(v);
+}
+
 Mesh randomPatch(std::mt19937_64& random, int cells, double maxTiltDegrees) {
     std::uniform_real_distribution<double> unit(-1.0, 1.0);
     Mesh mesh;

@@ -3,6 +3,8 @@
 
 #include <random>
 
+#include <glm/glm.hpp>
+
 #include "core/Mesh.h"
 
 namespace conescope::testmesh {
@@ -13,6 +15,8 @@ Mesh icosphere(int subdivisions);
 Mesh torus(double majorRadius, double minorRadius, int majorSegments, int minorSegments);
 // Unit cube as six quads (polygon faces).
 Mesh quadCube();
+// A uniformly random unit vector.
+glm::dvec3 randomUnit(std::mt19937_64& random);
 // A random height-field patch: a bumpy grid whose normals spread up to about maxTiltDegrees.
 Mesh randomPatch(std::mt19937_64& random, int cells, double maxTiltDegrees);
 

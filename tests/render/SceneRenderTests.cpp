@@ -232,6 +232,11 @@ TEST_F(RenderImages, ApexTestDrawnForThePickedCluster) {
     EXPECT_TRUE(failure.empty()) << failure;
 }
 
+TEST_F(RenderImages, OctagonTestPyramidForThePickedCluster) {
+    const std::string failure = renderTestDrawing(*torus_, CullTest::Octagon, 5, "test_octagon");
+    EXPECT_TRUE(failure.empty()) << failure;
+}
+
 TEST_F(RenderImages, BoxTestCornersNumberedWithTheirVerdicts) {
     const std::string failure = renderTestDrawing(*torus_, CullTest::Aabb, 5, "test_aabb");
     EXPECT_TRUE(failure.empty()) << failure;

@@ -92,15 +92,14 @@ void reduceAndSearch(optimizer::State& state, size_t target, size_t sweeps) {
 constexpr size_t kBothStartsBelowFaces = size_t(1) << 14;
 
 // meshoptimizer's meshlets as a search state, or nothing when a polygon split across meshlets
-// makes one hold more than the limits (the search keeps limits, it does not restore them). A
-// meshlet in several pieces (meshoptimizer packs by distance, across gaps too) gives its smaller
-// pieces to its neighbours where they have room (absorbPieces), so fewer clusters sprawl.
+// makes one hold more than the limits (the search keeps limits, it does not restore them). Their
+// pieces stay together: handing a meshlet's smaller pieces to neighbours with room (measured on
+// CGAL's cheese) widened those neighbours' cones more than it saved.
 std::unique_ptr<optimizer::State> meshletStart(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits,
                                                 const Partition& meshlets) {
     auto state = std::make_unique<optimizer::State>(mesh, faces, limits);
     optimizer::assign(*state, meshlets);
-    if (!withinLimits(*state)) return nullptr;
-    optimizer::absorbPieces(*state);
+    if (!withinLimits(*state)) state.reset();
     return state;
 }
 

@@ -111,25 +111,24 @@ void recomputeTouchedCaps(State& state) {
     for (uint32_t c : state.members) state.clusters[c].cap = state.clusters[c].faces.empty() ? Cap{} : exactCap(state, c);
 }
 
-// Empties a cluster of the faces `leaving` (all of its faces, or a piece of it) by handing each,
-// from the cluster's border inwards, to the neighbouring cluster where the objective loses least;
-// a full neighbour first passes one of its own border faces on. Caps are grown approximately on
-// the way and recomputed at the end. Undone (returns false) if some face finds no room.
-bool dissolveFaces(State& state, uint32_t cluster, const std::vector<uint32_t>& leaving) {
+// Empties a cluster by handing each of its faces, from its border inwards, to the neighbouring
+// cluster where the objective loses least; a full neighbour first passes one of its own border
+// faces on. Caps are grown approximately on the way and recomputed at the end. Undone (returns
+// false) if some face finds no room.
+bool dissolve(State& state, uint32_t cluster) {
+    if (state.clusters[cluster].faces.empty()) return false;
     state.undo.clear();
     std::vector<uint32_t>& queue = state.queue;
-    size_t left = leaving.size();
     uint32_t queued = 0;  // faceStamp of faces in the queue (other checks may overwrite some: harmless)
     auto refill = [&]() {
         queued = ++state.stamp;
         queue.clear();
-        for (uint32_t f : leaving)
+        for (uint32_t f : state.clusters[cluster].faces)
             for (const uint32_t* g = state.acrossEdge.begin(f); g != state.acrossEdge.end(f); ++g)
-                if (state.clusterOf[f] == cluster && state.clusterOf[*g] != cluster && state.faceStamp[f] != queued)
-                    state.faceStamp[f] = queued, queue.push_back(f);
+                if (state.clusterOf[*g] != cluster && state.faceStamp[f] != queued) state.faceStamp[f] = queued, queue.push_back(f);
     };
     refill();
-    for (int round = 0; round < 4 && left > 0; ++round) {
+    for (int round = 0; round < 4 && !state.clusters[cluster].faces.empty(); ++round) {
         const bool pushing = round >= 2;  // plain moves everywhere first, then make room
         for (size_t i = 0; i < queue.size(); ++i) {
             const uint32_t face = queue[i];
@@ -143,25 +142,17 @@ bool dissolveFaces(State& state, uint32_t cluster, const std::vector<uint32_t>& 
             if (bestTarget == kNone) continue;
             state.undo.emplace_back(face, cluster);
             moveGrowingCap(state, face, bestTarget);
-            --left;
-            // Its neighbours in the cluster are of the same piece: next in line.
             for (const uint32_t* g = state.acrossEdge.begin(face); g != state.acrossEdge.end(face); ++g)
                 if (state.clusterOf[*g] == cluster && state.faceStamp[*g] != queued) state.faceStamp[*g] = queued, queue.push_back(*g);
         }
         refill();
     }
-    if (left > 0)
+    const bool emptied = state.clusters[cluster].faces.empty();
+    if (!emptied)
         for (size_t i = state.undo.size(); i-- > 0;) move(state, state.undo[i].first, state.undo[i].second);
     recomputeTouchedCaps(state);
-    if (state.clusters[cluster].faces.empty()) --state.liveClusters;
-    return left == 0;
-}
-
-// The whole cluster, face by face (dissolveFaces).
-bool dissolve(State& state, uint32_t cluster) {
-    if (state.clusters[cluster].faces.empty()) return false;
-    state.leaving = state.clusters[cluster].faces;
-    return dissolveFaces(state, cluster, state.leaving);
+    if (emptied) --state.liveClusters;
+    return emptied;
 }
 
 // The two faces of state.pool farthest apart, roughly: the one farthest from the pool's centre,
@@ -472,30 +463,6 @@ void dissolveSmallest(State& state, size_t target) {
 }
 
 }  // namespace
-
-void absorbPieces(State& state) {
-    const Partition clusters = result(state);
-    const Partition pieces = connectedPieces(clusters, state.acrossEdge);
-    if (pieces.clusterCount == clusters.clusterCount) return;
-    const ClusterFaces facesOfPiece = facesByCluster(pieces);
-    // Per cluster of `clusters`: its largest piece, which stays.
-    std::vector<uint32_t> largest(clusters.clusterCount, kNone), clusterOfPiece(pieces.clusterCount), order;
-    auto size = [&](uint32_t piece) { return facesOfPiece.starts[piece + 1] - facesOfPiece.starts[piece]; };
-    for (uint32_t piece = 0; piece < pieces.clusterCount; ++piece) {
-        const uint32_t first = facesOfPiece.faces[facesOfPiece.starts[piece]];
-        clusterOfPiece[piece] = state.clusterOf[first];
-        uint32_t& kept = largest[clusters.clusterOfFace[first]];
-        if (kept == kNone || size(piece) > size(kept)) kept = piece;
-    }
-    for (uint32_t piece = 0; piece < pieces.clusterCount; ++piece)
-        if (largest[clusters.clusterOfFace[facesOfPiece.faces[facesOfPiece.starts[piece]]]] != piece) order.push_back(piece);
-    std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return size(a) < size(b); });
-    for (uint32_t piece : order) {
-        state.leaving.assign(facesOfPiece.faces.begin() + facesOfPiece.starts[piece],
-                             facesOfPiece.faces.begin() + facesOfPiece.starts[piece + 1]);
-        dissolveFaces(state, clusterOfPiece[piece], state.leaving);
-    }
-}
 
 void reduceTo(State& state, size_t target) {
     dissolveSmallest(state, target);

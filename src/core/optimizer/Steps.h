@@ -16,11 +16,6 @@ void grow(State& state, double triangleCap);
 // `target` are left (or no step gets further).
 void reduceTo(State& state, size_t target);
 
-// Reduction.cpp: clusters in several pieces across edges (meshoptimizer's meshlets can be) keep
-// their largest piece; each other piece, smallest first, is dissolved into its neighbours where
-// they have room and stays where they have none. The count does not change.
-void absorbPieces(State& state);
-
 // LocalSearch.cpp: border faces moved to the neighbouring cluster where the objective gains, until
 // no move gains (or a pass limit).
 void refine(State& state);

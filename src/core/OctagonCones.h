@@ -1,0 +1,52 @@
+// An eight-sided cone of normals: eight unit edge directions around a cluster's cone axis such
+// that every face normal of the cluster is a non-negative combination of them.
+//
+// Seen in the plane that touches the unit sphere at the axis (the gnomonic projection n / (n.axis):
+// great circles become lines, so convex cones become convex polygons), it is the octagon of sides
+// at 45 degree steps around the normals' projections, turned to the least area. Where
+// the normals spread more one way than the other (a cylinder's lie along an arc) it is much
+// tighter than the round cap, which has to be as wide as the longest spread in every direction.
+//
+// Its test (CullTest::Octagon) is the apex test with this cone: the cluster is culled when every
+// edge g has g.(apex - eye) > 0, for then every normal n has n.(eye - apex) < 0, and the apex lies
+// behind every face plane, so n.(eye - q) < 0 for every face. The eyes it culls from fill an
+// eight-sided pyramid behind the apex: the polar cone of the octagon, whose faces are
+// perpendicular to the edges.
+#pragma once
+
+#include <array>
+#include <cstddef>
+
+#include <glm/glm.hpp>
+
+#include "Cones.h"
+
+namespace conescope {
+
+struct OctagonCone {
+    std::array<glm::dvec3, 8> edges{};  // unit, in order around the axis (repeats where a side is missing)
+    bool cullable = false;              // false when the round cone is not: the test never culls
+};
+
+// The octagon around the normals, projected about `cone`'s axis; zero normals (degenerate faces) are
+// left out. Not cullable when the cone is not.
+OctagonCone octagonCone(const ConeOfNormals& cone, const glm::dvec3* normals, size_t count);
+
+// Whether `view` (from the eye to the apex, or an orthographic view direction) sees every normal
+// of the octagon from behind: g.view > kCullMargin |view| for each edge g.
+bool octagonSeesBack(const OctagonCone& octagon, const glm::dvec3& view);
+
+// The tightest edge: min over edges of g.view / |view| (unit view), what octagonSeesBack compares
+// with kCullMargin; -1 for a cone that is not cullable or a zero view.
+double octagonTightest(const OctagonCone& octagon, const glm::dvec3& view);
+
+// The share of view directions (eye at infinity) from which the octagon test culls: the area of its
+// pyramid's cross-section on the unit sphere over 4 pi, which is (2 pi - the octagon's perimeter on
+// the sphere) / 4 pi, as (1 - sin alpha) / 2 is for a round cone. 0 when not cullable.
+double octagonCullShare(const OctagonCone& octagon);
+
+// The eight edges of the pyramid of eyes it culls from (unit directions from the apex, in order):
+// each is perpendicular to two neighbouring edges of the octagon, on the side away from the others.
+std::array<glm::dvec3, 8> octagonPyramidEdges(const OctagonCone& octagon);
+
+}  // namespace conescope
