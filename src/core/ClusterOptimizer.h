@@ -15,7 +15,7 @@ namespace conescope {
 // How long the optimized builder searches (docs/benchmarks.md has the measured trade):
 //  Fast:     meshoptimizer's meshlets (cone weight 1; the default budget builds them anyway), then
 //            greedy moves of border faces;
-//  Balanced: the same start, then a few annealing sweeps (the default);
+//  Balanced: the same start, then two annealing sweeps (the default);
 //  Best:     clusters grown from like normals and reduced to the budget, also started from
 //            meshoptimizer's meshlets where growth misses the budget or the mesh is small, and up
 //            to 100 annealing sweeps. Several times slower; culls the most.

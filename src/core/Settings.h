@@ -19,7 +19,7 @@ enum class Builder { Meshlet, KMeans, Meshopt, File, Optimized };
 
 struct Settings {
     // Defaults are the best measured combination (docs/benchmarks.md): optimized clusters, exact
-    // minimal cones, the apex test.
+    // minimal cones, the octagon test.
     Builder builder = Builder::Optimized;
     MeshletLimits limits;
     Effort effort = Effort::Balanced; // how long the optimized builder searches
@@ -28,7 +28,7 @@ struct Settings {
     double normalWeight = 1.0;        // meshlet / kmeans preference for narrow cones
     float meshoptConeWeight = 1.0f;   // meshopt builder's cone_weight
     std::vector<ConeMethod> cones{ConeMethod::Minimal};
-    std::vector<CullTest> tests{CullTest::Apex};
+    std::vector<CullTest> tests{CullTest::Octagon};
     SphereMethod sphere = SphereMethod::Minimal;
     size_t views = 128;
     double distance = 3.0;

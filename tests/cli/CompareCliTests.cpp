@@ -48,7 +48,7 @@ TEST(CliCompare, EachSideIsThePlainStatsRunAndTheDiffAddsUpToThem) {
     EXPECT_EQ(diff["back_facing_triangles"], a["back_facing_triangles"]);
     EXPECT_EQ(diff["efficiency_a"], a["efficiency"]);
     EXPECT_EQ(diff["efficiency_b"], b["efficiency"]);
-    EXPECT_EQ(diff["test_a"], "apex");
+    EXPECT_EQ(diff["test_a"], "octagon");
     EXPECT_EQ(diff["cone_a"], "meshopt");
     EXPECT_EQ(diff["test_b"], "sphere");
     EXPECT_EQ(diff["clusters_a"], json["a"]["clusters"]);

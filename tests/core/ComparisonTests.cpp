@@ -181,7 +181,7 @@ TEST(Comparison, OneEyeFromMeasuredDecisionsIsTheFullComparison) {
     const ClusterSet b = buildClusters(prepared, sphere);
     for (const Eye& eye : {Eye::perspective({0.5, -2.0, 2.5}), Eye::perspective({-3.0, 0.2, 0.4})}) {
         std::vector<FaceDiff> diff;
-        const Comparison atEye = compareAtEye(prepared, a, measureEye(prepared, a, eye, CullTest::Apex).culled, b,
+        const Comparison atEye = compareAtEye(prepared, a, measureEye(prepared, a, eye, displayedTest(a.settings)).culled, b,
                                               measureEye(prepared, b, eye, CullTest::Sphere).culled, eye, diff);
         const Comparison full = compareClusterSets(prepared, a, b, {eye});
         ASSERT_EQ(atEye.views.size(), 1u);

@@ -44,7 +44,7 @@ private slots:
         const CullTest test = displayedTest(window_->settings());
         // Every cluster: the drawing and the margin are the core's for this eye and test.
         size_t culled = 0, drawn = 0;
-        for (uint32_t c = 0; c < window_->clusters()->bounds.count(); c += 4) {
+        for (uint32_t c = 0; c < window_->clusters()->bounds.count(); ++c) {
             window_->pickCluster(int(c));
             const CullExplanation why = explainCull(input, c, eye, test);
             QCOMPARE(window_->scene()->testDrawing().cluster, int(c));
