@@ -53,7 +53,8 @@ SearchPlan planFor(Effort effort) {
 // The annealing sweeps the plan buys for a mesh of this size; too few to cool slowly are not worth
 // their time (0).
 size_t annealingSweeps(const SearchPlan& plan, size_t faceCount) {
-    const size_t sweeps = std::min<size_t>(size_t(plan.sweepFaceVisits / double(faceCount)), plan.maxSweeps);
+    const double affordable = plan.sweepFaceVisits / double(std::max<size_t>(faceCount, 1));  // may be infinite
+    const size_t sweeps = affordable >= double(plan.maxSweeps) ? plan.maxSweeps : size_t(affordable);
     return sweeps < plan.minSweeps ? 0 : sweeps;
 }
 
