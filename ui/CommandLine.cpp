@@ -213,7 +213,7 @@ int runHeadlessScreenshot(const AppOptions& options) {
         const QString meshPath = options.mesh.isEmpty() ? defaultMeshPath() : options.mesh;
         if (meshPath.isEmpty()) throw std::runtime_error("no mesh given and no bundled mesh found");
         const Settings& settings = options.settings;
-        const PreparedMesh prepared = loadMesh(meshPath.toStdString(), settings.fixWinding);
+        const PreparedMesh prepared = loadMesh(meshPath.toStdString(), settings);
         const ClusterSet clusters = buildClusters(prepared, settings);
         ClusterScene scene(prepared.mesh(), prepared.world, prepared.faces, clusters.partition, clusters.bounds);
         if (options.pick && *options.pick >= clusters.partition.clusterCount)

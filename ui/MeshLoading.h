@@ -2,14 +2,19 @@
 // what the user should be told about it.
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "core/Pipeline.h"
 
 namespace conescope {
 
-// Reads the file (readMeshFile, throws MeshReadError) and prepares it; the reader's notes are kept.
-PreparedMesh loadMesh(const std::string& path, bool fixWinding, const ProgressCallback& progress = {});
+// Reads the file (readMeshFile, throws MeshReadError) and prepares it with settings.fixWinding; the
+// reader's notes are kept. With `meshoptStart`, when the builder the mesh will be shown with
+// (builderForMesh) starts from meshoptimizer's meshlets, those are built on another core while the
+// mesh is prepared, for buildClusters.
+PreparedMesh loadMesh(const std::string& path, const Settings& settings, const ProgressCallback& progress = {},
+                      std::optional<Partition>* meshoptStart = nullptr);
 
 // What the user should know about a loaded mesh, in one line for the status bar: the reader's notes
 // and the winding warning (with how to repair it, or what was repaired). Empty when nothing.

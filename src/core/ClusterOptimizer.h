@@ -45,8 +45,14 @@ size_t defaultClusterBudget(const Mesh& mesh, const MeshletLimits& limits);
 // Deterministic: the same input gives the same partition, on any number of cores.
 // `progress` hears (parts done / parts, "clusters") as parts finish, on the calling thread;
 // returning false stops the parts not yet started and throws OperationCancelled.
+// `meshoptStart`: buildMeshoptMeshlets(mesh, limits, 1) when startsFromMeshoptMeshlets, already built
+// (say while the mesh was being prepared); built here when needed and not given.
 Partition buildOptimizedClusters(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits,
                                  size_t targetClusters = 0, const ProgressCallback& progress = {},
-                                 Effort effort = Effort::Balanced);
+                                 Effort effort = Effort::Balanced, const Partition* meshoptStart = nullptr);
+
+// Whether buildOptimizedClusters starts from meshoptimizer's meshlets at cone weight 1 (and takes
+// their count as the budget): the fast levels with the default budget, at limits meshoptimizer takes.
+bool startsFromMeshoptMeshlets(const MeshletLimits& limits, size_t targetClusters, Effort effort);
 
 }  // namespace conescope

@@ -5,10 +5,9 @@
 // the cone test v.axis > sin(alpha), culled from a cap of half-angle 90 - alpha: a share
 // (1 - sin alpha)/2 of the directions, exactly. The octagon test culls from the cross-section of its
 // pyramid, a spherical octagon whose area is known exactly too (octagonCullShare). The oracle culls
-// from every direction u with n.u < 0
-// for each non-degenerate face normal n, a convex spherical polygon that holds that cap; its share is
-// counted over cullMapDirections spiral directions (Views.h), which the tests check against exact
-// areas (caps, octants) to well within 0.005.
+// from every direction u with n.u < 0 for each non-degenerate face normal n: the polar of the
+// normals' convex hull on the sphere, of area 2 pi - the hull's perimeter, also exact
+// (normalsCullShare). Each region holds the ones before it, and so does each share.
 #pragma once
 
 #include <cstddef>
@@ -21,8 +20,6 @@
 
 namespace conescope {
 
-constexpr size_t cullMapDirections = size_t(1) << 15;
-
 struct CullMap {
     std::vector<double> coneFraction;     // per cluster: (1 - sin alpha)/2, 0 when not cullable
     std::vector<double> octagonFraction;  // per cluster: octagonCullShare, 0 when not cullable
@@ -30,7 +27,7 @@ struct CullMap {
 };
 
 // Face normals from `faces` (world space), cones from `bounds`.
-CullMap computeCullMap(const FaceGeometry& faces, const ClusterBounds& bounds, size_t directions = cullMapDirections);
+CullMap computeCullMap(const FaceGeometry& faces, const ClusterBounds& bounds);
 
 // The share for `test`: the oracle's own for CullTest::Oracle, the octagon's for CullTest::Octagon,
 // the round cone's for every other test.

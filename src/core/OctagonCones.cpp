@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <cstdint>
 #include <vector>
 
 #include "Culling.h"  // kCullMargin
@@ -13,24 +14,63 @@ namespace {
 
 using Point = glm::dvec2;
 
+// The normals seen from the cone's axis: n / (n.axis) in the plane that touches the unit sphere
+// there (u, w), with the normal each point came from. Empty when some normal is not in front of
+// the axis (the cone is not cullable); zero normals are left out.
+struct Projection {
+    glm::dvec3 u, w;
+    std::vector<Point> points;
+    std::vector<uint32_t> source;  // index of each point's normal
+    double reach = 0.0;            // the largest |point|
+};
+
+Projection project(const glm::dvec3& axis, const glm::dvec3* normals, size_t count) {
+    Projection projection;
+    projection.u = glm::normalize(glm::cross(axis, std::abs(axis.x) < 0.9 ? glm::dvec3(1.0, 0.0, 0.0) : glm::dvec3(0.0, 1.0, 0.0)));
+    projection.w = glm::cross(axis, projection.u);
+    projection.points.reserve(count);
+    for (size_t i = 0; i < count; ++i) {
+        if (normals[i] == glm::dvec3(0.0)) continue;  // a degenerate face: no normal to hold
+        const double along = glm::dot(normals[i], axis);
+        if (!(along > 0.0)) return {};  // the cone holds every normal, so never; but never divide by it
+        projection.points.emplace_back(glm::dot(normals[i], projection.u) / along, glm::dot(normals[i], projection.w) / along);
+        projection.source.push_back(uint32_t(i));
+        projection.reach = std::max(projection.reach, glm::length(projection.points.back()));
+    }
+    return projection;
+}
+
 double turn(const Point& o, const Point& a, const Point& b) { return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x); }
 
-// Convex hull, counter-clockwise (Andrew's monotone chain); only its corners bound the octagon.
-std::vector<Point> convexHull(std::vector<Point> points) {
-    std::sort(points.begin(), points.end(), [](const Point& a, const Point& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
-    if (points.size() < 3) return points;
-    std::vector<Point> hull(2 * points.size());
+// Convex hull, counter-clockwise (Andrew's monotone chain), as indices into `points`.
+std::vector<uint32_t> convexHull(const std::vector<Point>& points) {
+    std::vector<uint32_t> order(points.size());
+    for (uint32_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
+        return points[a].x < points[b].x || (points[a].x == points[b].x && points[a].y < points[b].y);
+    });
+    if (order.size() < 3) return order;
+    std::vector<uint32_t> hull(2 * order.size());
     size_t k = 0;
-    for (size_t i = 0; i < points.size(); ++i) {
-        while (k >= 2 && turn(hull[k - 2], hull[k - 1], points[i]) <= 0.0) --k;
-        hull[k++] = points[i];
+    for (size_t i = 0; i < order.size(); ++i) {
+        while (k >= 2 && turn(points[hull[k - 2]], points[hull[k - 1]], points[order[i]]) <= 0.0) --k;
+        hull[k++] = order[i];
     }
-    for (size_t i = points.size() - 1, lower = k + 1; i > 0; --i) {
-        while (k >= lower && turn(hull[k - 2], hull[k - 1], points[i - 1]) <= 0.0) --k;
-        hull[k++] = points[i - 1];
+    for (size_t i = order.size() - 1, lower = k + 1; i > 0; --i) {
+        while (k >= lower && turn(points[hull[k - 2]], points[hull[k - 1]], points[order[i - 1]]) <= 0.0) --k;
+        hull[k++] = order[i - 1];
     }
     hull.resize(k - 1);
     return hull;
+}
+
+// (2 pi - the perimeter of a convex polygon on the unit sphere) / 4 pi: the area of the directions
+// that see every corner from behind (the polar polygon), as a share of the sphere.
+double polarShare(const glm::dvec3* corners, size_t count) {
+    double perimeter = 0.0;
+    for (size_t k = 0; count > 1 && k < count; ++k)
+        perimeter += std::acos(std::clamp(glm::dot(corners[k], corners[(k + 1) % count]), -1.0, 1.0));
+    return std::max(0.0, (2.0 * M_PI - perimeter) / (4.0 * M_PI));
 }
 
 // The four side directions of an octagon turned by `angle`: 0, 45, 90 and 135 degrees on from it.
@@ -102,22 +142,11 @@ constexpr int kTurns = 16;  // evenly spaced turns tried over the octagon's 45 d
 
 OctagonCone octagonCone(const ConeOfNormals& cone, const glm::dvec3* normals, size_t count) {
     OctagonCone octagon;
-    if (!cone.cullable || !(cone.cosHalfAngle > 0.0) || count == 0) return octagon;
-    const glm::dvec3& axis = cone.axis;
-    const glm::dvec3 u = glm::normalize(glm::cross(axis, std::abs(axis.x) < 0.9 ? glm::dvec3(1.0, 0.0, 0.0) : glm::dvec3(0.0, 1.0, 0.0)));
-    const glm::dvec3 w = glm::cross(axis, u);
-    std::vector<Point> points;
-    points.reserve(count);
-    double reach = 0.0;
-    for (size_t i = 0; i < count; ++i) {
-        if (normals[i] == glm::dvec3(0.0)) continue;  // a degenerate face: no normal to hold
-        const double along = glm::dot(normals[i], axis);
-        if (!(along > 0.0)) return octagon;  // the cone holds every normal, so never; but never divide by it
-        points.emplace_back(glm::dot(normals[i], u) / along, glm::dot(normals[i], w) / along);
-        reach = std::max(reach, glm::length(points.back()));
-    }
-    if (points.empty()) return octagon;
-    const std::vector<Point> hull = convexHull(std::move(points));
+    if (!cone.cullable || !(cone.cosHalfAngle > 0.0)) return octagon;
+    const Projection projection = project(cone.axis, normals, count);
+    if (projection.points.empty()) return octagon;
+    std::vector<Point> hull;
+    for (uint32_t i : convexHull(projection.points)) hull.push_back(projection.points[i]);
     // Turns tried: a side along each edge of the hull (the least area has one there, as the least
     // rectangle does), and evenly spaced ones for hulls of a point or two.
     std::vector<double> turns;
@@ -135,16 +164,27 @@ OctagonCone octagonCone(const ConeOfNormals& cone, const glm::dvec3* normals, si
     Strips strips = stripsAround(hull, directions);
     // Widened by far more than the rounding of the projections and of the corners below, so every
     // normal lies inside the lifted octagon.
-    const double pad = 1e-10 * (1.0 + reach);
+    const double pad = 1e-10 * (1.0 + projection.reach);
     for (int j = 0; j < 4; ++j) strips.low[j] -= pad, strips.high[j] += pad;
-    const std::vector<Point> corners = octagonCorners(strips, directions, 2.0 * (1.0 + reach));
+    const std::vector<Point> corners = octagonCorners(strips, directions, 2.0 * (1.0 + projection.reach));
     if (corners.size() < 3 || corners.size() > 8) return octagon;
     for (size_t k = 0; k < 8; ++k) {
         const Point& c = corners[std::min(k, corners.size() - 1)];
-        octagon.edges[k] = glm::normalize(axis + c.x * u + c.y * w);
+        octagon.edges[k] = glm::normalize(cone.axis + c.x * projection.u + c.y * projection.w);
     }
     octagon.cullable = true;
     return octagon;
+}
+
+double normalsCullShare(const glm::dvec3* normals, size_t count) {
+    if (count == 0) return 0.0;
+    const ConeOfNormals cone = minimalCone(normals, count);
+    if (!cone.cullable || !(cone.cosHalfAngle > 0.0)) return 0.0;
+    const Projection projection = project(cone.axis, normals, count);
+    if (projection.points.empty()) return 0.0;
+    std::vector<glm::dvec3> corners;
+    for (uint32_t i : convexHull(projection.points)) corners.push_back(normals[projection.source[i]]);
+    return polarShare(corners.data(), corners.size());
 }
 
 bool octagonSeesBack(const OctagonCone& octagon, const glm::dvec3& view) {
@@ -164,11 +204,7 @@ double octagonTightest(const OctagonCone& octagon, const glm::dvec3& view) {
 }
 
 double octagonCullShare(const OctagonCone& octagon) {
-    if (!octagon.cullable) return 0.0;
-    double perimeter = 0.0;
-    for (size_t k = 0; k < 8; ++k)
-        perimeter += std::acos(std::clamp(glm::dot(octagon.edges[k], octagon.edges[(k + 1) % 8]), -1.0, 1.0));
-    return std::max(0.0, (2.0 * M_PI - perimeter) / (4.0 * M_PI));
+    return octagon.cullable ? polarShare(octagon.edges.data(), octagon.edges.size()) : 0.0;
 }
 
 std::array<glm::dvec3, 8> octagonPyramidEdges(const OctagonCone& octagon) {

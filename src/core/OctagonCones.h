@@ -45,6 +45,12 @@ double octagonTightest(const OctagonCone& octagon, const glm::dvec3& view);
 // the sphere) / 4 pi, as (1 - sin alpha) / 2 is for a round cone. 0 when not cullable.
 double octagonCullShare(const OctagonCone& octagon);
 
+// The same for the normals themselves: the share of view directions from which every one faces
+// away, (2 pi - the perimeter of their convex hull on the sphere) / 4 pi, exactly. The hull is
+// found in the gnomonic plane about the axis of their minimal cone. 0 when no open hemisphere holds
+// them (they then face every direction somewhere) or there are none.
+double normalsCullShare(const glm::dvec3* normals, size_t count);
+
 // The eight edges of the pyramid of eyes it culls from (unit directions from the apex, in order):
 // each is perpendicular to two neighbouring edges of the octagon, on the side away from the others.
 std::array<glm::dvec3, 8> octagonPyramidEdges(const OctagonCone& octagon);

@@ -256,7 +256,7 @@ size_t meshoptMeshletCount(const Mesh& mesh, const MeshletLimits& limits, float 
                                  limits.maxVertices, limits.maxTriangles, coneWeight);
 }
 
-Partition buildMeshoptMeshlets(const Mesh& mesh, const MeshletLimits& limits, float coneWeight, size_t* meshletCount) {
+Partition buildMeshoptMeshlets(const Mesh& mesh, const MeshletLimits& limits, float coneWeight) {
     requireMeshoptLimits(limits);
     // Fan triangulation; which face each triangle came from is found again below.
     const std::vector<uint32_t> indices = fanTriangles(mesh);
@@ -268,7 +268,6 @@ Partition buildMeshoptMeshlets(const Mesh& mesh, const MeshletLimits& limits, fl
                                                indices.data(), indices.size(), &mesh.positions[0].x,
                                                mesh.positions.size(), sizeof(glm::vec3), limits.maxVertices,
                                                limits.maxTriangles, coneWeight);
-    if (meshletCount) *meshletCount = count;
     // meshoptimizer reorders triangles inside meshlets, so each output triangle's face is found
     // again among the faces around its first corner: the face with a fan triangle of the same three
     // corners not yet matched (so duplicate faces each get one). A polygon goes with its first match.

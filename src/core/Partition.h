@@ -30,10 +30,8 @@ Partition buildKMeans(const Mesh& mesh, const FaceGeometry& faces, size_t cluste
                       size_t iterations = 12, uint64_t seed = 1);
 
 // meshoptimizer's meshopt_buildMeshlets on the fan triangulation. A polygon goes to the meshlet
-// holding its first fan triangle. `meshletCount`, when given, receives meshoptimizer's own count
-// (what meshoptMeshletCount returns; meshlets of nothing but degenerate triangles leave no cluster).
-Partition buildMeshoptMeshlets(const Mesh& mesh, const MeshletLimits& limits, float coneWeight,
-                               size_t* meshletCount = nullptr);
+// holding its first fan triangle.
+Partition buildMeshoptMeshlets(const Mesh& mesh, const MeshletLimits& limits, float coneWeight);
 // How many meshlets buildMeshoptMeshlets makes, without mapping them back to faces (the default
 // budget of the optimized builder). Throws std::invalid_argument as buildMeshoptMeshlets does.
 size_t meshoptMeshletCount(const Mesh& mesh, const MeshletLimits& limits, float coneWeight);

@@ -11,8 +11,12 @@
 
 namespace conescope {
 
+bool startsFromMeshoptMeshlets(const Settings& settings) {
+    return settings.builder == Builder::Optimized && startsFromMeshoptMeshlets(settings.limits, settings.clusterCount, settings.effort);
+}
+
 Partition buildPartition(const Mesh& mesh, const FaceGeometry& faces, const Settings& settings,
-                         const ProgressCallback& progress) {
+                         const ProgressCallback& progress, const Partition* meshoptStart) {
     switch (settings.builder) {
         case Builder::Meshlet: return buildMeshlets(mesh, faces, settings.limits, settings.normalWeight);
         case Builder::KMeans: {
@@ -22,7 +26,8 @@ Partition buildPartition(const Mesh& mesh, const FaceGeometry& faces, const Sett
             return buildKMeans(mesh, faces, target, settings.normalWeight);
         }
         case Builder::Meshopt: return buildMeshoptMeshlets(mesh, settings.limits, settings.meshoptConeWeight);
-        case Builder::Optimized: return buildOptimizedClusters(mesh, faces, settings.limits, settings.clusterCount, progress, settings.effort);
+        case Builder::Optimized: return buildOptimizedClusters(mesh, faces, settings.limits, settings.clusterCount, progress, settings.effort,
+                                                                 meshoptStart);
         case Builder::File: {
             if (!settings.clusterFile.empty())
                 return partitionFromIds(readClusterIdFile(settings.clusterFile), mesh.faceCount(), settings.clusterFile);

@@ -90,8 +90,13 @@ struct RunStatistics {
 
 // Builds the partition the settings ask for. The optimized builder reports its progress through
 // `progress` (stage "clusters") and can be cancelled there; the others report nothing.
+// `meshoptStart`: meshoptimizer's meshlets when startsFromMeshoptMeshlets(settings), if already built.
 Partition buildPartition(const Mesh& mesh, const FaceGeometry& faces, const Settings& settings,
-                         const ProgressCallback& progress = {});
+                         const ProgressCallback& progress = {}, const Partition* meshoptStart = nullptr);
+
+// Whether the settings' builder starts from meshoptimizer's meshlets at cone weight 1 (the optimized
+// builder at its fast levels with the default budget): those can be built before the face geometry.
+bool startsFromMeshoptMeshlets(const Settings& settings);
 
 // Triangles culled / back-facing triangles; 1 when nothing faces away (nothing to cull, nothing lost).
 double cullEfficiency(size_t trianglesCulled, size_t backFacingTriangles);

@@ -4,6 +4,7 @@
 
 #include "TestMeshes.h"
 #include "core/Pipeline.h"
+#include "core/SettingsSchema.h"
 
 using namespace conescope;
 
@@ -110,4 +111,32 @@ TEST(Statistics, InconsistentWindingIsReportedAndFixedOnRequest) {
     EXPECT_EQ(fixed.windingFixedFaces, 1u);
     EXPECT_EQ(fixed.clusters, asIs.clusters);
     EXPECT_GT(fixed.results[0].efficiency, asIs.results[0].efficiency);
+}
+
+// The CLI builds meshoptimizer's meshlets while it prepares the mesh: the clusters are the same as
+// when the builder makes its start itself, and only the settings that start there ask for them.
+TEST(Statistics, MeshletsBuiltWhileThePreparationRunsGiveTheSameClusters) {
+    const auto mesh = std::make_shared<const Mesh>(testmesh::torus(1.0, 0.3, 96, 48));
+    Settings settings;
+    std::future<Partition> start = meshoptStartInBackground(mesh, settings);
+    ASSERT_TRUE(start.valid());
+    const PreparedMesh prepared = prepareMesh(mesh, "torus", false);
+    const Partition meshlets = start.get();
+    EXPECT_EQ(meshlets.clusterOfFace, buildMeshoptMeshlets(*mesh, settings.limits, 1.0f).clusterOfFace);
+    const ClusterSet early = buildClusters(prepared, settings, nullptr, {}, &meshlets);
+    const ClusterSet late = buildClusters(prepared, settings);
+    EXPECT_EQ(early.partition.clusterOfFace, late.partition.clusterOfFace);
+    EXPECT_EQ(early.partition.clusterCount, meshlets.clusterCount);  // the default budget is their count
+    EXPECT_EQ(runStatistics(*mesh, settings, "torus").results[0].trianglesCulled,
+              measureRun(prepared, late, settings).results[0].trianglesCulled);
+    // Elsewhere the builder starts from its own growth, or the faces will be flipped first.
+    for (const char* change : {"effort=best", "clusters=40", "builder=meshlet", "fix_winding=true", "max_vertices=300"}) {
+        Settings other = settings;
+        const std::string text = change;
+        const size_t equals = text.find('=');
+        parseSetting(settingField(text.substr(0, equals)), text.substr(equals + 1), other);
+        EXPECT_FALSE(meshoptStartInBackground(mesh, other).valid()) << change;
+    }
+    settings.effort = Effort::Fast;
+    EXPECT_TRUE(meshoptStartInBackground(mesh, settings).valid());
 }

@@ -38,7 +38,7 @@ private slots:
         for (Builder builder : {Builder::Meshlet, Builder::KMeans, Builder::Meshopt}) {
             Settings settings;
             settings.builder = builder;
-            const PreparedMesh prepared = loadMesh(datasetPath("torus.off").toStdString(), false);
+            const PreparedMesh prepared = loadMesh(datasetPath("torus.off").toStdString(), Settings{});
             const ClusterSet clusters = buildClusters(prepared, settings);
             for (const glm::dvec3& position : {glm::dvec3(0.0, 0.0, 3.0), glm::dvec3(2.0, -1.0, 0.5)}) {
                 for (CullTest test : allCullTests()) {
@@ -65,7 +65,7 @@ private slots:
         Settings settings;
         settings.views = 37;  // not a multiple of the slice size
         settings.tests = {CullTest::Aabb};
-        const PreparedMesh prepared = loadMesh(datasetPath("icosphere.off").toStdString(), false);
+        const PreparedMesh prepared = loadMesh(datasetPath("icosphere.off").toStdString(), Settings{});
         const ClusterSet clusters = buildClusters(prepared, settings);
         const std::vector<ViewStatistics> rows = measureOrbit(prepared, clusters, settings).views;
         const RunStatistics run = statisticsInProcess(datasetPath("icosphere.off"), settings);
@@ -79,10 +79,27 @@ private slots:
         }
     }
 
+    // Loading for the window builds the optimized builder's start while the mesh is prepared: the
+    // same meshlets, the same clusters; a builder that starts elsewhere gets none.
+    void loadingBuildsTheStartMeanwhile() {
+        const std::string torus = datasetPath("torus.off").toStdString();
+        std::optional<Partition> start;
+        const PreparedMesh prepared = loadMesh(torus, Settings{}, {}, &start);
+        QVERIFY(start.has_value());
+        QVERIFY(start->clusterOfFace == buildMeshoptMeshlets(prepared.mesh(), Settings{}.limits, 1.0f).clusterOfFace);
+        QVERIFY(buildClusters(prepared, Settings{}, nullptr, {}, &*start).partition.clusterOfFace ==
+                buildClusters(prepared, Settings{}).partition.clusterOfFace);
+        Settings best;
+        best.effort = Effort::Best;
+        std::optional<Partition> none;
+        loadMesh(torus, best, {}, &none);
+        QVERIFY(!none.has_value());
+    }
+
     void cancellingStopsBetweenStages() {
         int calls = 0;
         const ProgressCallback refuse = [&calls](double, const std::string&) { return ++calls < 2; };
-        QVERIFY_EXCEPTION_THROWN(loadMesh(datasetPath("torus.off").toStdString(), false, refuse), OperationCancelled);
+        QVERIFY_EXCEPTION_THROWN(loadMesh(datasetPath("torus.off").toStdString(), Settings{}, refuse), OperationCancelled);
         QCOMPARE(calls, 2);
     }
 
@@ -99,7 +116,7 @@ private slots:
         limits.limits.maxTriangles = base.limits.maxTriangles / 2;
         QVERIFY(partitionChanged(base, limits));
         // Reusing the partition when only the cone changes gives the same clusters as building anew.
-        const PreparedMesh prepared = loadMesh(datasetPath("torus.off").toStdString(), false);
+        const PreparedMesh prepared = loadMesh(datasetPath("torus.off").toStdString(), Settings{});
         const ClusterSet first = buildClusters(prepared, base);
         const ClusterSet reused = buildClusters(prepared, cone, &first);
         const ClusterSet fresh = buildClusters(prepared, cone);
@@ -109,7 +126,7 @@ private slots:
     }
 
     void partitionArraysSpreadClusterValues() {
-        const PreparedMesh prepared = loadMesh(datasetPath("icosphere.off").toStdString(), false);
+        const PreparedMesh prepared = loadMesh(datasetPath("icosphere.off").toStdString(), Settings{});
         const ClusterSet clusters = buildClusters(prepared, Settings{});
         const auto arrays = partitionFaceArrays(prepared, clusters);
         for (const auto& [name, values] : arrays) QCOMPARE(values.size(), prepared.mesh().faceCount());
@@ -183,7 +200,7 @@ private slots:
     }
 
     void histogramCountsEveryCluster() {
-        const PreparedMesh prepared = loadMesh(datasetPath("torus.off").toStdString(), false);
+        const PreparedMesh prepared = loadMesh(datasetPath("torus.off").toStdString(), Settings{});
         const ClusterSet clusters = buildClusters(prepared, Settings{});
         const EyeMeasurement measured =
             measureEye(prepared, clusters, eyeAt(Settings{}, {0.0, 0.0, 3.0}, prepared.box), CullTest::Vertices);
@@ -201,7 +218,7 @@ private slots:
     }
 
     void reportShowsTheTestsNumbers() {
-        const PreparedMesh prepared = loadMesh(datasetPath("icosphere.off").toStdString(), false);
+        const PreparedMesh prepared = loadMesh(datasetPath("icosphere.off").toStdString(), Settings{});
         const ClusterSet clusters = buildClusters(prepared, Settings{});
         const Eye eye = Eye::perspective({0.0, 0.0, 3.0});
         for (CullTest test : {CullTest::Sphere, CullTest::Aabb, CullTest::Apex}) {

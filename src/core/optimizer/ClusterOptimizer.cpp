@@ -91,6 +91,9 @@ void reduceAndSearch(optimizer::State& state, size_t target, size_t sweeps) {
     }
 }
 
+// From this many faces the fast levels work on two halves of the mesh at once.
+constexpr size_t kHalvesFromFaces = size_t(1) << 14;
+
 // Below this many faces the best effort also starts from meshoptimizer's meshlets every time: on
 // small meshes of few clusters growth can end below meshoptimizer's own objective (CGAL's patch-01,
 // dragknob, patch-13), and the second start costs little there.
@@ -157,26 +160,38 @@ size_t defaultClusterBudget(const Mesh& mesh, const MeshletLimits& limits) {
     return std::max<size_t>(1, size_t(std::ceil(double(triangleCount(mesh)) / perCluster)));
 }
 
+bool startsFromMeshoptMeshlets(const MeshletLimits& limits, size_t targetClusters, Effort effort) {
+    return targetClusters == 0 && !planFor(effort).growthStart && meshoptTakesLimits(limits);
+}
+
 Partition buildOptimizedClusters(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits,
-                                 size_t targetClusters, const ProgressCallback& progress, Effort effort) {
+                                 size_t targetClusters, const ProgressCallback& progress, Effort effort,
+                                 const Partition* meshoptStart) {
     const size_t faceCount = mesh.faceCount();
     if (faceCount == 0) return {};
     const SearchPlan plan = planFor(effort);
     const size_t sweeps = annealingSweeps(plan, faceCount);
     // The default budget is the count of meshoptimizer's meshlets; where those are also the start,
-    // they are built once, and a large mesh is cut into parts between whole meshlets, each part's
-    // budget being the meshlets it holds: the counts add up to meshoptimizer's, no part needs
-    // reducing.
-    std::optional<Partition> meshlets;
+    // they are built once (or were, while the mesh was prepared), and a large mesh is cut into parts
+    // between whole meshlets, each part's budget being the meshlets it holds: the counts add up to
+    // meshoptimizer's, no part needs reducing.
+    std::optional<Partition> built;
+    const Partition* meshlets = nullptr;
     size_t target = targetClusters;
-    if (target == 0 && !plan.growthStart && meshoptTakesLimits(limits)) {
-        meshlets.emplace(buildMeshoptMeshlets(mesh, limits, 1.0f, &target));
+    if (startsFromMeshoptMeshlets(limits, targetClusters, effort)) {
+        meshlets = meshoptStart ? meshoptStart : &built.emplace(buildMeshoptMeshlets(mesh, limits, 1.0f));
+        target = meshlets->clusterCount;
     } else if (target == 0) {
         target = defaultClusterBudget(mesh, limits);
     }
-    const optimizer::Parts parts = optimizer::splitIntoParts(faces, target, meshlets ? &*meshlets : nullptr);
+    // From meshoptimizer's meshlets the search is quick and local: a mesh of ordinary size is cut in
+    // two as well, whose halves run at once where there are two cores (the cut depends on the mesh
+    // alone, so the result does not depend on the machine).
+    const size_t maxPartFaces =
+        meshlets && faceCount >= kHalvesFromFaces ? std::min(optimizer::kLargestPart, (faceCount + 1) / 2) : optimizer::kLargestPart;
+    const optimizer::Parts parts = optimizer::splitIntoParts(faces, target, meshlets, maxPartFaces);
     if (parts.count() == 1) {
-        Partition whole = optimizeClusters(mesh, faces, limits, target, plan, sweeps, meshlets ? &*meshlets : nullptr);
+        Partition whole = optimizeClusters(mesh, faces, limits, target, plan, sweeps, meshlets);
         if (progress && !progress(1.0, "clusters")) throw OperationCancelled();
         return whole;
     }

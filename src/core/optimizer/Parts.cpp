@@ -12,9 +12,7 @@ namespace conescope::optimizer {
 
 namespace {
 
-// Larger meshes are cut into parts of at most this many faces: one run of this size takes about a
-// second. A part keeps at least kMinPartClusters of the budget.
-constexpr size_t kPartFaces = size_t(1) << 17;
+// A part keeps at least kMinPartClusters of the budget.
 constexpr size_t kMinPartClusters = 16;
 
 // Where a face sits for the cuts: its centroid, or its cluster's centre when whole clusters are
@@ -52,11 +50,10 @@ uint32_t* splitAtMedian(const CutKeys& keys, uint32_t* begin, uint32_t* end) {
 
 }  // namespace
 
-bool cutIntoParts(size_t faceCount) { return faceCount > kPartFaces; }
-
 // The halving runs in place, the parts of one level at once; parts 2i and 2i + 1 of a level are
-// the halves of part i of the level before.
-Parts splitIntoParts(const FaceGeometry& faces, size_t target, const Partition* clusters) {
+// the halves of part i of the level before. The number of levels is fixed by the sizes alone (cuts
+// along clusters make halves of slightly unequal sizes).
+Parts splitIntoParts(const FaceGeometry& faces, size_t target, const Partition* clusters, size_t maxPartFaces) {
     CutKeys keys{faces, clusters, {}};
     if (clusters) {
         keys.centres.assign(clusters->clusterCount, glm::dvec3(0.0));
@@ -69,7 +66,9 @@ Parts splitIntoParts(const FaceGeometry& faces, size_t target, const Partition* 
     parts.faces.resize(faces.centroids.size());
     for (uint32_t f = 0; f < parts.faces.size(); ++f) parts.faces[f] = f;
     parts.starts = {0, uint32_t(parts.faces.size())};
-    while (parts.size(0) > kPartFaces && target >= 2 * parts.count() * kMinPartClusters) {
+    size_t levels = 0;
+    while ((parts.faces.size() >> levels) > std::max<size_t>(maxPartFaces, 1)) ++levels;
+    for (size_t level = 0; level < levels && target >= 2 * parts.count() * kMinPartClusters; ++level) {
         std::vector<uint32_t> middles(parts.count());
         forEachInParallel(parts.count(), [&](size_t i, size_t) {
             uint32_t* begin = parts.faces.data() + parts.starts[i];

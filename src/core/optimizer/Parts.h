@@ -1,6 +1,5 @@
-// Parts for large meshes: a mesh of more than kPartFaces faces is cut at median face centroids
-// into parts that are optimised independently (and at once on several cores), so that each part's
-// data stays in cache. No cluster crosses a cut.
+// Parts: a mesh is cut at median face centroids (or cluster centres) into parts that are optimised
+// independently, at once on several cores, each part's data in cache. No cluster crosses a cut.
 #pragma once
 
 #include <cstddef>
@@ -20,14 +19,16 @@ struct Parts {
     const uint32_t* begin(size_t i) const { return faces.data() + starts[i]; }
 };
 
-// Whether a mesh of this many faces is too large for one part (splitIntoParts may still keep it
-// whole when its budget is tiny).
-bool cutIntoParts(size_t faceCount);
+// Larger meshes are cut into parts of at most this many faces: one run of growth and annealing on
+// this many takes about a second.
+constexpr size_t kLargestPart = size_t(1) << 17;
 
-// Halves of halves until every part has at most kPartFaces faces, as long as each part still gets
-// a few clusters of the `target` budget. One part (the whole mesh) when it is small enough. With
-// `clusters`, whole clusters go to one side of each cut (by their centres).
-Parts splitIntoParts(const FaceGeometry& faces, size_t target, const Partition* clusters = nullptr);
+// Halves of halves until the parts have about maxPartFaces faces at most (the number of halvings
+// follows from the face count alone), as long as each part still gets a few clusters of the
+// `target` budget. One part (the whole mesh) when it is small enough. With `clusters`, whole
+// clusters go to one side of each cut (by their centres).
+Parts splitIntoParts(const FaceGeometry& faces, size_t target, const Partition* clusters = nullptr,
+                     size_t maxPartFaces = kLargestPart);
 
 // The clusters of `whole` that the part's faces are in, renumbered densely for the part.
 Partition partOfPartition(const Partition& whole, const uint32_t* faceIds, size_t faceCount);
