@@ -1,10 +1,8 @@
-// conescope-bench-speed: Google Benchmark timings of
-//  - one cull pass over all clusters, per test: the core's scalar double cullClusters, the batched
-//    float tests at each SIMD level, and meshoptimizer's own float loop over meshopt_Bounds;
-//  - preparation of a >= 1M-triangle mesh (a real mesh subdivided 1->4): face geometry + partition
-//    + bounds (minimal cone) for every ConeScope builder, against meshopt_buildMeshlets +
-//    meshopt_computeMeshletBounds.
-// After the usual output it prints ns per cluster for every cull benchmark.
+// conescope-bench-speed: Google Benchmark timings of one cull pass over all clusters, per test: the
+// core's scalar double cullClusters, the batched float tests at each SIMD level, and meshoptimizer's
+// own float loop over meshopt_Bounds, on a real mesh and on it subdivided 1->4 to >= 1M triangles.
+// After the usual output it prints ns per cluster for every cull benchmark. (Preparation times are
+// conescope-bench-prepare's.)
 //
 //   conescope-bench-speed [--mesh=path.off] [--min-triangles=N] [google benchmark flags]
 #include <benchmark/benchmark.h>
@@ -118,39 +116,6 @@ void cullMeshoptLoop(benchmark::State& state, bool large, bool apex) {
     countClusters(state, culled.size());
 }
 
-// ConeScope's preparation: what a run needs before its first cull, from the mesh.
-void prepareConeScope(benchmark::State& state, Builder builder) {
-    const Mesh& mesh = largeMesh();
-    Settings settings;
-    settings.builder = builder;
-    settings.limits = kLimits;  // k-means: triangles / 124 clusters (the settings default)
-    size_t clusters = 0;
-    for (auto _ : state) {
-        const std::vector<glm::vec3> world = worldPositions(mesh);
-        const FaceGeometry faces = computeFaceGeometry(mesh);
-        const Partition partition = buildPartition(mesh, faces, settings);
-        const ClusterBounds bounds = computeClusterBounds(mesh, world, faces, partition, ConeMethod::Minimal);
-        clusters = bounds.count();
-        benchmark::DoNotOptimize(bounds.cones.data());
-    }
-    state.counters["clusters"] = double(clusters);
-    state.counters["triangles"] = double(triangleCount(mesh));
-}
-
-void prepareMeshopt(benchmark::State& state, float coneWeight) {
-    const Mesh& mesh = largeMesh();
-    size_t clusters = 0;
-    for (auto _ : state) {
-        const std::vector<glm::vec3> world = worldPositions(mesh);
-        const bench::MeshoptClusters result =
-            bench::buildMeshoptClusters(bench::fanTriangles(mesh), world, kLimits, coneWeight);
-        clusters = result.count();
-        benchmark::DoNotOptimize(result.bounds.data());
-    }
-    state.counters["clusters"] = double(clusters);
-    state.counters["triangles"] = double(triangleCount(mesh));
-}
-
 // Console output as usual, then one line per cull benchmark in plain nanoseconds per cluster.
 class PerClusterReporter : public benchmark::ConsoleReporter {
 public:
@@ -161,7 +126,7 @@ public:
         ConsoleReporter::ReportRuns(runs);
         for (const Run& run : runs) {
             auto clusters = run.counters.find("clusters");
-            if (run.error_occurred || clusters == run.counters.end() || run.counters.count("triangles")) continue;
+            if (run.error_occurred || clusters == run.counters.end()) continue;
             const double unit = benchmark::GetTimeUnitMultiplier(run.time_unit);
             lines_.push_back({run.benchmark_name(), run.GetAdjustedRealTime() / unit * 1e9 / clusters->second,
                               run.GetAdjustedCPUTime() / unit * 1e9 / clusters->second});
@@ -213,15 +178,6 @@ void registerBenchmarks() {
         benchmark::RegisterBenchmark(("cull/meshoptimizer-loop/apex/" + size).c_str(), cullMeshoptLoop, large, true);
         benchmark::RegisterBenchmark(("cull/meshoptimizer-loop/meshopt-sphere/" + size).c_str(), cullMeshoptLoop, large, false);
     }
-    for (Builder builder : allBuilders())
-        if (builder != Builder::File)
-            benchmark::RegisterBenchmark(("prepare/conescope-" + toString(builder) + "+minimal").c_str(), prepareConeScope, builder)
-                ->Unit(benchmark::kMillisecond)
-                ->Iterations(2);
-    for (float weight : {0.25f, Settings{}.meshoptConeWeight})
-        benchmark::RegisterBenchmark(("prepare/meshoptimizer-cw" + std::to_string(weight).substr(0, 4)).c_str(), prepareMeshopt, weight)
-            ->Unit(benchmark::kMillisecond)
-            ->Iterations(2);
 }
 
 }  // namespace

@@ -46,13 +46,15 @@ size_t defaultClusterBudget(const Mesh& mesh, const MeshletLimits& limits);
 // `progress` hears (parts done / parts, "clusters") as parts finish, on the calling thread;
 // returning false stops the parts not yet started and throws OperationCancelled.
 // `meshoptStart`: buildMeshoptMeshlets(mesh, limits, 1) when startsFromMeshoptMeshlets, already built
-// (say while the mesh was being prepared); built here when needed and not given.
+// (say while the mesh was being prepared); built here when needed and not given. At those levels a
+// budget of meshoptimizer's count gives the same clusters as the default budget.
 Partition buildOptimizedClusters(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits,
                                  size_t targetClusters = 0, const ProgressCallback& progress = {},
                                  Effort effort = Effort::Balanced, const Partition* meshoptStart = nullptr);
 
 // Whether buildOptimizedClusters starts from meshoptimizer's meshlets at cone weight 1 (and takes
-// their count as the budget): the fast levels with the default budget, at limits meshoptimizer takes.
-bool startsFromMeshoptMeshlets(const MeshletLimits& limits, size_t targetClusters, Effort effort);
+// their count as the default budget): the fast levels at limits meshoptimizer takes, for budgets up
+// to that count.
+bool startsFromMeshoptMeshlets(const MeshletLimits& limits, Effort effort);
 
 }  // namespace conescope

@@ -12,7 +12,7 @@
 namespace conescope {
 
 bool startsFromMeshoptMeshlets(const Settings& settings) {
-    return settings.builder == Builder::Optimized && startsFromMeshoptMeshlets(settings.limits, settings.clusterCount, settings.effort);
+    return settings.builder == Builder::Optimized && startsFromMeshoptMeshlets(settings.limits, settings.effort);
 }
 
 Partition buildPartition(const Mesh& mesh, const FaceGeometry& faces, const Settings& settings,

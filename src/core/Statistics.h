@@ -95,7 +95,7 @@ Partition buildPartition(const Mesh& mesh, const FaceGeometry& faces, const Sett
                          const ProgressCallback& progress = {}, const Partition* meshoptStart = nullptr);
 
 // Whether the settings' builder starts from meshoptimizer's meshlets at cone weight 1 (the optimized
-// builder at its fast levels with the default budget): those can be built before the face geometry.
+// builder at its fast levels): those can be built before the face geometry.
 bool startsFromMeshoptMeshlets(const Settings& settings);
 
 // Triangles culled / back-facing triangles; 1 when nothing faces away (nothing to cull, nothing lost).

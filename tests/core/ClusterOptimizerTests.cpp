@@ -150,6 +150,12 @@ TEST(ClusterOptimizer, MeetsTheBudget) {
         EXPECT_EQ(partition.clusterCount, budget);
     }
     EXPECT_EQ(buildOptimizedClusters(mesh, faces, limits).clusterCount, defaultClusterBudget(mesh, limits));
+    // Asking for meshoptimizer's count is asking for the default: the same clusters (a comparison at
+    // --clusters C and one at defaults agree).
+    for (Effort effort : allEfforts())
+        EXPECT_EQ(buildOptimizedClusters(mesh, faces, limits, defaultClusterBudget(mesh, limits), {}, effort).clusterOfFace,
+                  buildOptimizedClusters(mesh, faces, limits, 0, {}, effort).clusterOfFace)
+            << toString(effort);
 }
 
 // Many separate pieces: each used to be a cluster at least. Clusters now merge across the gaps

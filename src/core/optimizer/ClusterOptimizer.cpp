@@ -112,23 +112,15 @@ std::unique_ptr<optimizer::State> meshletStart(const Mesh& mesh, const FaceGeome
 }
 
 // One run of the whole optimisation on a mesh. The fast levels start from meshoptimizer's meshlets
-// (`meshlets` when given, else built) when the budget is at most their count, as the default
-// budget is, and keep that run when it reaches the budget. Otherwise, and at the best level,
-// clusters are grown and reduced; where that cannot get down to the budget (the limits bind: thin
-// strips, many vertices per triangle), and always on small meshes at the best level,
-// meshoptimizer's start is searched too, and the run nearer the budget (then the better objective)
-// is kept.
+// (`meshlets`, given when the budget is at most their count) and keep that run when it reaches the
+// budget. Otherwise, and at the best level, clusters are grown and reduced; at the best level, where
+// that cannot get down to the budget (the limits bind: thin strips, many vertices per triangle), and
+// always on small meshes, meshoptimizer's start is searched too, and the run nearer the budget (then
+// the better objective) is kept.
 Partition optimizeClusters(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits, size_t target,
-                           const SearchPlan& plan, size_t sweeps, const Partition* meshlets = nullptr) {
-    const bool takesMeshlets = meshoptTakesLimits(limits);
-    std::optional<Partition> built;
-    auto meshletsOnce = [&]() -> const Partition& {
-        if (!meshlets) meshlets = &built.emplace(buildMeshoptMeshlets(mesh, limits, 1.0f));
-        return *meshlets;
-    };
+                           const SearchPlan& plan, size_t sweeps, const Partition* meshlets) {
     std::unique_ptr<optimizer::State> packed;
-    if (!plan.growthStart && takesMeshlets && target <= meshletsOnce().clusterCount &&
-        (packed = meshletStart(mesh, faces, limits, meshletsOnce()))) {
+    if (!plan.growthStart && meshlets && (packed = meshletStart(mesh, faces, limits, *meshlets))) {
         reduceAndSearch(*packed, target, sweeps);
         if (packed->liveClusters <= target) return optimizer::result(*packed);
     }
@@ -140,13 +132,11 @@ Partition optimizeClusters(const Mesh& mesh, const FaceGeometry& faces, const Me
         optimizer::grow(state, std::min(double(limits.maxTriangles), triangles / double(target)));
     }
     reduceAndSearch(state, target, sweeps);
-    const bool small = plan.growthStart && mesh.faceCount() < kBothStartsBelowFaces;
-    if ((state.liveClusters <= target && !small) || !takesMeshlets) return optimizer::result(state);
-    if (!packed && plan.growthStart) {
-        packed = meshletStart(mesh, faces, limits, meshletsOnce());
-        if (packed) reduceAndSearch(*packed, target, sweeps);
-    }
+    const bool small = mesh.faceCount() < kBothStartsBelowFaces;
+    if (!plan.growthStart || (state.liveClusters <= target && !small) || !meshoptTakesLimits(limits)) return optimizer::result(state);
+    packed = meshletStart(mesh, faces, limits, meshlets ? *meshlets : buildMeshoptMeshlets(mesh, limits, 1.0f));
     if (!packed) return optimizer::result(state);
+    reduceAndSearch(*packed, target, sweeps);
     return optimizer::result(closerToTheBudget(*packed, state, target) ? *packed : state);
 }
 
@@ -160,8 +150,8 @@ size_t defaultClusterBudget(const Mesh& mesh, const MeshletLimits& limits) {
     return std::max<size_t>(1, size_t(std::ceil(double(triangleCount(mesh)) / perCluster)));
 }
 
-bool startsFromMeshoptMeshlets(const MeshletLimits& limits, size_t targetClusters, Effort effort) {
-    return targetClusters == 0 && !planFor(effort).growthStart && meshoptTakesLimits(limits);
+bool startsFromMeshoptMeshlets(const MeshletLimits& limits, Effort effort) {
+    return !planFor(effort).growthStart && meshoptTakesLimits(limits);
 }
 
 Partition buildOptimizedClusters(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits,
@@ -171,16 +161,17 @@ Partition buildOptimizedClusters(const Mesh& mesh, const FaceGeometry& faces, co
     if (faceCount == 0) return {};
     const SearchPlan plan = planFor(effort);
     const size_t sweeps = annealingSweeps(plan, faceCount);
-    // The default budget is the count of meshoptimizer's meshlets; where those are also the start,
-    // they are built once (or were, while the mesh was prepared), and a large mesh is cut into parts
-    // between whole meshlets, each part's budget being the meshlets it holds: the counts add up to
-    // meshoptimizer's, no part needs reducing.
+    // The fast levels start from meshoptimizer's meshlets, built once (or while the mesh was
+    // prepared), whose count is the default budget; a budget above it is grown instead. A large mesh
+    // is cut into parts between whole meshlets, which share the budget by the meshlets they hold (at
+    // the default budget: exactly those, so no part needs reducing).
     std::optional<Partition> built;
     const Partition* meshlets = nullptr;
     size_t target = targetClusters;
-    if (startsFromMeshoptMeshlets(limits, targetClusters, effort)) {
+    if (startsFromMeshoptMeshlets(limits, effort)) {
         meshlets = meshoptStart ? meshoptStart : &built.emplace(buildMeshoptMeshlets(mesh, limits, 1.0f));
-        target = meshlets->clusterCount;
+        if (target == 0) target = meshlets->clusterCount;
+        if (target > meshlets->clusterCount) meshlets = nullptr;
     } else if (target == 0) {
         target = defaultClusterBudget(mesh, limits);
     }
@@ -198,8 +189,7 @@ Partition buildOptimizedClusters(const Mesh& mesh, const FaceGeometry& faces, co
 
     // Parts are optimised independently, as many at once as the machine has cores; the result does
     // not depend on that number.
-    std::vector<size_t> targets;
-    if (!meshlets) targets = optimizer::partTargets(mesh, parts, target);
+    const std::vector<size_t> targets = meshlets ? optimizer::partTargets(*meshlets, parts, target) : optimizer::partTargets(mesh, parts, target);
     std::vector<Partition> results(parts.count());
     std::vector<std::vector<uint32_t>> newIndex(threadsFor(parts.count()));  // per thread: kNone per mesh vertex
     // Progress is reported by the calling thread (worker 0) only, so the callback needs no lock; a
@@ -212,9 +202,9 @@ Partition buildOptimizedClusters(const Mesh& mesh, const FaceGeometry& faces, co
         const optimizer::MeshPart part = optimizer::extractPart(mesh, faces, parts.begin(i), parts.size(i), newIndex[worker]);
         if (meshlets) {
             const Partition start = optimizer::partOfPartition(*meshlets, parts.begin(i), parts.size(i));
-            results[i] = optimizeClusters(part.mesh, part.faces, limits, start.clusterCount, plan, sweeps, &start);
+            results[i] = optimizeClusters(part.mesh, part.faces, limits, targets[i], plan, sweeps, &start);
         } else {
-            results[i] = optimizeClusters(part.mesh, part.faces, limits, targets[i], plan, sweeps);
+            results[i] = optimizeClusters(part.mesh, part.faces, limits, targets[i], plan, sweeps, nullptr);
         }
         const size_t done = ++partsDone;
         if (worker == 0 && progress && !progress(double(done) / double(parts.count()), "clusters")) cancelled = true;

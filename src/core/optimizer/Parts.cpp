@@ -88,19 +88,40 @@ Parts splitIntoParts(const FaceGeometry& faces, size_t target, const Partition* 
     return parts;
 }
 
-std::vector<size_t> partTargets(const Mesh& mesh, const Parts& parts, size_t target) {
-    // Rounded cumulatively, so the shares add up to the budget.
-    std::vector<size_t> targets(parts.count());
-    const double triangles = double(triangleCount(mesh));
+namespace {
+
+// Shares of `target` in proportion to each part's weight, rounded cumulatively so that they add up.
+std::vector<size_t> shares(const std::vector<double>& weights, size_t target) {
+    double total = 0.0;
+    for (double w : weights) total += w;
+    std::vector<size_t> result(weights.size());
     double before = 0.0;
-    for (size_t i = 0; i < parts.count(); ++i) {
-        double partTriangles = 0.0;
-        for (size_t k = 0; k < parts.size(i); ++k) partTriangles += double(mesh.faceSize(parts.begin(i)[k]) - 2);
-        const auto share = [&](double t) { return size_t(std::llround(double(target) * t / triangles)); };
-        targets[i] = std::max<size_t>(1, share(before + partTriangles) - share(before));
-        before += partTriangles;
+    const auto share = [&](double w) { return size_t(std::llround(double(target) * w / total)); };
+    for (size_t i = 0; i < weights.size(); ++i) {
+        result[i] = std::max<size_t>(1, share(before + weights[i]) - share(before));
+        before += weights[i];
     }
-    return targets;
+    return result;
+}
+
+}  // namespace
+
+std::vector<size_t> partTargets(const Mesh& mesh, const Parts& parts, size_t target) {
+    std::vector<double> triangles(parts.count(), 0.0);
+    for (size_t i = 0; i < parts.count(); ++i)
+        for (size_t k = 0; k < parts.size(i); ++k) triangles[i] += double(mesh.faceSize(parts.begin(i)[k]) - 2);
+    return shares(triangles, target);
+}
+
+std::vector<size_t> partTargets(const Partition& clusters, const Parts& parts, size_t target) {
+    std::vector<double> held(parts.count(), 0.0);
+    std::vector<uint32_t> partOfCluster(clusters.clusterCount, kNone);
+    for (size_t i = 0; i < parts.count(); ++i)
+        for (size_t k = 0; k < parts.size(i); ++k) {
+            uint32_t& part = partOfCluster[clusters.clusterOfFace[parts.begin(i)[k]]];
+            if (part != uint32_t(i)) part = uint32_t(i), held[i] += 1.0;
+        }
+    return shares(held, target);
 }
 
 Partition partOfPartition(const Partition& whole, const uint32_t* faceIds, size_t faceCount) {

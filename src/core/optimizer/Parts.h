@@ -36,6 +36,9 @@ Partition partOfPartition(const Partition& whole, const uint32_t* faceIds, size_
 // Each part's share of the `target` budget, by its triangles (at least 1 each); the shares add up
 // to the budget.
 std::vector<size_t> partTargets(const Mesh& mesh, const Parts& parts, size_t target);
+// The same by the clusters of `clusters` each part holds (parts cut between whole clusters): at
+// most those, exactly those when `target` is their count.
+std::vector<size_t> partTargets(const Partition& clusters, const Parts& parts, size_t target);
 
 // Some faces of a mesh as a mesh of their own, vertices renumbered in order of first use (which
 // also keeps a part's data close together in memory).
