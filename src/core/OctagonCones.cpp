@@ -73,11 +73,11 @@ double polarShare(const glm::dvec3* corners, size_t count) {
     return std::max(0.0, (2.0 * M_PI - perimeter) / (4.0 * M_PI));
 }
 
-// The four side directions of an octagon turned by `angle`: 0, 45, 90 and 135 degrees on from it.
-std::array<Point, 4> sideDirections(double angle) {
-    std::array<Point, 4> directions;
-    for (int j = 0; j < 4; ++j) directions[j] = Point(std::cos(angle + j * M_PI / 4.0), std::sin(angle + j * M_PI / 4.0));
-    return directions;
+// The four side directions of an octagon whose first side runs along `first` (a unit vector):
+// 0, 45, 90 and 135 degrees on from it.
+std::array<Point, 4> sideDirections(const Point& first) {
+    const Point quarter(-first.y, first.x);
+    return {first, (first + quarter) * M_SQRT1_2, quarter, (quarter - first) * M_SQRT1_2};
 }
 
 // Lowest and highest projection of the hull on each direction: the octagon's four strips.
@@ -149,16 +149,18 @@ OctagonCone octagonCone(const ConeOfNormals& cone, const glm::dvec3* normals, si
     for (uint32_t i : convexHull(projection.points)) hull.push_back(projection.points[i]);
     // Turns tried: a side along each edge of the hull (the least area has one there, as the least
     // rectangle does), and evenly spaced ones for hulls of a point or two.
-    std::vector<double> turns;
-    for (int t = 0; t < kTurns; ++t) turns.push_back(t * (M_PI / 4.0) / kTurns);
+    std::vector<Point> turns;
+    for (int t = 0; t < kTurns; ++t) turns.emplace_back(std::cos(t * (M_PI / 4.0) / kTurns), std::sin(t * (M_PI / 4.0) / kTurns));
     for (size_t i = 0; hull.size() > 1 && i < hull.size(); ++i) {
         const Point edge = hull[(i + 1) % hull.size()] - hull[i];
-        turns.push_back(std::atan2(edge.y, edge.x));
+        const double length = glm::length(edge);
+        if (length > 0.0) turns.push_back(edge / length);
     }
-    double bestArea = std::numeric_limits<double>::infinity(), bestTurn = 0.0;
-    for (double angle : turns) {
-        const double area = octagonArea(stripsAround(hull, sideDirections(angle)));
-        if (area < bestArea) bestArea = area, bestTurn = angle;
+    double bestArea = std::numeric_limits<double>::infinity();
+    Point bestTurn = turns.front();
+    for (const Point& first : turns) {
+        const double area = octagonArea(stripsAround(hull, sideDirections(first)));
+        if (area < bestArea) bestArea = area, bestTurn = first;
     }
     const std::array<Point, 4> directions = sideDirections(bestTurn);
     Strips strips = stripsAround(hull, directions);

@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <fstream>
+#include <future>
 #include <limits>
 #include <random>
 #include <sstream>
@@ -13,6 +14,7 @@
 #include <unordered_map>
 
 #include "Adjacency.h"
+#include "Parallel.h"
 
 namespace conescope {
 
@@ -258,8 +260,10 @@ size_t meshoptMeshletCount(const Mesh& mesh, const MeshletLimits& limits, float 
 
 Partition buildMeshoptMeshlets(const Mesh& mesh, const MeshletLimits& limits, float coneWeight) {
     requireMeshoptLimits(limits);
-    // Fan triangulation; which face each triangle came from is found again below.
+    // Fan triangulation; which face each triangle came from is found again below, among the faces
+    // around its corners, which another core lists while meshoptimizer works.
     const std::vector<uint32_t> indices = fanTriangles(mesh);
+    std::future<Rows> around = std::async(std::launch::async, [&mesh] { return facesAroundVertices(mesh); });
     const size_t maxMeshlets = meshopt_buildMeshletsBound(indices.size(), limits.maxVertices, limits.maxTriangles);
     std::vector<meshopt_Meshlet> meshlets(maxMeshlets);
     std::vector<unsigned int> meshletVertices(maxMeshlets * limits.maxVertices);
@@ -268,39 +272,58 @@ Partition buildMeshoptMeshlets(const Mesh& mesh, const MeshletLimits& limits, fl
                                                indices.data(), indices.size(), &mesh.positions[0].x,
                                                mesh.positions.size(), sizeof(glm::vec3), limits.maxVertices,
                                                limits.maxTriangles, coneWeight);
+    const Rows facesAround = around.get();
     // meshoptimizer reorders triangles inside meshlets, so each output triangle's face is found
     // again among the faces around its first corner: the face with a fan triangle of the same three
     // corners not yet matched (so duplicate faces each get one). A polygon goes with its first match.
-    const Rows facesAround = facesAroundVertices(mesh);
-    std::vector<uint32_t> firstTriangle(mesh.faceCount() + 1, 0);
-    for (size_t f = 0; f < mesh.faceCount(); ++f)
+    std::vector<uint32_t> firstTriangle(mesh.faceCount() + 1, 0), faceOfTriangle;
+    for (size_t f = 0; f < mesh.faceCount(); ++f) {
         firstTriangle[f + 1] = firstTriangle[f] + uint32_t(mesh.faceSize(f) >= 2 ? mesh.faceSize(f) - 2 : 0);
-    std::vector<uint8_t> matched(firstTriangle.back(), 0);
+        faceOfTriangle.insert(faceOfTriangle.end(), firstTriangle[f + 1] - firstTriangle[f], uint32_t(f));
+    }
     auto sorted = [](uint32_t a, uint32_t b, uint32_t c) {
         if (a > b) std::swap(a, b);
         if (b > c) std::swap(b, c);
         if (a > b) std::swap(a, b);
         return std::array<uint32_t, 3>{a, b, c};
     };
-    std::vector<uint32_t> clusterOfFace(mesh.faceCount(), kUnassigned);
-    for (size_t m = 0; m < count; ++m) {
-        const meshopt_Meshlet& meshlet = meshlets[m];
-        for (size_t t = 0; t < meshlet.triangle_count; ++t) {
-            const unsigned char* local = &meshletTriangles[meshlet.triangle_offset + 3 * t];
-            const uint32_t* vertices = &meshletVertices[meshlet.vertex_offset];
-            const std::array<uint32_t, 3> key = sorted(vertices[local[0]], vertices[local[1]], vertices[local[2]]);
-            bool found = false;
-            for (const uint32_t* f = facesAround.begin(key[0]); f != facesAround.end(key[0]) && !found; ++f) {
-                const uint32_t* face = mesh.faceBegin(*f);
-                for (size_t k = 1; k + 1 < mesh.faceSize(*f) && !found; ++k) {
-                    const uint32_t triangle = firstTriangle[*f] + uint32_t(k - 1);
-                    if (matched[triangle] || sorted(face[0], face[k], face[k + 1]) != key) continue;
-                    matched[triangle] = 1, found = true;
-                    if (clusterOfFace[*f] == kUnassigned) clusterOfFace[*f] = uint32_t(m);
-                }
+    std::vector<uint8_t> matched(firstTriangle.back(), 0);
+    // The first fan triangle with the corners of an output triangle, matched or not (kUnassigned: none).
+    auto firstMatch = [&](const std::array<uint32_t, 3>& key, bool skipMatched) {
+        for (const uint32_t* f = facesAround.begin(key[0]); f != facesAround.end(key[0]); ++f) {
+            const uint32_t* face = mesh.faceBegin(*f);
+            for (size_t k = 1; k + 1 < mesh.faceSize(*f); ++k) {
+                const uint32_t triangle = firstTriangle[*f] + uint32_t(k - 1);
+                if ((!skipMatched || !matched[triangle]) && sorted(face[0], face[k], face[k + 1]) == key) return triangle;
             }
         }
-    }
+        return kUnassigned;
+    };
+    auto keyOf = [&](const meshopt_Meshlet& meshlet, size_t t) {
+        const unsigned char* local = &meshletTriangles[meshlet.triangle_offset + 3 * t];
+        const uint32_t* vertices = &meshletVertices[meshlet.vertex_offset];
+        return sorted(vertices[local[0]], vertices[local[1]], vertices[local[2]]);
+    };
+    // The search on all cores, meshlet by meshlet; then, in order, each output triangle takes its
+    // match, or the next unmatched one when a duplicate face took it: the result is the one-pass
+    // search's, whatever the number of cores.
+    std::vector<uint32_t> outputStart(count + 1, 0);
+    for (size_t m = 0; m < count; ++m) outputStart[m + 1] = outputStart[m] + meshlets[m].triangle_count;
+    std::vector<uint32_t> candidate(outputStart.back());
+    forRangesInParallel(count, 256, [&](size_t begin, size_t end) {
+        for (size_t m = begin; m < end; ++m)
+            for (size_t t = 0; t < meshlets[m].triangle_count; ++t) candidate[outputStart[m] + t] = firstMatch(keyOf(meshlets[m], t), false);
+    });
+    std::vector<uint32_t> clusterOfFace(mesh.faceCount(), kUnassigned);
+    for (size_t m = 0; m < count; ++m)
+        for (size_t t = 0; t < meshlets[m].triangle_count; ++t) {
+            uint32_t triangle = candidate[outputStart[m] + t];
+            if (triangle != kUnassigned && matched[triangle]) triangle = firstMatch(keyOf(meshlets[m], t), true);
+            if (triangle == kUnassigned) continue;
+            matched[triangle] = 1;
+            uint32_t& cluster = clusterOfFace[faceOfTriangle[triangle]];
+            if (cluster == kUnassigned) cluster = uint32_t(m);
+        }
     // meshoptimizer drops nothing but fully degenerate index triples may not come back; give them a cluster.
     uint32_t last = 0;
     for (uint32_t& id : clusterOfFace) {
