@@ -117,12 +117,28 @@ TEST(ClusterOptimizer, ClustersSpanSeparatePiecesOnlyAsMeshoptimizerDoes) {
         for (size_t g = firstTorusFaces; g < mesh.faceCount(); g += 97)
             ASSERT_NE(best.clusterOfFace[f], best.clusterOfFace[g]);
     // The faster levels refine meshoptimizer's meshlets, which pack by distance across the gap:
-    // never more clusters in pieces than those meshlets have.
-    const size_t meshoptPieces = disconnectedClusters(mesh, buildMeshoptMeshlets(mesh, limits, 1.0f));
+    // never more clusters in pieces than those meshlets have, and never a wider cluster than its
+    // widest (here the pieces far from their meshlet find no room nearer: they stay).
+    const Partition meshopt = buildMeshoptMeshlets(mesh, limits, 1.0f);
+    auto widest = [&](const Partition& partition) {
+        std::vector<glm::vec3> low(partition.clusterCount, glm::vec3(1e9f)), high(partition.clusterCount, glm::vec3(-1e9f));
+        for (size_t f = 0; f < mesh.faceCount(); ++f)
+            for (size_t k = 0; k < 3; ++k) {
+                const glm::vec3 p = mesh.positions[mesh.faceBegin(f)[k]];
+                low[partition.clusterOfFace[f]] = glm::min(low[partition.clusterOfFace[f]], p);
+                high[partition.clusterOfFace[f]] = glm::max(high[partition.clusterOfFace[f]], p);
+            }
+        float most = 0.0f;
+        for (uint32_t c = 0; c < partition.clusterCount; ++c) most = std::max(most, glm::length(high[c] - low[c]));
+        return most;
+    };
+    ASSERT_GT(widest(meshopt), 3.0f) << "meshoptimizer joins the two tori somewhere";
     for (Effort effort : {Effort::Fast, Effort::Balanced}) {
         const Partition partition = buildOptimizedClusters(mesh, faces, limits, 0, {}, effort);
         expectValidWithinLimits(mesh, partition, limits);
-        EXPECT_LE(disconnectedClusters(mesh, partition), meshoptPieces) << toString(effort);
+        EXPECT_EQ(partition.clusterCount, meshopt.clusterCount);
+        EXPECT_LE(disconnectedClusters(mesh, partition), disconnectedClusters(mesh, meshopt)) << toString(effort);
+        EXPECT_LE(widest(partition), widest(meshopt)) << toString(effort);
     }
 }
 
@@ -225,8 +241,9 @@ TEST(ClusterOptimizer, BeatsTheGreedyBuildersAtTheirClusterCount) {
     // meshoptimizer's (cone weight 1) at the same limits and budget, clearly so at the best effort.
     // meshoptimizer may leave a meshlet in several pieces, which packs tighter than connected
     // clusters can, so against it the best effort's count may exceed the budget by the 5% that
-    // comparisons allow. The faster levels start from meshoptimizer's meshlets at its count; above
-    // it they grow clusters, and the fast level, with no annealing, may end a little below.
+    // comparisons allow. The faster levels start from meshoptimizer's meshlets at its count or below;
+    // above it they grow clusters, and with no or two annealing sweeps may end a little below the
+    // greedy builders at such budgets.
     std::mt19937_64 random(3);
     for (const Mesh& mesh : {testmesh::torus(1.0, 0.3, 96, 48), testmesh::icosphere(5), testmesh::randomPatch(random, 60, 40.0)}) {
         const FaceGeometry faces = computeFaceGeometry(mesh);
@@ -239,7 +256,7 @@ TEST(ClusterOptimizer, BeatsTheGreedyBuildersAtTheirClusterCount) {
                 const Partition optimized = buildOptimizedClusters(mesh, faces, limits, greedy->clusterCount, {}, effort);
                 if (greedy == &meshlets || effort != Effort::Best) EXPECT_LE(optimized.clusterCount, greedy->clusterCount);
                 EXPECT_LE(double(optimized.clusterCount), 1.05 * double(greedy->clusterCount));
-                const double margin = effort == Effort::Best ? 0.01 : (effort == Effort::Fast ? -0.005 : 0.0);
+                const double margin = effort == Effort::Best ? 0.01 : -0.005;
                 EXPECT_GT(expectedCullRate(mesh, faces, optimized), expectedCullRate(mesh, faces, *greedy) + margin);
             }
     }
