@@ -82,7 +82,7 @@ void cullScalarCore(benchmark::State& state, bool large, CullTest test) {
     const CullingInput input{s.mesh, s.world, s.faces, s.bounds};
     size_t view = 0, culled = 0;
     for (auto _ : state) {
-        const std::vector<uint8_t> result = cullClusters(input, s.eyes[view++ % s.eyes.size()], test);
+        const std::vector<uint8_t> result = cullClustersExact(input, s.eyes[view++ % s.eyes.size()], test);
         culled += result[0];
         benchmark::DoNotOptimize(result.data());
     }

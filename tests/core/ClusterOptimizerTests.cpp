@@ -118,7 +118,7 @@ TEST(ClusterOptimizer, ClustersSpanSeparatePiecesOnlyAsMeshoptimizerDoes) {
             ASSERT_NE(best.clusterOfFace[f], best.clusterOfFace[g]);
     // The faster levels refine meshoptimizer's meshlets, which pack by distance across the gap:
     // never more clusters in pieces than those meshlets have, and never a wider cluster than its
-    // widest (here the pieces far from their meshlet find no room nearer: they stay).
+    // widest (the local search moves faces between touching clusters only).
     const Partition meshopt = buildMeshoptMeshlets(mesh, limits, 1.0f);
     auto widest = [&](const Partition& partition) {
         std::vector<glm::vec3> low(partition.clusterCount, glm::vec3(1e9f)), high(partition.clusterCount, glm::vec3(-1e9f));

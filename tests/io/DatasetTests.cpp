@@ -5,7 +5,6 @@
 #include <gtest/gtest.h>
 
 #include "IoTestSupport.h"
-#include "core/Pipeline.h"
 #include "io/MeshReader.h"
 
 namespace conescope {
@@ -115,32 +114,6 @@ TEST(FetchedDatasets, EveryCgalMeshLoads) {
         ++checked;
     }
     if (checked == 0) GTEST_SKIP() << "datasets/cgal/ holds no meshes";
-}
-
-}  // namespace
-}  // namespace conescope
-
-namespace conescope {
-namespace {
-
-// meshoptimizer packs its last meshlets from what is left, pieces that can lie far apart; on the
-// bundled CAD part the default clusters hand those pieces on, so the widest cluster (by its
-// bounding sphere) is narrower than meshoptimizer's widest, the partition as a whole no wider.
-TEST(BundledDatasets, DefaultClustersAreNoWiderThanMeshoptimizers) {
-    const auto mesh = std::make_shared<const Mesh>(readMesh((datasetsDir() / "fandisk.off").string()));
-    const PreparedMesh prepared = prepareMesh(mesh, "fandisk.off", false);
-    Settings meshopt;
-    meshopt.builder = Builder::Meshopt;
-    auto radii = [&](const Settings& settings) {
-        const ClusterSet clusters = buildClusters(prepared, settings);
-        double largest = 0.0, sum = 0.0;
-        for (const Sphere& sphere : clusters.bounds.spheres) largest = std::max(largest, sphere.radius), sum += sphere.radius;
-        return std::pair{largest, sum / double(clusters.bounds.count())};
-    };
-    const auto [ourLargest, ourMean] = radii(Settings{});
-    const auto [theirLargest, theirMean] = radii(meshopt);
-    EXPECT_LT(ourLargest, 0.9 * theirLargest);
-    EXPECT_LE(ourMean, theirMean);
 }
 
 }  // namespace

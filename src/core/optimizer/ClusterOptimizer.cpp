@@ -99,47 +99,15 @@ constexpr size_t kHalvesFromFaces = size_t(1) << 14;
 // dragknob, patch-13), and the second start costs little there.
 constexpr size_t kBothStartsBelowFaces = size_t(1) << 14;
 
-// A meshlet's piece farther than this many typical cluster radii from its largest piece sprawls.
-constexpr double kFarPieceRadii = 3.0;
-
-// The widest cluster: the largest diagonal of the box around a cluster's face centroids.
-double widestCluster(const std::vector<uint32_t>& clusterOfFace, uint32_t clusterCount, const FaceGeometry& faces) {
-    std::vector<glm::dvec3> low(clusterCount, glm::dvec3(std::numeric_limits<double>::max()));
-    std::vector<glm::dvec3> high(clusterCount, glm::dvec3(-std::numeric_limits<double>::max()));
-    for (size_t f = 0; f < clusterOfFace.size(); ++f) {
-        const uint32_t c = clusterOfFace[f];
-        low[c] = glm::min(low[c], faces.centroids[f]), high[c] = glm::max(high[c], faces.centroids[f]);
-    }
-    double widest = 0.0;
-    for (uint32_t c = 0; c < clusterCount; ++c)
-        if (high[c].x >= low[c].x) widest = std::max(widest, glm::length(high[c] - low[c]));
-    return widest;
-}
-
-// meshoptimizer's meshlets as a search state, reduced to the budget, or nothing when a polygon split
-// across meshlets makes one hold more than the limits (the search keeps limits, it does not restore
-// them). meshoptimizer packs its last meshlets from what is left, pieces that can lie far apart:
-// those far pieces go to their neighbours where they have room, or become clusters of their own
-// (absorbFarPieces), and the reduction gets the count back down, which keeps clusters compact for
-// frustum and occlusion culling. Where it cannot, or its merges across gaps leave a cluster wider
-// than meshoptimizer's widest, the meshlets are taken as they are. (Handing every smaller piece on,
-// near ones too, widened the neighbours' cones more than it saved: measured on CGAL's cheese.)
+// meshoptimizer's meshlets as a search state, or nothing when a polygon split across meshlets
+// makes one hold more than the limits (the search keeps limits, it does not restore them). Their
+// pieces stay together: handing a meshlet's smaller pieces to neighbours with room (measured on
+// CGAL's cheese) widened those neighbours' cones more than it saved.
 std::unique_ptr<optimizer::State> meshletStart(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits,
-                                                const Partition& meshlets, size_t target) {
+                                                const Partition& meshlets) {
     auto state = std::make_unique<optimizer::State>(mesh, faces, limits);
     optimizer::assign(*state, meshlets);
-    if (!withinLimits(*state)) return nullptr;
-    double area = 0.0;
-    for (double a : faces.areas) area += a;
-    const double typicalRadius = std::sqrt(area / double(std::max<uint32_t>(meshlets.clusterCount, 1)) / M_PI);
-    optimizer::absorbFarPieces(*state, kFarPieceRadii * typicalRadius);
-    optimizer::reduceTo(*state, target);
-    if (state->liveClusters <= target &&
-        widestCluster(state->clusterOf, uint32_t(state->clusters.size()), faces) < widestCluster(meshlets.clusterOfFace, meshlets.clusterCount, faces))
-        return state;
-    state = std::make_unique<optimizer::State>(mesh, faces, limits);
-    optimizer::assign(*state, meshlets);
-    optimizer::reduceTo(*state, target);
+    if (!withinLimits(*state)) state.reset();
     return state;
 }
 
@@ -152,7 +120,7 @@ std::unique_ptr<optimizer::State> meshletStart(const Mesh& mesh, const FaceGeome
 Partition optimizeClusters(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits, size_t target,
                            const SearchPlan& plan, size_t sweeps, const Partition* meshlets) {
     std::unique_ptr<optimizer::State> packed;
-    if (!plan.growthStart && meshlets && (packed = meshletStart(mesh, faces, limits, *meshlets, target))) {
+    if (!plan.growthStart && meshlets && (packed = meshletStart(mesh, faces, limits, *meshlets))) {
         reduceAndSearch(*packed, target, sweeps);
         if (packed->liveClusters <= target) return optimizer::result(*packed);
     }
@@ -166,7 +134,7 @@ Partition optimizeClusters(const Mesh& mesh, const FaceGeometry& faces, const Me
     reduceAndSearch(state, target, sweeps);
     const bool small = mesh.faceCount() < kBothStartsBelowFaces;
     if (!plan.growthStart || (state.liveClusters <= target && !small) || !meshoptTakesLimits(limits)) return optimizer::result(state);
-    packed = meshletStart(mesh, faces, limits, meshlets ? *meshlets : buildMeshoptMeshlets(mesh, limits, 1.0f), target);
+    packed = meshletStart(mesh, faces, limits, meshlets ? *meshlets : buildMeshoptMeshlets(mesh, limits, 1.0f));
     if (!packed) return optimizer::result(state);
     reduceAndSearch(*packed, target, sweeps);
     return optimizer::result(closerToTheBudget(*packed, state, target) ? *packed : state);

@@ -111,25 +111,24 @@ void recomputeTouchedCaps(State& state) {
     for (uint32_t c : state.members) state.clusters[c].cap = state.clusters[c].faces.empty() ? Cap{} : exactCap(state, c);
 }
 
-// Empties a cluster of the faces `leaving` (all of its faces, or a piece of it) by handing each,
-// from the cluster's border inwards, to the neighbouring cluster where the objective loses least;
-// a full neighbour first passes one of its own border faces on. Caps are grown approximately on
-// the way and recomputed at the end. Undone (returns false) if some face finds no room.
-bool dissolveFaces(State& state, uint32_t cluster, const std::vector<uint32_t>& leaving) {
+// Empties a cluster by handing each of its faces, from its border inwards, to the neighbouring
+// cluster where the objective loses least; a full neighbour first passes one of its own border
+// faces on. Caps are grown approximately on the way and recomputed at the end. Undone (returns
+// false) if some face finds no room.
+bool dissolve(State& state, uint32_t cluster) {
+    if (state.clusters[cluster].faces.empty()) return false;
     state.undo.clear();
     std::vector<uint32_t>& queue = state.queue;
-    size_t left = leaving.size();
     uint32_t queued = 0;  // faceStamp of faces in the queue (other checks may overwrite some: harmless)
     auto refill = [&]() {
         queued = ++state.stamp;
         queue.clear();
-        for (uint32_t f : leaving)
+        for (uint32_t f : state.clusters[cluster].faces)
             for (const uint32_t* g = state.acrossEdge.begin(f); g != state.acrossEdge.end(f); ++g)
-                if (state.clusterOf[f] == cluster && state.clusterOf[*g] != cluster && state.faceStamp[f] != queued)
-                    state.faceStamp[f] = queued, queue.push_back(f);
+                if (state.clusterOf[*g] != cluster && state.faceStamp[f] != queued) state.faceStamp[f] = queued, queue.push_back(f);
     };
     refill();
-    for (int round = 0; round < 4 && left > 0; ++round) {
+    for (int round = 0; round < 4 && !state.clusters[cluster].faces.empty(); ++round) {
         const bool pushing = round >= 2;  // plain moves everywhere first, then make room
         for (size_t i = 0; i < queue.size(); ++i) {
             const uint32_t face = queue[i];
@@ -143,25 +142,17 @@ bool dissolveFaces(State& state, uint32_t cluster, const std::vector<uint32_t>& 
             if (bestTarget == kNone) continue;
             state.undo.emplace_back(face, cluster);
             moveGrowingCap(state, face, bestTarget);
-            --left;
-            // Its neighbours in the cluster are next in line (a piece's are of the same piece).
             for (const uint32_t* g = state.acrossEdge.begin(face); g != state.acrossEdge.end(face); ++g)
                 if (state.clusterOf[*g] == cluster && state.faceStamp[*g] != queued) state.faceStamp[*g] = queued, queue.push_back(*g);
         }
         refill();
     }
-    if (left > 0)
+    const bool emptied = state.clusters[cluster].faces.empty();
+    if (!emptied)
         for (size_t i = state.undo.size(); i-- > 0;) move(state, state.undo[i].first, state.undo[i].second);
     recomputeTouchedCaps(state);
-    if (state.clusters[cluster].faces.empty()) --state.liveClusters;
-    return left == 0;
-}
-
-// The whole cluster, face by face (dissolveFaces).
-bool dissolve(State& state, uint32_t cluster) {
-    if (state.clusters[cluster].faces.empty()) return false;
-    state.leaving = state.clusters[cluster].faces;
-    return dissolveFaces(state, cluster, state.leaving);
+    if (emptied) --state.liveClusters;
+    return emptied;
 }
 
 // The two faces of state.pool farthest apart, roughly: the one farthest from the pool's centre,
@@ -472,58 +463,6 @@ void dissolveSmallest(State& state, size_t target) {
 }
 
 }  // namespace
-
-void absorbFarPieces(State& state, double reach) {
-    // Pieces: faces joined across the edges inside their cluster (union-find, named by the root).
-    std::vector<uint32_t> parent(state.faceCount);
-    for (uint32_t f = 0; f < state.faceCount; ++f) parent[f] = f;
-    auto root = [&](uint32_t f) {
-        while (parent[f] != f) f = parent[f] = parent[parent[f]];
-        return f;
-    };
-    for (uint32_t f = 0; f < state.faceCount; ++f)
-        for (const uint32_t* g = state.acrossEdge.begin(f); g != state.acrossEdge.end(f); ++g)
-            if (state.clusterOf[*g] == state.clusterOf[f]) {
-                const uint32_t a = root(f), b = root(*g);
-                if (a != b) parent[std::max(a, b)] = std::min(a, b);
-            }
-    // Each piece's triangles and centre; each cluster's largest piece.
-    std::vector<double> triangles(state.faceCount, 0.0);
-    std::vector<glm::dvec3> centre(state.faceCount, glm::dvec3(0.0));
-    for (uint32_t f = 0; f < state.faceCount; ++f) {
-        const uint32_t r = root(f);
-        triangles[r] += state.faceTriangles[f];
-        centre[r] += double(state.faceTriangles[f]) * state.geometry.centroids[f];
-    }
-    std::vector<uint32_t> largest(state.clusters.size(), kNone);
-    for (uint32_t f = 0; f < state.faceCount; ++f) {
-        if (root(f) != f) continue;
-        uint32_t& kept = largest[state.clusterOf[f]];
-        if (kept == kNone || triangles[f] > triangles[kept]) kept = f;
-    }
-    auto centreOf = [&](uint32_t r) { return triangles[r] > 0.0 ? centre[r] / triangles[r] : centre[r]; };
-    // The far pieces, smallest first (they fit most easily), each dissolved into its neighbours.
-    std::vector<uint32_t> far;
-    for (uint32_t f = 0; f < state.faceCount; ++f)
-        if (root(f) == f && largest[state.clusterOf[f]] != f &&
-            glm::length(centreOf(f) - centreOf(largest[state.clusterOf[f]])) > reach)
-            far.push_back(f);
-    std::stable_sort(far.begin(), far.end(), [&](uint32_t a, uint32_t b) { return triangles[a] < triangles[b]; });
-    for (uint32_t piece : far) {
-        state.leaving.clear();
-        const uint32_t cluster = state.clusterOf[piece];
-        for (uint32_t f : state.clusters[cluster].faces)
-            if (root(f) == piece) state.leaving.push_back(f);
-        if (dissolveFaces(state, cluster, state.leaving)) continue;
-        // No room around it: a cluster of its own (the caller reduces the count again).
-        state.clusters.emplace_back();
-        const uint32_t alone = uint32_t(state.clusters.size() - 1);
-        for (uint32_t f : state.leaving) move(state, f, alone);
-        state.clusters[alone].cap = exactCap(state, alone);
-        state.clusters[cluster].cap = exactCap(state, cluster);
-        ++state.liveClusters;
-    }
-}
 
 void reduceTo(State& state, size_t target) {
     dissolveSmallest(state, target);

@@ -46,7 +46,7 @@ struct State {
     std::vector<uint32_t> faceStamp, vertexStamp, faceMark;
     uint32_t stamp = 0;
     std::vector<glm::dvec3> gathered;  // normals for a cap (gatherNormals)
-    std::vector<uint32_t> walk, queue, members, neighbours, pool, bestPool, bestHalf, leaving;
+    std::vector<uint32_t> walk, queue, members, neighbours, pool, bestPool, bestHalf;
     std::vector<std::pair<uint32_t, uint32_t>> undo;  // (face, cluster it came from)
     struct Corner {
         uint32_t users = 0;  // faces of a cluster using a corner: 0, 1 or 2 (two or more)

@@ -16,12 +16,6 @@ void grow(State& state, double triangleCap);
 // `target` are left (or no step gets further).
 void reduceTo(State& state, size_t target);
 
-// Reduction.cpp: a cluster in several pieces across edges (meshoptimizer packs its last meshlets
-// from what is left, which can lie far apart) gives each piece whose centre lies farther than
-// `reach` from its largest piece's to its neighbours where they have room, and makes it a cluster
-// of its own where they have none: the count may then be above what it was (reduce it after).
-void absorbFarPieces(State& state, double reach);
-
 // LocalSearch.cpp: border faces moved to the neighbouring cluster where the objective gains, until
 // no move gains (or a pass limit).
 void refine(State& state);
