@@ -243,8 +243,9 @@ void writeSummary(const SummaryInputs& in, const std::string& markdownPath, cons
     md << " | **" << formatNumber(fixed.geometricMean, 3) << "** | **" << formatNumber(ratio, 2) << "x** | | | |\n\n";
 
     md << "## Targets\n\n";
-    md << "- geometric-mean efficiency >= 1.25x meshoptimizer's apex test: " << formatNumber(ratio, 2) << "x -> "
-       << (ratio >= 1.25 ? "**met**" : "**not met**") << "\n";
+    md << "- geometric-mean efficiency over these meshes against meshoptimizer's apex test: " << formatNumber(ratio, 2)
+       << "x (the >= 1.30x target is over every CGAL demo mesh at the default effort: "
+          "`scripts/bench-all-meshes.sh`, bench/results/all-meshes.md)\n";
     md << "- better on every mesh: " << meshesBetter << " of " << in.meshes.size() << " -> "
        << (meshesBetter == in.meshes.size() ? "**met**" : "**not met**") << "\n";
     size_t ourFalse = 0, theirFalse = 0;
