@@ -24,7 +24,8 @@
 #endif
 #endif
 
-// Why the float tests are conservative (u = 2^-24, M = maxCoordinate + max |eye coordinate|, all
+// Why the float tests are conservative (u = 2^-24, M = the cluster's largest coordinate (its centre
+// plus radius, its apex) + max |eye coordinate|, all
 // vectors measured against the exact double data of ClusterBounds):
 //  - storing the eye, a centre or an apex in float and subtracting moves the view vector v by at
 //    most ~5.3 u M; the stored axis is off by at most sqrt(3) u per unit length;
@@ -59,15 +60,15 @@ float roundDown(double value) {
 
 double maxAbs(const glm::dvec3& v) { return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}); }
 
-// What every lane of one call shares: the eye in float and the absolute slack for its position.
+// What every lane of one call shares: the eye in float and the eye's part of the absolute slack
+// (each cluster adds its own part, ClusterBatch::slack).
 struct EyeConstants {
     float x, y, z;
     float absoluteSlack;
 };
 
-EyeConstants eyeConstants(const ClusterBatch& batch, const glm::dvec3& eye) {
-    const double magnitude = batch.maxCoordinate + maxAbs(eye);
-    return {float(eye.x), float(eye.y), float(eye.z), roundUp(kBatchAbsoluteSlack * magnitude)};
+EyeConstants eyeConstants(const glm::dvec3& eye) {
+    return {float(eye.x), float(eye.y), float(eye.z), roundUp(kBatchAbsoluteSlack * maxAbs(eye))};
 }
 
 // Byte k of entry m is bit k of m: turns a SIMD comparison mask into 0/1 bytes with one store.
@@ -179,7 +180,7 @@ inline View<Lanes> viewTo(const ClusterBatch& batch, const std::vector<float>& p
     const F vz = Lanes::load(&pointZ[i]) - eye.z;
     const F along = vx * Lanes::load(&batch.axisX[i]) + vy * Lanes::load(&batch.axisY[i]) + vz * Lanes::load(&batch.axisZ[i]);
     const F length = Lanes::sqrt(vx * vx + vy * vy + vz * vz);
-    return {along, length, eye.relative * length + eye.slack};
+    return {along, length, eye.relative * length + eye.slack + Lanes::load(&batch.slack[i])};
 }
 
 // Runs a test over all clusters, a lane group at a time: `test(view, i)` gives the mask of the
@@ -233,7 +234,7 @@ inline void octagonKernel(const ClusterBatch& batch, const EyeConstants& constan
         const F vx = field(0) - eye.x;
         const F vy = field(1) - eye.y;
         const F vz = field(2) - eye.z;
-        const F error = eye.relative * Lanes::sqrt(vx * vx + vy * vy + vz * vz) + eye.slack;
+        const F error = eye.relative * Lanes::sqrt(vx * vx + vy * vy + vz * vz) + eye.slack + field(ClusterBatch::kOctagonFields - 1);
         auto edgeSeesBack = [&](size_t k) { return Lanes::greater(vx * field(3 + 3 * k) + vy * field(4 + 3 * k) + vz * field(5 + 3 * k), error); };
         auto all = Lanes::both(edgeSeesBack(0), edgeSeesBack(1));
         for (size_t k = 2; k < 8; ++k) all = Lanes::both(all, edgeSeesBack(k));
@@ -275,7 +276,7 @@ __attribute__((noinline, flatten, target("avx2"))) void runAvx2(Kernel kernel, c
 
 void dispatch(Kernel kernel, const ClusterBatch& batch, const glm::dvec3& eye, uint8_t* culled, SimdLevel level) {
     if (batch.count == 0) return;
-    const EyeConstants constants = eyeConstants(batch, eye);
+    const EyeConstants constants = eyeConstants(eye);
     level = std::min(level, bestSimdLevel());
 #ifdef CONESCOPE_BATCH_X86
 #ifdef CONESCOPE_BATCH_AVX2
@@ -298,7 +299,7 @@ ClusterBatch makeClusterBatch(const ClusterBounds& bounds) {
         column->assign(padded, 0.0f);
     batch.octagonBlocks.assign(padded * ClusterBatch::kOctagonFields, 0.0f);
     batch.sinHalfAngle.assign(padded, kNeverCulledSin);
-    double maxCoordinate = 0.0;
+    batch.slack.assign(padded, 0.0f);
     for (size_t c = 0; c < batch.count; ++c) {
         const ConeOfNormals& cone = bounds.cones[c];
         const Sphere& sphere = bounds.spheres[c];
@@ -312,7 +313,9 @@ ClusterBatch makeClusterBatch(const ClusterBounds& bounds) {
         batch.apexZ[c] = float(apex.z);
         // A cluster that cannot be culled keeps the zero axis and the threshold of 2.
         if (!cone.cullable || !(cone.cosHalfAngle > 0.0)) continue;
-        maxCoordinate = std::max({maxCoordinate, maxAbs(sphere.center) + sphere.radius, maxAbs(apex)});
+        // This cluster's part of the absolute slack: a cluster far from the origin (or an apex pushed
+        // far by a face nearly edge-on to the axis) loosens its own test only.
+        batch.slack[c] = roundUp(kBatchAbsoluteSlack * std::max(maxAbs(sphere.center) + sphere.radius, maxAbs(apex)));
         batch.axisX[c] = float(cone.axis.x);
         batch.axisY[c] = float(cone.axis.y);
         batch.axisZ[c] = float(cone.axis.z);
@@ -329,8 +332,8 @@ ClusterBatch makeClusterBatch(const ClusterBounds& bounds) {
         for (size_t k = 0; k < 8; ++k) points[k + 1] = &octagon.edges[k];
         for (size_t p = 0; p < 9; ++p)
             for (int axis = 0; axis < 3; ++axis) block[8 * (3 * p + axis)] = float((*points[p])[axis]);
+        block[8 * (ClusterBatch::kOctagonFields - 1)] = batch.slack[c];
     }
-    batch.maxCoordinate = maxCoordinate;
     return batch;
 }
 

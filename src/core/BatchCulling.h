@@ -5,7 +5,8 @@
 // rounding slack is added to every comparison, so a batched test culls a cluster only when the same
 // test on the exact (double) bounds would cull it too, minus a sliver of clusters right at its
 // threshold. The slack has a relative part (kBatchRelativeSlack times the eye distance) and an
-// absolute part (kBatchAbsoluteSlack times the largest coordinate in play); the error bound they
+// absolute part (kBatchAbsoluteSlack times the largest coordinate of the eye and of the cluster's
+// own centre and apex); the error bound they
 // come from is worked out at the top of BatchCulling.cpp.
 #pragma once
 
@@ -38,13 +39,14 @@ struct ClusterBatch {
     std::vector<float> centerX, centerY, centerZ;
     std::vector<float> radius;                  // rounded up
     std::vector<float> apexX, apexY, apexZ;
-    // The octagon test's apex and eight unit edges (zero for a cluster that is not cullable), all
-    // of a group of 8 clusters together: field f of cluster c at [c / 8 * 27 * 8 + f * 8 + c % 8],
-    // fields apex x, y, z, then x, y, z of each edge. One stream of loads instead of 27.
-    static constexpr size_t kOctagonFields = 27;
+    // The octagon test's apex, eight unit edges and slack (zero for a cluster that is not cullable),
+    // all of a group of 8 clusters together: field f of cluster c at [c / 8 * 28 * 8 + f * 8 + c % 8],
+    // fields apex x, y, z, then x, y, z of each edge, then the slack. One stream of loads, not 28.
+    static constexpr size_t kOctagonFields = 28;
     std::vector<float> octagonBlocks;
-    // Largest |coordinate| of any centre (plus its radius) or apex: scales the absolute slack.
-    double maxCoordinate = 0.0;
+    // Each cluster's part of the absolute slack: kBatchAbsoluteSlack times the largest |coordinate|
+    // of its centre (plus its radius) or apex, rounded up (the eye adds its own part per call).
+    std::vector<float> slack;
 
     size_t paddedCount() const { return axisX.size(); }
 };
