@@ -121,7 +121,7 @@ ClusterBounds computeClusterBounds(const Mesh& mesh, const std::vector<glm::vec3
     bounds.octagons.resize(clusterCount);
     // Clusters are bounded independently, in consecutive pieces on all cores; each piece lists its
     // clusters' vertices on its own, and the lists are joined in cluster order afterwards.
-    const size_t pieces = piecesFor(clusterCount, 1024);
+    const size_t pieces = piecesFor(clusterCount, 64);
     std::vector<std::vector<uint32_t>> pieceVertexIds(pieces);
     forEachInParallel(pieces, [&](size_t piece, size_t) {
         const size_t begin = pieceBegin(clusterCount, pieces, piece), end = pieceBegin(clusterCount, pieces, piece + 1);
