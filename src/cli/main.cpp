@@ -101,7 +101,7 @@ int main(int argc, char** argv) {
     for (const std::string& key : conescope::configurationKeys()) keys += (keys.empty() ? "" : ", ") + key;
     compareCommand->add_option("--a", compare.a, "A's options on top of the common ones, as K=V[,K=V...] with K one of: " + keys)
         ->required();
-    compareCommand->add_option("--b", compare.b, "B's options, as for --a (empty: the common options)")->required();
+    compareCommand->add_option("--b", compare.b, "B's options, as for --a (default: none, so B is the common options)");
     addBuilderOptions(*compareCommand, compare.run);
     addCullingOptions(*compareCommand, compare.run);
     compareCommand->add_option("--format", compare.format,

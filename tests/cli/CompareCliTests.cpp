@@ -77,6 +77,15 @@ TEST(CliCompare, SameConfigurationDiffersNowhere) {
     EXPECT_TRUE(diff["cluster_count_warning"].is_null());
 }
 
+// Without --b, B is the plain run of the common options: the question a user asks most.
+TEST(CliCompare, WithoutBTheCommonOptionsAreB) {
+    const std::string mesh = dataset("torus.off");
+    const nlohmann::json json = runCompareJson({mesh, "--views", "6", "--a", "builder=meshopt,cone=meshopt,test=apex"});
+    expectSame(json["b"], runStatsJson({mesh, "--views", "6"}));
+    EXPECT_EQ(json["diff"]["test_a"], "apex");
+    EXPECT_EQ(json["diff"]["test_b"], "octagon");
+}
+
 // An imported partition is a side like any other, a path with a comma in it included; one eye is one row.
 TEST(CliCompare, AClusterFileSideIsTheStatsRunOfThatFile) {
     const std::string mesh = dataset("torus.off");
