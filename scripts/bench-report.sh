@@ -41,7 +41,9 @@ if [[ $quick -eq 1 ]]; then
 fi
 
 start=$(date +%s)
-"$bin/conescope-bench-report" --meshes "$root/datasets/cgal" --output "$output" --jobs "$(nproc)" "${report_flags[@]}"
+# From the source directory, so that the command the report records reads the same on every machine.
+(cd "$root" && "$bin/conescope-bench-report" --meshes datasets/cgal --output "$(realpath --relative-to="$root" "$output")" \
+  --jobs "$(nproc)" "${report_flags[@]}")
 echo "bench-report: report took $(( $(date +%s) - start )) s" >&2
 
 xvfb-run -a -s "-screen 0 1600x1000x24" "$bin/conescope-bench-plot" "$output/summary.csv" "$output/efficiency.png"
