@@ -111,6 +111,27 @@ std::string readErrorMessage(const std::string& path) {
     return "";
 }
 
+void replaceFirst(std::string& text, const std::string& from, const std::string& to) {
+    size_t position = text.find(from);
+    ASSERT_NE(position, std::string::npos) << from;
+    text.replace(position, from.size(), to);
+}
+
+void replaceLast(std::string& text, const std::string& from, const std::string& to) {
+    size_t position = text.rfind(from);
+    ASSERT_NE(position, std::string::npos) << from;
+    text.replace(position, from.size(), to);
+}
+
+void expectErrorWhenReplaced(const std::string& sample, const std::string& from, const std::string& to,
+                             const std::string& fragment) {
+    SCOPED_TRACE(sample + ": '" + from + "' -> '" + to + "'");
+    std::string text = fileBytes(formatSamplesDir() / sample);
+    replaceFirst(text, from, to);
+    ScratchDirectory scratch;
+    EXPECT_READ_ERROR(scratch.writeFile(sample, text), fragment);
+}
+
 glm::dvec3 unitFaceNormal(const Mesh& mesh, size_t face) {
     return glm::normalize(newellNormal(mesh.positions.data(), mesh.faceBegin(face), mesh.faceSize(face)));
 }

@@ -69,6 +69,15 @@ void appendBinaryFloat(std::string& out, float value, bool bigEndian);
 // throws nothing or another type.
 std::string readErrorMessage(const std::string& path);
 
+// Replaces the first (or last) occurrence of `from` in text, failing the test if there is none.
+void replaceFirst(std::string& text, const std::string& from, const std::string& to);
+void replaceLast(std::string& text, const std::string& from, const std::string& to);
+
+// Reading a sample of tests/data/formats with the first `from` replaced by `to` must fail with a
+// message naming the file and holding `fragment`.
+void expectErrorWhenReplaced(const std::string& sample, const std::string& from, const std::string& to,
+                             const std::string& fragment);
+
 // Unit normal of face f by Newell's method (the core's definition).
 glm::dvec3 unitFaceNormal(const Mesh& mesh, size_t face);
 
