@@ -14,12 +14,15 @@
 #include <unordered_map>
 
 #include "Adjacency.h"
+#include "MeshoptMeshlets.h"
 #include "Parallel.h"
 
 namespace conescope {
 
 namespace {
 constexpr uint32_t kUnassigned = std::numeric_limits<uint32_t>::max();
+// meshoptimizer's builder is reproduced (MeshoptMeshlets.h) for the version it was made from.
+constexpr bool kMeshoptReproduced = MESHOPTIMIZER_VERSION == kReproducedMeshoptVersion;
 
 }  // namespace
 
@@ -228,6 +231,17 @@ void requireMeshoptLimits(const MeshletLimits& limits) {
                                     std::to_string(limits.maxVertices) + "/" + std::to_string(limits.maxTriangles) + ")");
 }
 
+// meshoptimizer's builder leaves triangles unplaced when its k-d tree finds none nearer than the
+// float range (centres near 3e38); such a face goes with the face before it (the first with cluster 0).
+std::vector<uint32_t> giveUnplacedFacesACluster(std::vector<uint32_t> clusterOfFace) {
+    uint32_t last = 0;
+    for (uint32_t& id : clusterOfFace) {
+        if (id == kUnassigned) id = last;
+        last = id;
+    }
+    return clusterOfFace;
+}
+
 // The faces as fan triangles, in face order: what meshoptimizer's builder takes.
 std::vector<uint32_t> fanTriangles(const Mesh& mesh) {
     std::vector<uint32_t> indices;
@@ -249,6 +263,10 @@ size_t meshoptMeshletCount(const Mesh& mesh, const MeshletLimits& limits, float 
     requireMeshoptLimits(limits);
     const std::vector<uint32_t> indices = fanTriangles(mesh);
     if (indices.empty()) return 0;
+    if (kMeshoptReproduced)
+        return reproduceMeshoptMeshlets(indices.data(), indices.size(), &mesh.positions[0].x, mesh.positions.size(), sizeof(glm::vec3),
+                                        limits.maxVertices, limits.maxTriangles, coneWeight)
+            .count;
     const size_t maxMeshlets = meshopt_buildMeshletsBound(indices.size(), limits.maxVertices, limits.maxTriangles);
     std::vector<meshopt_Meshlet> meshlets(maxMeshlets);
     std::vector<unsigned int> meshletVertices(maxMeshlets * limits.maxVertices);
@@ -259,6 +277,22 @@ size_t meshoptMeshletCount(const Mesh& mesh, const MeshletLimits& limits, float 
 }
 
 Partition buildMeshoptMeshlets(const Mesh& mesh, const MeshletLimits& limits, float coneWeight) {
+    if (!kMeshoptReproduced) return meshoptLibraryMeshlets(mesh, limits, coneWeight);
+    requireMeshoptLimits(limits);
+    const std::vector<uint32_t> indices = fanTriangles(mesh);
+    if (indices.empty()) return renumberClusters(std::vector<uint32_t>(mesh.faceCount(), 0));
+    const MeshoptMeshlets meshlets = reproduceMeshoptMeshlets(indices.data(), indices.size(), &mesh.positions[0].x, mesh.positions.size(),
+                                                              sizeof(glm::vec3), limits.maxVertices, limits.maxTriangles, coneWeight);
+    // A polygon goes with the first meshlet holding one of its fan triangles.
+    std::vector<uint32_t> clusterOfFace(mesh.faceCount(), kUnassigned);
+    size_t triangle = 0;
+    for (size_t f = 0; f < mesh.faceCount(); ++f)
+        for (size_t k = 1; k + 1 < mesh.faceSize(f); ++k, ++triangle)
+            clusterOfFace[f] = std::min(clusterOfFace[f], meshlets.meshletOfTriangle[triangle]);
+    return renumberClusters(giveUnplacedFacesACluster(std::move(clusterOfFace)));
+}
+
+Partition meshoptLibraryMeshlets(const Mesh& mesh, const MeshletLimits& limits, float coneWeight) {
     requireMeshoptLimits(limits);
     // Fan triangulation; which face each triangle came from is found again below, among the faces
     // around its corners, which another core lists while meshoptimizer works.
@@ -324,13 +358,7 @@ Partition buildMeshoptMeshlets(const Mesh& mesh, const MeshletLimits& limits, fl
             uint32_t& cluster = clusterOfFace[faceOfTriangle[triangle]];
             if (cluster == kUnassigned) cluster = uint32_t(m);
         }
-    // meshoptimizer drops nothing but fully degenerate index triples may not come back; give them a cluster.
-    uint32_t last = 0;
-    for (uint32_t& id : clusterOfFace) {
-        if (id == kUnassigned) id = last;
-        last = id;
-    }
-    return renumberClusters(std::move(clusterOfFace));
+    return renumberClusters(giveUnplacedFacesACluster(std::move(clusterOfFace)));
 }
 
 Partition partitionFromIds(const std::vector<double>& ids, size_t faceCount, const std::string& source) {

@@ -29,9 +29,13 @@ Partition buildMeshlets(const Mesh& mesh, const FaceGeometry& faces, const Meshl
 Partition buildKMeans(const Mesh& mesh, const FaceGeometry& faces, size_t clusterCount, double normalWeight = 1.0,
                       size_t iterations = 12, uint64_t seed = 1);
 
-// meshoptimizer's meshopt_buildMeshlets on the fan triangulation. A polygon goes to the meshlet
-// holding its first fan triangle.
+// meshoptimizer's meshopt_buildMeshlets on the fan triangulation. A polygon goes to the first
+// meshlet holding one of its fan triangles. Made by reproduceMeshoptMeshlets (MeshoptMeshlets.h)
+// where it reproduces the linked library, else by the library (meshoptLibraryMeshlets).
 Partition buildMeshoptMeshlets(const Mesh& mesh, const MeshletLimits& limits, float coneWeight);
+// The same from the library itself, its output triangles matched back to faces by their corners
+// (of faces with the same corners, each takes the next one not yet matched).
+Partition meshoptLibraryMeshlets(const Mesh& mesh, const MeshletLimits& limits, float coneWeight);
 // How many meshlets buildMeshoptMeshlets makes, without mapping them back to faces (the default
 // budget of the optimized builder). Throws std::invalid_argument as buildMeshoptMeshlets does.
 size_t meshoptMeshletCount(const Mesh& mesh, const MeshletLimits& limits, float coneWeight);

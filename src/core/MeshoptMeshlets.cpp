@@ -1,0 +1,407 @@
+// meshopt_buildMeshlets of meshoptimizer 0.18 (MIT licence, (c) Arseny Kapoulkine), made again.
+//
+// The library places one triangle at a time. For each it visits every triangle around every vertex
+// of the meshlet being built (about a hundred visits), ranks them by how many vertices they would
+// add (a triangle left alone at a vertex ranks just after one that adds none) and then by a cone
+// score, and keeps the first best; when the best does not fit, the meshlet is closed and the next
+// one starts with it; when there is none, a k-d tree gives the unplaced triangle nearest to the
+// meshlet's centre. Here the triangles around the meshlet are kept in five buckets by that rank,
+// updated as vertices join the meshlet and vertices lose their last triangles, so a step scores
+// only the lowest non-empty bucket (a few dozen triangles) and breaks ties by what the library's
+// visiting order would have met first. Everything that decides (normals, centres, the score, the
+// tree) is the library's float arithmetic in the library's order; this file is compiled without
+// contracted multiply-adds so that the compiler keeps it so. A score that is not a number (from
+// coordinates near the float range) makes that step visit like the library does.
+#include "MeshoptMeshlets.h"
+
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+
+namespace conescope {
+
+namespace {
+
+constexpr uint32_t kNone = ~0u;
+constexpr uint8_t kUnused = 0xff;  // used[v]: the vertex is not in the meshlet
+constexpr int kRanks = 5;          // 0: adds no vertex, 1: left alone at a vertex, 2..4: adds 1..3
+
+struct Cone {
+    float px, py, pz;
+    float nx, ny, nz;
+};
+
+// --- meshoptimizer's own pieces, unchanged in arithmetic -------------------------------------
+
+float meshletScore(float distance2, float spread, float coneWeight, float expectedRadius) {
+    float cone = 1.f - spread * coneWeight;
+    float coneClamped = cone < 1e-3f ? 1e-3f : cone;
+    return (1 + sqrtf(distance2) / expectedRadius * (1 - coneWeight)) * coneClamped;
+}
+
+Cone meshletCone(const Cone& acc, unsigned int triangleCount) {
+    Cone result = acc;
+    float centerScale = triangleCount == 0 ? 0.f : 1.f / float(triangleCount);
+    result.px *= centerScale;
+    result.py *= centerScale;
+    result.pz *= centerScale;
+    float axisLength = result.nx * result.nx + result.ny * result.ny + result.nz * result.nz;
+    float axisScale = axisLength == 0.f ? 0.f : 1.f / sqrtf(axisLength);
+    result.nx *= axisScale;
+    result.ny *= axisScale;
+    result.nz *= axisScale;
+    return result;
+}
+
+// Each triangle's centre and unit normal; returns the mesh's area (twice it, as the library sums).
+float triangleCones(Cone* triangles, const uint32_t* indices, size_t triangleCount, const float* positions, size_t strideFloats) {
+    float meshArea = 0;
+    for (size_t i = 0; i < triangleCount; ++i) {
+        const float* p0 = positions + strideFloats * indices[i * 3 + 0];
+        const float* p1 = positions + strideFloats * indices[i * 3 + 1];
+        const float* p2 = positions + strideFloats * indices[i * 3 + 2];
+        float p10[3] = {p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2]};
+        float p20[3] = {p2[0] - p0[0], p2[1] - p0[1], p2[2] - p0[2]};
+        float normalx = p10[1] * p20[2] - p10[2] * p20[1];
+        float normaly = p10[2] * p20[0] - p10[0] * p20[2];
+        float normalz = p10[0] * p20[1] - p10[1] * p20[0];
+        float area = sqrtf(normalx * normalx + normaly * normaly + normalz * normalz);
+        float invarea = (area == 0.f) ? 0.f : 1.f / area;
+        triangles[i].px = (p0[0] + p1[0] + p2[0]) / 3.f;
+        triangles[i].py = (p0[1] + p1[1] + p2[1]) / 3.f;
+        triangles[i].pz = (p0[2] + p1[2] + p2[2]) / 3.f;
+        triangles[i].nx = normalx * invarea;
+        triangles[i].ny = normaly * invarea;
+        triangles[i].nz = normalz * invarea;
+        meshArea += area;
+    }
+    return meshArea;
+}
+
+// The k-d tree over triangle centres: branches split at the mean of the axis of largest variance,
+// leaves hold up to 8 points and list them in the nodes that follow.
+struct KdNode {
+    union {
+        float split;
+        unsigned int index;
+    };
+    unsigned int axis : 2;  // 3: leaf
+    unsigned int children : 30;
+};
+
+size_t kdPartition(unsigned int* indices, size_t count, const float* points, size_t stride, unsigned int axis, float pivot) {
+    size_t m = 0;
+    for (size_t i = 0; i < count; ++i) {
+        float v = points[indices[i] * stride + axis];
+        unsigned int t = indices[m];
+        indices[m] = indices[i];
+        indices[i] = t;
+        m += v < pivot;
+    }
+    return m;
+}
+
+size_t kdBuildLeaf(size_t offset, KdNode* nodes, unsigned int* indices, size_t count) {
+    KdNode& result = nodes[offset];
+    result.index = indices[0];
+    result.axis = 3;
+    result.children = unsigned(count - 1);
+    for (size_t i = 1; i < count; ++i) {
+        KdNode& tail = nodes[offset + i];
+        tail.index = indices[i];
+        tail.axis = 3;
+        tail.children = ~0u >> 2;
+    }
+    return offset + count;
+}
+
+size_t kdBuild(size_t offset, KdNode* nodes, const float* points, size_t stride, unsigned int* indices, size_t count, size_t leafSize) {
+    if (count <= leafSize) return kdBuildLeaf(offset, nodes, indices, count);
+    float mean[3] = {};
+    float vars[3] = {};
+    float runc = 1, runs = 1;
+    // Welford's running mean and variance, as the library computes them
+    for (size_t i = 0; i < count; ++i, runc += 1.f, runs = 1.f / runc) {
+        const float* point = points + indices[i] * stride;
+        for (int k = 0; k < 3; ++k) {
+            float delta = point[k] - mean[k];
+            mean[k] += delta * runs;
+            vars[k] += delta * (point[k] - mean[k]);
+        }
+    }
+    unsigned int axis = vars[0] >= vars[1] && vars[0] >= vars[2] ? 0 : vars[1] >= vars[2] ? 1 : 2;
+    float split = mean[axis];
+    size_t middle = kdPartition(indices, count, points, stride, axis, split);
+    if (middle <= leafSize / 2 || middle >= count - leafSize / 2) return kdBuildLeaf(offset, nodes, indices, count);
+    KdNode& result = nodes[offset];
+    result.split = split;
+    result.axis = axis;
+    size_t nextOffset = kdBuild(offset + 1, nodes, points, stride, indices, middle, leafSize);
+    result.children = unsigned(nextOffset - offset - 1);
+    return kdBuild(nextOffset, nodes, points, stride, indices + middle, count - middle, leafSize);
+}
+
+void kdNearest(const KdNode* nodes, unsigned int root, const float* points, size_t stride, const unsigned char* emitted,
+               const float* position, unsigned int& result, float& limit) {
+    const KdNode& node = nodes[root];
+    if (node.axis == 3) {
+        for (unsigned int i = 0; i <= node.children; ++i) {
+            unsigned int index = nodes[root + i].index;
+            if (emitted[index]) continue;
+            const float* point = points + index * stride;
+            float distance2 = (point[0] - position[0]) * (point[0] - position[0]) + (point[1] - position[1]) * (point[1] - position[1]) +
+                              (point[2] - position[2]) * (point[2] - position[2]);
+            float distance = sqrtf(distance2);
+            if (distance < limit) {
+                result = index;
+                limit = distance;
+            }
+        }
+    } else {
+        float delta = position[node.axis] - node.split;
+        unsigned int first = (delta <= 0) ? 0 : node.children;
+        unsigned int second = first ^ node.children;
+        kdNearest(nodes, root + 1 + first, points, stride, emitted, position, result, limit);
+        if (fabsf(delta) <= limit) kdNearest(nodes, root + 1 + second, points, stride, emitted, position, result, limit);
+    }
+}
+
+// --- the builder ---------------------------------------------------------------------------------
+
+struct Builder {
+    const uint32_t* indices;
+    size_t triangleCount;
+    size_t maxVertices, maxTriangles;
+    float coneWeight, expectedRadius;
+
+    // The library's state: the unplaced triangles around each vertex (counts[v] of them from
+    // offsets[v]; placed ones are swapped out with the last), which vertex of the meshlet each
+    // vertex is (kUnused: none), which triangles are placed.
+    std::vector<uint32_t> counts, offsets, around;
+    std::vector<Cone> cones;
+    std::vector<KdNode> nodes;
+    std::vector<uint8_t> used, emitted;
+
+    // The meshlet being built.
+    std::vector<uint32_t> vertices;
+    uint32_t triangles = 0;
+    Cone sum{};
+
+    // The triangles around it: listed[t] == meshlet + 1 when t is, at rank rank[t], in bucket
+    // rank[t] (older entries of t elsewhere are stale and dropped when met).
+    uint32_t meshlet = 0;
+    std::vector<uint32_t> listed;
+    std::vector<uint8_t> rank;
+    std::vector<uint32_t> buckets[kRanks];
+
+    const uint32_t* corners(uint32_t t) const { return indices + size_t(t) * 3; }
+
+    // The library's priority: vertices the triangle adds, 0 first, and one left alone at one of
+    // its vertices (its last unplaced triangle) just after.
+    uint8_t rankOf(uint32_t t) const {
+        const uint32_t* c = corners(t);
+        unsigned int extra = (used[c[0]] == kUnused) + (used[c[1]] == kUnused) + (used[c[2]] == kUnused);
+        if (extra != 0) {
+            if (counts[c[0]] == 1 || counts[c[1]] == 1 || counts[c[2]] == 1) extra = 0;
+            extra++;
+        }
+        return uint8_t(extra);
+    }
+
+    float scoreOf(uint32_t t, const Cone& cone) const {
+        const Cone& tri = cones[t];
+        float distance2 = (tri.px - cone.px) * (tri.px - cone.px) + (tri.py - cone.py) * (tri.py - cone.py) + (tri.pz - cone.pz) * (tri.pz - cone.pz);
+        float spread = tri.nx * cone.nx + tri.ny * cone.ny + tri.nz * cone.nz;
+        return meshletScore(distance2, spread, coneWeight, expectedRadius);
+    }
+
+    // Where the library's visit meets t first: (place of the meshlet vertex, place in its list).
+    uint64_t firstVisit(uint32_t t) const {
+        uint64_t first = ~uint64_t(0);
+        for (int k = 0; k < 3; ++k) {
+            const uint32_t v = corners(t)[k];
+            if (used[v] == kUnused) continue;
+            const uint32_t* list = around.data() + offsets[v];
+            uint32_t place = 0;
+            while (list[place] != t) ++place;
+            first = std::min(first, uint64_t(used[v]) << 32 | place);
+        }
+        return first;
+    }
+
+    // (Re)ranks a triangle around the meshlet; a new rank gets a new bucket entry.
+    void rerank(uint32_t t) {
+        const uint8_t now = rankOf(t);
+        if (listed[t] == meshlet + 1 && rank[t] == now) return;
+        listed[t] = meshlet + 1;
+        rank[t] = now;
+        buckets[now].push_back(t);
+    }
+
+    // The triangle the library would pick among those around the meshlet: the lowest rank, then
+    // the lowest score, then the first visited. kNone when there is none; `visitInstead` when a
+    // score in the lowest rank is not a number (the library's comparisons then depend on order).
+    uint32_t bestAround(const Cone& cone, bool& visitInstead) {
+        for (int r = 0; r < kRanks; ++r) {
+            std::vector<uint32_t>& bucket = buckets[r];
+            uint32_t best = kNone;
+            float bestScore = 0.f;
+            uint64_t bestVisit = 0;  // firstVisit(best), once a tie needs it
+            for (size_t i = 0; i < bucket.size();) {
+                const uint32_t t = bucket[i];
+                if (emitted[t] || listed[t] != meshlet + 1 || rank[t] != r) {
+                    bucket[i] = bucket.back();
+                    bucket.pop_back();
+                    continue;
+                }
+                ++i;
+                const float score = scoreOf(t, cone);
+                if (score != score) {
+                    visitInstead = true;
+                    return kNone;
+                }
+                if (best == kNone || score < bestScore) {
+                    best = t, bestScore = score, bestVisit = 0;
+                } else if (score == bestScore) {
+                    if (bestVisit == 0) bestVisit = firstVisit(best) + 1;
+                    const uint64_t visit = firstVisit(t) + 1;
+                    if (visit < bestVisit) best = t, bestVisit = visit;
+                }
+            }
+            if (best != kNone) return best;
+        }
+        return kNone;
+    }
+
+    // The library's own visit of every triangle around every meshlet vertex.
+    uint32_t bestByVisiting(const Cone& cone) const {
+        uint32_t best = kNone;
+        unsigned int bestExtra = kRanks;
+        float bestScore = FLT_MAX;
+        for (uint32_t v : vertices)
+            for (uint32_t j = 0; j < counts[v]; ++j) {
+                const uint32_t t = around[offsets[v] + j];
+                const unsigned int extra = rankOf(t);
+                if (extra > bestExtra) continue;
+                const float score = scoreOf(t, cone);
+                if (extra < bestExtra || score < bestScore) best = t, bestExtra = extra, bestScore = score;
+            }
+        return best;
+    }
+
+    uint32_t nearestUnplaced(const Cone& cone) const {
+        float position[3] = {cone.px, cone.py, cone.pz};
+        unsigned int index = kNone;
+        float limit = FLT_MAX;
+        kdNearest(nodes.data(), 0, &cones[0].px, sizeof(Cone) / sizeof(float), emitted.data(), position, index, limit);
+        return index;
+    }
+
+    // Places t: in the meshlet if its new vertices and one more triangle fit, else in a new one.
+    void place(uint32_t t, std::vector<uint32_t>& meshletOfTriangle, std::vector<uint32_t>& order) {
+        const uint32_t* c = corners(t);
+        const unsigned int extra = (used[c[0]] == kUnused) + (used[c[1]] == kUnused) + (used[c[2]] == kUnused);
+        if (vertices.size() + extra > maxVertices || triangles >= maxTriangles) {
+            for (uint32_t v : vertices) used[v] = kUnused;
+            vertices.clear();
+            triangles = 0;
+            sum = Cone{};
+            ++meshlet;
+            for (std::vector<uint32_t>& bucket : buckets) bucket.clear();
+        }
+        uint32_t joined[3];
+        size_t joinedCount = 0;
+        for (int k = 0; k < 3; ++k)
+            if (used[c[k]] == kUnused) {
+                used[c[k]] = uint8_t(vertices.size());
+                vertices.push_back(c[k]);
+                joined[joinedCount++] = c[k];
+            }
+        ++triangles;
+        meshletOfTriangle[t] = meshlet;
+        order.push_back(t);
+        for (int k = 0; k < 3; ++k) {  // out of the lists of its corners, the last taking its place
+            uint32_t* list = around.data() + offsets[c[k]];
+            const uint32_t size = counts[c[k]];
+            for (uint32_t i = 0; i < size; ++i)
+                if (list[i] == t) {
+                    list[i] = list[size - 1];
+                    counts[c[k]]--;
+                    break;
+                }
+        }
+        const Cone& cone = cones[t];
+        sum.px += cone.px;
+        sum.py += cone.py;
+        sum.pz += cone.pz;
+        sum.nx += cone.nx;
+        sum.ny += cone.ny;
+        sum.nz += cone.nz;
+        emitted[t] = 1;
+        // Ranks that changed: the triangles around a vertex that joined (one vertex fewer to add),
+        // and the last triangle left at a corner (now alone there).
+        for (size_t j = 0; j < joinedCount; ++j)
+            for (uint32_t i = 0; i < counts[joined[j]]; ++i) rerank(around[offsets[joined[j]] + i]);
+        for (int k = 0; k < 3; ++k) {
+            const uint32_t v = c[k];
+            if (counts[v] == 1 && listed[around[offsets[v]]] == meshlet + 1) rerank(around[offsets[v]]);
+        }
+    }
+};
+
+}  // namespace
+
+MeshoptMeshlets reproduceMeshoptMeshlets(const uint32_t* indices, size_t indexCount, const float* positions, size_t vertexCount,
+                                         size_t positionStride, size_t maxVertices, size_t maxTriangles, float coneWeight) {
+    MeshoptMeshlets result;
+    const size_t triangleCount = indexCount / 3;
+    if (triangleCount == 0) return result;
+    Builder b;
+    b.indices = indices;
+    b.triangleCount = triangleCount;
+    b.maxVertices = maxVertices;
+    b.maxTriangles = maxTriangles;
+    b.coneWeight = coneWeight;
+
+    // Triangles around each vertex, in triangle order (the library's visiting order).
+    b.counts.assign(vertexCount, 0);
+    for (size_t i = 0; i < indexCount; ++i) b.counts[indices[i]]++;
+    b.offsets.resize(vertexCount);
+    uint32_t offset = 0;
+    for (size_t v = 0; v < vertexCount; ++v) b.offsets[v] = offset, offset += b.counts[v];
+    b.around.resize(indexCount);
+    for (size_t t = 0; t < triangleCount; ++t)
+        for (int k = 0; k < 3; ++k) b.around[b.offsets[indices[t * 3 + k]]++] = uint32_t(t);
+    for (size_t v = 0; v < vertexCount; ++v) b.offsets[v] -= b.counts[v];
+
+    b.cones.resize(triangleCount);
+    const float meshArea = triangleCones(b.cones.data(), indices, triangleCount, positions, positionStride / sizeof(float));
+    const float triangleAreaAverage = meshArea / float(triangleCount) * 0.5f;
+    b.expectedRadius = sqrtf(triangleAreaAverage * maxTriangles) * 0.5f;
+
+    std::vector<unsigned int> kdIndices(triangleCount);
+    for (size_t i = 0; i < triangleCount; ++i) kdIndices[i] = unsigned(i);
+    b.nodes.resize(triangleCount * 2);
+    kdBuild(0, b.nodes.data(), &b.cones[0].px, sizeof(Cone) / sizeof(float), kdIndices.data(), triangleCount, 8);
+
+    b.used.assign(vertexCount, kUnused);
+    b.emitted.assign(triangleCount, 0);
+    b.listed.assign(triangleCount, 0);
+    b.rank.assign(triangleCount, 0);
+    b.vertices.reserve(maxVertices);
+    result.meshletOfTriangle.assign(triangleCount, kNone);
+    result.placementOrder.reserve(triangleCount);
+    for (;;) {
+        const Cone cone = meshletCone(b.sum, b.triangles);
+        bool visitInstead = false;
+        uint32_t best = b.bestAround(cone, visitInstead);
+        if (visitInstead) best = b.bestByVisiting(cone);
+        if (best == kNone) best = b.nearestUnplaced(cone);
+        if (best == kNone) break;
+        b.place(best, result.meshletOfTriangle, result.placementOrder);
+    }
+    result.count = b.meshlet + (b.triangles > 0 ? 1 : 0);
+    return result;
+}
+
+}  // namespace conescope

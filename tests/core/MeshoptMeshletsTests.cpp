@@ -1,0 +1,185 @@
+// The reproduction of meshoptimizer's builder against the library itself: the same meshlets, the
+// same vertices in the same order, the same triangles in the same order, on meshes that exercise
+// every branch (ties of the clamped score, triangles left alone at a vertex, the k-d tree between
+// separate pieces, full meshlets, degenerate and repeated triangles, coordinates near the float
+// range) and at limits and cone weights across their range.
+#include <gtest/gtest.h>
+#include <meshoptimizer.h>
+
+#include <random>
+
+#include "TestMeshes.h"
+#include "core/MeshoptMeshlets.h"
+#include "core/Partition.h"
+
+namespace conescope {
+namespace {
+
+struct Case {
+    std::vector<uint32_t> indices;
+    std::vector<glm::vec3> positions;
+};
+
+Case fromMesh(const Mesh& mesh) {
+    Case c{{}, mesh.positions};
+    for (size_t f = 0; f < mesh.faceCount(); ++f)
+        for (size_t k = 1; k + 1 < mesh.faceSize(f); ++k)
+            c.indices.insert(c.indices.end(), {mesh.faceBegin(f)[0], mesh.faceBegin(f)[k], mesh.faceBegin(f)[k + 1]});
+    return c;
+}
+
+// Runs both and compares meshlet by meshlet: the library's vertex list and local triangles against
+// those rebuilt from the reproduction's placement order.
+void expectSameAsLibrary(const Case& c, size_t maxVertices, size_t maxTriangles, float coneWeight) {
+    SCOPED_TRACE(testing::Message() << c.indices.size() / 3 << " triangles, limits " << maxVertices << "/" << maxTriangles
+                                    << ", cone weight " << coneWeight);
+    const size_t bound = meshopt_buildMeshletsBound(c.indices.size(), maxVertices, maxTriangles);
+    std::vector<meshopt_Meshlet> meshlets(bound);
+    std::vector<unsigned int> meshletVertices(bound * maxVertices);
+    std::vector<unsigned char> meshletTriangles(bound * maxTriangles * 3);
+    const size_t count = meshopt_buildMeshlets(meshlets.data(), meshletVertices.data(), meshletTriangles.data(), c.indices.data(),
+                                               c.indices.size(), &c.positions[0].x, c.positions.size(), sizeof(glm::vec3),
+                                               maxVertices, maxTriangles, coneWeight);
+    const MeshoptMeshlets ours = reproduceMeshoptMeshlets(c.indices.data(), c.indices.size(), &c.positions[0].x, c.positions.size(),
+                                                          sizeof(glm::vec3), maxVertices, maxTriangles, coneWeight);
+    ASSERT_EQ(ours.count, count);
+    size_t placed = 0;
+    for (size_t m = 0; m < count; ++m) {
+        std::vector<uint32_t> vertices;
+        std::vector<uint8_t> local(c.positions.size(), 0xff);
+        for (size_t t = 0; t < meshlets[m].triangle_count; ++t, ++placed) {
+            const uint32_t triangle = ours.placementOrder[placed];
+            ASSERT_EQ(ours.meshletOfTriangle[triangle], m) << "placement " << placed;
+            for (int k = 0; k < 3; ++k) {
+                const uint32_t v = c.indices[triangle * 3 + k];
+                if (local[v] == 0xff) local[v] = uint8_t(vertices.size()), vertices.push_back(v);
+                ASSERT_EQ(meshletTriangles[meshlets[m].triangle_offset + t * 3 + k], local[v]) << "meshlet " << m << ", triangle " << t;
+            }
+        }
+        ASSERT_EQ(std::vector<uint32_t>(meshletVertices.begin() + meshlets[m].vertex_offset,
+                                        meshletVertices.begin() + meshlets[m].vertex_offset + meshlets[m].vertex_count),
+                  vertices)
+            << "meshlet " << m;
+    }
+    // Everything placed is in a meshlet; the rest is what the library never placed either.
+    EXPECT_EQ(placed, ours.placementOrder.size());
+    size_t unplaced = 0;
+    for (uint32_t meshlet : ours.meshletOfTriangle) unplaced += meshlet == ~0u;
+    EXPECT_EQ(unplaced + placed, c.indices.size() / 3);
+}
+
+void expectSameAsLibraryAtSeveralLimits(const Case& c) {
+    expectSameAsLibrary(c, 64, 124, 1.0f);
+    expectSameAsLibrary(c, 64, 124, 0.25f);
+    expectSameAsLibrary(c, 32, 64, 0.5f);
+    expectSameAsLibrary(c, 255, 512, 0.0f);
+    expectSameAsLibrary(c, 3, 4, 1.0f);
+    expectSameAsLibrary(c, 128, 256, 0.9f);
+}
+
+// Many pieces far apart (each its own sphere, some tiny), so meshlets end and start through the tree.
+Case scatteredPieces(std::mt19937_64& random, int pieces) {
+    Case c;
+    std::uniform_real_distribution<float> place(-20.f, 20.f), size(0.05f, 2.f);
+    for (int p = 0; p < pieces; ++p) {
+        const Case piece = fromMesh(testmesh::icosphere(p % 3));
+        const glm::vec3 centre(place(random), place(random), place(random));
+        const float scale = size(random);
+        const uint32_t first = uint32_t(c.positions.size());
+        for (const glm::vec3& q : piece.positions) c.positions.push_back(centre + scale * q);
+        for (uint32_t i : piece.indices) c.indices.push_back(first + i);
+    }
+    return c;
+}
+
+TEST(MeshoptMeshlets, SameAsTheLibraryOnSmoothClosedMeshes) {
+    expectSameAsLibraryAtSeveralLimits(fromMesh(testmesh::icosphere(4)));
+    expectSameAsLibraryAtSeveralLimits(fromMesh(testmesh::torus(1.0, 0.3, 96, 48)));
+}
+
+TEST(MeshoptMeshlets, SameAsTheLibraryOnBumpyPatchesAndPolygons) {
+    std::mt19937_64 random(11);
+    for (int i = 0; i < 4; ++i) expectSameAsLibraryAtSeveralLimits(fromMesh(testmesh::randomPatch(random, 20 + 7 * i, 10.0 + 25.0 * i)));
+    expectSameAsLibraryAtSeveralLimits(fromMesh(testmesh::quadCube()));
+}
+
+TEST(MeshoptMeshlets, SameAsTheLibraryOnSeparatePieces) {
+    std::mt19937_64 random(5);
+    expectSameAsLibraryAtSeveralLimits(scatteredPieces(random, 40));
+}
+
+TEST(MeshoptMeshlets, SameAsTheLibraryWithShuffledTrianglesAndVertices) {
+    // Triangles and vertices in random order: the visiting order, and so every tie, changes.
+    std::mt19937_64 random(7);
+    Case c = fromMesh(testmesh::torus(1.0, 0.4, 60, 30));
+    std::vector<uint32_t> order(c.indices.size() / 3), relabel(c.positions.size());
+    for (uint32_t i = 0; i < order.size(); ++i) order[i] = i;
+    for (uint32_t i = 0; i < relabel.size(); ++i) relabel[i] = i;
+    std::shuffle(order.begin(), order.end(), random);
+    std::shuffle(relabel.begin(), relabel.end(), random);
+    Case shuffled;
+    shuffled.positions.resize(c.positions.size());
+    for (uint32_t v = 0; v < c.positions.size(); ++v) shuffled.positions[relabel[v]] = c.positions[v];
+    for (uint32_t t : order)
+        for (int k = 0; k < 3; ++k) shuffled.indices.push_back(relabel[c.indices[t * 3 + k]]);
+    expectSameAsLibraryAtSeveralLimits(shuffled);
+}
+
+TEST(MeshoptMeshlets, SameAsTheLibraryOnDegenerateAndRepeatedTriangles) {
+    Case c = fromMesh(testmesh::icosphere(3));
+    const size_t triangles = c.indices.size() / 3;
+    for (size_t t = 0; t < triangles; t += 7) {  // the same triangle again, and with a corner repeated
+        const uint32_t a = c.indices[t * 3], b = c.indices[t * 3 + 1], d = c.indices[t * 3 + 2];
+        c.indices.insert(c.indices.end(), {a, b, d, a, a, b, d, d, d});
+    }
+    const uint32_t far = uint32_t(c.positions.size());
+    c.positions.insert(c.positions.end(), {{5, 5, 5}, {5, 5, 5}, {5, 5, 5}});  // zero-area triangles of their own
+    c.indices.insert(c.indices.end(), {far, far + 1, far + 2, far + 2, far + 1, far});
+    expectSameAsLibraryAtSeveralLimits(c);
+}
+
+TEST(MeshoptMeshlets, SameAsTheLibraryWhereScoresAreNotNumbers) {
+    // Centres near the float range overflow to infinity; the scores become NaN and the library's
+    // order of comparison decides (at 3e38 even its k-d tree finds nothing and it places no
+    // triangle at all). And a mesh of zero area: the expected radius is 0.
+    for (float scale : {1e38f, 3e38f}) {
+        Case huge = fromMesh(testmesh::icosphere(2));
+        for (glm::vec3& p : huge.positions) p *= scale;
+        expectSameAsLibrary(huge, 64, 124, 1.0f);
+        expectSameAsLibrary(huge, 64, 124, 0.5f);
+    }
+    Case flat = fromMesh(testmesh::icosphere(2));
+    for (glm::vec3& p : flat.positions) p = glm::vec3(1.f, 2.f, 3.f);
+    expectSameAsLibrary(flat, 64, 124, 1.0f);
+    expectSameAsLibrary(flat, 64, 124, 0.5f);
+}
+
+TEST(MeshoptMeshlets, PartitionOfFacesIsTheLibrarysOnMeshesWithoutDuplicateFaces) {
+    // The library's output, matched back to faces by corners, gives the same partition.
+    std::mt19937_64 random(3);
+    for (const Mesh& mesh : {testmesh::icosphere(4), testmesh::torus(1.0, 0.3, 80, 40), testmesh::quadCube(), testmesh::randomPatch(random, 40, 30.0)}) {
+        const MeshletLimits limits{64, 124};
+        const Partition ours = buildMeshoptMeshlets(mesh, limits, 1.0f), library = meshoptLibraryMeshlets(mesh, limits, 1.0f);
+        EXPECT_EQ(ours.clusterCount, library.clusterCount);
+        EXPECT_EQ(ours.clusterOfFace, library.clusterOfFace);
+        EXPECT_EQ(meshoptMeshletCount(mesh, limits, 1.0f), library.clusterCount);
+    }
+}
+
+TEST(MeshoptMeshlets, FacesTheLibraryLeavesUnplacedStillGetACluster) {
+    Mesh mesh = testmesh::icosphere(2);
+    for (glm::vec3& p : mesh.positions) p *= 3e38f;
+    const Partition partition = buildMeshoptMeshlets(mesh, {64, 124}, 1.0f);
+    ASSERT_EQ(partition.clusterOfFace.size(), mesh.faceCount());
+    EXPECT_EQ(partition.clusterCount, 1u);
+    EXPECT_EQ(meshoptLibraryMeshlets(mesh, {64, 124}, 1.0f).clusterOfFace, partition.clusterOfFace);
+}
+
+TEST(MeshoptMeshlets, NoTrianglesNoMeshlets) {
+    const MeshoptMeshlets none = reproduceMeshoptMeshlets(nullptr, 0, nullptr, 0, sizeof(glm::vec3), 64, 124, 1.0f);
+    EXPECT_EQ(none.count, 0u);
+    EXPECT_TRUE(none.placementOrder.empty());
+}
+
+}  // namespace
+}  // namespace conescope
