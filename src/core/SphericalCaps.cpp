@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 #include "Welzl.h"
 
@@ -192,6 +193,31 @@ Cap minimalCapWith(glm::dvec3* points, size_t count, const glm::dvec3& added) {
     const Cap cap = welzl<1>(caps, points, count, boundary);
     if (!(cap.cosRadius > 0.0) || !contains(cap, added)) return noCone(cap.axis);
     return checkedCap(cap, points, count);
+}
+
+Cap minimalCapFromSubset(const glm::dvec3* points, size_t count, Cap cap) {
+    // Each round the point farthest outside joins the support of the cap so far; the cap of that
+    // handful grows strictly, so a round never repeats, and the first cap holding every point is
+    // the minimal one (a subset's minimal cap that holds the whole set is the set's).
+    constexpr int kRounds = 24;
+    for (int round = 0; round < kRounds; ++round) {
+        if (!(cap.cosRadius > 0.0) || cap.cosRadius > 1.0) break;
+        double lowest = cap.cosRadius - 1e-10;
+        size_t outside = count;
+        for (size_t i = 0; i < count; ++i) {
+            const double along = glm::dot(points[i], cap.axis);
+            if (along < lowest) lowest = along, outside = i;
+        }
+        if (outside == count) return cap;
+        glm::dvec3 handful[4];
+        size_t n = 0;
+        for (uint32_t i = 0; i < cap.supportCount; ++i) handful[n++] = cap.support[i];
+        handful[n++] = points[outside];
+        cap = minimalCap(handful, n);
+    }
+    if (cap.cosRadius <= 1.0 && !(cap.cosRadius > 0.0)) return noCone(cap.axis);  // a subset already has no cone
+    std::vector<glm::dvec3> copy(points, points + count);
+    return minimalCap(copy.data(), count);
 }
 
 Cap supportCapAdding(const Cap& cap, const glm::dvec3& added) {

@@ -44,6 +44,11 @@ Cap minimalCap(glm::dvec3* points, size_t count);
 // Minimal cap of points plus `added`, which lies outside the minimal cap of points.
 Cap minimalCapWith(glm::dvec3* points, size_t count, const glm::dvec3& added);
 
+// Minimal cap of points, given the minimal cap (with its bounding points) of some of them: grown
+// by the points outside it, a few at a time; usually far cheaper than minimalCap when the subset's
+// cap is near the answer (one normal more or less).
+Cap minimalCapFromSubset(const glm::dvec3* points, size_t count, Cap subsetCap);
+
 // Minimal cap of a cap's bounding points plus or minus one normal: a subset of the real points,
 // so its radius is a lower bound on the real cap's.
 Cap supportCapAdding(const Cap& cap, const glm::dvec3& added);

@@ -77,7 +77,7 @@ size_t gatherNormals(State& state, uint32_t cluster, uint32_t exceptFace) {
 
 Cap exactCap(State& state, uint32_t cluster) {
     const size_t count = gatherNormals(state, cluster, kNone);
-    return minimalCap(state.gathered.data(), count);
+    return count == 0 ? Cap{} : minimalCapFromSubset(state.gathered.data(), count, capThrough(state.gathered[0]));
 }
 
 Cap capAdding(State& state, uint32_t cluster, uint32_t face) {
@@ -87,7 +87,8 @@ Cap capAdding(State& state, uint32_t cluster, uint32_t face) {
     if (current.cosRadius > 1.0) return capThrough(normal);
     if (!(current.cosRadius > 0.0)) return current;  // already no cone
     const size_t count = gatherNormals(state, cluster, kNone);
-    return minimalCapWith(state.gathered.data(), count, normal);
+    const Cap grown = minimalCapFromSubset(state.gathered.data(), count, supportCapAdding(current, normal));
+    return grown.cosRadius <= 1.0 && grown.cosRadius > 0.0 && contains(grown, normal) ? grown : noCone(grown.axis);
 }
 
 bool bindsCap(const State& state, uint32_t face) {
@@ -100,7 +101,12 @@ Cap capRemoving(State& state, uint32_t face) {
     const uint32_t cluster = state.clusterOf[face];
     if (!bindsCap(state, face)) return state.clusters[cluster].cap;
     const size_t count = gatherNormals(state, cluster, face);
-    return minimalCap(state.gathered.data(), count);
+    if (count == 0) return Cap{};
+    const Cap& current = state.clusters[cluster].cap;
+    const glm::dvec3& removed = state.geometry.normals[face];
+    bool supportLeft = false;
+    for (uint32_t i = 0; i < current.supportCount; ++i) supportLeft |= current.support[i] != removed;
+    return minimalCapFromSubset(state.gathered.data(), count, supportLeft ? supportCapRemoving(current, removed) : capThrough(state.gathered[0]));
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -187,10 +193,25 @@ void clear(State& state) {
 void assign(State& state, const Partition& partition) {
     clear(state);
     state.clusters.resize(partition.clusterCount);
-    for (uint32_t f = 0; f < state.faceCount; ++f) attach(state, f, partition.clusterOfFace[f]);
+    for (uint32_t f = 0; f < state.faceCount; ++f) {
+        Cluster& target = state.clusters[partition.clusterOfFace[f]];
+        target.triangles += state.faceTriangles[f];
+        state.clusterOf[f] = partition.clusterOfFace[f];
+        state.slotOf[f] = uint32_t(target.faces.size());
+        target.faces.push_back(f);
+    }
+    // Vertices counted cluster by cluster with one stamp each, rather than face by face around corners.
     for (uint32_t c = 0; c < state.clusters.size(); ++c) {
-        if (state.clusters[c].faces.empty()) continue;
-        state.clusters[c].cap = exactCap(state, c);
+        Cluster& cluster = state.clusters[c];
+        if (cluster.faces.empty()) continue;
+        ++state.stamp;
+        for (uint32_t f : cluster.faces)
+            for (size_t k = 0; k < state.mesh.faceSize(f); ++k) {
+                uint32_t& stamp = state.vertexStamp[state.mesh.faceBegin(f)[k]];
+                cluster.vertices += stamp != state.stamp;
+                stamp = state.stamp;
+            }
+        cluster.cap = exactCap(state, c);
         ++state.liveClusters;
     }
 }
