@@ -72,16 +72,6 @@ Mesh subdivideToAtLeast(const Mesh& mesh, size_t minTriangles) {
     return triangles;
 }
 
-std::vector<unsigned int> fanTriangles(const Mesh& mesh) {
-    std::vector<unsigned int> indices;
-    indices.reserve(triangleCount(mesh) * 3);
-    for (size_t f = 0; f < mesh.faceCount(); ++f) {
-        const uint32_t* face = mesh.faceBegin(f);
-        for (size_t k = 1; k + 1 < mesh.faceSize(f); ++k) indices.insert(indices.end(), {face[0], face[k], face[k + 1]});
-    }
-    return indices;
-}
-
 MeshoptClusters buildMeshoptClusters(const std::vector<unsigned int>& indices, const std::vector<glm::vec3>& world,
                                      const MeshletLimits& limits, float coneWeight) {
     MeshoptClusters clusters;

@@ -40,9 +40,6 @@ struct MeshoptClusters {
     size_t count() const { return meshlets.size(); }
 };
 
-// The fan triangulation as one index buffer.
-std::vector<unsigned int> fanTriangles(const Mesh& mesh);
-
 MeshoptClusters buildMeshoptClusters(const std::vector<unsigned int>& indices, const std::vector<glm::vec3>& world,
                                      const MeshletLimits& limits, float coneWeight);
 

@@ -82,16 +82,15 @@ Partition meshletPartition(const bench::MeshletTriangles& triangles) {
 }
 
 // ConeScope's preparation as the product makes it: meshoptimizer's meshlets (where the builder
-// starts there) on another core while world positions and face geometry are computed, then the
-// partition and the bounds (minimal cone, octagon).
+// starts there) started on another core before world positions and face geometry are computed,
+// then the partition (refining parts as they come) and the bounds (minimal cone, octagon).
 Measurement prepareConeScope(const Mesh& mesh, const Settings& settings) {
     const Stopwatch clock;
     const std::shared_ptr<const Mesh> borrowed(&mesh, [](const Mesh*) {});
-    std::future<Partition> start = meshoptStartInBackground(borrowed, settings);
+    const std::shared_ptr<MeshletStream> meshlets = meshoptStartInBackground(borrowed, settings);
     const std::vector<glm::vec3> world = worldPositions(mesh);
     const FaceGeometry faces = computeFaceGeometry(mesh);
-    const std::optional<Partition> meshlets = start.valid() ? std::optional<Partition>(start.get()) : std::nullopt;
-    const Partition partition = buildPartition(mesh, faces, settings, {}, meshlets ? &*meshlets : nullptr);
+    const Partition partition = buildPartition(mesh, faces, settings, {}, meshlets.get());
     const ClusterBounds bounds = computeClusterBounds(mesh, world, faces, partition, ConeMethod::Minimal);
     Measurement m = clock.stop(bounds.count());
     m.expectedRate = expectedCullRate(mesh, faces, partition);
@@ -101,7 +100,7 @@ Measurement prepareConeScope(const Mesh& mesh, const Settings& settings) {
 Measurement prepareMeshopt(const Mesh& mesh, float coneWeight) {
     const Stopwatch clock;
     const std::vector<glm::vec3> world = worldPositions(mesh);
-    const bench::MeshoptClusters clusters = bench::buildMeshoptClusters(bench::fanTriangles(mesh), world, kLimits, coneWeight);
+    const bench::MeshoptClusters clusters = bench::buildMeshoptClusters(fanTriangles(mesh), world, kLimits, coneWeight);
     Measurement m = clock.stop(clusters.count());
     const bench::MeshletTriangles triangles = bench::meshletTriangleMesh(clusters, world);
     m.expectedRate = expectedCullRate(triangles.mesh, computeFaceGeometry(triangles.mesh), meshletPartition(triangles));
@@ -126,7 +125,7 @@ Measurement wholeRunMeshopt(const std::string& path) {
     const Stopwatch clock;
     const Mesh mesh = readMeshFile(path).mesh;
     const std::vector<glm::vec3> world = worldPositions(mesh);
-    const bench::MeshoptClusters clusters = bench::buildMeshoptClusters(bench::fanTriangles(mesh), world, kLimits, 1.0f);
+    const bench::MeshoptClusters clusters = bench::buildMeshoptClusters(fanTriangles(mesh), world, kLimits, 1.0f);
     const glm::vec3 eye(orbitViews(computeAabb(world), 1, 3.0).front().position);
     size_t culled = 0;
     for (const meshopt_Bounds& b : clusters.bounds) culled += bench::meshoptApexCulls(b, eye);

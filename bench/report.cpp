@@ -138,7 +138,7 @@ void measureConeScope(const MeshData& data, const MeshletLimits& limits, size_t 
 // meshoptimizer's pipeline as its documentation shows it, judged by the same per-face oracle.
 // Returns its cluster count.
 size_t measureMeshopt(const MeshData& data, const MeshletLimits& limits, float coneWeight, std::vector<Row>& rows) {
-    const std::vector<unsigned int> indices = bench::fanTriangles(data.mesh());
+    const std::vector<unsigned int> indices = fanTriangles(data.mesh());
     const auto start = Clock::now();
     const bench::MeshoptClusters clusters = bench::buildMeshoptClusters(indices, data.prepared.world, limits, coneWeight);
     const double seconds = secondsSince(start);

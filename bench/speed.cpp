@@ -49,7 +49,7 @@ std::unique_ptr<Scene> makeScene(Mesh mesh) {
     const Partition partition = buildMeshlets(scene->mesh, scene->faces, kLimits);
     scene->bounds = computeClusterBounds(scene->mesh, scene->world, scene->faces, partition, ConeMethod::Minimal);
     scene->batch = makeClusterBatch(scene->bounds);
-    scene->meshopt = bench::buildMeshoptClusters(bench::fanTriangles(scene->mesh), scene->world, kLimits, 0.25f);
+    scene->meshopt = bench::buildMeshoptClusters(fanTriangles(scene->mesh), scene->world, kLimits, 0.25f);
     scene->eyes = orbitViews(computeAabb(scene->world), 128, 3.0);
     return scene;
 }

@@ -8,16 +8,15 @@
 namespace conescope {
 
 PreparedMesh loadMesh(const std::string& path, const Settings& settings, const ProgressCallback& progress,
-                      std::optional<Partition>* meshoptStart) {
+                      std::shared_ptr<MeshletStream>* meshlets) {
     if (progress && !progress(0.0, "reading " + std::filesystem::path(path).filename().string())) throw OperationCancelled();
     const auto start = std::chrono::steady_clock::now();
     MeshFile file = readMeshFile(path, progressWithin(progress, 0.0, 0.3));
     auto mesh = std::make_shared<const Mesh>(std::move(file.mesh));
     const double readSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::string unused;
-    std::future<Partition> meshlets = meshoptStart ? meshoptStartInBackground(mesh, builderForMesh(settings, *mesh, unused)) : std::future<Partition>();
+    if (meshlets) *meshlets = meshoptStartInBackground(mesh, builderForMesh(settings, *mesh, unused));
     PreparedMesh prepared = prepareMesh(mesh, path, settings.fixWinding, progress);
-    if (meshlets.valid()) *meshoptStart = meshlets.get();
     prepared.prepareSeconds += readSeconds;
     prepared.readerNotes = std::move(file.notes);
     return prepared;

@@ -2,7 +2,7 @@
 // what the user should be told about it.
 #pragma once
 
-#include <optional>
+#include <memory>
 #include <string>
 
 #include "core/Pipeline.h"
@@ -10,11 +10,11 @@
 namespace conescope {
 
 // Reads the file (readMeshFile, throws MeshReadError) and prepares it with settings.fixWinding; the
-// reader's notes are kept. With `meshoptStart`, when the builder the mesh will be shown with
-// (builderForMesh) starts from meshoptimizer's meshlets, those are built on another core while the
-// mesh is prepared, for buildClusters.
+// reader's notes are kept. With `meshlets`, when the builder the mesh will be shown with
+// (builderForMesh) starts from meshoptimizer's meshlets, those are started on another core before
+// the mesh is prepared, for buildClusters.
 PreparedMesh loadMesh(const std::string& path, const Settings& settings, const ProgressCallback& progress = {},
-                      std::optional<Partition>* meshoptStart = nullptr);
+                      std::shared_ptr<MeshletStream>* meshlets = nullptr);
 
 // What the user should know about a loaded mesh, in one line for the status bar: the reader's notes
 // and the winding warning (with how to repair it, or what was repaired). Empty when nothing.

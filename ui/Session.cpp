@@ -61,13 +61,13 @@ void Session::openMesh(const QString& path) {
         taskgroups::load, tr("Loading %1").arg(QFileInfo(path).fileName()),
         [file, settings](const ProgressCallback& progress) {
             SceneResult result;
-            std::optional<Partition> meshoptStart;  // built while the mesh is prepared, when the builder starts there
-            auto prepared = std::make_shared<PreparedMesh>(loadMesh(file, settings, scaled(progress, 0.0, 0.4), &meshoptStart));
+            std::shared_ptr<MeshletStream> meshlets;  // built while the mesh is prepared, when the builder starts there
+            auto prepared = std::make_shared<PreparedMesh>(loadMesh(file, settings, scaled(progress, 0.0, 0.4), &meshlets));
             Settings chosen = builderForMesh(settings, prepared->mesh(), result.builderNote);
             std::shared_ptr<ClusterSet> clusters;
             try {
                 clusters = std::make_shared<ClusterSet>(
-                    buildClusters(*prepared, chosen, nullptr, scaled(progress, 0.4, 0.9), meshoptStart ? &*meshoptStart : nullptr));
+                    buildClusters(*prepared, chosen, nullptr, scaled(progress, 0.4, 0.9), meshlets.get()));
             } catch (const std::exception& error) {
                 if (chosen.builder != Builder::File) throw;
                 // A mesh that cannot be read by the file builder can still be looked at.

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "LargeArrays.h"
+
 namespace conescope {
 
 Rows facesAroundVertices(const Mesh& mesh) {
@@ -29,26 +31,76 @@ Rows facesAroundVertices(const Mesh& mesh) {
     return rows;
 }
 
-namespace {
-
-bool faceHasVertex(const Mesh& mesh, uint32_t face, uint32_t vertex) {
-    const uint32_t* vertices = mesh.faceBegin(face);
-    return std::find(vertices, vertices + mesh.faceSize(face), vertex) != vertices + mesh.faceSize(face);
+std::vector<HalfEdge> sortedHalfEdges(const Mesh& mesh, std::vector<uint32_t>* sideOf) {
+    // A counting sort by the smaller vertex, then each vertex's few half-edges sorted by key in
+    // place (stably: the face order they were filled in stays within an edge). Linear where a
+    // sort of all half-edges by key is not, and it was most of the mesh checks' time.
+    std::vector<uint32_t> starts(mesh.positions.size() + 1, 0);
+    for (size_t f = 0; f < mesh.faceCount(); ++f) forEachSide(mesh, f, [&](uint32_t a, uint32_t b) { ++starts[std::min(a, b) + 1]; });
+    for (size_t v = 0; v + 1 < starts.size(); ++v) starts[v + 1] += starts[v];
+    std::vector<HalfEdge> edges;
+    resizeLarge(edges, starts.back());
+    std::vector<uint32_t> sides;
+    if (sideOf) resizeLarge(sides, edges.size());
+    std::vector<uint32_t> cursor(starts.begin(), starts.end() - 1);
+    for (size_t f = 0; f < mesh.faceCount(); ++f) {
+        uint32_t side = mesh.faceStarts[f];
+        forEachSide(mesh, f, [&](uint32_t a, uint32_t b) {
+            const uint32_t at = cursor[std::min(a, b)]++;
+            edges[at] = HalfEdge{edgeKey(a, b), uint32_t(f), a < b};
+            if (sideOf) sides[at] = side;
+            ++side;
+        });
+    }
+    std::vector<uint32_t> order;
+    std::vector<HalfEdge> movedEdges;
+    std::vector<uint32_t> movedSides;
+    for (size_t v = 0; v + 1 < starts.size(); ++v) {
+        const uint32_t begin = starts[v], end = starts[v + 1];
+        if (end - begin < 2) continue;
+        if (end - begin <= 32) {  // insertion sort, carrying the sides along
+            for (uint32_t i = begin + 1; i < end; ++i)
+                for (uint32_t j = i; j > begin && edges[j - 1].key > edges[j].key; --j) {
+                    std::swap(edges[j - 1], edges[j]);
+                    if (sideOf) std::swap(sides[j - 1], sides[j]);
+                }
+            continue;
+        }
+        order.resize(end - begin);  // a vertex of many edges (a fan's centre)
+        for (uint32_t i = 0; i < order.size(); ++i) order[i] = begin + i;
+        std::stable_sort(order.begin(), order.end(), [&](uint32_t x, uint32_t y) { return edges[x].key < edges[y].key; });
+        movedEdges.clear(), movedSides.clear();
+        for (uint32_t i : order) {
+            movedEdges.push_back(edges[i]);
+            if (sideOf) movedSides.push_back(sides[i]);
+        }
+        std::copy(movedEdges.begin(), movedEdges.end(), edges.begin() + begin);
+        if (sideOf) std::copy(movedSides.begin(), movedSides.end(), sides.begin() + begin);
+    }
+    if (sideOf) *sideOf = std::move(sides);
+    return edges;
 }
 
-}  // namespace
-
-Rows facesAcrossEdges(const Mesh& mesh, const Rows& aroundVertex) {
+Rows facesAcrossEdges(const Mesh& mesh) {
+    std::vector<uint32_t> sideOf;
+    const std::vector<HalfEdge> edges = sortedHalfEdges(mesh, &sideOf);
+    // Where each side's edge starts among the sorted half-edges.
+    std::vector<uint32_t> edgeOfSide(mesh.faceVertices.size(), 0);
+    for (size_t i = 0, first = 0; i < edges.size(); ++i) {
+        if (edges[i].key != edges[first].key) first = i;
+        edgeOfSide[sideOf[i]] = uint32_t(first);
+    }
     Rows rows;
     rows.starts.assign(mesh.faceCount() + 1, 0);
-    rows.items.reserve(mesh.faceVertices.size());
+    rows.items.reserve(edges.size());
     for (size_t f = 0; f < mesh.faceCount(); ++f) {
         const size_t rowStart = rows.items.size();
-        forEachSide(mesh, f, [&](uint32_t a, uint32_t b) {
-            for (const uint32_t* g = aroundVertex.begin(a); g != aroundVertex.end(a); ++g) {
-                if (*g == f || !faceHasVertex(mesh, *g, b)) continue;
-                if (std::find(rows.items.begin() + long(rowStart), rows.items.end(), *g) == rows.items.end())
-                    rows.items.push_back(*g);
+        uint32_t side = mesh.faceStarts[f];
+        forEachSide(mesh, f, [&](uint32_t, uint32_t) {
+            const uint32_t first = edgeOfSide[side++];
+            for (uint32_t i = first; i < edges.size() && edges[i].key == edges[first].key; ++i) {
+                const uint32_t g = edges[i].face;
+                if (g != f && std::find(rows.items.begin() + long(rowStart), rows.items.end(), g) == rows.items.end()) rows.items.push_back(g);
             }
         });
         rows.starts[f + 1] = uint32_t(rows.items.size());

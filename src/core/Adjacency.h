@@ -38,7 +38,20 @@ inline uint64_t edgeKey(uint32_t a, uint32_t b) { return uint64_t(std::min(a, b)
 // Faces around each vertex, in face order; a face that repeats a vertex is listed once.
 Rows facesAroundVertices(const Mesh& mesh);
 
-// Faces sharing a side (both of its end points) with each face, every face once per row.
-Rows facesAcrossEdges(const Mesh& mesh, const Rows& aroundVertex);
+// A side of a face as a half-edge: the edge it runs along, the face, and which way the face runs it.
+struct HalfEdge {
+    uint64_t key;   // edgeKey
+    uint32_t face;
+    bool forward;   // the face runs the edge from its smaller to its larger vertex
+};
+
+// Every side of every face (forEachSide), sorted by edge key, the sides of one edge in face order.
+// `sideOf`, when given, gets for each half-edge its side as an index into mesh.faceVertices (the
+// face's start plus the side's number among the face's sides).
+std::vector<HalfEdge> sortedHalfEdges(const Mesh& mesh, std::vector<uint32_t>* sideOf = nullptr);
+
+// Faces that run a side of each face too, in the order of the face's sides and, along one side, of
+// the faces; every face once per row.
+Rows facesAcrossEdges(const Mesh& mesh);
 
 }  // namespace conescope

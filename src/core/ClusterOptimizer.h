@@ -7,6 +7,7 @@
 
 #include "ExpectedCull.h"  // the objective, expectedCullRate
 #include "Mesh.h"
+#include "MeshletStream.h"
 #include "Partition.h"
 #include "Progress.h"
 
@@ -42,15 +43,18 @@ size_t defaultClusterBudget(const Mesh& mesh, const MeshletLimits& limits);
 // many (between whole meshlets where they are the start), which share the budget and are optimised
 // independently, on all cores. targetClusters = 0 uses defaultClusterBudget; the result has at most
 // targetClusters clusters whenever the limits allow meshoptimizer's count.
+// From meshoptimizer's meshlets the parts are those they come in (MeshletStream.h): consecutive
+// meshlets, each part refined as soon as it is made, on one core while the meshlets are still
+// being built on the other, then on both.
 // Deterministic: the same input gives the same partition, on any number of cores.
 // `progress` hears (parts done / parts, "clusters") as parts finish, on the calling thread;
 // returning false stops the parts not yet started and throws OperationCancelled.
-// `meshoptStart`: buildMeshoptMeshlets(mesh, limits, 1) when startsFromMeshoptMeshlets, already built
-// (say while the mesh was being prepared); built here when needed and not given. At those levels a
-// budget of meshoptimizer's count gives the same clusters as the default budget.
+// `meshlets`: meshoptimizer's meshlets of this mesh at these limits when startsFromMeshoptMeshlets,
+// already started (say while the mesh was being prepared); started here when needed and not given.
+// Its thread helps with the parts once its meshlets are made, so a stream serves one build.
 Partition buildOptimizedClusters(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits,
                                  size_t targetClusters = 0, const ProgressCallback& progress = {},
-                                 Effort effort = Effort::Balanced, const Partition* meshoptStart = nullptr);
+                                 Effort effort = Effort::Balanced, MeshletStream* meshlets = nullptr);
 
 // Whether buildOptimizedClusters starts from meshoptimizer's meshlets at cone weight 1 (and takes
 // their count as the default budget): the fast levels at limits meshoptimizer takes, for budgets up

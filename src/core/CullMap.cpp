@@ -20,7 +20,7 @@ CullMap computeCullMap(const FaceGeometry& faces, const ClusterBounds& bounds) {
                 if (!faces.degenerate[bounds.faces.faces[i]]) normals.push_back(faces.normals[bounds.faces.faces[i]]);
             map.octagonFraction[c] = octagonCullShare(bounds.octagons[c]);
             // Exact areas: only rounding could put the oracle's below the regions it holds.
-            map.oracleFraction[c] = std::max({normalsCullShare(normals.data(), normals.size()), map.octagonFraction[c],
+            map.oracleFraction[c] = std::max({normalsCullShare(normals.data(), normals.size(), &cone), map.octagonFraction[c],
                                               map.coneFraction[c]});
         }
     });

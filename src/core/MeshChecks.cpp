@@ -13,21 +13,6 @@ namespace conescope {
 
 namespace {
 
-struct HalfEdge {
-    uint64_t key;    // (smaller vertex << 32) | larger vertex
-    uint32_t face;
-    bool forward;    // the face runs the edge from smaller to larger vertex
-};
-
-std::vector<HalfEdge> sortedHalfEdges(const Mesh& mesh) {
-    std::vector<HalfEdge> edges;
-    reserveLarge(edges, mesh.faceVertices.size());
-    for (size_t f = 0; f < mesh.faceCount(); ++f)
-        forEachSide(mesh, f, [&](uint32_t a, uint32_t b) { edges.push_back({edgeKey(a, b), uint32_t(f), a < b}); });
-    std::sort(edges.begin(), edges.end(), [](const HalfEdge& x, const HalfEdge& y) { return x.key < y.key; });
-    return edges;
-}
-
 // Walks faces across manifold edges choosing for each face whether it must flip to agree with the
 // face it was reached from. Returns flip flags, component ids and whether any cycle contradicted.
 struct Orientation {

@@ -298,7 +298,7 @@ struct Builder {
     }
 
     // Places t: in the meshlet if its new vertices and one more triangle fit, else in a new one.
-    void place(uint32_t t, std::vector<uint32_t>& meshletOfTriangle, std::vector<uint32_t>& order) {
+    void place(uint32_t t, std::vector<uint32_t>& meshletOfTriangle) {
         const uint32_t* c = corners(t);
         const unsigned int extra = (used[c[0]] == kUnused) + (used[c[1]] == kUnused) + (used[c[2]] == kUnused);
         if (vertices.size() + extra > maxVertices || triangles >= maxTriangles) {
@@ -319,7 +319,6 @@ struct Builder {
             }
         ++triangles;
         meshletOfTriangle[t] = meshlet;
-        order.push_back(t);
         for (int k = 0; k < 3; ++k) {  // out of the lists of its corners, the last taking its place
             uint32_t* list = around.data() + offsets[c[k]];
             const uint32_t size = counts[c[k]];
@@ -351,11 +350,15 @@ struct Builder {
 
 }  // namespace
 
-MeshoptMeshlets reproduceMeshoptMeshlets(const uint32_t* indices, size_t indexCount, const float* positions, size_t vertexCount,
-                                         size_t positionStride, size_t maxVertices, size_t maxTriangles, float coneWeight) {
-    MeshoptMeshlets result;
+void reproduceMeshoptMeshlets(MeshoptMeshlets& result, const uint32_t* indices, size_t indexCount, const float* positions,
+                              size_t vertexCount, size_t positionStride, size_t maxVertices, size_t maxTriangles, float coneWeight,
+                              const MeshletClosed& closed) {
+    result = MeshoptMeshlets{};
     const size_t triangleCount = indexCount / 3;
-    if (triangleCount == 0) return result;
+    if (triangleCount == 0) {
+        if (closed) closed(0, 0);
+        return;
+    }
     Builder b;
     b.indices = indices;
     b.triangleCount = triangleCount;
@@ -390,7 +393,8 @@ MeshoptMeshlets reproduceMeshoptMeshlets(const uint32_t* indices, size_t indexCo
     b.rank.assign(triangleCount, 0);
     b.vertices.reserve(maxVertices);
     result.meshletOfTriangle.assign(triangleCount, kNone);
-    result.placementOrder.reserve(triangleCount);
+    result.placementOrder.assign(triangleCount, kNone);
+    size_t placed = 0;
     for (;;) {
         const Cone cone = meshletCone(b.sum, b.triangles);
         bool visitInstead = false;
@@ -398,9 +402,24 @@ MeshoptMeshlets reproduceMeshoptMeshlets(const uint32_t* indices, size_t indexCo
         if (visitInstead) best = b.bestByVisiting(cone);
         if (best == kNone) best = b.nearestUnplaced(cone);
         if (best == kNone) break;
-        b.place(best, result.meshletOfTriangle, result.placementOrder);
+        const uint32_t meshletBefore = b.meshlet;
+        b.place(best, result.meshletOfTriangle);
+        if (b.meshlet != meshletBefore && closed && !closed(b.meshlet, placed)) {
+            result.placementOrder.resize(placed);
+            result.count = b.meshlet;
+            return;
+        }
+        result.placementOrder[placed++] = best;
     }
+    result.placementOrder.resize(placed);
     result.count = b.meshlet + (b.triangles > 0 ? 1 : 0);
+    if (closed) closed(result.count, placed);
+}
+
+MeshoptMeshlets reproduceMeshoptMeshlets(const uint32_t* indices, size_t indexCount, const float* positions, size_t vertexCount,
+                                         size_t positionStride, size_t maxVertices, size_t maxTriangles, float coneWeight) {
+    MeshoptMeshlets result;
+    reproduceMeshoptMeshlets(result, indices, indexCount, positions, vertexCount, positionStride, maxVertices, maxTriangles, coneWeight);
     return result;
 }
 

@@ -7,6 +7,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace conescope {
@@ -22,8 +23,20 @@ struct MeshoptMeshlets {
     size_t count = 0;                         // meshlets
 };
 
+// Hears (meshlets closed, triangles placed) each time a meshlet is closed, the last one included,
+// from the building thread: every triangle placed so far is in a closed meshlet or the open one,
+// and the result's entries for them are final. Returning false stops the building (the result
+// then holds what was placed).
+using MeshletClosed = std::function<bool(size_t closedMeshlets, size_t placedTriangles)>;
+
 // The arguments are meshopt_buildMeshlets' (positionStride in bytes); the limits must be ones it
-// takes (meshoptTakesLimits). Indices must be below vertexCount.
+// takes (meshoptTakesLimits). Indices must be below vertexCount. `result`'s vectors are sized
+// before the first triangle is placed, so that a listener may read placed entries while it runs.
+void reproduceMeshoptMeshlets(MeshoptMeshlets& result, const uint32_t* indices, size_t indexCount, const float* positions,
+                              size_t vertexCount, size_t positionStride, size_t maxVertices, size_t maxTriangles, float coneWeight,
+                              const MeshletClosed& closed = {});
+
+// The same, returned.
 MeshoptMeshlets reproduceMeshoptMeshlets(const uint32_t* indices, size_t indexCount, const float* positions, size_t vertexCount,
                                          size_t positionStride, size_t maxVertices, size_t maxTriangles, float coneWeight);
 

@@ -42,10 +42,34 @@ Projection project(const glm::dvec3& axis, const glm::dvec3* normals, size_t cou
 
 double turn(const Point& o, const Point& a, const Point& b) { return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x); }
 
-// Convex hull, counter-clockwise (Andrew's monotone chain), as indices into `points`.
+// Convex hull, counter-clockwise (Andrew's monotone chain), as indices into `points`. Points
+// strictly inside the quadrilateral of the four extreme points (lowest and highest x + y and
+// x - y) cannot be corners and are left out before the sort: most of a cluster's normals.
 std::vector<uint32_t> convexHull(const std::vector<Point>& points) {
-    std::vector<uint32_t> order(points.size());
-    for (uint32_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::vector<uint32_t> order;
+    order.reserve(points.size());
+    if (points.size() >= 8) {
+        uint32_t extreme[4] = {0, 0, 0, 0};  // min x+y, max x-y, max x+y, min x-y: counter-clockwise
+        for (uint32_t i = 1; i < points.size(); ++i) {
+            const Point& p = points[i];
+            if (p.x + p.y < points[extreme[0]].x + points[extreme[0]].y) extreme[0] = i;
+            if (p.x - p.y > points[extreme[1]].x - points[extreme[1]].y) extreme[1] = i;
+            if (p.x + p.y > points[extreme[2]].x + points[extreme[2]].y) extreme[2] = i;
+            if (p.x - p.y < points[extreme[3]].x - points[extreme[3]].y) extreme[3] = i;
+        }
+        for (uint32_t i = 0; i < points.size(); ++i) {
+            bool inside = true;  // strictly left of every side of the quadrilateral (a margin against rounding)
+            for (int k = 0; k < 4 && inside; ++k) {
+                const Point& a = points[extreme[k]];
+                const Point& b = points[extreme[(k + 1) % 4]];
+                const double scale = std::abs(b.x - a.x) + std::abs(b.y - a.y);
+                inside = (b.x - a.x) * (points[i].y - a.y) - (b.y - a.y) * (points[i].x - a.x) > 1e-9 * scale * (scale + 1.0);
+            }
+            if (!inside) order.push_back(i);
+        }
+    } else {
+        for (uint32_t i = 0; i < points.size(); ++i) order.push_back(i);
+    }
     std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
         return points[a].x < points[b].x || (points[a].x == points[b].x && points[a].y < points[b].y);
     });
@@ -178,9 +202,11 @@ OctagonCone octagonCone(const ConeOfNormals& cone, const glm::dvec3* normals, si
     return octagon;
 }
 
-double normalsCullShare(const glm::dvec3* normals, size_t count) {
+double normalsCullShare(const glm::dvec3* normals, size_t count, const ConeOfNormals* holding) {
     if (count == 0) return 0.0;
-    const ConeOfNormals cone = minimalCone(normals, count);
+    // Any cone holding every normal in front of its axis gives the same hull; else the minimal one decides.
+    const bool given = holding && holding->cullable && holding->cosHalfAngle > 0.0;
+    const ConeOfNormals cone = given ? *holding : minimalCone(normals, count);
     if (!cone.cullable || !(cone.cosHalfAngle > 0.0)) return 0.0;
     const Projection projection = project(cone.axis, normals, count);
     if (projection.points.empty()) return 0.0;

@@ -47,9 +47,10 @@ double octagonCullShare(const OctagonCone& octagon);
 
 // The same for the normals themselves: the share of view directions from which every one faces
 // away, (2 pi - the perimeter of their convex hull on the sphere) / 4 pi, exactly. The hull is
-// found in the gnomonic plane about the axis of their minimal cone. 0 when no open hemisphere holds
-// them (they then face every direction somewhere) or there are none.
-double normalsCullShare(const glm::dvec3* normals, size_t count);
+// found in the gnomonic plane about the axis of `holding` (a cone that holds them all, such as the
+// cluster's bounds), or else of their minimal cone. 0 when no open hemisphere holds them (they then
+// face every direction somewhere) or there are none.
+double normalsCullShare(const glm::dvec3* normals, size_t count, const ConeOfNormals* holding = nullptr);
 
 // The eight edges of the pyramid of eyes it culls from (unit directions from the apex, in order):
 // each is perpendicular to two neighbouring edges of the octagon, on the side away from the others.

@@ -242,7 +242,8 @@ std::vector<uint32_t> giveUnplacedFacesACluster(std::vector<uint32_t> clusterOfF
     return clusterOfFace;
 }
 
-// The faces as fan triangles, in face order: what meshoptimizer's builder takes.
+}  // namespace
+
 std::vector<uint32_t> fanTriangles(const Mesh& mesh) {
     std::vector<uint32_t> indices;
     indices.reserve(triangleCount(mesh) * 3);
@@ -257,7 +258,14 @@ std::vector<uint32_t> fanTriangles(const Mesh& mesh) {
     return indices;
 }
 
-}  // namespace
+Partition facesOfMeshlets(const Mesh& mesh, const MeshoptMeshlets& meshlets) {
+    std::vector<uint32_t> clusterOfFace(mesh.faceCount(), kUnassigned);
+    size_t triangle = 0;
+    for (size_t f = 0; f < mesh.faceCount(); ++f)
+        for (size_t k = 1; k + 1 < mesh.faceSize(f); ++k, ++triangle)
+            clusterOfFace[f] = std::min(clusterOfFace[f], meshlets.meshletOfTriangle[triangle]);
+    return renumberClusters(giveUnplacedFacesACluster(std::move(clusterOfFace)));
+}
 
 size_t meshoptMeshletCount(const Mesh& mesh, const MeshletLimits& limits, float coneWeight) {
     requireMeshoptLimits(limits);
@@ -281,15 +289,8 @@ Partition buildMeshoptMeshlets(const Mesh& mesh, const MeshletLimits& limits, fl
     requireMeshoptLimits(limits);
     const std::vector<uint32_t> indices = fanTriangles(mesh);
     if (indices.empty()) return renumberClusters(std::vector<uint32_t>(mesh.faceCount(), 0));
-    const MeshoptMeshlets meshlets = reproduceMeshoptMeshlets(indices.data(), indices.size(), &mesh.positions[0].x, mesh.positions.size(),
-                                                              sizeof(glm::vec3), limits.maxVertices, limits.maxTriangles, coneWeight);
-    // A polygon goes with the first meshlet holding one of its fan triangles.
-    std::vector<uint32_t> clusterOfFace(mesh.faceCount(), kUnassigned);
-    size_t triangle = 0;
-    for (size_t f = 0; f < mesh.faceCount(); ++f)
-        for (size_t k = 1; k + 1 < mesh.faceSize(f); ++k, ++triangle)
-            clusterOfFace[f] = std::min(clusterOfFace[f], meshlets.meshletOfTriangle[triangle]);
-    return renumberClusters(giveUnplacedFacesACluster(std::move(clusterOfFace)));
+    return facesOfMeshlets(mesh, reproduceMeshoptMeshlets(indices.data(), indices.size(), &mesh.positions[0].x, mesh.positions.size(),
+                                                          sizeof(glm::vec3), limits.maxVertices, limits.maxTriangles, coneWeight));
 }
 
 Partition meshoptLibraryMeshlets(const Mesh& mesh, const MeshletLimits& limits, float coneWeight) {

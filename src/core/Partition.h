@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "Mesh.h"
+#include "MeshoptMeshlets.h"
 
 namespace conescope {
 
@@ -28,6 +29,14 @@ Partition buildMeshlets(const Mesh& mesh, const FaceGeometry& faces, const Meshl
 // Lloyd iterations on (position / mesh size, normal * normalWeight) to `clusterCount` clusters.
 Partition buildKMeans(const Mesh& mesh, const FaceGeometry& faces, size_t clusterCount, double normalWeight = 1.0,
                       size_t iterations = 12, uint64_t seed = 1);
+
+// The faces as fan triangles, in face order: what meshoptimizer's builder takes.
+std::vector<uint32_t> fanTriangles(const Mesh& mesh);
+
+// The partition of faces that meshlets made from fanTriangles(mesh) give: a polygon goes with the
+// first meshlet holding one of its fan triangles; a face the library left unplaced (centres near
+// the float range, where its k-d tree finds nothing) goes with the face before it.
+Partition facesOfMeshlets(const Mesh& mesh, const MeshoptMeshlets& meshlets);
 
 // meshoptimizer's meshopt_buildMeshlets on the fan triangulation. A polygon goes to the first
 // meshlet holding one of its fan triangles. Made by reproduceMeshoptMeshlets (MeshoptMeshlets.h)

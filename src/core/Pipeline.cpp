@@ -73,7 +73,7 @@ PreparedMesh prepareMesh(std::shared_ptr<const Mesh> mesh, const std::string& pa
 }
 
 ClusterSet buildClusters(const PreparedMesh& prepared, const Settings& settings, const ClusterSet* previous,
-                         const ProgressCallback& progress, const Partition* meshoptStart) {
+                         const ProgressCallback& progress, MeshletStream* meshlets) {
     ClusterSet clusters;
     clusters.settings = settings;
     if (previous && !partitionChanged(previous->settings, settings)) {
@@ -85,7 +85,7 @@ ClusterSet buildClusters(const PreparedMesh& prepared, const Settings& settings,
         const auto start = std::chrono::steady_clock::now();
         // The builder's own progress (parts done) fills the stage's share, under the stage's name.
         clusters.partition =
-            buildPartition(prepared.mesh(), prepared.faces, settings, progressWithin(progress, 0.0, 0.6, stage), meshoptStart);
+            buildPartition(prepared.mesh(), prepared.faces, settings, progressWithin(progress, 0.0, 0.6, stage), meshlets);
         clusters.partitionSeconds = secondsSince(start);
     }
     report(progress, 0.6, "bounds (" + toString(displayedCone(settings)) + ")");
@@ -99,9 +99,10 @@ ClusterSet buildClusters(const PreparedMesh& prepared, const Settings& settings,
     return clusters;
 }
 
-std::future<Partition> meshoptStartInBackground(std::shared_ptr<const Mesh> mesh, const Settings& settings) {
+std::shared_ptr<MeshletStream> meshoptStartInBackground(std::shared_ptr<const Mesh> mesh, const Settings& settings) {
     if (!startsFromMeshoptMeshlets(settings) || settings.fixWinding || mesh->faceCount() == 0) return {};
-    return std::async(std::launch::async, [mesh, limits = settings.limits] { return buildMeshoptMeshlets(*mesh, limits, 1.0f); });
+    const size_t parts = meshletPartsFor(mesh->faceCount());
+    return std::make_shared<MeshletStream>(std::move(mesh), settings.limits, parts);
 }
 
 CullingInput cullingInput(const PreparedMesh& prepared, const ClusterSet& clusters) {
@@ -250,12 +251,10 @@ RunStatistics runStatistics(const Mesh& mesh, const Settings& settings, const st
     // Borrowed for the call: the stages keep the mesh by shared pointer, and this one outlives them.
     const std::shared_ptr<const Mesh> borrowed(&mesh, [](const Mesh*) {});
     // meshoptimizer's meshlets on one core while the mesh is prepared on the other.
-    std::future<Partition> start = meshoptStartInBackground(borrowed, settings);
+    const std::shared_ptr<MeshletStream> meshlets = meshoptStartInBackground(borrowed, settings);
     PreparedMesh prepared = prepareMesh(borrowed, meshName, settings.fixWinding, progressWithin(progress, 0.0, 0.05));
     prepared.name = meshName;
-    const std::optional<Partition> meshlets = start.valid() ? std::optional<Partition>(start.get()) : std::nullopt;
-    const ClusterSet clusters =
-        buildClusters(prepared, settings, nullptr, progressWithin(progress, 0.05, 0.1), meshlets ? &*meshlets : nullptr);
+    const ClusterSet clusters = buildClusters(prepared, settings, nullptr, progressWithin(progress, 0.05, 0.1), meshlets.get());
     return measureRun(prepared, clusters, settings, progressWithin(progress, 0.1, 1.0));
 }
 

@@ -68,16 +68,16 @@ PreparedMesh prepareMesh(std::shared_ptr<const Mesh> mesh, const std::string& pa
                          const ProgressCallback& progress = {});
 
 // Partition (buildPartition) then bounds for the displayed cone (computeClusterBounds). Reuses
-// `previous` partition when only the cone or sphere changed. `meshoptStart`: the builder's start
-// when it was made beforehand (meshoptStartInBackground).
+// `previous` partition when only the cone or sphere changed. `meshlets`: the builder's start
+// when it was started beforehand (meshoptStartInBackground).
 ClusterSet buildClusters(const PreparedMesh& prepared, const Settings& settings, const ClusterSet* previous = nullptr,
-                         const ProgressCallback& progress = {}, const Partition* meshoptStart = nullptr);
+                         const ProgressCallback& progress = {}, MeshletStream* meshlets = nullptr);
 
-// meshoptimizer's meshlets that buildClusters starts from with these settings, built on another
+// meshoptimizer's meshlets that buildClusters starts from with these settings, started on another
 // thread from the mesh as read, so that they are made while prepareMesh works on the same mesh
-// (they need neither its face geometry nor its checks). An empty future when the settings start
-// elsewhere (startsFromMeshoptMeshlets) or repair the winding (the faces would change).
-std::future<Partition> meshoptStartInBackground(std::shared_ptr<const Mesh> mesh, const Settings& settings);
+// (they need neither its face geometry nor its checks). Null when the settings start elsewhere
+// (startsFromMeshoptMeshlets) or repair the winding (the faces would change).
+std::shared_ptr<MeshletStream> meshoptStartInBackground(std::shared_ptr<const Mesh> mesh, const Settings& settings);
 
 CullingInput cullingInput(const PreparedMesh& prepared, const ClusterSet& clusters);
 

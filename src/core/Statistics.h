@@ -90,9 +90,9 @@ struct RunStatistics {
 
 // Builds the partition the settings ask for. The optimized builder reports its progress through
 // `progress` (stage "clusters") and can be cancelled there; the others report nothing.
-// `meshoptStart`: meshoptimizer's meshlets when startsFromMeshoptMeshlets(settings), if already built.
+// `meshlets`: meshoptimizer's meshlets when startsFromMeshoptMeshlets(settings), if already started.
 Partition buildPartition(const Mesh& mesh, const FaceGeometry& faces, const Settings& settings,
-                         const ProgressCallback& progress = {}, const Partition* meshoptStart = nullptr);
+                         const ProgressCallback& progress = {}, MeshletStream* meshlets = nullptr);
 
 // Whether the settings' builder starts from meshoptimizer's meshlets at cone weight 1 (the optimized
 // builder at its fast levels): those can be built before the face geometry.

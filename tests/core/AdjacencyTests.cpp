@@ -25,7 +25,7 @@ TEST(Adjacency, QuadCubeFacesAroundVerticesAndAcrossEdges) {
         EXPECT_TRUE(std::is_sorted(faces.begin(), faces.end()));
         for (uint32_t f : faces) EXPECT_NE(std::count(cube.faceBegin(f), cube.faceBegin(f) + 4, v), 0);
     }
-    const Rows across = facesAcrossEdges(cube, around);
+    const Rows across = facesAcrossEdges(cube);
     ASSERT_EQ(across.starts.size(), cube.faceCount() + 1);
     for (size_t f = 0; f < cube.faceCount(); ++f) {
         const std::vector<uint32_t> neighbours = row(across, f);
@@ -56,8 +56,8 @@ TEST(Adjacency, FaceRepeatingAVertexIsListedOnceAndItsCollapsedSideIsNoSide) {
     forEachSide(mesh, 2, [&](uint32_t a, uint32_t b) { sides.emplace_back(a, b); });
     EXPECT_EQ(sides, (std::vector<std::pair<uint32_t, uint32_t>>{{0, 3}, {3, 2}, {2, 0}}));
 
-    const Rows across = facesAcrossEdges(mesh, around);
-    // In the order the sides and the faces around their first end point are met, each face once.
+    const Rows across = facesAcrossEdges(mesh);
+    // In the order of the face's sides and, along a side, of the faces; each face once.
     EXPECT_EQ(row(across, 0), (std::vector<uint32_t>{1, 2}));  // side 2-0
     EXPECT_EQ(row(across, 1), (std::vector<uint32_t>{0, 2}));  // side 0-2; 2-3 and 3-0 again face 2
     EXPECT_EQ(row(across, 2), (std::vector<uint32_t>{1, 0}));  // sides 0-3 and 2-0

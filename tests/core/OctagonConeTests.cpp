@@ -3,6 +3,7 @@
 // test culls from eyes the round apex test cannot.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -94,6 +95,42 @@ TEST(OctagonCone, ShareIsTheExactAreaAndBeatsTheCapOnAnArc) {
     const double share = octagonCullShare(octagonCone(cone, round.data(), round.size()));
     EXPECT_LT(share, coneCullShare(cone.sinHalfAngle));
     EXPECT_GT(share, 0.9 * coneCullShare(cone.sinHalfAngle));
+}
+
+TEST(OctagonCone, NormalsShareIsTheSameAboutAnyConeThatHoldsThem) {
+    // The hull of the normals on the sphere does not depend on the axis they are projected about:
+    // the minimal cone's, the average cone's, or none given. Many normals (most inside the hull,
+    // which the hull leaves out before sorting) and few; round and squeezed spreads.
+    std::mt19937_64 random(17);
+    for (int round = 0; round < 300; ++round) {
+        const size_t count = 3 + size_t(round % 150);
+        const std::vector<glm::dvec3> normals = randomNormals(random, count, 3.0 + double(round % 80), 1.0 + double(round % 9));
+        const double alone = normalsCullShare(normals.data(), normals.size());
+        const ConeOfNormals minimal = minimalCone(normals.data(), normals.size()), average = averageCone(normals.data(), normals.size());
+        EXPECT_NEAR(normalsCullShare(normals.data(), normals.size(), &minimal), alone, 1e-12) << round;
+        if (average.cullable && average.cosHalfAngle > 0.0) EXPECT_NEAR(normalsCullShare(normals.data(), normals.size(), &average), alone, 1e-12) << round;
+        // Against the hull found the slow way: an edge from n_i to n_j is on it when every other normal
+        // lies on one side of the plane through both (random normals: none on that plane).
+        if (count <= 60) {
+            double perimeter = 0.0;
+            for (size_t i = 0; i < count; ++i)
+                for (size_t j = 0; j < count; ++j) {
+                    if (i == j) continue;
+                    const glm::dvec3 side = glm::cross(normals[i], normals[j]);
+                    bool allLeft = true;
+                    for (size_t k = 0; k < count && allLeft; ++k) allLeft = k == i || k == j || glm::dot(side, normals[k]) > 0.0;
+                    if (allLeft) perimeter += std::acos(std::clamp(glm::dot(normals[i], normals[j]), -1.0, 1.0));
+                }
+            EXPECT_NEAR(alone, (2.0 * M_PI - perimeter) / (4.0 * M_PI), 1e-9) << round;
+        }
+        // The polygon of the hull: never below what the octagon and the cap around the same normals give.
+        EXPECT_GE(alone + 1e-12, octagonCullShare(octagonCone(minimal, normals.data(), normals.size()))) << round;
+        EXPECT_GE(alone + 1e-12, coneCullShare(minimal.sinHalfAngle)) << round;
+    }
+    // A cone that does not hold them in front of its axis is not used: the minimal cone decides.
+    const std::vector<glm::dvec3> opposite = {{0, 0, 1}, {0, 0, -1}};
+    const ConeOfNormals notCullable{};
+    EXPECT_EQ(normalsCullShare(opposite.data(), 2, &notCullable), 0.0);
 }
 
 TEST(OctagonCone, CullsACylinderStripWhereTheRoundConeCannot) {

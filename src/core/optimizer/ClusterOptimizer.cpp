@@ -91,9 +91,6 @@ void reduceAndSearch(optimizer::State& state, size_t target, size_t sweeps) {
     }
 }
 
-// From this many faces the fast levels work on two halves of the mesh at once.
-constexpr size_t kHalvesFromFaces = size_t(1) << 14;
-
 // Below this many faces the best effort also starts from meshoptimizer's meshlets every time: on
 // small meshes of few clusters growth can end below meshoptimizer's own objective (CGAL's patch-01,
 // dragknob, patch-13), and the second start costs little there.
@@ -154,42 +151,96 @@ bool startsFromMeshoptMeshlets(const MeshletLimits& limits, Effort effort) {
     return !planFor(effort).growthStart && meshoptTakesLimits(limits);
 }
 
+namespace {
+
+// The optimisation from meshoptimizer's meshlets, part by part as the stream makes them: this
+// thread takes parts in order as they come, and the stream's thread takes them too once its
+// meshlets are made. Each part keeps its own meshlet count at the default budget (`target` 0);
+// a smaller budget is shared by the meshlets each part holds.
+Partition optimizeMeshletParts(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits, size_t target,
+                               const SearchPlan& plan, size_t sweeps, MeshletStream& stream, const ProgressCallback& progress) {
+    const size_t partCount = stream.partCount();
+    std::vector<size_t> targets(partCount, 0);
+    if (target != 0) {
+        std::vector<size_t> held(partCount);
+        for (size_t i = 0; i < partCount; ++i) held[i] = stream.part(i).meshlets.clusterCount;
+        targets = optimizer::partTargets(held, target);
+    }
+    std::vector<Partition> results(partCount);
+    std::atomic<size_t> next{0}, partsDone{0};
+    std::atomic<bool> cancelled{false};
+    auto work = [&](size_t worker) {
+        std::vector<uint32_t> newIndex(mesh.positions.size(), optimizer::kNone);
+        for (size_t i; !cancelled && (i = next++) < partCount;) {
+            const MeshletPart& part = stream.part(i);
+            if (!part.faces.empty()) {
+                const optimizer::MeshPart piece = optimizer::extractPart(mesh, faces, part.faces.data(), part.faces.size(), newIndex);
+                const size_t partTarget = target != 0 ? targets[i] : part.meshlets.clusterCount;
+                results[i] = optimizeClusters(piece.mesh, piece.faces, limits, partTarget, plan, sweeps, &part.meshlets);
+            }
+            const size_t done = ++partsDone;
+            // Progress is reported by the calling thread only, so the callback needs no lock.
+            if (worker == 0 && progress && !progress(double(done) / double(partCount), "clusters")) cancelled = true;
+        }
+    };
+    stream.runAfterwards([&] { work(1); });
+    try {
+        work(0);
+    } catch (...) {
+        cancelled = true;
+        try {
+            stream.finishWork();
+        } catch (...) {
+        }
+        throw;
+    }
+    stream.finishWork();
+    if (cancelled || (progress && !progress(1.0, "clusters"))) throw OperationCancelled();
+    if (partCount == 1) return results[0];
+    optimizer::Parts parts;
+    parts.starts.assign(1, 0);
+    for (size_t i = 0; i < partCount; ++i) {
+        const MeshletPart& part = stream.part(i);
+        parts.faces.insert(parts.faces.end(), part.faces.begin(), part.faces.end());
+        parts.starts.push_back(uint32_t(parts.faces.size()));
+    }
+    return optimizer::joinParts(parts, results);
+}
+
+bool sameLimits(const MeshletLimits& a, const MeshletLimits& b) { return a.maxVertices == b.maxVertices && a.maxTriangles == b.maxTriangles; }
+
+}  // namespace
+
 Partition buildOptimizedClusters(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits,
                                  size_t targetClusters, const ProgressCallback& progress, Effort effort,
-                                 const Partition* meshoptStart) {
+                                 MeshletStream* meshlets) {
     const size_t faceCount = mesh.faceCount();
     if (faceCount == 0) return {};
     const SearchPlan plan = planFor(effort);
     const size_t sweeps = annealingSweeps(plan, faceCount);
-    // The fast levels start from meshoptimizer's meshlets, built once (or while the mesh was
-    // prepared), whose count is the default budget; a budget above it is grown instead. A large mesh
-    // is cut into parts between whole meshlets, which share the budget by the meshlets they hold (at
-    // the default budget: exactly those, so no part needs reducing).
-    std::optional<Partition> built;
-    const Partition* meshlets = nullptr;
-    size_t target = targetClusters;
+    // The fast levels start from meshoptimizer's meshlets, whose count is the default budget; a
+    // budget above it is grown instead.
+    std::unique_ptr<MeshletStream> ownStream;
     if (startsFromMeshoptMeshlets(limits, effort)) {
-        meshlets = meshoptStart ? meshoptStart : &built.emplace(buildMeshoptMeshlets(mesh, limits, 1.0f));
-        if (target == 0) target = meshlets->clusterCount;
-        if (target > meshlets->clusterCount) meshlets = nullptr;
-    } else if (target == 0) {
-        target = defaultClusterBudget(mesh, limits);
+        if (!meshlets || &meshlets->mesh() != &mesh || !sameLimits(meshlets->limits(), limits)) {
+            ownStream = std::make_unique<MeshletStream>(std::shared_ptr<const Mesh>(&mesh, [](const Mesh*) {}), limits,
+                                                        meshletPartsFor(faceCount));
+            meshlets = ownStream.get();
+        }
+        if (targetClusters == 0 || targetClusters <= meshlets->meshletCount())
+            return optimizeMeshletParts(mesh, faces, limits, targetClusters, plan, sweeps, *meshlets, progress);
     }
-    // From meshoptimizer's meshlets the search is quick and local: a mesh of ordinary size is cut in
-    // two as well, whose halves run at once where there are two cores (the cut depends on the mesh
-    // alone, so the result does not depend on the machine).
-    const size_t maxPartFaces =
-        meshlets && faceCount >= kHalvesFromFaces ? std::min(optimizer::kLargestPart, (faceCount + 1) / 2) : optimizer::kLargestPart;
-    const optimizer::Parts parts = optimizer::splitIntoParts(faces, target, meshlets, maxPartFaces);
+    const size_t target = targetClusters != 0 ? targetClusters : defaultClusterBudget(mesh, limits);
+    const optimizer::Parts parts = optimizer::splitIntoParts(faces, target);
     if (parts.count() == 1) {
-        Partition whole = optimizeClusters(mesh, faces, limits, target, plan, sweeps, meshlets);
+        Partition whole = optimizeClusters(mesh, faces, limits, target, plan, sweeps, nullptr);
         if (progress && !progress(1.0, "clusters")) throw OperationCancelled();
         return whole;
     }
 
     // Parts are optimised independently, as many at once as the machine has cores; the result does
     // not depend on that number.
-    const std::vector<size_t> targets = meshlets ? optimizer::partTargets(*meshlets, parts, target) : optimizer::partTargets(mesh, parts, target);
+    const std::vector<size_t> targets = optimizer::partTargets(mesh, parts, target);
     std::vector<Partition> results(parts.count());
     std::vector<std::vector<uint32_t>> newIndex(threadsFor(parts.count()));  // per thread: kNone per mesh vertex
     // Progress is reported by the calling thread (worker 0) only, so the callback needs no lock; a
@@ -200,12 +251,7 @@ Partition buildOptimizedClusters(const Mesh& mesh, const FaceGeometry& faces, co
         if (cancelled) return;
         if (newIndex[worker].empty()) newIndex[worker].assign(mesh.positions.size(), optimizer::kNone);
         const optimizer::MeshPart part = optimizer::extractPart(mesh, faces, parts.begin(i), parts.size(i), newIndex[worker]);
-        if (meshlets) {
-            const Partition start = optimizer::partOfPartition(*meshlets, parts.begin(i), parts.size(i));
-            results[i] = optimizeClusters(part.mesh, part.faces, limits, targets[i], plan, sweeps, &start);
-        } else {
-            results[i] = optimizeClusters(part.mesh, part.faces, limits, targets[i], plan, sweeps, nullptr);
-        }
+        results[i] = optimizeClusters(part.mesh, part.faces, limits, targets[i], plan, sweeps, nullptr);
         const size_t done = ++partsDone;
         if (worker == 0 && progress && !progress(double(done) / double(parts.count()), "clusters")) cancelled = true;
     });

@@ -15,53 +15,26 @@ namespace {
 // A part keeps at least kMinPartClusters of the budget.
 constexpr size_t kMinPartClusters = 16;
 
-// Where a face sits for the cuts: its centroid, or its cluster's centre when whole clusters are
-// kept together; ties go by cluster, then by face index, so the halves are the same sets whatever
-// order the faces came in.
-struct CutKeys {
-    const FaceGeometry& faces;
-    const Partition* clusters;          // null: faces are cut one by one
-    std::vector<glm::dvec3> centres;    // per cluster
-    const glm::dvec3& point(uint32_t f) const { return clusters ? centres[clusters->clusterOfFace[f]] : faces.centroids[f]; }
-    uint32_t group(uint32_t f) const { return clusters ? clusters->clusterOfFace[f] : f; }
-};
-
-// Splits faces [begin, end) in place at their median point along their box's longest axis; with
-// clusters, the cut moves to the nearest cluster boundary, so no cluster is cut.
-uint32_t* splitAtMedian(const CutKeys& keys, uint32_t* begin, uint32_t* end) {
+// Splits faces [begin, end) in place at their median centroid along their box's longest axis; ties
+// go by face index, so the halves are the same sets whatever order the faces came in.
+uint32_t* splitAtMedian(const FaceGeometry& faces, uint32_t* begin, uint32_t* end) {
     glm::dvec3 low(std::numeric_limits<double>::infinity()), high(-std::numeric_limits<double>::infinity());
-    for (const uint32_t* f = begin; f != end; ++f) low = glm::min(low, keys.point(*f)), high = glm::max(high, keys.point(*f));
+    for (const uint32_t* f = begin; f != end; ++f) low = glm::min(low, faces.centroids[*f]), high = glm::max(high, faces.centroids[*f]);
     const glm::dvec3 extent = high - low;
     const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
-    auto before = [&](uint32_t a, uint32_t b) {
-        const double ca = keys.point(a)[axis], cb = keys.point(b)[axis];
-        if (ca != cb) return ca < cb;
-        return keys.group(a) != keys.group(b) ? keys.group(a) < keys.group(b) : a < b;
-    };
     uint32_t* middle = begin + (end - begin) / 2;
-    std::nth_element(begin, middle, end, before);
-    if (!keys.clusters) return middle;
-    const uint32_t pivot = *middle;
-    return std::partition(begin, end, [&](uint32_t f) {
-        const double cf = keys.point(f)[axis], cp = keys.point(pivot)[axis];
-        return cf < cp || (cf == cp && keys.group(f) < keys.group(pivot));
+    std::nth_element(begin, middle, end, [&](uint32_t a, uint32_t b) {
+        const double ca = faces.centroids[a][axis], cb = faces.centroids[b][axis];
+        return ca != cb ? ca < cb : a < b;
     });
+    return middle;
 }
 
 }  // namespace
 
 // The halving runs in place, the parts of one level at once; parts 2i and 2i + 1 of a level are
-// the halves of part i of the level before. The number of levels is fixed by the sizes alone (cuts
-// along clusters make halves of slightly unequal sizes).
-Parts splitIntoParts(const FaceGeometry& faces, size_t target, const Partition* clusters, size_t maxPartFaces) {
-    CutKeys keys{faces, clusters, {}};
-    if (clusters) {
-        keys.centres.assign(clusters->clusterCount, glm::dvec3(0.0));
-        std::vector<uint32_t> sizes(clusters->clusterCount, 0);
-        for (uint32_t f = 0; f < clusters->clusterOfFace.size(); ++f)
-            keys.centres[clusters->clusterOfFace[f]] += faces.centroids[f], ++sizes[clusters->clusterOfFace[f]];
-        for (uint32_t c = 0; c < clusters->clusterCount; ++c) keys.centres[c] /= double(std::max<uint32_t>(sizes[c], 1));
-    }
+// the halves of part i of the level before. The number of levels is fixed by the sizes alone.
+Parts splitIntoParts(const FaceGeometry& faces, size_t target, size_t maxPartFaces) {
     Parts parts;
     parts.faces.resize(faces.centroids.size());
     for (uint32_t f = 0; f < parts.faces.size(); ++f) parts.faces[f] = f;
@@ -72,7 +45,7 @@ Parts splitIntoParts(const FaceGeometry& faces, size_t target, const Partition* 
         std::vector<uint32_t> middles(parts.count());
         forEachInParallel(parts.count(), [&](size_t i, size_t) {
             uint32_t* begin = parts.faces.data() + parts.starts[i];
-            middles[i] = uint32_t(splitAtMedian(keys, begin, begin + parts.size(i)) - parts.faces.data());
+            middles[i] = uint32_t(splitAtMedian(faces, begin, begin + parts.size(i)) - parts.faces.data());
         });
         std::vector<uint32_t> finer(1, 0);
         for (size_t i = 0; i < parts.count(); ++i) finer.push_back(middles[i]), finer.push_back(parts.starts[i + 1]);
@@ -113,21 +86,8 @@ std::vector<size_t> partTargets(const Mesh& mesh, const Parts& parts, size_t tar
     return shares(triangles, target);
 }
 
-std::vector<size_t> partTargets(const Partition& clusters, const Parts& parts, size_t target) {
-    std::vector<double> held(parts.count(), 0.0);
-    std::vector<uint32_t> partOfCluster(clusters.clusterCount, kNone);
-    for (size_t i = 0; i < parts.count(); ++i)
-        for (size_t k = 0; k < parts.size(i); ++k) {
-            uint32_t& part = partOfCluster[clusters.clusterOfFace[parts.begin(i)[k]]];
-            if (part != uint32_t(i)) part = uint32_t(i), held[i] += 1.0;
-        }
-    return shares(held, target);
-}
-
-Partition partOfPartition(const Partition& whole, const uint32_t* faceIds, size_t faceCount) {
-    std::vector<uint32_t> ids(faceCount);
-    for (size_t k = 0; k < faceCount; ++k) ids[k] = whole.clusterOfFace[faceIds[k]];
-    return renumberClusters(std::move(ids));
+std::vector<size_t> partTargets(const std::vector<size_t>& clustersHeld, size_t target) {
+    return shares(std::vector<double>(clustersHeld.begin(), clustersHeld.end()), target);
 }
 
 MeshPart extractPart(const Mesh& mesh, const FaceGeometry& faces, const uint32_t* faceIds, size_t faceCount,

@@ -1,5 +1,6 @@
-// Parts: a mesh is cut at median face centroids (or cluster centres) into parts that are optimised
-// independently, at once on several cores, each part's data in cache. No cluster crosses a cut.
+// Parts: a mesh is cut into parts that are optimised independently, at once on several cores, each
+// part's data in cache: at median face centroids here, or along meshoptimizer's meshlets as they
+// come (core/MeshletStream.h). No cluster crosses a cut.
 #pragma once
 
 #include <cstddef>
@@ -25,20 +26,14 @@ constexpr size_t kLargestPart = size_t(1) << 17;
 
 // Halves of halves until the parts have about maxPartFaces faces at most (the number of halvings
 // follows from the face count alone), as long as each part still gets a few clusters of the
-// `target` budget. One part (the whole mesh) when it is small enough. With `clusters`, whole
-// clusters go to one side of each cut (by their centres).
-Parts splitIntoParts(const FaceGeometry& faces, size_t target, const Partition* clusters = nullptr,
-                     size_t maxPartFaces = kLargestPart);
-
-// The clusters of `whole` that the part's faces are in, renumbered densely for the part.
-Partition partOfPartition(const Partition& whole, const uint32_t* faceIds, size_t faceCount);
+// `target` budget. One part (the whole mesh) when it is small enough.
+Parts splitIntoParts(const FaceGeometry& faces, size_t target, size_t maxPartFaces = kLargestPart);
 
 // Each part's share of the `target` budget, by its triangles (at least 1 each); the shares add up
 // to the budget.
 std::vector<size_t> partTargets(const Mesh& mesh, const Parts& parts, size_t target);
-// The same by the clusters of `clusters` each part holds (parts cut between whole clusters): at
-// most those, exactly those when `target` is their count.
-std::vector<size_t> partTargets(const Partition& clusters, const Parts& parts, size_t target);
+// The same by the clusters each part holds: at most those, exactly those when `target` is their sum.
+std::vector<size_t> partTargets(const std::vector<size_t>& clustersHeld, size_t target);
 
 // Some faces of a mesh as a mesh of their own, vertices renumbered in order of first use (which
 // also keeps a part's data close together in memory).

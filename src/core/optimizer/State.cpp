@@ -7,7 +7,7 @@ namespace conescope::optimizer {
 State::State(const Mesh& mesh, const FaceGeometry& geometry, const MeshletLimits& limits)
     : mesh(mesh), geometry(geometry), limits(limits), faceCount(mesh.faceCount()) {
     aroundVertex = facesAroundVertices(mesh);
-    acrossEdge = facesAcrossEdges(mesh, aroundVertex);
+    acrossEdge = facesAcrossEdges(mesh);
     clusterOf.assign(faceCount, kNone);
     slotOf.assign(faceCount, 0);
     faceStamp.assign(faceCount, 0);

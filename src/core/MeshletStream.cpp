@@ -1,0 +1,164 @@
+#include "MeshletStream.h"
+
+#include <algorithm>
+#include <utility>
+
+#include <meshoptimizer.h>
+
+namespace conescope {
+
+namespace {
+
+// Below this many faces the meshlets come whole; above, in parts of about kFacesPerPart faces.
+constexpr size_t kPartsFromFaces = size_t(1) << 14;
+constexpr size_t kFacesPerPart = size_t(1) << 13;
+constexpr size_t kMostParts = 64;
+
+constexpr bool kReproduced = MESHOPTIMIZER_VERSION == kReproducedMeshoptVersion;
+
+}  // namespace
+
+size_t meshletPartsFor(size_t faceCount) {
+    if (faceCount < kPartsFromFaces) return 1;
+    return std::clamp<size_t>((faceCount + kFacesPerPart - 1) / kFacesPerPart, 2, kMostParts);
+}
+
+MeshletStream::MeshletStream(std::shared_ptr<const Mesh> mesh, const MeshletLimits& limits, size_t partCount)
+    : mesh_(std::move(mesh)), limits_(limits), parts_(kReproduced ? std::max<size_t>(partCount, 1) : 1) {
+    thread_ = std::thread([this] {
+        try {
+            build();
+        } catch (...) {
+            std::lock_guard<std::mutex> lock(mutex_);
+            buildError_ = std::current_exception();
+            changed_.notify_all();
+        }
+        // Then the work handed over, if any comes before the stream is dropped.
+        std::unique_lock<std::mutex> lock(mutex_);
+        changed_.wait(lock, [this] { return stopping_ || work_; });
+        if (!work_) return;
+        working_ = true;
+        lock.unlock();
+        try {
+            work_();
+        } catch (...) {
+            workError_ = std::current_exception();
+        }
+        lock.lock();
+        workDone_ = true;
+        changed_.notify_all();
+    });
+}
+
+MeshletStream::~MeshletStream() {
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        stopping_ = true;
+        changed_.notify_all();
+    }
+    thread_.join();
+}
+
+void MeshletStream::build() {
+    const Mesh& mesh = *mesh_;
+    if (!kReproduced) {  // the library: everything at once, one part
+        MeshletPart all;
+        all.meshlets = meshoptLibraryMeshlets(mesh, limits_, 1.0f);
+        for (uint32_t f = 0; f < mesh.faceCount(); ++f) all.faces.push_back(f);
+        meshlets_.count = all.meshlets.clusterCount;
+        std::lock_guard<std::mutex> lock(mutex_);
+        parts_[0] = std::move(all);
+        partsMade_ = 1;
+        changed_.notify_all();
+        return;
+    }
+    if (!meshoptTakesLimits(limits_)) buildMeshoptMeshlets(mesh, limits_, 1.0f);  // throws, naming the limits
+    indices_ = fanTriangles(mesh);
+    const size_t triangles = indices_.size() / 3;
+    faceOfTriangle_.reserve(triangles);
+    for (uint32_t f = 0; f < mesh.faceCount(); ++f) faceOfTriangle_.insert(faceOfTriangle_.end(), mesh.faceSize(f) - 2, f);
+    claimed_.assign(mesh.faceCount(), 0);
+
+    const size_t partCount = parts_.size();
+    size_t nextPart = 0, partBegin = 0, meshletBegin = 0;
+    // Part nextPart takes the triangles placed since the last part, in the meshlets closed since;
+    // the last one also the faces the library left unplaced (coordinates near the float range),
+    // together in a cluster of their own.
+    auto handOver = [&](size_t placedEnd, size_t meshletEnd, bool last) {
+        std::vector<std::pair<uint32_t, uint32_t>> faceMeshlets;
+        for (size_t k = partBegin; k < placedEnd; ++k) {
+            const uint32_t t = meshlets_.placementOrder[k], f = faceOfTriangle_[t];
+            if (claimed_[f]) continue;
+            claimed_[f] = 1;
+            faceMeshlets.emplace_back(f, meshlets_.meshletOfTriangle[t] - uint32_t(meshletBegin));
+        }
+        for (uint32_t f = 0; last && f < mesh.faceCount(); ++f)
+            if (!claimed_[f]) claimed_[f] = 1, faceMeshlets.emplace_back(f, uint32_t(meshletEnd - meshletBegin));
+        std::sort(faceMeshlets.begin(), faceMeshlets.end());
+        MeshletPart part;
+        std::vector<uint32_t> ids;
+        for (const auto& [f, meshlet] : faceMeshlets) part.faces.push_back(f), ids.push_back(meshlet);
+        part.meshlets = renumberClusters(std::move(ids));
+        partBegin = placedEnd, meshletBegin = meshletEnd;
+        std::lock_guard<std::mutex> lock(mutex_);
+        parts_[nextPart++] = std::move(part);
+        if (last)
+            while (nextPart < parts_.size()) parts_[nextPart++] = MeshletPart{};  // parts no meshlet reached
+        partsMade_ = nextPart;
+        changed_.notify_all();
+    };
+    const MeshletClosed closed = [&](size_t closedMeshlets, size_t placed) {
+        {
+            std::lock_guard<std::mutex> lock(mutex_);
+            if (stopping_) return false;
+        }
+        while (nextPart + 1 < partCount && placed >= (nextPart + 1) * triangles / partCount) handOver(placed, closedMeshlets, false);
+        return true;
+    };
+    reproduceMeshoptMeshlets(meshlets_, indices_.data(), indices_.size(), &mesh.positions[0].x, mesh.positions.size(), sizeof(glm::vec3),
+                             limits_.maxVertices, limits_.maxTriangles, 1.0f, closed);
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        if (stopping_) return;
+    }
+    handOver(meshlets_.placementOrder.size(), meshlets_.count, true);
+}
+
+void MeshletStream::waitFor(size_t partsMade) {
+    std::unique_lock<std::mutex> lock(mutex_);
+    changed_.wait(lock, [&] { return partsMade_ >= partsMade || buildError_; });
+    if (partsMade_ < partsMade) std::rethrow_exception(buildError_);
+}
+
+const MeshletPart& MeshletStream::part(size_t i) {
+    waitFor(i + 1);
+    return parts_[i];
+}
+
+size_t MeshletStream::meshletCount() {
+    waitFor(parts_.size());
+    size_t count = 0;
+    for (const MeshletPart& part : parts_) count += part.meshlets.clusterCount;
+    return count;
+}
+
+Partition MeshletStream::whole() {
+    waitFor(parts_.size());
+    if (!kReproduced) return parts_[0].meshlets;
+    return facesOfMeshlets(*mesh_, meshlets_);
+}
+
+void MeshletStream::runAfterwards(std::function<void()> work) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    work_ = std::move(work);
+    changed_.notify_all();
+}
+
+void MeshletStream::finishWork() {
+    std::unique_lock<std::mutex> lock(mutex_);
+    if (!work_) return;
+    changed_.wait(lock, [this] { return workDone_; });
+    if (workError_) std::rethrow_exception(workError_);
+}
+
+}  // namespace conescope

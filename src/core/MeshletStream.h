@@ -1,0 +1,87 @@
+// meshoptimizer's meshlets of a mesh (buildMeshoptMeshlets), made on a thread of their own and
+// handed over in parts as they are made, so that the optimized builder refines the first parts on
+// one core while the builder places the last triangles on the other (ClusterOptimizer.h). The
+// builder sweeps the surface meshlet by meshlet, so consecutive meshlets make a part of the mesh:
+// part i holds the meshlets closed once about i / P of the triangles were placed and before about
+// (i + 1) / P were; a face goes with the meshlet of its first placed fan triangle (the lowest, as
+// buildMeshoptMeshlets does). Where the linked meshoptimizer is not the one reproduced
+// (MeshoptMeshlets.h), the library builds them and they come as one part.
+#pragma once
+
+#include <condition_variable>
+#include <cstddef>
+#include <cstdint>
+#include <exception>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+#include "Mesh.h"
+#include "MeshoptMeshlets.h"
+#include "Partition.h"
+
+namespace conescope {
+
+// One part: its faces in ascending order, and each one's meshlet numbered from 0 within the part.
+struct MeshletPart {
+    std::vector<uint32_t> faces;
+    Partition meshlets;  // clusterOfFace[k] is the meshlet of faces[k]
+};
+
+// How many parts the meshlets of a mesh of this many faces come in: one below 16,384 faces, then
+// parts of about 8,192 faces (the first can start once an eighth of a 65k-face mesh is placed),
+// at most 64. Fixed by the face count alone, so the partitions do not depend on the machine.
+size_t meshletPartsFor(size_t faceCount);
+
+// The partition of faces buildMeshoptMeshlets gives for meshlets made from fanTriangles(mesh).
+Partition facesOfMeshlets(const Mesh& mesh, const MeshoptMeshlets& meshlets);
+
+class MeshletStream {
+public:
+    // Starts meshoptimizer's builder at cone weight 1 on a thread of its own, in `partCount` parts
+    // (meshletPartsFor). The limits must be ones meshoptimizer takes.
+    MeshletStream(std::shared_ptr<const Mesh> mesh, const MeshletLimits& limits, size_t partCount);
+    // Stops the builder at its next meshlet if it still runs, and waits for its thread.
+    ~MeshletStream();
+    MeshletStream(const MeshletStream&) = delete;
+    MeshletStream& operator=(const MeshletStream&) = delete;
+
+    const Mesh& mesh() const { return *mesh_; }
+    const MeshletLimits& limits() const { return limits_; }
+    size_t partCount() const { return parts_.size(); }
+
+    // Part i, once it is made (waits for it; rethrows what the builder threw).
+    const MeshletPart& part(size_t i);
+    // Every part made: the number of meshlets, and buildMeshoptMeshlets' partition.
+    size_t meshletCount();
+    Partition whole();
+
+    // Runs `work` on the stream's thread once every meshlet is made (at once if they are), so that
+    // the core it ran on goes on with what the meshlets are for; finishWork waits for it and
+    // rethrows what it threw. At most one piece of work.
+    void runAfterwards(std::function<void()> work);
+    void finishWork();
+
+private:
+    void build();
+    void waitFor(size_t partsMade);
+
+    std::shared_ptr<const Mesh> mesh_;
+    MeshletLimits limits_;
+    std::vector<uint32_t> indices_, faceOfTriangle_;
+    MeshoptMeshlets meshlets_;
+    std::vector<MeshletPart> parts_;
+    std::vector<uint8_t> claimed_;  // per face: its part is known
+
+    std::mutex mutex_;
+    std::condition_variable changed_;
+    size_t partsMade_ = 0;
+    bool stopping_ = false, working_ = false, workDone_ = false;
+    std::function<void()> work_;
+    std::exception_ptr buildError_, workError_;
+    std::thread thread_;
+};
+
+}  // namespace conescope
