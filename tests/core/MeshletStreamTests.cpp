@@ -1,0 +1,139 @@
+// meshoptimizer's meshlets handed over in parts: every face in exactly one part, each part's meshlets
+// those of buildMeshoptMeshlets (whole meshlets, none shared between parts), the work handed to the
+// stream's thread run after the meshlets and its errors passed on, and a stream dropped while it
+// builds stops.
+#include <gtest/gtest.h>
+
+#include <map>
+#include <random>
+#include <set>
+#include <stdexcept>
+#include <thread>
+
+#include "TestMeshes.h"
+#include "core/MeshletStream.h"
+
+namespace conescope {
+namespace {
+
+std::shared_ptr<const Mesh> shared(Mesh mesh) { return std::make_shared<const Mesh>(std::move(mesh)); }
+
+// Quads of a grid, some split into triangles: polygons whose fan triangles can land in two parts.
+Mesh mixedGrid(int cells) {
+    Mesh mesh;
+    for (int i = 0; i <= cells; ++i)
+        for (int j = 0; j <= cells; ++j) mesh.positions.emplace_back(float(i), float(j), 0.05f * float((i * 7 + j * 3) % 5));
+    auto at = [&](int i, int j) { return uint32_t(i * (cells + 1) + j); };
+    for (int i = 0; i < cells; ++i)
+        for (int j = 0; j < cells; ++j) {
+            if ((i + j) % 3 == 0) {
+                mesh.addFace({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+                mesh.addFace({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+            } else {
+                mesh.addFace({at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
+            }
+        }
+    return mesh;
+}
+
+void expectPartsAreTheWholeMeshlets(MeshletStream& stream) {
+    const Mesh& mesh = stream.mesh();
+    const Partition whole = stream.whole();
+    EXPECT_EQ(whole.clusterOfFace, buildMeshoptMeshlets(mesh, stream.limits(), 1.0f).clusterOfFace);
+    std::vector<int> partOfFace(mesh.faceCount(), -1);
+    std::map<uint32_t, size_t> partOfMeshlet;  // global meshlet -> the part holding it
+    size_t meshlets = 0;
+    for (size_t i = 0; i < stream.partCount(); ++i) {
+        const MeshletPart& part = stream.part(i);
+        ASSERT_EQ(part.meshlets.clusterOfFace.size(), part.faces.size());
+        EXPECT_TRUE(std::is_sorted(part.faces.begin(), part.faces.end()));
+        std::map<uint32_t, uint32_t> globalOfLocal;
+        for (size_t k = 0; k < part.faces.size(); ++k) {
+            const uint32_t f = part.faces[k];
+            ASSERT_LT(f, mesh.faceCount());
+            EXPECT_EQ(partOfFace[f], -1) << "face " << f << " in two parts";
+            partOfFace[f] = int(i);
+            const uint32_t global = whole.clusterOfFace[f];
+            // A local meshlet is one meshlet of the whole, and a meshlet lies in one part.
+            const auto [it, added] = globalOfLocal.emplace(part.meshlets.clusterOfFace[k], global);
+            EXPECT_EQ(it->second, global);
+            const auto [where, first] = partOfMeshlet.emplace(global, i);
+            EXPECT_EQ(where->second, i) << "meshlet " << global << " in two parts";
+        }
+        EXPECT_EQ(globalOfLocal.size(), part.meshlets.clusterCount);
+        meshlets += part.meshlets.clusterCount;
+    }
+    for (size_t f = 0; f < mesh.faceCount(); ++f) EXPECT_NE(partOfFace[f], -1) << "face " << f << " in no part";
+    EXPECT_EQ(meshlets, whole.clusterCount);
+    EXPECT_EQ(stream.meshletCount(), whole.clusterCount);
+}
+
+TEST(MeshletStream, PartsHoldEveryFaceOnceAndWholeMeshlets) {
+    const MeshletLimits limits{64, 124};
+    for (size_t parts : {size_t(1), size_t(2), size_t(5), size_t(40)}) {
+        MeshletStream torus(shared(testmesh::torus(1.0, 0.3, 120, 60)), limits, parts);
+        EXPECT_EQ(torus.partCount(), parts);
+        expectPartsAreTheWholeMeshlets(torus);
+        MeshletStream grid(shared(mixedGrid(60)), {32, 64}, parts);
+        expectPartsAreTheWholeMeshlets(grid);
+    }
+    // Many small pieces: meshlets that jump between pieces through the k-d tree.
+    Mesh pieces;
+    std::mt19937_64 random(9);
+    std::uniform_real_distribution<float> place(-10.f, 10.f);
+    for (int p = 0; p < 60; ++p) {
+        const Mesh piece = testmesh::icosphere(1 + p % 2);
+        const glm::vec3 offset(place(random), place(random), place(random));
+        const uint32_t first = uint32_t(pieces.positions.size());
+        for (const glm::vec3& q : piece.positions) pieces.positions.push_back(offset + 0.3f * q);
+        for (size_t f = 0; f < piece.faceCount(); ++f)
+            pieces.addFace({first + piece.faceBegin(f)[0], first + piece.faceBegin(f)[1], first + piece.faceBegin(f)[2]});
+    }
+    MeshletStream scattered(shared(std::move(pieces)), limits, 6);
+    expectPartsAreTheWholeMeshlets(scattered);
+}
+
+TEST(MeshletStream, PartsByFaceCount) {
+    EXPECT_EQ(meshletPartsFor(0), 1u);
+    EXPECT_EQ(meshletPartsFor(16383), 1u);
+    EXPECT_EQ(meshletPartsFor(16384), 2u);
+    EXPECT_EQ(meshletPartsFor(52000), 7u);
+    EXPECT_EQ(meshletPartsFor(3328000), 64u);
+}
+
+TEST(MeshletStream, WorkRunsOnTheStreamsThreadAfterTheMeshletsAndPassesItsErrorOn) {
+    MeshletStream stream(shared(testmesh::icosphere(4)), {64, 124}, 3);
+    std::thread::id ranOn;
+    size_t partsSeen = 0;
+    stream.runAfterwards([&] {
+        ranOn = std::this_thread::get_id();
+        for (size_t i = 0; i < stream.partCount(); ++i) partsSeen += stream.part(i).faces.size();
+    });
+    stream.finishWork();
+    EXPECT_NE(ranOn, std::this_thread::get_id());
+    EXPECT_EQ(partsSeen, stream.mesh().faceCount());
+
+    MeshletStream failing(shared(testmesh::icosphere(2)), {64, 124}, 1);
+    failing.runAfterwards([] { throw std::runtime_error("work failed"); });
+    EXPECT_THROW(failing.finishWork(), std::runtime_error);
+    MeshletStream idle(shared(testmesh::icosphere(2)), {64, 124}, 1);
+    idle.finishWork();  // no work handed over: nothing to wait for
+}
+
+TEST(MeshletStream, LimitsMeshoptimizerRefusesComeBackFromEveryPart) {
+    MeshletStream stream(shared(testmesh::icosphere(2)), {300, 124}, 2);
+    EXPECT_THROW(stream.part(0), std::invalid_argument);
+    EXPECT_THROW(stream.whole(), std::invalid_argument);
+}
+
+TEST(MeshletStream, DroppedWhileBuildingStops) {
+    // Dropped at once, and dropped after its first part: neither hangs.
+    for (int round = 0; round < 5; ++round) MeshletStream stream(shared(testmesh::torus(1.0, 0.3, 200, 100)), {64, 124}, 8);
+    auto stream = std::make_unique<MeshletStream>(shared(testmesh::torus(1.0, 0.3, 200, 100)), MeshletLimits{64, 124}, 8);
+    stream->part(0);
+    stream.reset();
+    SUCCEED();
+}
+
+}  // namespace
+}  // namespace conescope
