@@ -83,17 +83,21 @@ Partition meshletPartition(const bench::MeshletTriangles& triangles) {
 
 // ConeScope's preparation as the product makes it: meshoptimizer's meshlets (where the builder
 // starts there) started on another core before world positions and face geometry are computed,
-// then the partition (refining parts as they come) and the bounds (minimal cone, octagon).
+// then buildClusters: the partition, refining parts as they come, and each part's bounds (minimal
+// cone, its octagon, minimal sphere) and cull map as soon as the part is made. The mesh checks of
+// prepareMesh are left out, as meshoptimizer makes none.
 Measurement prepareConeScope(const Mesh& mesh, const Settings& settings) {
     const Stopwatch clock;
     const std::shared_ptr<const Mesh> borrowed(&mesh, [](const Mesh*) {});
     const std::shared_ptr<MeshletStream> meshlets = meshoptStartInBackground(borrowed, settings);
-    const std::vector<glm::vec3> world = worldPositions(mesh);
-    const FaceGeometry faces = computeFaceGeometry(mesh);
-    const Partition partition = buildPartition(mesh, faces, settings, {}, meshlets.get());
-    const ClusterBounds bounds = computeClusterBounds(mesh, world, faces, partition, ConeMethod::Minimal);
-    Measurement m = clock.stop(bounds.count());
-    m.expectedRate = expectedCullRate(mesh, faces, partition);
+    PreparedMesh prepared;
+    prepared.original = prepared.culled = borrowed;
+    prepared.world = worldPositions(mesh);
+    prepared.faces = computeFaceGeometry(mesh);
+    prepared.box = computeAabb(prepared.world);
+    const ClusterSet clusters = buildClusters(prepared, settings, nullptr, {}, meshlets.get());
+    Measurement m = clock.stop(clusters.bounds.count());
+    m.expectedRate = expectedCullRate(mesh, prepared.faces, clusters.partition);
     return m;
 }
 

@@ -105,13 +105,13 @@ ConeOfNormals clusterCone(const Mesh& mesh, const std::vector<glm::vec3>& world,
     return coneByMethod(method, normals);
 }
 
-ClusterBounds computeClusterBounds(const Mesh& mesh, const std::vector<glm::vec3>& world, const FaceGeometry& faces,
-                                   const Partition& partition, ConeMethod coneMethod, SphereMethod sphereMethod) {
+ClusterBounds boundsOfClusters(const Mesh& mesh, const std::vector<glm::vec3>& world, const FaceGeometry& faces,
+                               ClusterFaces clusterRows, ConeMethod coneMethod, SphereMethod sphereMethod) {
     ClusterBounds bounds;
     bounds.coneMethod = coneMethod;
     bounds.sphereMethod = sphereMethod;
-    bounds.faces = facesByCluster(partition);
-    const size_t clusterCount = partition.clusterCount;
+    bounds.faces = std::move(clusterRows);
+    const size_t clusterCount = bounds.faces.starts.size() - 1;
     bounds.vertexStarts.assign(clusterCount + 1, 0);
     bounds.triangles.assign(clusterCount, 0);
     bounds.cones.resize(clusterCount);
@@ -119,61 +119,114 @@ ClusterBounds computeClusterBounds(const Mesh& mesh, const std::vector<glm::vec3
     bounds.spheres.resize(clusterCount);
     bounds.apexes.resize(clusterCount);
     bounds.octagons.resize(clusterCount);
-    // Clusters are bounded independently, in consecutive pieces on all cores; each piece lists its
-    // clusters' vertices on its own, and the lists are joined in cluster order afterwards.
+    // Which vertices the cluster already listed: a mark per mesh vertex, kept by the thread from
+    // call to call (a part's clusters are bounded in many small calls), a new mark per cluster.
+    thread_local std::vector<uint32_t> seen;
+    thread_local uint32_t mark = 0;
+    if (seen.size() < world.size() || mark > std::numeric_limits<uint32_t>::max() - clusterCount - 1)
+        seen.assign(world.size(), 0), mark = 0;
+    std::vector<glm::dvec3> normals, points;
+    for (uint32_t c = 0; c < clusterCount; ++c) {
+        ++mark;
+        const uint32_t* clusterFaces = bounds.faces.faces.data() + bounds.faces.starts[c];
+        const size_t faceCount = bounds.faces.starts[c + 1] - bounds.faces.starts[c];
+        normals.clear();
+        points.clear();
+        Aabb box;
+        box.min = glm::vec3(std::numeric_limits<float>::max());
+        box.max = glm::vec3(-std::numeric_limits<float>::max());
+        for (size_t i = 0; i < faceCount; ++i) {
+            const uint32_t f = clusterFaces[i];
+            normals.push_back(faces.normals[f]);
+            bounds.triangles[c] += uint32_t(mesh.faceSize(f) - 2);
+            for (size_t k = 0; k < mesh.faceSize(f); ++k) {
+                const uint32_t v = mesh.faceBegin(f)[k];
+                if (seen[v] == mark) continue;
+                seen[v] = mark;
+                bounds.vertexIds.push_back(v);
+                points.emplace_back(world[v]);
+                box.min = glm::min(box.min, world[v]);
+                box.max = glm::max(box.max, world[v]);
+            }
+        }
+        bounds.vertexStarts[c + 1] = uint32_t(bounds.vertexIds.size());
+        bounds.boxes[c] = box;
+        bounds.spheres[c] = sphereMethod == SphereMethod::Minimal ? minimalSphere(points.data(), points.size())
+                                                                  : ritterSphere(points.data(), points.size());
+        if (coneMethod == ConeMethod::Meshopt) {
+            const MeshoptCluster meshopt = meshoptBounds(mesh, world, clusterFaces, faceCount, normals);
+            bounds.cones[c] = meshopt.cone;  // not cullable unless meshoptimizer gave a cone
+            if (meshopt.usable) {
+                bounds.spheres[c] = sphereAround(meshopt.center, points.data(), points.size());
+                bounds.apexes[c] = coneApex(meshopt.cone, meshopt.apex, mesh, world, faces, clusterFaces, faceCount);
+            } else {
+                bounds.apexes[c] = bounds.spheres[c].center;
+            }
+        } else {
+            bounds.cones[c] = coneByMethod(coneMethod, normals);
+            bounds.apexes[c] = coneApex(bounds.cones[c], bounds.spheres[c].center, mesh, world, faces, clusterFaces, faceCount);
+        }
+        bounds.octagons[c] = octagonCone(bounds.cones[c], normals.data(), normals.size());
+    }
+    return bounds;
+}
+
+namespace {
+
+template <typename T>
+void append(std::vector<T>& to, std::vector<T>&& from) {
+    to.insert(to.end(), std::make_move_iterator(from.begin()), std::make_move_iterator(from.end()));
+}
+
+// Rows (starts with a leading 0) of `from` after those of `to`, their items too.
+void appendRows(std::vector<uint32_t>& toStarts, std::vector<uint32_t>& toItems, const std::vector<uint32_t>& fromStarts,
+                std::vector<uint32_t>&& fromItems) {
+    const uint32_t offset = toStarts.back();
+    for (size_t i = 1; i < fromStarts.size(); ++i) toStarts.push_back(offset + fromStarts[i]);
+    append(toItems, std::move(fromItems));
+}
+
+}  // namespace
+
+void appendClusterBounds(ClusterBounds& bounds, ClusterBounds&& more) {
+    if (bounds.faces.starts.empty()) bounds.faces.starts.assign(1, 0);
+    if (bounds.vertexStarts.empty()) bounds.vertexStarts.assign(1, 0);
+    appendRows(bounds.faces.starts, bounds.faces.faces, more.faces.starts, std::move(more.faces.faces));
+    appendRows(bounds.vertexStarts, bounds.vertexIds, more.vertexStarts, std::move(more.vertexIds));
+    append(bounds.triangles, std::move(more.triangles));
+    append(bounds.cones, std::move(more.cones));
+    append(bounds.boxes, std::move(more.boxes));
+    append(bounds.spheres, std::move(more.spheres));
+    append(bounds.apexes, std::move(more.apexes));
+    append(bounds.octagons, std::move(more.octagons));
+}
+
+ClusterFaces clusterRowsOf(const uint32_t* faceIds, const Partition& partOfThem) {
+    ClusterFaces rows = facesByCluster(partOfThem);
+    for (uint32_t& face : rows.faces) face = faceIds[face];
+    return rows;
+}
+
+ClusterBounds computeClusterBounds(const Mesh& mesh, const std::vector<glm::vec3>& world, const FaceGeometry& faces,
+                                   const Partition& partition, ConeMethod coneMethod, SphereMethod sphereMethod) {
+    const ClusterFaces all = facesByCluster(partition);
+    const size_t clusterCount = partition.clusterCount;
+    // Clusters are bounded independently, in consecutive pieces on all cores, joined in order.
     const size_t pieces = piecesFor(clusterCount, 64);
-    std::vector<std::vector<uint32_t>> pieceVertexIds(pieces);
+    std::vector<ClusterBounds> pieceBounds(pieces);
     forEachInParallel(pieces, [&](size_t piece, size_t) {
         const size_t begin = pieceBegin(clusterCount, pieces, piece), end = pieceBegin(clusterCount, pieces, piece + 1);
-        std::vector<uint32_t>& vertexIds = pieceVertexIds[piece];
-        std::vector<uint32_t> seen(world.size(), std::numeric_limits<uint32_t>::max());
-        std::vector<glm::dvec3> normals, points;
-        for (uint32_t c = uint32_t(begin); c < end; ++c) {
-            const size_t before = vertexIds.size();
-            const uint32_t* clusterFaces = bounds.faces.faces.data() + bounds.faces.starts[c];
-            const size_t faceCount = bounds.faces.starts[c + 1] - bounds.faces.starts[c];
-            normals.clear();
-            points.clear();
-            Aabb box;
-            box.min = glm::vec3(std::numeric_limits<float>::max());
-            box.max = glm::vec3(-std::numeric_limits<float>::max());
-            for (size_t i = 0; i < faceCount; ++i) {
-                const uint32_t f = clusterFaces[i];
-                normals.push_back(faces.normals[f]);
-                bounds.triangles[c] += uint32_t(mesh.faceSize(f) - 2);
-                for (size_t k = 0; k < mesh.faceSize(f); ++k) {
-                    const uint32_t v = mesh.faceBegin(f)[k];
-                    if (seen[v] == c) continue;
-                    seen[v] = c;
-                    vertexIds.push_back(v);
-                    points.emplace_back(world[v]);
-                    box.min = glm::min(box.min, world[v]);
-                    box.max = glm::max(box.max, world[v]);
-                }
-            }
-            bounds.vertexStarts[c + 1] = uint32_t(vertexIds.size() - before);
-            bounds.boxes[c] = box;
-            bounds.spheres[c] = sphereMethod == SphereMethod::Minimal ? minimalSphere(points.data(), points.size())
-                                                                      : ritterSphere(points.data(), points.size());
-            if (coneMethod == ConeMethod::Meshopt) {
-                const MeshoptCluster meshopt = meshoptBounds(mesh, world, clusterFaces, faceCount, normals);
-                bounds.cones[c] = meshopt.cone;  // not cullable unless meshoptimizer gave a cone
-                if (meshopt.usable) {
-                    bounds.spheres[c] = sphereAround(meshopt.center, points.data(), points.size());
-                    bounds.apexes[c] = coneApex(meshopt.cone, meshopt.apex, mesh, world, faces, clusterFaces, faceCount);
-                } else {
-                    bounds.apexes[c] = bounds.spheres[c].center;
-                }
-            } else {
-                bounds.cones[c] = coneByMethod(coneMethod, normals);
-                bounds.apexes[c] = coneApex(bounds.cones[c], bounds.spheres[c].center, mesh, world, faces, clusterFaces, faceCount);
-            }
-            bounds.octagons[c] = octagonCone(bounds.cones[c], normals.data(), normals.size());
-        }
+        ClusterFaces rows;
+        rows.starts.assign(1, 0);
+        for (size_t c = begin; c < end; ++c) rows.starts.push_back(all.starts[c + 1] - all.starts[begin]);
+        rows.faces.assign(all.faces.begin() + all.starts[begin], all.faces.begin() + all.starts[end]);
+        pieceBounds[piece] = boundsOfClusters(mesh, world, faces, std::move(rows), coneMethod, sphereMethod);
     });
-    for (size_t c = 0; c < clusterCount; ++c) bounds.vertexStarts[c + 1] += bounds.vertexStarts[c];
-    bounds.vertexIds.reserve(bounds.vertexStarts.back());
-    for (const std::vector<uint32_t>& vertexIds : pieceVertexIds) bounds.vertexIds.insert(bounds.vertexIds.end(), vertexIds.begin(), vertexIds.end());
+    ClusterBounds bounds;
+    bounds.coneMethod = coneMethod;
+    bounds.sphereMethod = sphereMethod;
+    for (ClusterBounds& piece : pieceBounds) appendClusterBounds(bounds, std::move(piece));
+    if (pieces == 0) bounds.faces.starts.assign(1, 0), bounds.vertexStarts.assign(1, 0);
     return bounds;
 }
 

@@ -39,9 +39,23 @@ struct ClusterBounds {
 };
 
 // World positions and face geometry must come from the same mesh (worldPositions, computeFaceGeometry).
+// On all cores.
 ClusterBounds computeClusterBounds(const Mesh& mesh, const std::vector<glm::vec3>& world, const FaceGeometry& faces,
                                    const Partition& partition, ConeMethod coneMethod,
                                    SphereMethod sphereMethod = SphereMethod::Minimal);
+
+// The same for some clusters, given as the faces of each (on the calling thread): a part of a
+// partition bounded as soon as it is made. Faces of a cluster in ascending order give exactly the
+// bounds computeClusterBounds gives that cluster.
+ClusterBounds boundsOfClusters(const Mesh& mesh, const std::vector<glm::vec3>& world, const FaceGeometry& faces,
+                               ClusterFaces clusterRows, ConeMethod coneMethod, SphereMethod sphereMethod = SphereMethod::Minimal);
+
+// The clusters of a partition of some faces (partOfThem.clusterOfFace[k] for faceIds[k]) as rows of
+// mesh faces, in ascending order when faceIds is.
+ClusterFaces clusterRowsOf(const uint32_t* faceIds, const Partition& partOfThem);
+
+// `more`'s clusters numbered after those of `bounds`.
+void appendClusterBounds(ClusterBounds& bounds, ClusterBounds&& more);
 
 // One cluster's cone by `method`, exactly as computeClusterBounds makes it: the Gauss map compares
 // every method's cone on the same cluster.

@@ -4,6 +4,8 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
+#include <vector>
 
 #include "ExpectedCull.h"  // the objective, expectedCullRate
 #include "Mesh.h"
@@ -28,6 +30,12 @@ enum class Effort { Fast, Balanced, Best };
 // does not take: clusters 68% full, min(maxTriangles, 2 maxVertices) being what a round patch within
 // both limits can hold.
 size_t defaultClusterBudget(const Mesh& mesh, const MeshletLimits& limits);
+
+// What a caller does with each part of the partition as soon as it is made, on the thread that made
+// it (say its bounds): the part's number among `parts`, its faces (ascending mesh face ids) and
+// their clusters, numbered from 0 within the part. The partition numbers its clusters part after
+// part, each part's in this order. Heard once for every part, empty ones included.
+using PartClusters = std::function<void(size_t part, size_t parts, const std::vector<uint32_t>& faces, const Partition& clusters)>;
 
 // Optimises expectedCullRate under the vertex/triangle limits, from one of two starts:
 //  - meshoptimizer's meshlets as they are (a meshlet may hold triangles of separate parts, as
@@ -54,7 +62,8 @@ size_t defaultClusterBudget(const Mesh& mesh, const MeshletLimits& limits);
 // Its thread helps with the parts once its meshlets are made, so a stream serves one build.
 Partition buildOptimizedClusters(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits,
                                  size_t targetClusters = 0, const ProgressCallback& progress = {},
-                                 Effort effort = Effort::Balanced, MeshletStream* meshlets = nullptr);
+                                 Effort effort = Effort::Balanced, MeshletStream* meshlets = nullptr,
+                                 const PartClusters& partDone = {});
 
 // Whether buildOptimizedClusters starts from meshoptimizer's meshlets at cone weight 1 (and takes
 // their count as the default budget): the fast levels at limits meshoptimizer takes, for budgets up

@@ -6,25 +6,46 @@
 
 namespace conescope {
 
+namespace {
+
+void mapClusters(const FaceGeometry& faces, const ClusterBounds& bounds, size_t begin, size_t end, CullMap& map) {
+    std::vector<glm::dvec3> normals;
+    for (size_t c = begin; c < end; ++c) {
+        const ConeOfNormals& cone = bounds.cones[c];
+        map.coneFraction[c] = cone.cullable ? coneCullShare(cone.sinHalfAngle) : 0.0;
+        normals.clear();
+        for (uint32_t i = bounds.faces.starts[c]; i < bounds.faces.starts[c + 1]; ++i)
+            if (!faces.degenerate[bounds.faces.faces[i]]) normals.push_back(faces.normals[bounds.faces.faces[i]]);
+        map.octagonFraction[c] = octagonCullShare(bounds.octagons[c]);
+        // Exact areas: only rounding could put the oracle's below the regions it holds.
+        map.oracleFraction[c] = std::max({normalsCullShare(normals.data(), normals.size(), &cone), map.octagonFraction[c],
+                                          map.coneFraction[c]});
+    }
+}
+
+CullMap sized(size_t clusterCount) {
+    return CullMap{std::vector<double>(clusterCount, 0.0), std::vector<double>(clusterCount, 0.0), std::vector<double>(clusterCount, 0.0)};
+}
+
+}  // namespace
+
 CullMap computeCullMap(const FaceGeometry& faces, const ClusterBounds& bounds) {
-    const size_t clusterCount = bounds.count();
-    CullMap map{std::vector<double>(clusterCount, 0.0), std::vector<double>(clusterCount, 0.0), std::vector<double>(clusterCount, 0.0)};
+    CullMap map = sized(bounds.count());
     // Clusters are independent: each core takes a range of them.
-    forRangesInParallel(clusterCount, 16, [&](size_t begin, size_t end) {
-        std::vector<glm::dvec3> normals;
-        for (size_t c = begin; c < end; ++c) {
-            const ConeOfNormals& cone = bounds.cones[c];
-            map.coneFraction[c] = cone.cullable ? coneCullShare(cone.sinHalfAngle) : 0.0;
-            normals.clear();
-            for (uint32_t i = bounds.faces.starts[c]; i < bounds.faces.starts[c + 1]; ++i)
-                if (!faces.degenerate[bounds.faces.faces[i]]) normals.push_back(faces.normals[bounds.faces.faces[i]]);
-            map.octagonFraction[c] = octagonCullShare(bounds.octagons[c]);
-            // Exact areas: only rounding could put the oracle's below the regions it holds.
-            map.oracleFraction[c] = std::max({normalsCullShare(normals.data(), normals.size(), &cone), map.octagonFraction[c],
-                                              map.coneFraction[c]});
-        }
-    });
+    forRangesInParallel(bounds.count(), 16, [&](size_t begin, size_t end) { mapClusters(faces, bounds, begin, end, map); });
     return map;
+}
+
+CullMap cullMapOf(const FaceGeometry& faces, const ClusterBounds& bounds) {
+    CullMap map = sized(bounds.count());
+    mapClusters(faces, bounds, 0, bounds.count(), map);
+    return map;
+}
+
+void appendCullMap(CullMap& map, CullMap&& more) {
+    map.coneFraction.insert(map.coneFraction.end(), more.coneFraction.begin(), more.coneFraction.end());
+    map.octagonFraction.insert(map.octagonFraction.end(), more.octagonFraction.begin(), more.octagonFraction.end());
+    map.oracleFraction.insert(map.oracleFraction.end(), more.oracleFraction.begin(), more.oracleFraction.end());
 }
 
 double cullFraction(const CullMap& map, uint32_t cluster, CullTest test) {

@@ -26,8 +26,14 @@ struct CullMap {
     std::vector<double> oracleFraction;   // per cluster: share of directions with every face back-facing
 };
 
-// Face normals from `faces` (world space), cones from `bounds`.
+// Face normals from `faces` (world space), cones from `bounds`. On all cores.
 CullMap computeCullMap(const FaceGeometry& faces, const ClusterBounds& bounds);
+
+// The same on the calling thread (for a part's bounds, as soon as they are made).
+CullMap cullMapOf(const FaceGeometry& faces, const ClusterBounds& bounds);
+
+// `more`'s clusters after those of `map`.
+void appendCullMap(CullMap& map, CullMap&& more);
 
 // The share for `test`: the oracle's own for CullTest::Oracle, the octagon's for CullTest::Octagon,
 // the round cone's for every other test.

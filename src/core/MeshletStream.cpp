@@ -24,7 +24,11 @@ size_t meshletPartsFor(size_t faceCount) {
 }
 
 MeshletStream::MeshletStream(std::shared_ptr<const Mesh> mesh, const MeshletLimits& limits, size_t partCount)
-    : mesh_(std::move(mesh)), limits_(limits), parts_(kReproduced ? std::max<size_t>(partCount, 1) : 1) {
+    : mesh_(std::move(mesh)),
+      limits_(limits),
+      handedOver_(kReproduced ? std::max<size_t>(partCount, 1) : 1),
+      parts_(handedOver_.size()),
+      sorted_(new std::once_flag[handedOver_.size()]) {
     thread_ = std::thread([this] {
         try {
             build();
@@ -94,16 +98,10 @@ void MeshletStream::build() {
         }
         for (uint32_t f = 0; last && f < mesh.faceCount(); ++f)
             if (!claimed_[f]) claimed_[f] = 1, faceMeshlets.emplace_back(f, uint32_t(meshletEnd - meshletBegin));
-        std::sort(faceMeshlets.begin(), faceMeshlets.end());
-        MeshletPart part;
-        std::vector<uint32_t> ids;
-        for (const auto& [f, meshlet] : faceMeshlets) part.faces.push_back(f), ids.push_back(meshlet);
-        part.meshlets = renumberClusters(std::move(ids));
         partBegin = placedEnd, meshletBegin = meshletEnd;
         std::lock_guard<std::mutex> lock(mutex_);
-        parts_[nextPart++] = std::move(part);
-        if (last)
-            while (nextPart < parts_.size()) parts_[nextPart++] = MeshletPart{};  // parts no meshlet reached
+        handedOver_[nextPart++] = std::move(faceMeshlets);
+        if (last) nextPart = parts_.size();  // parts no meshlet reached stay empty
         partsMade_ = nextPart;
         changed_.notify_all();
     };
@@ -132,13 +130,22 @@ void MeshletStream::waitFor(size_t partsMade) {
 
 const MeshletPart& MeshletStream::part(size_t i) {
     waitFor(i + 1);
+    std::call_once(sorted_[i], [&] {
+        if (!kReproduced) return;  // the library's one part is made whole
+        std::vector<std::pair<uint32_t, uint32_t>>& faceMeshlets = handedOver_[i];
+        std::sort(faceMeshlets.begin(), faceMeshlets.end());
+        std::vector<uint32_t> ids;
+        ids.reserve(faceMeshlets.size());
+        for (const auto& [f, meshlet] : faceMeshlets) parts_[i].faces.push_back(f), ids.push_back(meshlet);
+        parts_[i].meshlets = renumberClusters(std::move(ids));
+        faceMeshlets = {};
+    });
     return parts_[i];
 }
 
 size_t MeshletStream::meshletCount() {
-    waitFor(parts_.size());
     size_t count = 0;
-    for (const MeshletPart& part : parts_) count += part.meshlets.clusterCount;
+    for (size_t i = 0; i < parts_.size(); ++i) count += part(i).meshlets.clusterCount;
     return count;
 }
 

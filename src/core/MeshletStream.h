@@ -16,6 +16,7 @@
 #include <memory>
 #include <mutex>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include "Mesh.h"
@@ -72,7 +73,11 @@ private:
     MeshletLimits limits_;
     std::vector<uint32_t> indices_, faceOfTriangle_;
     MeshoptMeshlets meshlets_;
+    // Per part, as the builder's thread hands it over: (face, meshlet from the part's first) in the
+    // order placed; sorted into parts_[i] by the first to ask for it, off the builder's thread.
+    std::vector<std::vector<std::pair<uint32_t, uint32_t>>> handedOver_;
     std::vector<MeshletPart> parts_;
+    std::unique_ptr<std::once_flag[]> sorted_;
     std::vector<uint8_t> claimed_;  // per face: its part is known
 
     std::mutex mutex_;

@@ -115,39 +115,95 @@ size_t kdBuildLeaf(size_t offset, KdNode* nodes, unsigned int* indices, size_t c
     return offset + count;
 }
 
-size_t kdBuild(size_t offset, KdNode* nodes, const float* points, size_t stride, unsigned int* indices, size_t count, size_t leafSize) {
-    if (count <= leafSize) return kdBuildLeaf(offset, nodes, indices, count);
+// Welford's running mean and variance of some points, as the library computes them: one running
+// sum after another, in index order.
+struct Spread {
     float mean[3] = {};
     float vars[3] = {};
+};
+
+Spread spreadOf(const float* points, size_t stride, const unsigned int* indices, size_t count) {
+    Spread s;
     float runc = 1, runs = 1;
-    // Welford's running mean and variance, as the library computes them
     for (size_t i = 0; i < count; ++i, runc += 1.f, runs = 1.f / runc) {
         const float* point = points + indices[i] * stride;
         for (int k = 0; k < 3; ++k) {
-            float delta = point[k] - mean[k];
-            mean[k] += delta * runs;
-            vars[k] += delta * (point[k] - mean[k]);
+            float delta = point[k] - s.mean[k];
+            s.mean[k] += delta * runs;
+            s.vars[k] += delta * (point[k] - s.mean[k]);
         }
     }
+    return s;
+}
+
+// The same for two sets of points at once: each step waits for the step before of its own set
+// only, so the two interleave on the processor; the arithmetic of each is spreadOf's.
+void spreadsOf(const float* points, size_t stride, const unsigned int* a, size_t countA, const unsigned int* b, size_t countB,
+               Spread& sa, Spread& sb) {
+    const size_t both = std::min(countA, countB);
+    float runc = 1, runs = 1;
+    for (size_t i = 0; i < both; ++i, runc += 1.f, runs = 1.f / runc) {
+        const float* pa = points + a[i] * stride;
+        const float* pb = points + b[i] * stride;
+        for (int k = 0; k < 3; ++k) {
+            float deltaA = pa[k] - sa.mean[k], deltaB = pb[k] - sb.mean[k];
+            sa.mean[k] += deltaA * runs, sb.mean[k] += deltaB * runs;
+            sa.vars[k] += deltaA * (pa[k] - sa.mean[k]), sb.vars[k] += deltaB * (pb[k] - sb.mean[k]);
+        }
+    }
+    // The longer set goes on alone, its running count where it was.
+    Spread& s = countA > both ? sa : sb;
+    const unsigned int* rest = countA > both ? a : b;
+    const size_t count = std::max(countA, countB);
+    for (size_t i = both; i < count; ++i, runc += 1.f, runs = 1.f / runc) {
+        const float* point = points + rest[i] * stride;
+        for (int k = 0; k < 3; ++k) {
+            float delta = point[k] - s.mean[k];
+            s.mean[k] += delta * runs;
+            s.vars[k] += delta * (point[k] - s.mean[k]);
+        }
+    }
+}
+
+// The library's recursion, with each node's spread computed by its parent together with its
+// sibling's (the spreads of two disjoint sets do not depend on which is built first).
+size_t kdBuild(size_t offset, KdNode* nodes, const float* points, size_t stride, unsigned int* indices, size_t count, size_t leafSize,
+               const Spread& spread) {
+    if (count <= leafSize) return kdBuildLeaf(offset, nodes, indices, count);
+    const float* vars = spread.vars;
     unsigned int axis = vars[0] >= vars[1] && vars[0] >= vars[2] ? 0 : vars[1] >= vars[2] ? 1 : 2;
-    float split = mean[axis];
+    float split = spread.mean[axis];
     size_t middle = kdPartition(indices, count, points, stride, axis, split);
     if (middle <= leafSize / 2 || middle >= count - leafSize / 2) return kdBuildLeaf(offset, nodes, indices, count);
     KdNode& result = nodes[offset];
     result.split = split;
     result.axis = axis;
-    size_t nextOffset = kdBuild(offset + 1, nodes, points, stride, indices, middle, leafSize);
+    Spread left, right;  // only nodes above the leaf size use theirs
+    spreadsOf(points, stride, indices, middle > leafSize ? middle : 0, indices + middle, count - middle > leafSize ? count - middle : 0,
+              left, right);
+    size_t nextOffset = kdBuild(offset + 1, nodes, points, stride, indices, middle, leafSize, left);
     result.children = unsigned(nextOffset - offset - 1);
-    return kdBuild(nextOffset, nodes, points, stride, indices + middle, count - middle, leafSize);
+    return kdBuild(nextOffset, nodes, points, stride, indices + middle, count - middle, leafSize, right);
 }
 
+size_t kdBuild(KdNode* nodes, const float* points, size_t stride, unsigned int* indices, size_t count, size_t leafSize) {
+    return kdBuild(0, nodes, points, stride, indices, count, leafSize,
+                   count > leafSize ? spreadOf(points, stride, indices, count) : Spread{});
+}
+
+// The library's nearest-neighbour search, plus `dead` marks on subtrees found to hold only placed
+// triangles: placed triangles never come back, so skipping such a subtree changes no answer, and
+// late in the build, when most of the tree is placed, the search stops visiting it all.
 void kdNearest(const KdNode* nodes, unsigned int root, const float* points, size_t stride, const unsigned char* emitted,
-               const float* position, unsigned int& result, float& limit) {
+               const float* position, unsigned int& result, float& limit, unsigned char* dead) {
+    if (dead[root]) return;
     const KdNode& node = nodes[root];
     if (node.axis == 3) {
+        bool live = false;
         for (unsigned int i = 0; i <= node.children; ++i) {
             unsigned int index = nodes[root + i].index;
             if (emitted[index]) continue;
+            live = true;
             const float* point = points + index * stride;
             float distance2 = (point[0] - position[0]) * (point[0] - position[0]) + (point[1] - position[1]) * (point[1] - position[1]) +
                               (point[2] - position[2]) * (point[2] - position[2]);
@@ -157,12 +213,14 @@ void kdNearest(const KdNode* nodes, unsigned int root, const float* points, size
                 limit = distance;
             }
         }
+        dead[root] = !live;
     } else {
         float delta = position[node.axis] - node.split;
         unsigned int first = (delta <= 0) ? 0 : node.children;
         unsigned int second = first ^ node.children;
-        kdNearest(nodes, root + 1 + first, points, stride, emitted, position, result, limit);
-        if (fabsf(delta) <= limit) kdNearest(nodes, root + 1 + second, points, stride, emitted, position, result, limit);
+        kdNearest(nodes, root + 1 + first, points, stride, emitted, position, result, limit, dead);
+        if (fabsf(delta) <= limit) kdNearest(nodes, root + 1 + second, points, stride, emitted, position, result, limit, dead);
+        dead[root] = dead[root + 1] && dead[root + 1 + node.children];
     }
 }
 
@@ -180,6 +238,7 @@ struct Builder {
     std::vector<uint32_t> counts, offsets, around;
     std::vector<Cone> cones;
     std::vector<KdNode> nodes;
+    std::vector<uint8_t> deadNodes;  // subtrees holding only placed triangles (kdNearest)
     std::vector<uint8_t> used, emitted;
 
     // The meshlet being built.
@@ -289,11 +348,11 @@ struct Builder {
         return best;
     }
 
-    uint32_t nearestUnplaced(const Cone& cone) const {
+    uint32_t nearestUnplaced(const Cone& cone) {
         float position[3] = {cone.px, cone.py, cone.pz};
         unsigned int index = kNone;
         float limit = FLT_MAX;
-        kdNearest(nodes.data(), 0, &cones[0].px, sizeof(Cone) / sizeof(float), emitted.data(), position, index, limit);
+        kdNearest(nodes.data(), 0, &cones[0].px, sizeof(Cone) / sizeof(float), emitted.data(), position, index, limit, deadNodes.data());
         return index;
     }
 
@@ -385,7 +444,8 @@ void reproduceMeshoptMeshlets(MeshoptMeshlets& result, const uint32_t* indices, 
     std::vector<unsigned int> kdIndices(triangleCount);
     for (size_t i = 0; i < triangleCount; ++i) kdIndices[i] = unsigned(i);
     b.nodes.resize(triangleCount * 2);
-    kdBuild(0, b.nodes.data(), &b.cones[0].px, sizeof(Cone) / sizeof(float), kdIndices.data(), triangleCount, 8);
+    kdBuild(b.nodes.data(), &b.cones[0].px, sizeof(Cone) / sizeof(float), kdIndices.data(), triangleCount, 8);
+    b.deadNodes.assign(b.nodes.size(), 0);
 
     b.used.assign(vertexCount, kUnused);
     b.emitted.assign(triangleCount, 0);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
+#include <mutex>
 #include <stdexcept>
 
 #include "BatchCulling.h"
@@ -76,6 +77,28 @@ ClusterSet buildClusters(const PreparedMesh& prepared, const Settings& settings,
                          const ProgressCallback& progress, MeshletStream* meshlets) {
     ClusterSet clusters;
     clusters.settings = settings;
+    const ConeMethod cone = displayedCone(settings);
+    // The optimized builder hands over its parts as they are made: their bounds and cull map are
+    // made at once, on the core that made the part, while the other core still builds.
+    struct PartBounds {
+        ClusterBounds bounds;
+        CullMap cullMap;
+        bool made = false;
+    };
+    std::vector<PartBounds> parts;
+    std::mutex partsMutex;
+    double partBoundsSeconds = 0.0;
+    const PartClusters boundPart = [&](size_t part, size_t partCount, const std::vector<uint32_t>& faces, const Partition& partClusters) {
+        const auto start = std::chrono::steady_clock::now();
+        PartBounds made{boundsOfClusters(prepared.mesh(), prepared.world, prepared.faces, clusterRowsOf(faces.data(), partClusters), cone,
+                                         settings.sphere),
+                        {}, true};
+        made.cullMap = cullMapOf(prepared.faces, made.bounds);
+        std::lock_guard<std::mutex> lock(partsMutex);
+        if (parts.size() < partCount) parts.resize(partCount);
+        parts[part] = std::move(made);
+        partBoundsSeconds += secondsSince(start);
+    };
     if (previous && !partitionChanged(previous->settings, settings)) {
         clusters.partition = previous->partition;
         clusters.partitionSeconds = previous->partitionSeconds;
@@ -85,16 +108,28 @@ ClusterSet buildClusters(const PreparedMesh& prepared, const Settings& settings,
         const auto start = std::chrono::steady_clock::now();
         // The builder's own progress (parts done) fills the stage's share, under the stage's name.
         clusters.partition =
-            buildPartition(prepared.mesh(), prepared.faces, settings, progressWithin(progress, 0.0, 0.6, stage), meshlets);
+            buildPartition(prepared.mesh(), prepared.faces, settings, progressWithin(progress, 0.0, 0.6, stage), meshlets, boundPart);
         clusters.partitionSeconds = secondsSince(start);
     }
-    report(progress, 0.6, "bounds (" + toString(displayedCone(settings)) + ")");
+    report(progress, 0.6, "bounds (" + toString(cone) + ")");
     const auto start = std::chrono::steady_clock::now();
-    clusters.bounds = computeClusterBounds(prepared.mesh(), prepared.world, prepared.faces, clusters.partition,
-                                           displayedCone(settings), settings.sphere);
-    clusters.boundsSeconds = secondsSince(start);
-    report(progress, 0.9, "cull map (" + toString(displayedCone(settings)) + ")");
-    clusters.cullMap = computeCullMap(prepared.faces, clusters.bounds);
+    size_t partClusters = 0;
+    bool everyPart = !parts.empty();
+    for (const PartBounds& part : parts) everyPart &= part.made, partClusters += part.bounds.count();
+    if (everyPart && partClusters == clusters.partition.clusterCount) {
+        clusters.bounds.coneMethod = cone;
+        clusters.bounds.sphereMethod = settings.sphere;
+        for (PartBounds& part : parts) {
+            appendClusterBounds(clusters.bounds, std::move(part.bounds));
+            appendCullMap(clusters.cullMap, std::move(part.cullMap));
+        }
+        clusters.boundsSeconds = partBoundsSeconds + secondsSince(start);
+    } else {
+        clusters.bounds = computeClusterBounds(prepared.mesh(), prepared.world, prepared.faces, clusters.partition, cone, settings.sphere);
+        clusters.boundsSeconds = secondsSince(start);
+        report(progress, 0.9, "cull map (" + toString(cone) + ")");
+        clusters.cullMap = computeCullMap(prepared.faces, clusters.bounds);
+    }
     report(progress, 1.0, "clusters ready");
     return clusters;
 }

@@ -16,7 +16,7 @@ bool startsFromMeshoptMeshlets(const Settings& settings) {
 }
 
 Partition buildPartition(const Mesh& mesh, const FaceGeometry& faces, const Settings& settings,
-                         const ProgressCallback& progress, MeshletStream* meshlets) {
+                         const ProgressCallback& progress, MeshletStream* meshlets, const PartClusters& partDone) {
     switch (settings.builder) {
         case Builder::Meshlet: return buildMeshlets(mesh, faces, settings.limits, settings.normalWeight);
         case Builder::KMeans: {
@@ -27,7 +27,7 @@ Partition buildPartition(const Mesh& mesh, const FaceGeometry& faces, const Sett
         }
         case Builder::Meshopt: return buildMeshoptMeshlets(mesh, settings.limits, settings.meshoptConeWeight);
         case Builder::Optimized: return buildOptimizedClusters(mesh, faces, settings.limits, settings.clusterCount, progress, settings.effort,
-                                                                 meshlets);
+                                                                 meshlets, partDone);
         case Builder::File: {
             if (!settings.clusterFile.empty())
                 return partitionFromIds(readClusterIdFile(settings.clusterFile), mesh.faceCount(), settings.clusterFile);

@@ -91,8 +91,11 @@ struct RunStatistics {
 // Builds the partition the settings ask for. The optimized builder reports its progress through
 // `progress` (stage "clusters") and can be cancelled there; the others report nothing.
 // `meshlets`: meshoptimizer's meshlets when startsFromMeshoptMeshlets(settings), if already started.
+// `partDone`: the optimized builder's parts as they are made (ClusterOptimizer.h); the other
+// builders do not call it.
 Partition buildPartition(const Mesh& mesh, const FaceGeometry& faces, const Settings& settings,
-                         const ProgressCallback& progress = {}, MeshletStream* meshlets = nullptr);
+                         const ProgressCallback& progress = {}, MeshletStream* meshlets = nullptr,
+                         const PartClusters& partDone = {});
 
 // Whether the settings' builder starts from meshoptimizer's meshlets at cone weight 1 (the optimized
 // builder at its fast levels): those can be built before the face geometry.

@@ -131,6 +131,28 @@ TEST(Statistics, MeshletsBuiltWhileThePreparationRunsGiveTheSameClusters) {
     EXPECT_EQ(early.partition.clusterCount, whole.clusterCount);  // the default budget is their count
     EXPECT_EQ(runStatistics(*mesh, settings, "torus").results[0].trianglesCulled,
               measureRun(prepared, late, settings).results[0].trianglesCulled);
+    // Each part's bounds and cull map were made as the part was: exactly those of the whole partition.
+    const ClusterBounds all = computeClusterBounds(prepared.mesh(), prepared.world, prepared.faces, early.partition,
+                                                   displayedCone(settings), settings.sphere);
+    EXPECT_EQ(early.bounds.faces.starts, all.faces.starts);
+    EXPECT_EQ(early.bounds.faces.faces, all.faces.faces);
+    EXPECT_EQ(early.bounds.vertexStarts, all.vertexStarts);
+    EXPECT_EQ(early.bounds.vertexIds, all.vertexIds);
+    EXPECT_EQ(early.bounds.triangles, all.triangles);
+    ASSERT_EQ(early.bounds.count(), all.count());
+    for (size_t c = 0; c < all.count(); ++c) {
+        EXPECT_EQ(early.bounds.cones[c].axis, all.cones[c].axis);
+        EXPECT_EQ(early.bounds.cones[c].sinHalfAngle, all.cones[c].sinHalfAngle);
+        EXPECT_EQ(early.bounds.spheres[c].center, all.spheres[c].center);
+        EXPECT_EQ(early.bounds.spheres[c].radius, all.spheres[c].radius);
+        EXPECT_EQ(early.bounds.apexes[c], all.apexes[c]);
+        EXPECT_EQ(early.bounds.octagons[c].edges, all.octagons[c].edges);
+        EXPECT_EQ(early.bounds.boxes[c].min, all.boxes[c].min);
+    }
+    const CullMap map = computeCullMap(prepared.faces, all);
+    EXPECT_EQ(early.cullMap.oracleFraction, map.oracleFraction);
+    EXPECT_EQ(early.cullMap.octagonFraction, map.octagonFraction);
+    EXPECT_EQ(early.cullMap.coneFraction, map.coneFraction);
     // Elsewhere the builder starts from its own growth, or the faces will be flipped first.
     for (const char* change : {"effort=best", "builder=meshlet", "fix_winding=true", "max_vertices=300"}) {
         Settings other = settings;

@@ -158,7 +158,8 @@ namespace {
 // meshlets are made. Each part keeps its own meshlet count at the default budget (`target` 0);
 // a smaller budget is shared by the meshlets each part holds.
 Partition optimizeMeshletParts(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits, size_t target,
-                               const SearchPlan& plan, size_t sweeps, MeshletStream& stream, const ProgressCallback& progress) {
+                               const SearchPlan& plan, size_t sweeps, MeshletStream& stream, const ProgressCallback& progress,
+                               const PartClusters& partDone) {
     const size_t partCount = stream.partCount();
     std::vector<size_t> targets(partCount, 0);
     if (target != 0) {
@@ -178,6 +179,7 @@ Partition optimizeMeshletParts(const Mesh& mesh, const FaceGeometry& faces, cons
                 const size_t partTarget = target != 0 ? targets[i] : part.meshlets.clusterCount;
                 results[i] = optimizeClusters(piece.mesh, piece.faces, limits, partTarget, plan, sweeps, &part.meshlets);
             }
+            if (partDone) partDone(i, partCount, part.faces, results[i]);
             const size_t done = ++partsDone;
             // Progress is reported by the calling thread only, so the callback needs no lock.
             if (worker == 0 && progress && !progress(double(done) / double(partCount), "clusters")) cancelled = true;
@@ -213,7 +215,7 @@ bool sameLimits(const MeshletLimits& a, const MeshletLimits& b) { return a.maxVe
 
 Partition buildOptimizedClusters(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits,
                                  size_t targetClusters, const ProgressCallback& progress, Effort effort,
-                                 MeshletStream* meshlets) {
+                                 MeshletStream* meshlets, const PartClusters& partDone) {
     const size_t faceCount = mesh.faceCount();
     if (faceCount == 0) return {};
     const SearchPlan plan = planFor(effort);
@@ -228,12 +230,13 @@ Partition buildOptimizedClusters(const Mesh& mesh, const FaceGeometry& faces, co
             meshlets = ownStream.get();
         }
         if (targetClusters == 0 || targetClusters <= meshlets->meshletCount())
-            return optimizeMeshletParts(mesh, faces, limits, targetClusters, plan, sweeps, *meshlets, progress);
+            return optimizeMeshletParts(mesh, faces, limits, targetClusters, plan, sweeps, *meshlets, progress, partDone);
     }
     const size_t target = targetClusters != 0 ? targetClusters : defaultClusterBudget(mesh, limits);
     const optimizer::Parts parts = optimizer::splitIntoParts(faces, target);
     if (parts.count() == 1) {
         Partition whole = optimizeClusters(mesh, faces, limits, target, plan, sweeps, nullptr);
+        if (partDone) partDone(0, 1, parts.faces, whole);
         if (progress && !progress(1.0, "clusters")) throw OperationCancelled();
         return whole;
     }
@@ -252,6 +255,7 @@ Partition buildOptimizedClusters(const Mesh& mesh, const FaceGeometry& faces, co
         if (newIndex[worker].empty()) newIndex[worker].assign(mesh.positions.size(), optimizer::kNone);
         const optimizer::MeshPart part = optimizer::extractPart(mesh, faces, parts.begin(i), parts.size(i), newIndex[worker]);
         results[i] = optimizeClusters(part.mesh, part.faces, limits, targets[i], plan, sweeps, nullptr);
+        if (partDone) partDone(i, parts.count(), std::vector<uint32_t>(parts.begin(i), parts.begin(i) + parts.size(i)), results[i]);
         const size_t done = ++partsDone;
         if (worker == 0 && progress && !progress(double(done) / double(parts.count()), "clusters")) cancelled = true;
     });
