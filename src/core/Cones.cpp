@@ -75,10 +75,28 @@ ConeOfNormals seedSphereCone(const glm::dvec3* normals, size_t count) {
     return cone;
 }
 
+namespace {
+
+// Whether every point is on the positive side of their mean: then they lie in an open hemisphere,
+// where Welzl's caps mean what they say.
+bool aroundTheirMean(const std::vector<glm::dvec3>& points) {
+    glm::dvec3 mean(0.0);
+    for (const glm::dvec3& p : points) mean += p;
+    for (const glm::dvec3& p : points)
+        if (!(glm::dot(p, mean) > 0.0)) return false;
+    return true;
+}
+
+}  // namespace
+
 ConeOfNormals minimalCone(const glm::dvec3* normals, size_t count) {
     std::vector<glm::dvec3> points = nonDegenerate(normals, count);
     if (points.empty()) return neverCullable();
-    const Cap cap = minimalConeCap(points.data(), points.size());
+    // On normals not around their mean (mostly wider than a hemisphere: no cone) unbounded Welzl
+    // can take cubic time: the cap grown point by point from a subset decides instead, exactly
+    // where they do fit in a hemisphere, and stops once its caps are wider than one.
+    const Cap cap = aroundTheirMean(points) ? minimalConeCap(points.data(), points.size())
+                                            : minimalCapFromSubset(points.data(), points.size(), capThrough(points[0]));
     ConeOfNormals cone = coneAroundAxis(cap.axis, normals, count);
     // Never report a wider cone than the plain average when rounding made Welzl's axis worse.
     const ConeOfNormals average = averageCone(normals, count);

@@ -31,9 +31,9 @@ struct MeshletPart {
     Partition meshlets;  // clusterOfFace[k] is the meshlet of faces[k]
 };
 
-// How many parts the meshlets of a mesh of this many faces come in: one below 16,384 faces, then
-// parts of about 8,192 faces (the first can start once an eighth of a 65k-face mesh is placed),
-// at most 64. Fixed by the face count alone, so the partitions do not depend on the machine.
+// How many parts the meshlets of a mesh of this many faces come in: one below 2,048 faces, then at
+// least two, of about 8,192 faces each (the first can start once an eighth of a 65k-face mesh is
+// placed), at most 64. Fixed by the face count alone, so the partitions do not depend on the machine.
 size_t meshletPartsFor(size_t faceCount);
 
 // The partition of faces buildMeshoptMeshlets gives for meshlets made from fanTriangles(mesh).

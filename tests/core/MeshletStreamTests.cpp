@@ -95,7 +95,8 @@ TEST(MeshletStream, PartsHoldEveryFaceOnceAndWholeMeshlets) {
 
 TEST(MeshletStream, PartsByFaceCount) {
     EXPECT_EQ(meshletPartsFor(0), 1u);
-    EXPECT_EQ(meshletPartsFor(16383), 1u);
+    EXPECT_EQ(meshletPartsFor(2047), 1u);
+    EXPECT_EQ(meshletPartsFor(2048), 2u);
     EXPECT_EQ(meshletPartsFor(16384), 2u);
     EXPECT_EQ(meshletPartsFor(52000), 7u);
     EXPECT_EQ(meshletPartsFor(3328000), 64u);
