@@ -7,8 +7,8 @@
 #   efficiency.png  bar chart of efficiency per mesh (VTK charts under xvfb-run)
 #   speed.txt       Google Benchmark: ns per cluster per test (scalar core, batched SIMD, meshoptimizer's
 #                   loop) and preparation time for a >= 1M-triangle mesh
-#   prepare.txt     preparation against meshoptimizer's at 20k to 3.3M triangles (median of 5 runs, each
-#                   effort level, peak memory, expected cull rate) and the whole stats run at 1.2M
+#   prepare.txt     preparation against meshoptimizer's at 2k to 3.3M triangles (median of 5 runs, each
+#                   effort level, peak memory, expected cull rate) and the whole stats run at 5k, 52k and 1.2M
 #
 #   scripts/bench-report.sh            # full run (see docs/benchmarks.md for its duration)
 #   scripts/bench-report.sh --quick    # one budget, one distance, cull timings on the real mesh only
@@ -54,17 +54,27 @@ xvfb-run -a -s "-screen 0 1600x1000x24" "$bin/conescope-bench-plot" "$output/sum
 } > "$output/speed.txt" 2>&1
 echo "bench-report: cull speed took $(( $(date +%s) - start )) s" >&2
 
-# Preparation against meshoptimizer, median of 5 runs each, at about 20k, 50k and 90k triangles
-# (CGAL's camel, armadillo, refined_elephant as they are), 1.2M (bunny00 subdivided twice) and 3.3M
-# (armadillo three times); the whole stats run at 1.2M. The quick run takes one size.
+# Preparation against meshoptimizer, median of 5 runs each, at about 2k, 5k and 13k triangles (the
+# bundled torus, elephant and fandisk), 20k, 50k and 90k (CGAL's camel, armadillo, refined_elephant
+# as they are), 1.2M (bunny00 subdivided twice) and 3.3M (armadillo three times); the whole stats
+# run at 5k, 52k and 1.2M. The quick run takes one size.
 {
   echo "# $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ //'), $(nproc) cores"
   if [[ $quick -eq 1 ]]; then
     "$bin/conescope-bench-prepare" --mesh "$root/datasets/cgal/camel.off" --repeat 3 --only optimized-fast \
       --only optimized-balanced --only meshoptimizer
   else
+    for mesh in torus elephant fandisk; do
+      whole=()
+      [[ $mesh == elephant ]] && whole=(--whole-run)
+      "$bin/conescope-bench-prepare" --mesh "$root/datasets/$mesh.off" --only optimized-fast --only optimized-balanced \
+        --only optimized-best --only meshlet --only meshopt --only meshoptimizer "${whole[@]}"
+      echo
+    done
     for mesh in camel armadillo refined_elephant; do
-      "$bin/conescope-bench-prepare" --mesh "$root/datasets/cgal/$mesh.off"
+      whole=()
+      [[ $mesh == armadillo ]] && whole=(--whole-run)
+      "$bin/conescope-bench-prepare" --mesh "$root/datasets/cgal/$mesh.off" "${whole[@]}"
       echo
     done
     "$bin/conescope-bench-prepare" --mesh "$root/datasets/cgal/bunny00.off" --min-triangles 1000000 --whole-run \

@@ -1,6 +1,6 @@
 // A cluster builder that maximises the expected cull rate directly, at a given cluster budget.
 // Its code is in optimizer/: the shared state (State.h), one file per step (Steps.h) and the
-// parts of large meshes (Parts.h).
+// parts it works on (Parts.h).
 #pragma once
 
 #include <cstddef>
@@ -47,13 +47,12 @@ using PartClusters = std::function<void(size_t part, size_t parts, const std::ve
 // Then local search: border faces move to the neighbouring cluster where the objective gains,
 // greedily, then in annealing sweeps that accept a shrinking random loss, then greedily again.
 // `effort` picks the start and the number of sweeps (Effort above); a mesh too large for a few
-// slow-cooling sweeps gets none. A mesh of more than 2^17 faces is cut into parts of at most that
-// many (between whole meshlets where they are the start), which share the budget and are optimised
-// independently, on all cores. targetClusters = 0 uses defaultClusterBudget; the result has at most
-// targetClusters clusters whenever the limits allow meshoptimizer's count.
-// From meshoptimizer's meshlets the parts are those they come in (MeshletStream.h): consecutive
-// meshlets, each part refined as soon as it is made, on one core while the meshlets are still
-// being built on the other, then on both.
+// slow-cooling sweeps gets none. The mesh is cut into parts that share the budget and are
+// optimised independently, on all cores: from meshoptimizer's meshlets, the parts they come in
+// (MeshletStream.h: consecutive meshlets of about 8k faces, each refined as soon as it is made, on
+// one core while the meshlets are still being built on the other, then on both); from growth,
+// halves of halves of at most 2^17 faces. targetClusters = 0 uses defaultClusterBudget; the result
+// has at most targetClusters clusters whenever the limits allow meshoptimizer's count.
 // Deterministic: the same input gives the same partition, on any number of cores.
 // `progress` hears (parts done / parts, "clusters") as parts finish, on the calling thread;
 // returning false stops the parts not yet started and throws OperationCancelled.
