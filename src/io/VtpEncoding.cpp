@@ -1,6 +1,7 @@
 // The encodings of .vtp arrays, decoded as far as the checks in VtpCheck.cpp need them.
 #include "io/VtpEncoding.h"
 
+#include <charconv>
 #include <limits>
 #include <vector>
 
@@ -194,6 +195,25 @@ EncodedBytes EncodedBytes::after(uint64_t count) const {
     return EncodedBytes(text_.substr(std::min(used, text_.size())), base64_);
 }
 
+namespace {
+
+// A word as VTK's ASCII reader reads an integer from it (stream extraction): an optional sign and
+// the digits that follow, whatever comes after them ("429496729junk" is 429496729; the next read
+// then fails, but this one stands). Too large: the largest value, as the stream gives; negative or
+// no digits: nothing.
+std::optional<uint64_t> integerAsVtkReadsIt(std::string_view word) {
+    if (!word.empty() && word.front() == '+') word.remove_prefix(1);
+    size_t digits = 0;
+    while (digits < word.size() && word[digits] >= '0' && word[digits] <= '9') ++digits;
+    if (digits == 0) return std::nullopt;
+    uint64_t value = 0;
+    const auto [end, error] = std::from_chars(word.data(), word.data() + digits, value);
+    if (error == std::errc::result_out_of_range) return std::numeric_limits<uint64_t>::max();
+    return end == word.data() + digits ? std::optional<uint64_t>(value) : std::nullopt;
+}
+
+}  // namespace
+
 StoredValues asciiValues(std::string_view text, std::optional<uint64_t> wanted) {
     StoredValues stored;
     std::string_view wantedWord;
@@ -203,7 +223,7 @@ StoredValues asciiValues(std::string_view text, std::optional<uint64_t> wanted) 
             if (wanted && stored.values == *wanted) wantedWord = word;
             ++stored.values;
         }
-    stored.wantedValue = text::parseInteger<uint64_t>(wantedWord);
+    stored.wantedValue = integerAsVtkReadsIt(wantedWord);
     return stored;
 }
 

@@ -62,7 +62,8 @@ struct StoredValues {
     std::optional<uint64_t> wantedValue;  // the value asked for, when decodable and not negative
 };
 
-// An ASCII array's words, and word number `wanted` as an unsigned integer.
+// An ASCII array's words, and word number `wanted` as an unsigned integer, read as VTK reads it
+// (its leading digits, so that a forged "429496729junk" counts as the 429496729 VTK allocates for).
 StoredValues asciiValues(std::string_view text, std::optional<uint64_t> wanted);
 
 // A binary array of a fixed-size `type`: the values its header gives, and value number `wanted`

@@ -51,6 +51,14 @@ TEST(MalformedVtp, ForgedOffsetIsRejectedBeforeVtkAllocates) {
     ASSERT_NE(text.find(">4 8 12 16 20 24<"), std::string::npos);
     replaceFirst(text, ">4 8 12 16 20 24<", ">4 8 12 16 20\n4294967295<");
     EXPECT_READ_ERROR(scratch.writeFile("offset.vtp", text), "the last offset is 4294967295 but the connectivity array holds 24 values");
+    // VTK reads a number's leading digits and allocates for them, whatever follows them (a 3.4 GB
+    // allocation, found by fuzz_mesh_readers); a number past 2^64 it reads as the largest.
+    std::string junk = fileBytes(formatSamplesDir() / "cube.vtp");
+    replaceFirst(junk, ">4 8 12 16 20 24<", ">4 8 12 16 20 429496729St5ctypeIcE5<");
+    EXPECT_READ_ERROR(scratch.writeFile("junk.vtp", junk), "the last offset is 429496729 but the connectivity array holds 24 values");
+    std::string huge = fileBytes(formatSamplesDir() / "cube.vtp");
+    replaceFirst(huge, ">4 8 12 16 20 24<", ">4 8 12 16 20 +99999999999999999999999<");
+    EXPECT_READ_ERROR(scratch.writeFile("huge.vtp", huge), "the last offset is 18446744073709551615 but the connectivity array holds 24 values");
 }
 
 // VTK reads as many values as the piece counts give and ignores the rest: each of these read as a
