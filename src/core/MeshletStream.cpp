@@ -10,10 +10,13 @@ namespace conescope {
 namespace {
 
 // Below this many faces the meshlets come whole; above, in two parts at least, of about
-// kFacesPerPart faces. Every CGAL demo mesh at the balanced effort: 1.346x meshoptimizer's culled
-// back faces with two parts from 2,048 faces, 1.353x from 16,384, for a third less time on 2k-16k.
+// kFacesPerPart faces. Smaller parts let the second core start sooner and leave less to do once
+// the builder is done, but refine within more borders. Measured over every CGAL demo mesh at the
+// balanced effort (culled back faces / meshoptimizer's) and on armadillo (buildClusters, both
+// cores): parts of 8,192 faces 1.346x and 26 ms, 4,096 1.345x and 23 ms, 2,048 1.343x and
+// 21 ms, 1,024 1.342x and 21 ms.
 constexpr size_t kPartsFromFaces = size_t(1) << 11;
-constexpr size_t kFacesPerPart = size_t(1) << 13;
+constexpr size_t kFacesPerPart = size_t(1) << 11;
 constexpr size_t kMostParts = 64;
 
 constexpr bool kReproduced = MESHOPTIMIZER_VERSION == kReproducedMeshoptVersion;

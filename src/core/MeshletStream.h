@@ -32,8 +32,8 @@ struct MeshletPart {
 };
 
 // How many parts the meshlets of a mesh of this many faces come in: one below 2,048 faces, then at
-// least two, of about 8,192 faces each (the first can start once an eighth of a 65k-face mesh is
-// placed), at most 64. Fixed by the face count alone, so the partitions do not depend on the machine.
+// least two, of about 2,048 faces each, at most 64. Fixed by the face count alone, so the
+// partitions do not depend on the machine.
 size_t meshletPartsFor(size_t faceCount);
 
 // The partition of faces buildMeshoptMeshlets gives for meshlets made from fanTriangles(mesh).

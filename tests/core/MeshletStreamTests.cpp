@@ -97,8 +97,9 @@ TEST(MeshletStream, PartsByFaceCount) {
     EXPECT_EQ(meshletPartsFor(0), 1u);
     EXPECT_EQ(meshletPartsFor(2047), 1u);
     EXPECT_EQ(meshletPartsFor(2048), 2u);
-    EXPECT_EQ(meshletPartsFor(16384), 2u);
-    EXPECT_EQ(meshletPartsFor(52000), 7u);
+    EXPECT_EQ(meshletPartsFor(4096), 2u);
+    EXPECT_EQ(meshletPartsFor(16384), 8u);
+    EXPECT_EQ(meshletPartsFor(52000), 26u);
     EXPECT_EQ(meshletPartsFor(3328000), 64u);
 }
 
