@@ -47,8 +47,13 @@ MeshletStream::MeshletStream(std::shared_ptr<const Mesh> mesh, const MeshletLimi
       limits_(limits),
       handedOver_(kReproduced ? std::max<size_t>(partCount, 1) : 1),
       parts_(handedOver_.size()),
-      sorted_(new std::once_flag[handedOver_.size()]) {
+      sorted_(new std::once_flag[handedOver_.size()]),
+      cores_(splitCores()) {
+    // The builder is started off this thread's core: a new thread would wait for this core while
+    // another idles. The lock keeps it from releasing its hold before the hold is made.
+    std::unique_lock<std::mutex> starting(mutex_);
     thread_ = std::thread([this] {
+        { std::lock_guard<std::mutex> started(mutex_); }
         try {
             build();
         } catch (...) {
@@ -56,6 +61,7 @@ MeshletStream::MeshletStream(std::shared_ptr<const Mesh> mesh, const MeshletLimi
             buildError_ = std::current_exception();
             changed_.notify_all();
         }
+        builderHold_.release();
         // Then the work handed over, if any comes before the stream is dropped.
         std::unique_lock<std::mutex> lock(mutex_);
         changed_.wait(lock, [this] { return stopping_ || work_; });
@@ -71,6 +77,7 @@ MeshletStream::MeshletStream(std::shared_ptr<const Mesh> mesh, const MeshletLimi
         workDone_ = true;
         changed_.notify_all();
     });
+    builderHold_ = CoreHold(thread_.native_handle(), cores_.others);
 }
 
 MeshletStream::~MeshletStream() {
@@ -172,6 +179,13 @@ Partition MeshletStream::whole() {
     waitFor(parts_.size());
     if (!kReproduced) return parts_[0].meshlets;
     return facesOfMeshlets(*mesh_, meshlets_);
+}
+
+CoreHold MeshletStream::holdConsumerCore() const { return CoreHold(thisThread(), cores_.current); }
+
+bool MeshletStream::allPartsMade() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return partsMade_ >= parts_.size() || buildError_;
 }
 
 void MeshletStream::runAfterwards(std::function<void()> work) {

@@ -19,6 +19,7 @@
 #include <utility>
 #include <vector>
 
+#include "CoreAffinity.h"
 #include "Mesh.h"
 #include "MeshoptMeshlets.h"
 #include "Partition.h"
@@ -65,6 +66,11 @@ public:
     void runAfterwards(std::function<void()> work);
     void finishWork();
 
+    // While the builder runs it is kept off the core its creator ran on; a thread that refines the
+    // parts holds that core meanwhile (CoreAffinity.h), until every part is made.
+    CoreHold holdConsumerCore() const;
+    bool allPartsMade();
+
 private:
     void build();
     void waitFor(size_t partsMade);
@@ -86,6 +92,8 @@ private:
     bool stopping_ = false, working_ = false, workDone_ = false;
     std::function<void()> work_;
     std::exception_ptr buildError_, workError_;
+    CoreSplit cores_;
+    CoreHold builderHold_;
     std::thread thread_;
 };
 

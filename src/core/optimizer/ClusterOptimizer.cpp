@@ -171,8 +171,11 @@ Partition optimizeMeshletParts(const Mesh& mesh, const FaceGeometry& faces, cons
     std::atomic<size_t> next{0}, partsDone{0};
     std::atomic<bool> cancelled{false};
     auto work = [&](size_t worker) {
+        // The calling thread keeps its core while the builder runs on the other (MeshletStream.h).
+        CoreHold core = worker == 0 ? stream.holdConsumerCore() : CoreHold();
         std::vector<uint32_t> newIndex(mesh.positions.size(), optimizer::kNone);
         for (size_t i; !cancelled && (i = next++) < partCount;) {
+            if (core.held() && stream.allPartsMade()) core.release();
             const MeshletPart& part = stream.part(i);
             if (!part.faces.empty()) {
                 const optimizer::MeshPart piece = optimizer::extractPart(mesh, faces, part.faces.data(), part.faces.size(), newIndex);
