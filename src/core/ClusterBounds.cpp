@@ -119,6 +119,7 @@ ClusterBounds boundsOfClusters(const Mesh& mesh, const std::vector<glm::vec3>& w
     bounds.spheres.resize(clusterCount);
     bounds.apexes.resize(clusterCount);
     bounds.octagons.resize(clusterCount);
+    bounds.normalsShares.resize(clusterCount);
     // Which vertices the cluster already listed: a mark per mesh vertex, kept by the thread from
     // call to call (a part's clusters are bounded in many small calls), a new mark per cluster.
     thread_local std::vector<uint32_t> seen;
@@ -166,7 +167,9 @@ ClusterBounds boundsOfClusters(const Mesh& mesh, const std::vector<glm::vec3>& w
             bounds.cones[c] = coneByMethod(coneMethod, normals);
             bounds.apexes[c] = coneApex(bounds.cones[c], bounds.spheres[c].center, mesh, world, faces, clusterFaces, faceCount);
         }
-        bounds.octagons[c] = octagonCone(bounds.cones[c], normals.data(), normals.size());
+        const OctagonAndShare octagon = octagonAndNormalsShare(bounds.cones[c], normals.data(), normals.size());
+        bounds.octagons[c] = octagon.octagon;
+        bounds.normalsShares[c] = octagon.normalsShare;
     }
     return bounds;
 }
@@ -199,6 +202,7 @@ void appendClusterBounds(ClusterBounds& bounds, ClusterBounds&& more) {
     append(bounds.spheres, std::move(more.spheres));
     append(bounds.apexes, std::move(more.apexes));
     append(bounds.octagons, std::move(more.octagons));
+    append(bounds.normalsShares, std::move(more.normalsShares));
 }
 
 ClusterFaces clusterRowsOf(const uint32_t* faceIds, const Partition& partOfThem) {

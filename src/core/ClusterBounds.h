@@ -34,6 +34,9 @@ struct ClusterBounds {
     std::vector<glm::dvec3> apexes;
     // Octagon test: the eight-sided cone of normals around the cone's axis (same apex).
     std::vector<OctagonCone> octagons;
+    // The share of view directions from which every face faces away (normalsCullShare), found from
+    // the octagon's hull: the oracle's share in the cull map.
+    std::vector<double> normalsShares;
 
     size_t count() const { return cones.size(); }
 };

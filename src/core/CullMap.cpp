@@ -2,24 +2,18 @@
 
 #include <algorithm>
 
-#include "Parallel.h"
 
 namespace conescope {
 
 namespace {
 
-void mapClusters(const FaceGeometry& faces, const ClusterBounds& bounds, size_t begin, size_t end, CullMap& map) {
-    std::vector<glm::dvec3> normals;
+void mapClusters(const ClusterBounds& bounds, size_t begin, size_t end, CullMap& map) {
     for (size_t c = begin; c < end; ++c) {
         const ConeOfNormals& cone = bounds.cones[c];
         map.coneFraction[c] = cone.cullable ? coneCullShare(cone.sinHalfAngle) : 0.0;
-        normals.clear();
-        for (uint32_t i = bounds.faces.starts[c]; i < bounds.faces.starts[c + 1]; ++i)
-            if (!faces.degenerate[bounds.faces.faces[i]]) normals.push_back(faces.normals[bounds.faces.faces[i]]);
         map.octagonFraction[c] = octagonCullShare(bounds.octagons[c]);
         // Exact areas: only rounding could put the oracle's below the regions it holds.
-        map.oracleFraction[c] = std::max({normalsCullShare(normals.data(), normals.size(), &cone), map.octagonFraction[c],
-                                          map.coneFraction[c]});
+        map.oracleFraction[c] = std::max({bounds.normalsShares[c], map.octagonFraction[c], map.coneFraction[c]});
     }
 }
 
@@ -29,16 +23,9 @@ CullMap sized(size_t clusterCount) {
 
 }  // namespace
 
-CullMap computeCullMap(const FaceGeometry& faces, const ClusterBounds& bounds) {
+CullMap computeCullMap(const ClusterBounds& bounds) {
     CullMap map = sized(bounds.count());
-    // Clusters are independent: each core takes a range of them.
-    forRangesInParallel(bounds.count(), 16, [&](size_t begin, size_t end) { mapClusters(faces, bounds, begin, end, map); });
-    return map;
-}
-
-CullMap cullMapOf(const FaceGeometry& faces, const ClusterBounds& bounds) {
-    CullMap map = sized(bounds.count());
-    mapClusters(faces, bounds, 0, bounds.count(), map);
+    mapClusters(bounds, 0, bounds.count(), map);
     return map;
 }
 

@@ -26,11 +26,8 @@ struct CullMap {
     std::vector<double> oracleFraction;   // per cluster: share of directions with every face back-facing
 };
 
-// Face normals from `faces` (world space), cones from `bounds`. On all cores.
-CullMap computeCullMap(const FaceGeometry& faces, const ClusterBounds& bounds);
-
-// The same on the calling thread (for a part's bounds, as soon as they are made).
-CullMap cullMapOf(const FaceGeometry& faces, const ClusterBounds& bounds);
+// From the cones, octagons and normals' shares of `bounds` (world space).
+CullMap computeCullMap(const ClusterBounds& bounds);
 
 // `more`'s clusters after those of `map`.
 void appendCullMap(CullMap& map, CullMap&& more);

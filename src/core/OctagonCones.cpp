@@ -164,13 +164,14 @@ constexpr int kTurns = 16;  // evenly spaced turns tried over the octagon's 45 d
 
 }  // namespace
 
-OctagonCone octagonCone(const ConeOfNormals& cone, const glm::dvec3* normals, size_t count) {
+namespace {
+
+// The octagon around the hull (indices into projection.points) of the normals projected about
+// `cone`'s axis.
+OctagonCone octagonAround(const ConeOfNormals& cone, const Projection& projection, const std::vector<uint32_t>& hullIndices) {
     OctagonCone octagon;
-    if (!cone.cullable || !(cone.cosHalfAngle > 0.0)) return octagon;
-    const Projection projection = project(cone.axis, normals, count);
-    if (projection.points.empty()) return octagon;
     std::vector<Point> hull;
-    for (uint32_t i : convexHull(projection.points)) hull.push_back(projection.points[i]);
+    for (uint32_t i : hullIndices) hull.push_back(projection.points[i]);
     // Turns tried: a side along each edge of the hull (the least area has one there, as the least
     // rectangle does), and evenly spaced ones for hulls of a point or two.
     std::vector<Point> turns;
@@ -202,17 +203,47 @@ OctagonCone octagonCone(const ConeOfNormals& cone, const glm::dvec3* normals, si
     return octagon;
 }
 
+// normalsCullShare from the hull of the projected normals: its corners are the normals' hull on the sphere.
+double shareOfHull(const glm::dvec3* normals, const Projection& projection, const std::vector<uint32_t>& hullIndices) {
+    std::vector<glm::dvec3> corners;
+    for (uint32_t i : hullIndices) corners.push_back(normals[projection.source[i]]);
+    return polarShare(corners.data(), corners.size());
+}
+
+// Whether a cone's axis can serve for the gnomonic projection of the normals it holds.
+bool projectsAbout(const ConeOfNormals& cone) { return cone.cullable && cone.cosHalfAngle > 0.0; }
+
+}  // namespace
+
+OctagonCone octagonCone(const ConeOfNormals& cone, const glm::dvec3* normals, size_t count) {
+    if (!projectsAbout(cone)) return {};
+    const Projection projection = project(cone.axis, normals, count);
+    if (projection.points.empty()) return {};
+    return octagonAround(cone, projection, convexHull(projection.points));
+}
+
 double normalsCullShare(const glm::dvec3* normals, size_t count, const ConeOfNormals* holding) {
     if (count == 0) return 0.0;
     // Any cone holding every normal in front of its axis gives the same hull; else the minimal one decides.
-    const bool given = holding && holding->cullable && holding->cosHalfAngle > 0.0;
-    const ConeOfNormals cone = given ? *holding : minimalCone(normals, count);
-    if (!cone.cullable || !(cone.cosHalfAngle > 0.0)) return 0.0;
+    const ConeOfNormals cone = holding && projectsAbout(*holding) ? *holding : minimalCone(normals, count);
+    if (!projectsAbout(cone)) return 0.0;
     const Projection projection = project(cone.axis, normals, count);
     if (projection.points.empty()) return 0.0;
-    std::vector<glm::dvec3> corners;
-    for (uint32_t i : convexHull(projection.points)) corners.push_back(normals[projection.source[i]]);
-    return polarShare(corners.data(), corners.size());
+    return shareOfHull(normals, projection, convexHull(projection.points));
+}
+
+OctagonAndShare octagonAndNormalsShare(const ConeOfNormals& cone, const glm::dvec3* normals, size_t count) {
+    if (!projectsAbout(cone)) {
+        // The minimal cone decides the share; it is found without the zero normals, as the octagon leaves them out.
+        std::vector<glm::dvec3> nonzero;
+        for (size_t i = 0; i < count; ++i)
+            if (normals[i] != glm::dvec3(0.0)) nonzero.push_back(normals[i]);
+        return {OctagonCone{}, normalsCullShare(nonzero.data(), nonzero.size(), nullptr)};
+    }
+    const Projection projection = project(cone.axis, normals, count);
+    if (projection.points.empty()) return {};
+    const std::vector<uint32_t> hull = convexHull(projection.points);
+    return {octagonAround(cone, projection, hull), shareOfHull(normals, projection, hull)};
 }
 
 bool octagonSeesBack(const OctagonCone& octagon, const glm::dvec3& view) {

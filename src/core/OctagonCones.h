@@ -52,6 +52,14 @@ double octagonCullShare(const OctagonCone& octagon);
 // face every direction somewhere) or there are none.
 double normalsCullShare(const glm::dvec3* normals, size_t count, const ConeOfNormals* holding = nullptr);
 
+// octagonCone(cone, normals, count) and normalsCullShare(the nonzero normals, &cone) at once, from
+// one hull of the normals (computing each alone finds it twice).
+struct OctagonAndShare {
+    OctagonCone octagon;
+    double normalsShare = 0.0;
+};
+OctagonAndShare octagonAndNormalsShare(const ConeOfNormals& cone, const glm::dvec3* normals, size_t count);
+
 // The eight edges of the pyramid of eyes it culls from (unit directions from the apex, in order):
 // each is perpendicular to two neighbouring edges of the octagon, on the side away from the others.
 std::array<glm::dvec3, 8> octagonPyramidEdges(const OctagonCone& octagon);

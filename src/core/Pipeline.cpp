@@ -93,7 +93,7 @@ ClusterSet buildClusters(const PreparedMesh& prepared, const Settings& settings,
         PartBounds made{boundsOfClusters(prepared.mesh(), prepared.world, prepared.faces, clusterRowsOf(faces.data(), partClusters), cone,
                                          settings.sphere),
                         {}, true};
-        made.cullMap = cullMapOf(prepared.faces, made.bounds);
+        made.cullMap = computeCullMap(made.bounds);
         std::lock_guard<std::mutex> lock(partsMutex);
         if (parts.size() < partCount) parts.resize(partCount);
         parts[part] = std::move(made);
@@ -128,7 +128,7 @@ ClusterSet buildClusters(const PreparedMesh& prepared, const Settings& settings,
         clusters.bounds = computeClusterBounds(prepared.mesh(), prepared.world, prepared.faces, clusters.partition, cone, settings.sphere);
         clusters.boundsSeconds = secondsSince(start);
         report(progress, 0.9, "cull map (" + toString(cone) + ")");
-        clusters.cullMap = computeCullMap(prepared.faces, clusters.bounds);
+        clusters.cullMap = computeCullMap(clusters.bounds);
     }
     report(progress, 1.0, "clusters ready");
     return clusters;
@@ -267,7 +267,7 @@ RunStatistics measureRun(const PreparedMesh& prepared, const ClusterSet& cluster
                                                                   clusters.partition, cone, settings.sphere);
         const CullingInput input{prepared.mesh(), prepared.world, prepared.faces, built ? clusters.bounds : bounds};
         report(progress, double(step) / double(steps), "cull map (" + toString(cone) + ")");
-        const CullMap computed = built ? CullMap() : computeCullMap(prepared.faces, input.bounds);
+        const CullMap computed = built ? CullMap() : computeCullMap(input.bounds);
         const CullMap& map = built ? clusters.cullMap : computed;
         for (CullTest test : settings.tests) {
             report(progress, double(step) / double(steps), "culling (" + toString(cone) + ", " + toString(test) + ")");

@@ -133,7 +133,7 @@ double oracleShareOf(const Mesh& mesh) {
     const FaceGeometry faces = computeFaceGeometry(mesh);
     const Partition one = partitionFromIds(std::vector<double>(mesh.faceCount(), 0.0), mesh.faceCount(), "test");
     const ClusterBounds bounds = computeClusterBounds(mesh, worldPositions(mesh), faces, one, ConeMethod::Minimal);
-    return computeCullMap(faces, bounds).oracleFraction.at(0);
+    return computeCullMap(bounds).oracleFraction.at(0);
 }
 
 }  // namespace
@@ -166,7 +166,7 @@ TEST(CullMap, OctagonShareMatchesExactAreas) {
             const FaceGeometry faces = computeFaceGeometry(mesh);
             const Partition one = partitionFromIds(std::vector<double>(mesh.faceCount(), 0.0), mesh.faceCount(), "test");
             const ClusterBounds bounds = computeClusterBounds(mesh, worldPositions(mesh), faces, one, ConeMethod::Minimal);
-            const CullMap map = computeCullMap(faces, bounds);
+            const CullMap map = computeCullMap(bounds);
             EXPECT_DOUBLE_EQ(cullFraction(map, 0, CullTest::Octagon), octagonCullShare(bounds.octagons[0]));
             if (normals < 3) {
                 EXPECT_NEAR(map.octagonFraction[0], expected[normals - 1], 1e-6) << round << " " << normals;

@@ -133,6 +133,29 @@ TEST(OctagonCone, NormalsShareIsTheSameAboutAnyConeThatHoldsThem) {
     EXPECT_EQ(normalsCullShare(opposite.data(), 2, &notCullable), 0.0);
 }
 
+TEST(OctagonCone, OctagonAndNormalsShareAtOnceAreEachAlone) {
+    // One hull for both gives exactly what each finds alone: about the minimal cone, the average
+    // cone, with zero normals (degenerate faces) among them, and for a cone that cannot be
+    // projected about (the share then comes from the minimal cone of the nonzero normals).
+    std::mt19937_64 random(29);
+    for (int round = 0; round < 200; ++round) {
+        std::vector<glm::dvec3> normals = randomNormals(random, 2 + size_t(round % 90), 2.0 + double(round % 100), 1.0 + double(round % 7));
+        if (round % 3 == 0) normals.insert(normals.begin() + long(normals.size() / 2), glm::dvec3(0.0));
+        std::vector<glm::dvec3> nonzero;
+        for (const glm::dvec3& n : normals)
+            if (n != glm::dvec3(0.0)) nonzero.push_back(n);
+        const ConeOfNormals cones[3] = {minimalCone(nonzero.data(), nonzero.size()), averageCone(nonzero.data(), nonzero.size()),
+                                        ConeOfNormals{}};
+        for (const ConeOfNormals& cone : cones) {
+            const OctagonAndShare both = octagonAndNormalsShare(cone, normals.data(), normals.size());
+            const OctagonCone alone = octagonCone(cone, normals.data(), normals.size());
+            EXPECT_EQ(both.octagon.cullable, alone.cullable) << round;
+            EXPECT_EQ(both.octagon.edges, alone.edges) << round;
+            EXPECT_EQ(both.normalsShare, normalsCullShare(nonzero.data(), nonzero.size(), &cone)) << round;
+        }
+    }
+}
+
 TEST(OctagonCone, CullsACylinderStripWhereTheRoundConeCannot) {
     // A strip of a cylinder around the y axis, normals within 40 degrees of +z in the xz plane. An
     // eye far off along -z and tilted 60 degrees towards y sees every face from behind (n.y = 0),
