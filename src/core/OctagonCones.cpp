@@ -174,8 +174,12 @@ OctagonCone octagonAround(const ConeOfNormals& cone, const Projection& projectio
     for (uint32_t i : hullIndices) hull.push_back(projection.points[i]);
     // Turns tried: a side along each edge of the hull (the least area has one there, as the least
     // rectangle does), and evenly spaced ones for hulls of a point or two.
-    std::vector<Point> turns;
-    for (int t = 0; t < kTurns; ++t) turns.emplace_back(std::cos(t * (M_PI / 4.0) / kTurns), std::sin(t * (M_PI / 4.0) / kTurns));
+    static const std::array<Point, kTurns> evenTurns = [] {
+        std::array<Point, kTurns> turns;
+        for (int t = 0; t < kTurns; ++t) turns[t] = Point(std::cos(t * (M_PI / 4.0) / kTurns), std::sin(t * (M_PI / 4.0) / kTurns));
+        return turns;
+    }();
+    std::vector<Point> turns(evenTurns.begin(), evenTurns.end());
     for (size_t i = 0; hull.size() > 1 && i < hull.size(); ++i) {
         const Point edge = hull[(i + 1) % hull.size()] - hull[i];
         const double length = glm::length(edge);

@@ -45,7 +45,11 @@ typename Kind::Ball welzl(Kind& kind, glm::dvec3* points, size_t end, glm::dvec3
             if (kind.holds(ball, points[i])) continue;
             boundary[BoundaryCount] = points[i];
             ball = welzl<BoundaryCount + 1>(kind, points, i, boundary);
-            if constexpr (Kind::kMoveToFront) std::rotate(points, points + i, points + i + 1);
+            if constexpr (Kind::kMoveToFront) {  // points[i] to the front, the others one on: a rotation, as one move
+                const glm::dvec3 moved = points[i];
+                std::move_backward(points, points + i, points + i + 1);
+                points[0] = moved;
+            }
         }
     }
     return ball;
