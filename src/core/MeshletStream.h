@@ -74,10 +74,14 @@ public:
 private:
     void build();
     void waitFor(size_t partsMade);
+    // The fan triangles meshoptimizer is given: the mesh's own corners when every face is a triangle.
+    const uint32_t* triangleIndices() const;
+    size_t triangleIndexCount() const;
 
     std::shared_ptr<const Mesh> mesh_;
     MeshletLimits limits_;
-    std::vector<uint32_t> indices_, faceOfTriangle_;
+    bool allTriangles_ = false;
+    std::vector<uint32_t> indices_, faceOfTriangle_;  // fan triangles and their faces, unless allTriangles_
     MeshoptMeshlets meshlets_;
     // Per part, as the builder's thread hands it over: (face, meshlet from the part's first) in the
     // order placed; sorted into parts_[i] by the first to ask for it, off the builder's thread.
@@ -89,6 +93,9 @@ private:
     std::mutex mutex_;
     std::condition_variable changed_;
     size_t partsMade_ = 0;
+    std::shared_ptr<const MeshoptTriangleTree> tree_;  // made by the stream's creator
+    std::exception_ptr treeError_;
+    bool treeMade_ = false;
     bool stopping_ = false, working_ = false, workDone_ = false;
     std::function<void()> work_;
     std::exception_ptr buildError_, workError_;
