@@ -49,11 +49,6 @@ MeshletStream::MeshletStream(std::shared_ptr<const Mesh> mesh, const MeshletLimi
       parts_(handedOver_.size()),
       sorted_(new std::once_flag[handedOver_.size()]),
       cores_(splitCores()) {
-    // A mesh of triangles is its own fan triangulation.
-    const Mesh& shape = *mesh_;
-    allTriangles_ = true;
-    for (size_t f = 0; f < shape.faceCount() && allTriangles_; ++f) allTriangles_ = shape.faceSize(f) == 3;
-    if (kReproduced && !allTriangles_) indices_ = fanTriangles(shape);
     // The builder is started off this thread's core: a new thread would wait for this core while
     // another idles. The lock keeps it from releasing its hold before the hold is made.
     std::unique_lock<std::mutex> starting(mutex_);
@@ -83,23 +78,6 @@ MeshletStream::MeshletStream(std::shared_ptr<const Mesh> mesh, const MeshletLimi
         changed_.notify_all();
     });
     builderHold_ = CoreHold(thread_.native_handle(), cores_.others);
-    starting.unlock();
-    if (!kReproduced) return;
-    // The triangles' centres, normals and k-d tree are made here while the builder's thread starts
-    // and sets up the rest: the thread takes about a tenth of a millisecond to start, the tree a
-    // sixth of the builder's time.
-    std::shared_ptr<const MeshoptTriangleTree> tree;
-    std::exception_ptr error;
-    try {
-        tree = buildMeshoptTriangleTree(triangleIndices(), triangleIndexCount(), &shape.positions[0].x, sizeof(glm::vec3));
-    } catch (...) {
-        error = std::current_exception();
-    }
-    std::lock_guard<std::mutex> lock(mutex_);
-    tree_ = std::move(tree);
-    treeError_ = error;
-    treeMade_ = true;
-    changed_.notify_all();
 }
 
 const uint32_t* MeshletStream::triangleIndices() const { return allTriangles_ ? mesh_->faceVertices.data() : indices_.data(); }
@@ -129,6 +107,10 @@ void MeshletStream::build() {
         return;
     }
     if (!meshoptTakesLimits(limits_)) buildMeshoptMeshlets(mesh, limits_, 1.0f);  // throws, naming the limits
+    // A mesh of triangles is its own fan triangulation: no copy.
+    allTriangles_ = true;
+    for (size_t f = 0; f < mesh.faceCount() && allTriangles_; ++f) allTriangles_ = mesh.faceSize(f) == 3;
+    if (!allTriangles_) indices_ = fanTriangles(mesh);
     const size_t triangles = triangleIndexCount() / 3;
     if (!allTriangles_) {
         faceOfTriangle_.reserve(triangles);
@@ -167,14 +149,8 @@ void MeshletStream::build() {
         while (nextPart + 1 < partCount && placed >= (nextPart + 1) * triangles / partCount) handOver(placed, closedMeshlets, false);
         return true;
     };
-    const TriangleTreeSource tree = [this] {
-        std::unique_lock<std::mutex> lock(mutex_);
-        changed_.wait(lock, [this] { return treeMade_; });
-        if (treeError_) std::rethrow_exception(treeError_);
-        return tree_;
-    };
     reproduceMeshoptMeshlets(meshlets_, triangleIndices(), triangleIndexCount(), &mesh.positions[0].x, mesh.positions.size(),
-                             sizeof(glm::vec3), limits_.maxVertices, limits_.maxTriangles, 1.0f, closed, tree);
+                             sizeof(glm::vec3), limits_.maxVertices, limits_.maxTriangles, 1.0f, closed);
     {
         std::lock_guard<std::mutex> lock(mutex_);
         if (stopping_) return;

@@ -93,9 +93,6 @@ private:
     std::mutex mutex_;
     std::condition_variable changed_;
     size_t partsMade_ = 0;
-    std::shared_ptr<const MeshoptTriangleTree> tree_;  // made by the stream's creator
-    std::exception_ptr treeError_;
-    bool treeMade_ = false;
     bool stopping_ = false, working_ = false, workDone_ = false;
     std::function<void()> work_;
     std::exception_ptr buildError_, workError_;

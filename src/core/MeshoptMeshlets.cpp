@@ -17,7 +17,6 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
-#include <memory>
 
 namespace conescope {
 
@@ -237,8 +236,8 @@ struct Builder {
     // offsets[v]; placed ones are swapped out with the last), which vertex of the meshlet each
     // vertex is (kUnused: none), which triangles are placed.
     std::vector<uint32_t> counts, offsets, around;
-    const Cone* cones = nullptr;    // per triangle, from its MeshoptTriangleTree
-    const KdNode* nodes = nullptr;  // the tree's
+    std::vector<Cone> cones;
+    std::vector<KdNode> nodes;
     std::vector<uint8_t> deadNodes;  // subtrees holding only placed triangles (kdNearest)
     std::vector<uint8_t> used, emitted;
 
@@ -353,7 +352,7 @@ struct Builder {
         float position[3] = {cone.px, cone.py, cone.pz};
         unsigned int index = kNone;
         float limit = FLT_MAX;
-        kdNearest(nodes, 0, &cones[0].px, sizeof(Cone) / sizeof(float), emitted.data(), position, index, limit, deadNodes.data());
+        kdNearest(nodes.data(), 0, &cones[0].px, sizeof(Cone) / sizeof(float), emitted.data(), position, index, limit, deadNodes.data());
         return index;
     }
 
@@ -410,29 +409,9 @@ struct Builder {
 
 }  // namespace
 
-struct MeshoptTriangleTree {
-    std::vector<Cone> cones;
-    std::vector<KdNode> nodes;
-    float meshArea = 0.f;
-};
-
-std::shared_ptr<const MeshoptTriangleTree> buildMeshoptTriangleTree(const uint32_t* indices, size_t indexCount, const float* positions,
-                                                                    size_t positionStride) {
-    auto tree = std::make_shared<MeshoptTriangleTree>();
-    const size_t triangleCount = indexCount / 3;
-    if (triangleCount == 0) return tree;
-    tree->cones.resize(triangleCount);
-    tree->meshArea = triangleCones(tree->cones.data(), indices, triangleCount, positions, positionStride / sizeof(float));
-    std::vector<unsigned int> kdIndices(triangleCount);
-    for (size_t i = 0; i < triangleCount; ++i) kdIndices[i] = unsigned(i);
-    tree->nodes.resize(triangleCount * 2);
-    kdBuild(tree->nodes.data(), &tree->cones[0].px, sizeof(Cone) / sizeof(float), kdIndices.data(), triangleCount, 8);
-    return tree;
-}
-
 void reproduceMeshoptMeshlets(MeshoptMeshlets& result, const uint32_t* indices, size_t indexCount, const float* positions,
                               size_t vertexCount, size_t positionStride, size_t maxVertices, size_t maxTriangles, float coneWeight,
-                              const MeshletClosed& closed, const TriangleTreeSource& treeSource) {
+                              const MeshletClosed& closed) {
     result = MeshoptMeshlets{};
     const size_t triangleCount = indexCount / 3;
     if (triangleCount == 0) {
@@ -457,7 +436,17 @@ void reproduceMeshoptMeshlets(MeshoptMeshlets& result, const uint32_t* indices, 
         for (int k = 0; k < 3; ++k) b.around[b.offsets[indices[t * 3 + k]]++] = uint32_t(t);
     for (size_t v = 0; v < vertexCount; ++v) b.offsets[v] -= b.counts[v];
 
-    b.deadNodes.assign(triangleCount * 2, 0);
+    b.cones.resize(triangleCount);
+    const float meshArea = triangleCones(b.cones.data(), indices, triangleCount, positions, positionStride / sizeof(float));
+    const float triangleAreaAverage = meshArea / float(triangleCount) * 0.5f;
+    b.expectedRadius = sqrtf(triangleAreaAverage * maxTriangles) * 0.5f;
+
+    std::vector<unsigned int> kdIndices(triangleCount);
+    for (size_t i = 0; i < triangleCount; ++i) kdIndices[i] = unsigned(i);
+    b.nodes.resize(triangleCount * 2);
+    kdBuild(b.nodes.data(), &b.cones[0].px, sizeof(Cone) / sizeof(float), kdIndices.data(), triangleCount, 8);
+    b.deadNodes.assign(b.nodes.size(), 0);
+
     b.used.assign(vertexCount, kUnused);
     b.emitted.assign(triangleCount, 0);
     b.listed.assign(triangleCount, 0);
@@ -465,14 +454,6 @@ void reproduceMeshoptMeshlets(MeshoptMeshlets& result, const uint32_t* indices, 
     b.vertices.reserve(maxVertices);
     result.meshletOfTriangle.assign(triangleCount, kNone);
     result.placementOrder.assign(triangleCount, kNone);
-
-    // Centres, normals and the k-d tree: given (made meanwhile on another thread) or made here.
-    std::shared_ptr<const MeshoptTriangleTree> tree =
-        treeSource ? treeSource() : buildMeshoptTriangleTree(indices, indexCount, positions, positionStride);
-    b.cones = tree->cones.data();
-    b.nodes = tree->nodes.data();
-    const float triangleAreaAverage = tree->meshArea / float(triangleCount) * 0.5f;
-    b.expectedRadius = sqrtf(triangleAreaAverage * maxTriangles) * 0.5f;
     size_t placed = 0;
     for (;;) {
         const Cone cone = meshletCone(b.sum, b.triangles);

@@ -8,7 +8,6 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
-#include <memory>
 #include <vector>
 
 namespace conescope {
@@ -30,23 +29,12 @@ struct MeshoptMeshlets {
 // then holds what was placed).
 using MeshletClosed = std::function<bool(size_t closedMeshlets, size_t placedTriangles)>;
 
-// What the builder needs of the triangles alone: each one's centre and normal, the mesh's area and
-// the k-d tree over the centres (a sixth of the builder's time). It can be made on another thread
-// while the builder sets up the rest: MeshletStream makes it on the stream's creator while the
-// builder's thread starts.
-struct MeshoptTriangleTree;
-std::shared_ptr<const MeshoptTriangleTree> buildMeshoptTriangleTree(const uint32_t* indices, size_t indexCount, const float* positions,
-                                                                    size_t positionStride);
-// Gives the tree of the same triangles and positions when the builder needs it (waiting if need be).
-using TriangleTreeSource = std::function<std::shared_ptr<const MeshoptTriangleTree>()>;
-
 // The arguments are meshopt_buildMeshlets' (positionStride in bytes); the limits must be ones it
 // takes (meshoptTakesLimits). Indices must be below vertexCount. `result`'s vectors are sized
 // before the first triangle is placed, so that a listener may read placed entries while it runs.
-// Without a tree source the builder makes the tree itself.
 void reproduceMeshoptMeshlets(MeshoptMeshlets& result, const uint32_t* indices, size_t indexCount, const float* positions,
                               size_t vertexCount, size_t positionStride, size_t maxVertices, size_t maxTriangles, float coneWeight,
-                              const MeshletClosed& closed = {}, const TriangleTreeSource& treeSource = {});
+                              const MeshletClosed& closed = {});
 
 // The same, returned.
 MeshoptMeshlets reproduceMeshoptMeshlets(const uint32_t* indices, size_t indexCount, const float* positions, size_t vertexCount,

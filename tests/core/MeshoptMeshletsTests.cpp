@@ -7,7 +7,6 @@
 #include <meshoptimizer.h>
 
 #include <random>
-#include <thread>
 
 #include "TestMeshes.h"
 #include "core/MeshoptMeshlets.h"
@@ -153,28 +152,6 @@ TEST(MeshoptMeshlets, SameAsTheLibraryWhereScoresAreNotNumbers) {
     for (glm::vec3& p : flat.positions) p = glm::vec3(1.f, 2.f, 3.f);
     expectSameAsLibrary(flat, 64, 124, 1.0f);
     expectSameAsLibrary(flat, 64, 124, 0.5f);
-}
-
-TEST(MeshoptMeshlets, TriangleTreeMadeElsewhereGivesTheSameMeshlets) {
-    // The tree given by a source (as MeshletStream's creator makes it on its own thread, here on
-    // another thread too) or made by the builder itself: the same meshlets, placement for placement.
-    std::mt19937_64 random(11);
-    for (const Mesh& mesh : {testmesh::torus(1.0, 0.3, 64, 32), testmesh::randomPatch(random, 30, 40.0), testmesh::quadCube()}) {
-        const Case c = fromMesh(mesh);
-        std::shared_ptr<const MeshoptTriangleTree> tree;
-        std::thread maker([&] { tree = buildMeshoptTriangleTree(c.indices.data(), c.indices.size(), &c.positions[0].x, sizeof(glm::vec3)); });
-        maker.join();
-        size_t asked = 0;
-        MeshoptMeshlets given;
-        reproduceMeshoptMeshlets(given, c.indices.data(), c.indices.size(), &c.positions[0].x, c.positions.size(), sizeof(glm::vec3), 64,
-                                 124, 1.0f, {}, [&] { ++asked; return tree; });
-        const MeshoptMeshlets own = reproduceMeshoptMeshlets(c.indices.data(), c.indices.size(), &c.positions[0].x, c.positions.size(),
-                                                             sizeof(glm::vec3), 64, 124, 1.0f);
-        EXPECT_EQ(asked, 1u);
-        EXPECT_EQ(given.count, own.count);
-        EXPECT_EQ(given.placementOrder, own.placementOrder);
-        EXPECT_EQ(given.meshletOfTriangle, own.meshletOfTriangle);
-    }
 }
 
 TEST(MeshoptMeshlets, PartitionOfFacesIsTheLibrarysOnMeshesWithoutDuplicateFaces) {
