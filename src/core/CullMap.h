@@ -26,11 +26,9 @@ struct CullMap {
     std::vector<double> oracleFraction;   // per cluster: share of directions with every face back-facing
 };
 
-// From the cones, octagons and normals' shares of `bounds` (world space).
+// From the cones, octagons and normals' shares of `bounds` (world space): a few operations per
+// cluster, the hulls having been found with the bounds.
 CullMap computeCullMap(const ClusterBounds& bounds);
-
-// `more`'s clusters after those of `map`.
-void appendCullMap(CullMap& map, CullMap&& more);
 
 // The share for `test`: the oracle's own for CullTest::Oracle, the octagon's for CullTest::Octagon,
 // the round cone's for every other test.

@@ -78,11 +78,10 @@ ClusterSet buildClusters(const PreparedMesh& prepared, const Settings& settings,
     ClusterSet clusters;
     clusters.settings = settings;
     const ConeMethod cone = displayedCone(settings);
-    // The optimized builder hands over its parts as they are made: their bounds and cull map are
-    // made at once, on the core that made the part, while the other core still builds.
+    // The optimized builder hands over its parts as they are made: their bounds are made at once,
+    // on the core that made the part, while the other core still builds.
     struct PartBounds {
         ClusterBounds bounds;
-        CullMap cullMap;
         bool made = false;
     };
     std::vector<PartBounds> parts;
@@ -92,8 +91,7 @@ ClusterSet buildClusters(const PreparedMesh& prepared, const Settings& settings,
         const auto start = std::chrono::steady_clock::now();
         PartBounds made{boundsOfClusters(prepared.mesh(), prepared.world, prepared.faces, clusterRowsOf(faces.data(), partClusters), cone,
                                          settings.sphere),
-                        {}, true};
-        made.cullMap = computeCullMap(made.bounds);
+                        true};
         std::lock_guard<std::mutex> lock(partsMutex);
         if (parts.size() < partCount) parts.resize(partCount);
         parts[part] = std::move(made);
@@ -119,17 +117,14 @@ ClusterSet buildClusters(const PreparedMesh& prepared, const Settings& settings,
     if (everyPart && partClusters == clusters.partition.clusterCount) {
         clusters.bounds.coneMethod = cone;
         clusters.bounds.sphereMethod = settings.sphere;
-        for (PartBounds& part : parts) {
-            appendClusterBounds(clusters.bounds, std::move(part.bounds));
-            appendCullMap(clusters.cullMap, std::move(part.cullMap));
-        }
+        for (PartBounds& part : parts) appendClusterBounds(clusters.bounds, std::move(part.bounds));
         clusters.boundsSeconds = partBoundsSeconds + secondsSince(start);
     } else {
         clusters.bounds = computeClusterBounds(prepared.mesh(), prepared.world, prepared.faces, clusters.partition, cone, settings.sphere);
         clusters.boundsSeconds = secondsSince(start);
-        report(progress, 0.9, "cull map (" + toString(cone) + ")");
-        clusters.cullMap = computeCullMap(clusters.bounds);
     }
+    report(progress, 0.9, "cull map (" + toString(cone) + ")");
+    clusters.cullMap = computeCullMap(clusters.bounds);
     report(progress, 1.0, "clusters ready");
     return clusters;
 }

@@ -131,7 +131,8 @@ TEST(Statistics, MeshletsBuiltWhileThePreparationRunsGiveTheSameClusters) {
     EXPECT_EQ(early.partition.clusterCount, whole.clusterCount);  // the default budget is their count
     EXPECT_EQ(runStatistics(*mesh, settings, "torus").results[0].trianglesCulled,
               measureRun(prepared, late, settings).results[0].trianglesCulled);
-    // Each part's bounds and cull map were made as the part was: exactly those of the whole partition.
+    // Each part's bounds were made as the part was: exactly those of the whole partition, and so is
+    // the cull map read off them.
     const ClusterBounds all = computeClusterBounds(prepared.mesh(), prepared.world, prepared.faces, early.partition,
                                                    displayedCone(settings), settings.sphere);
     EXPECT_EQ(early.bounds.faces.starts, all.faces.starts);
