@@ -49,7 +49,7 @@ using PartClusters = std::function<void(size_t part, size_t parts, const std::ve
 // `effort` picks the start and the number of sweeps (Effort above); a mesh too large for a few
 // slow-cooling sweeps gets none. The mesh is cut into parts that share the budget and are
 // optimised independently, on all cores: from meshoptimizer's meshlets, the parts they come in
-// (MeshletStream.h: consecutive meshlets of about 2k faces, each refined as soon as it is made, on
+// (MeshletStream.h: consecutive meshlets of about 640 faces, each refined as soon as it is made, on
 // one core while the meshlets are still being built on the other, then on both); from growth,
 // halves of halves of at most 2^17 faces. targetClusters = 0 uses defaultClusterBudget; the result
 // has at most targetClusters clusters whenever the limits allow meshoptimizer's count.

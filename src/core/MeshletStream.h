@@ -33,7 +33,7 @@ struct MeshletPart {
 };
 
 // How many parts the meshlets of a mesh of this many faces come in: one below 2,048 faces, then at
-// least two, of about 2,048 faces each, at most 64. Fixed by the face count alone, so the
+// least two, of about 640 faces each, at most 64. Fixed by the face count alone, so the
 // partitions do not depend on the machine.
 size_t meshletPartsFor(size_t faceCount);
 

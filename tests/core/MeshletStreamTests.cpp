@@ -96,10 +96,10 @@ TEST(MeshletStream, PartsHoldEveryFaceOnceAndWholeMeshlets) {
 TEST(MeshletStream, PartsByFaceCount) {
     EXPECT_EQ(meshletPartsFor(0), 1u);
     EXPECT_EQ(meshletPartsFor(2047), 1u);
-    EXPECT_EQ(meshletPartsFor(2048), 2u);
-    EXPECT_EQ(meshletPartsFor(4096), 2u);
-    EXPECT_EQ(meshletPartsFor(16384), 8u);
-    EXPECT_EQ(meshletPartsFor(52000), 26u);
+    EXPECT_EQ(meshletPartsFor(2048), 4u);
+    EXPECT_EQ(meshletPartsFor(2304), 4u);
+    EXPECT_EQ(meshletPartsFor(16384), 26u);
+    EXPECT_EQ(meshletPartsFor(40960), 64u);
     EXPECT_EQ(meshletPartsFor(3328000), 64u);
 }
 
