@@ -10,16 +10,8 @@
 #   scripts/bench-all-meshes.sh                 # fetches the meshes (datasets/cgal-all), builds, runs
 #   CONESCOPE_BENCH_BUILD_DIR=... CONESCOPE_BENCH_OUTPUT=... scripts/bench-all-meshes.sh
 set -euo pipefail
-root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-build=${CONESCOPE_BENCH_BUILD_DIR:-$root/build-bench}
-output=${CONESCOPE_BENCH_OUTPUT:-$root/bench/results}
-
-"$root/scripts/fetch-datasets.sh" --all
-# A new build directory is made in Release without the GUI; an existing one is used as it is.
-[[ -f "$build/CMakeCache.txt" ]] || cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DCONESCOPE_BUILD_GUI=OFF >/dev/null
-cmake --build "$build" -j"$(nproc)" --target conescope-cli >/dev/null
+source "$(dirname "${BASH_SOURCE[0]}")/bench-setup.sh" conescope-cli
 cli="$build/src/cli/conescope-cli"
-mkdir -p "$output"
 
 rows="$output/all-meshes.json.tmp"
 : > "$rows"

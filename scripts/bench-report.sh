@@ -9,6 +9,8 @@
 #                   loop) and preparation time for a >= 1M-triangle mesh
 #   prepare.txt     preparation against meshoptimizer's at 2k to 3.3M triangles (median of 5 runs, each
 #                   effort level, peak memory, expected cull rate) and the whole stats run at 5k, 52k and 1.2M
+#   small-meshes.md the default's preparation and whole run against meshoptimizer's on 15 meshes of 2k
+#                   to 20k triangles, three rounds (scripts/bench-small-meshes.sh; not in the quick run)
 #
 #   scripts/bench-report.sh            # full run (see docs/benchmarks.md for its duration)
 #   scripts/bench-report.sh --quick    # one budget, one distance, cull timings on the real mesh only
@@ -84,4 +86,7 @@ echo "bench-report: cull speed took $(( $(date +%s) - start )) s" >&2
       --only optimized-fast --only optimized-balanced --only meshlet --only meshoptimizer
   fi
 } > "$output/prepare.txt" 2>&1
+if [[ $quick -eq 0 ]]; then
+  CONESCOPE_BENCH_BUILD_DIR="$build" CONESCOPE_BENCH_OUTPUT="$output" "$root/scripts/bench-small-meshes.sh"
+fi
 echo "bench-report: wrote $output/{report.csv,report.md,summary.csv,efficiency.png,speed.txt,prepare.txt} in $(( $(date +%s) - start )) s" >&2

@@ -1,0 +1,12 @@
+# Sourced by the benchmark scripts that run on every CGAL demo mesh (bench-all-meshes.sh,
+# bench-small-meshes.sh): sets root, build (CONESCOPE_BENCH_BUILD_DIR, default build-bench) and
+# output (CONESCOPE_BENCH_OUTPUT, default bench/results), fetches every mesh, and builds the targets
+# given as arguments. A new build directory is made in Release without the GUI; an existing one is
+# used as it is.
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+build=${CONESCOPE_BENCH_BUILD_DIR:-$root/build-bench}
+output=${CONESCOPE_BENCH_OUTPUT:-$root/bench/results}
+"$root/scripts/fetch-datasets.sh" --all
+[[ -f "$build/CMakeCache.txt" ]] || cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DCONESCOPE_BUILD_GUI=OFF >/dev/null
+cmake --build "$build" -j"$(nproc)" --target "$@" >/dev/null
+mkdir -p "$output"
