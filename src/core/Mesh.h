@@ -2,9 +2,11 @@
 // a model matrix, and any per-face arrays a reader found (e.g. "cluster_id").
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -34,6 +36,15 @@ void validateMesh(const Mesh& mesh);
 
 // Triangles a face contributes when drawn as a fan: size - 2.
 size_t triangleCount(const Mesh& mesh);
+
+// A triangle's vertex set: its three corners in increasing order, whatever its winding and first
+// corner. Three compare-and-swaps, where a sort call cost most of the duplicate-face check.
+inline std::array<uint32_t, 3> sortedCorners(uint32_t a, uint32_t b, uint32_t c) {
+    if (a > b) std::swap(a, b);
+    if (b > c) std::swap(b, c);
+    if (a > b) std::swap(a, b);
+    return {a, b, c};
+}
 
 // Positions after the model matrix.
 std::vector<glm::vec3> worldPositions(const Mesh& mesh);

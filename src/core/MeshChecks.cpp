@@ -1,6 +1,7 @@
 #include "MeshChecks.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <string>
@@ -77,12 +78,9 @@ Orientation orientFaces(const Mesh& mesh, const std::vector<HalfEdge>& edges) {
 // A face's vertex set: its vertices sorted, so any rotation or winding of a face gives the same.
 void sortedVertices(const Mesh& mesh, size_t face, std::vector<uint32_t>& out) {
     const uint32_t* vertices = mesh.faceBegin(face);
-    if (mesh.faceSize(face) == 3) {  // most faces: three compare-and-swaps, not a sort call
-        uint32_t a = vertices[0], b = vertices[1], c = vertices[2];
-        if (a > b) std::swap(a, b);
-        if (b > c) std::swap(b, c);
-        if (a > b) std::swap(a, b);
-        out.assign({a, b, c});
+    if (mesh.faceSize(face) == 3) {  // most faces
+        const std::array<uint32_t, 3> corners = sortedCorners(vertices[0], vertices[1], vertices[2]);
+        out.assign(corners.begin(), corners.end());
         return;
     }
     out.assign(vertices, vertices + mesh.faceSize(face));

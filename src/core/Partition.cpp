@@ -316,12 +316,6 @@ Partition meshoptLibraryMeshlets(const Mesh& mesh, const MeshletLimits& limits, 
         firstTriangle[f + 1] = firstTriangle[f] + uint32_t(mesh.faceSize(f) >= 2 ? mesh.faceSize(f) - 2 : 0);
         faceOfTriangle.insert(faceOfTriangle.end(), firstTriangle[f + 1] - firstTriangle[f], uint32_t(f));
     }
-    auto sorted = [](uint32_t a, uint32_t b, uint32_t c) {
-        if (a > b) std::swap(a, b);
-        if (b > c) std::swap(b, c);
-        if (a > b) std::swap(a, b);
-        return std::array<uint32_t, 3>{a, b, c};
-    };
     std::vector<uint8_t> matched(firstTriangle.back(), 0);
     // The first fan triangle with the corners of an output triangle, matched or not (kUnassigned: none).
     auto firstMatch = [&](const std::array<uint32_t, 3>& key, bool skipMatched) {
@@ -329,7 +323,7 @@ Partition meshoptLibraryMeshlets(const Mesh& mesh, const MeshletLimits& limits, 
             const uint32_t* face = mesh.faceBegin(*f);
             for (size_t k = 1; k + 1 < mesh.faceSize(*f); ++k) {
                 const uint32_t triangle = firstTriangle[*f] + uint32_t(k - 1);
-                if ((!skipMatched || !matched[triangle]) && sorted(face[0], face[k], face[k + 1]) == key) return triangle;
+                if ((!skipMatched || !matched[triangle]) && sortedCorners(face[0], face[k], face[k + 1]) == key) return triangle;
             }
         }
         return kUnassigned;
@@ -337,7 +331,7 @@ Partition meshoptLibraryMeshlets(const Mesh& mesh, const MeshletLimits& limits, 
     auto keyOf = [&](const meshopt_Meshlet& meshlet, size_t t) {
         const unsigned char* local = &meshletTriangles[meshlet.triangle_offset + 3 * t];
         const uint32_t* vertices = &meshletVertices[meshlet.vertex_offset];
-        return sorted(vertices[local[0]], vertices[local[1]], vertices[local[2]]);
+        return sortedCorners(vertices[local[0]], vertices[local[1]], vertices[local[2]]);
     };
     // The search on all cores, meshlet by meshlet; then, in order, each output triangle takes its
     // match, or the next unmatched one when a duplicate face took it: the result is the one-pass

@@ -1,5 +1,8 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
+
 #include <glm/gtc/matrix_transform.hpp>
 #include <random>
 
@@ -195,4 +198,14 @@ TEST(Views, OrthographicViewsReportThePointTheirDirectionCameFrom) {
         EXPECT_EQ(orbit[i].position, perspective[i].position);
         EXPECT_NEAR(glm::dot(orbit[i].direction, glm::normalize(-perspective[i].position)), 1.0, 1e-12);
     }
+}
+
+TEST(Mesh, SortedCornersAreTheSameForEveryOrderOfATriangle) {
+    const std::array<uint32_t, 3> expected{2, 5, 9};
+    std::array<uint32_t, 3> corners{9, 2, 5};
+    std::sort(corners.begin(), corners.end());
+    do {
+        EXPECT_EQ(sortedCorners(corners[0], corners[1], corners[2]), expected);
+    } while (std::next_permutation(corners.begin(), corners.end()));
+    EXPECT_EQ(sortedCorners(4, 4, 1), (std::array<uint32_t, 3>{1, 4, 4}));
 }
