@@ -2,9 +2,9 @@
 // handed over in parts as they are made, so that the optimized builder refines the first parts on
 // one core while the builder places the last triangles on the other (ClusterOptimizer.h). The
 // builder sweeps the surface meshlet by meshlet, so consecutive meshlets make a part of the mesh:
-// part i holds the meshlets closed once about i / P of the triangles were placed and before about
-// (i + 1) / P were; a face goes with the meshlet of its first placed fan triangle (the lowest, as
-// buildMeshoptMeshlets does). Where the linked meshoptimizer is not the one reproduced
+// part i holds the meshlets closed once placedThroughPart(i - 1) triangles were placed and before
+// placedThroughPart(i) were; a face goes with the meshlet of its first placed fan triangle (the
+// lowest, as buildMeshoptMeshlets does). Where the linked meshoptimizer is not the one reproduced
 // (MeshoptMeshlets.h), the library builds them and they come as one part.
 #pragma once
 
@@ -32,10 +32,15 @@ struct MeshletPart {
     Partition meshlets;  // clusterOfFace[k] is the meshlet of faces[k]
 };
 
-// How many parts the meshlets of a mesh of this many faces come in: one below 2,048 faces, then at
-// least two, of about 640 faces each, at most 64. Fixed by the face count alone, so the
-// partitions do not depend on the machine.
+// How many parts the meshlets of a mesh of this many faces come in: one below 2,048 faces, then
+// shares of about 640 faces each (at least two, at most 64) with the last share in two halves.
+// Fixed by the face count alone, so the partitions do not depend on the machine.
 size_t meshletPartsFor(size_t faceCount);
+
+// How many of `triangles` placed triangles close part `part` of `partCount` (2 or more): equal
+// shares, the last share in two halves, so that the last part, which only begins once the builder
+// is done, is short. The last part ends at `triangles`.
+size_t placedThroughPart(size_t part, size_t partCount, size_t triangles);
 
 // The partition of faces buildMeshoptMeshlets gives for meshlets made from fanTriangles(mesh).
 Partition facesOfMeshlets(const Mesh& mesh, const MeshoptMeshlets& meshlets);

@@ -96,11 +96,26 @@ TEST(MeshletStream, PartsHoldEveryFaceOnceAndWholeMeshlets) {
 TEST(MeshletStream, PartsByFaceCount) {
     EXPECT_EQ(meshletPartsFor(0), 1u);
     EXPECT_EQ(meshletPartsFor(2047), 1u);
-    EXPECT_EQ(meshletPartsFor(2048), 4u);
-    EXPECT_EQ(meshletPartsFor(2304), 4u);
-    EXPECT_EQ(meshletPartsFor(16384), 26u);
-    EXPECT_EQ(meshletPartsFor(40960), 64u);
-    EXPECT_EQ(meshletPartsFor(3328000), 64u);
+    EXPECT_EQ(meshletPartsFor(2048), 5u);  // four shares, the last in halves
+    EXPECT_EQ(meshletPartsFor(2304), 5u);
+    EXPECT_EQ(meshletPartsFor(16384), 27u);
+    EXPECT_EQ(meshletPartsFor(40960), 65u);
+    EXPECT_EQ(meshletPartsFor(3328000), 65u);
+}
+
+TEST(MeshletStream, TheLastShareComesInHalves) {
+    EXPECT_EQ(placedThroughPart(0, 5, 1000), 250u);
+    EXPECT_EQ(placedThroughPart(2, 5, 1000), 750u);
+    EXPECT_EQ(placedThroughPart(3, 5, 1000), 875u);
+    EXPECT_EQ(placedThroughPart(4, 5, 1000), 1000u);
+    EXPECT_EQ(placedThroughPart(0, 2, 1000), 500u);
+    // As made: the last two parts hold about half the faces of the others.
+    MeshletStream torus(shared(testmesh::torus(1.0, 0.3, 120, 60)), {64, 124}, 6);
+    const double share = double(torus.part(0).faces.size());
+    for (size_t i : {size_t(4), size_t(5)}) {
+        EXPECT_GT(double(torus.part(i).faces.size()), 0.3 * share) << "part " << i;
+        EXPECT_LT(double(torus.part(i).faces.size()), 0.7 * share) << "part " << i;
+    }
 }
 
 TEST(MeshletStream, WorkRunsOnTheStreamsThreadAfterTheMeshletsAndPassesItsErrorOn) {
