@@ -3,15 +3,15 @@
 // builder + bounds measured in the same run; and the whole run of `conescope-cli stats MESH
 // --views 1` against reading the same file and running meshoptimizer's builder, bounds and one view.
 //
-// Every configuration runs `--repeat` times, each in its own forked child, so that one's peak
-// memory cannot hide another's and every run starts from the same state: the child reads its peak
-// resident size (getrusage ru_maxrss) when it starts, holding only the input mesh, and again at the
-// end. A row gives the median and the least wall time, the median CPU time (all threads of the
+// Every configuration runs `--repeat` times, each in a process of its own (this program again,
+// loading the measured mesh from a temporary file), so that one's peak memory cannot hide
+// another's and every run starts as a CLI run does: the child reads its peak resident size
+// (getrusage ru_maxrss) when it starts, holding only the input mesh, and again at the end. A row gives the median and the least wall time, the median CPU time (all threads of the
 // child), the largest memory added, and the median wall time as a multiple of meshoptimizer's
 // median (cone weight 1) from the same run. The last column is expectedCullRate (sum T_c
 // (1 - sin alpha_c) / T over minimal cones), the view-independent guide to what the time buys.
 //
-//   conescope-bench-prepare [--mesh FILE] [--min-triangles N] [--repeat N] [--only NAME...] [--whole-run]
+//   conescope-bench-prepare [--mesh FILE] [--min-triangles N] [--repeat N] [--only NAME...] [--whole-run] [--fork-only]
 #include <CLI/CLI.hpp>
 
 #include <sys/resource.h>
@@ -22,7 +22,7 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <future>
+#include <functional>
 #include <iomanip>
 #include <iostream>
 #include <optional>
@@ -138,9 +138,74 @@ Measurement wholeRunMeshopt(const std::string& path) {
     return m;
 }
 
-// Runs `work` in a child process; the child writes its measurement into a pipe.
-template <typename Work>
-std::optional<Measurement> inChild(const std::string& name, Work work) {
+// One row of a table: what a child process runs, on the measured mesh or (the whole run) on the
+// file written from it.
+struct Configuration {
+    std::string selector;  // the --only name that picks it
+    std::string key;       // what the child is told to run (--run)
+    std::string name;      // the row's name
+    bool wholeRun;
+    std::function<Measurement(const Mesh& mesh, const std::string& file)> run;
+};
+
+const std::string kReference = "meshoptimizer, cone weight 1";
+const std::string kWholeReference = "read + meshoptimizer builder, bounds, one view";
+
+std::vector<Configuration> configurations() {
+    std::vector<Configuration> all;
+    for (Effort effort : allEfforts()) {
+        Settings settings;
+        settings.limits = kLimits;
+        settings.effort = effort;
+        const std::string key = "optimized-" + toString(effort);
+        all.push_back({key, key, "ConeScope optimized, effort " + toString(effort), false,
+                       [settings](const Mesh& mesh, const std::string&) { return prepareConeScope(mesh, settings); }});
+    }
+    for (Builder builder : {Builder::Meshlet, Builder::KMeans, Builder::Meshopt}) {
+        Settings settings;
+        settings.builder = builder;
+        settings.limits = kLimits;
+        all.push_back({toString(builder), toString(builder), "ConeScope " + toString(builder) + " builder", false,
+                       [settings](const Mesh& mesh, const std::string&) { return prepareConeScope(mesh, settings); }});
+    }
+    for (float coneWeight : {0.25f, 1.0f})
+        all.push_back({"meshoptimizer", "meshoptimizer-" + std::to_string(coneWeight), coneWeight == 1.0f ? kReference : "meshoptimizer, cone weight 0.25",
+                       false, [coneWeight](const Mesh& mesh, const std::string&) { return prepareMeshopt(mesh, coneWeight); }});
+    all.push_back({"whole-run", "whole-conescope", "read + conescope-cli stats --views 1", true,
+                   [](const Mesh&, const std::string& file) { return wholeRunConeScope(file); }});
+    all.push_back({"whole-run", "whole-meshoptimizer", kWholeReference, true,
+                   [](const Mesh&, const std::string& file) { return wholeRunMeshopt(file); }});
+    return all;
+}
+
+// Runs a configuration and writes its measurement to `channel`; the exit status of the child.
+int runAndReport(const Configuration& configuration, const Mesh& mesh, const std::string& file, int channel) {
+    try {
+        const double before = bench::peakResidentMiB();
+        Measurement m = configuration.run(mesh, file);
+        m.peakMiB -= before;
+        return write(channel, &m, sizeof m) == ssize_t(sizeof m) ? 0 : 1;
+    } catch (const std::exception& error) {
+        std::cerr << configuration.name << ": " << error.what() << "\n";
+        return 1;
+    }
+}
+
+// What the children are given: the mesh as raw arrays (for a new process to load), the same mesh
+// as the file the whole run reads, and the mesh itself when the children are only forked.
+struct ChildInputs {
+    std::string dump, file;
+    const Mesh* mesh = nullptr;
+    bool forkOnly = false;
+};
+
+// Runs a configuration in a child process, which writes its measurement into a pipe. The child is
+// a new process (this program again, with --run), as a CLI run is: a forked copy of this one
+// would find its memory shared with the parent, and each first write to a page the parent had used
+// (freed heap, say) would be a copy-on-write fault, which with two threads running also
+// interrupts the other core to flush its TLB. With forkOnly it is that forked copy (the method
+// before), for comparison.
+std::optional<Measurement> inChild(const Configuration& configuration, const ChildInputs& inputs) {
     int channel[2];
     if (pipe(channel) != 0) {
         std::perror("pipe");
@@ -154,17 +219,12 @@ std::optional<Measurement> inChild(const std::string& name, Work work) {
     }
     if (child == 0) {
         close(channel[0]);
-        int status = 0;
-        try {
-            const double before = bench::peakResidentMiB();
-            Measurement m = work();
-            m.peakMiB -= before;
-            status = write(channel[1], &m, sizeof m) == ssize_t(sizeof m) ? 0 : 1;
-        } catch (const std::exception& error) {
-            std::cerr << name << ": " << error.what() << "\n";
-            status = 1;
-        }
-        _exit(status);
+        if (inputs.forkOnly) _exit(runAndReport(configuration, *inputs.mesh, inputs.file, channel[1]));
+        const std::string fd = std::to_string(channel[1]);
+        execl("/proc/self/exe", "conescope-bench-prepare", "--run", configuration.key.c_str(), "--dump", inputs.dump.c_str(),
+              "--file", inputs.file.c_str(), "--result-fd", fd.c_str(), static_cast<char*>(nullptr));
+        std::perror("exec");
+        _exit(127);
     }
     close(channel[1]);
     Measurement m;
@@ -192,11 +252,10 @@ struct Row {
     }
 };
 
-template <typename Work>
-bool measure(const std::string& name, size_t repeat, Work work, std::vector<Row>& rows) {
-    Row row{name, {}};
+bool measure(const Configuration& configuration, size_t repeat, const ChildInputs& inputs, std::vector<Row>& rows) {
+    Row row{configuration.name, {}};
     for (size_t i = 0; i < repeat; ++i) {
-        const std::optional<Measurement> m = inChild(name, work);
+        const std::optional<Measurement> m = inChild(configuration, inputs);
         if (!m) return false;
         row.runs.push_back(*m);
     }
@@ -230,7 +289,7 @@ void printRows(const std::vector<Row>& rows, const std::string& reference, bool 
 int main(int argc, char** argv) {
     std::string meshPath = bench::sourceDirectory() + "/datasets/cgal/armadillo.off";
     size_t minTriangles = 0, repeat = 5;
-    bool wholeRun = false;
+    bool wholeRun = false, forkOnly = false;
     CLI::App app{"Median time and peak memory of cluster + bounds preparation against meshoptimizer's, one child process per run"};
     app.add_option("--mesh", meshPath, "mesh to measure")->capture_default_str();
     app.add_option("--min-triangles", minTriangles, "subdivide 1->4 until at least this many triangles (0: as it is)")->capture_default_str();
@@ -239,51 +298,68 @@ int main(int argc, char** argv) {
     app.add_option("--only", only,
                    "rows to run: optimized-fast, optimized-balanced, optimized-best, meshlet, kmeans, meshopt, meshoptimizer");
     app.add_flag("--whole-run", wholeRun, "also time stats --views 1 against read + meshoptimizer's builder, bounds and one view");
+    app.add_flag("--fork-only", forkOnly,
+                 "run each child as a forked copy of this process instead of a new process (the method before; for comparison)");
+    // A child's side: what to run on which inputs, and where its measurement goes.
+    std::string run, dump, file;
+    int resultFd = -1;
+    app.add_option("--run", run)->group("");
+    app.add_option("--dump", dump)->group("");
+    app.add_option("--file", file)->group("");
+    app.add_option("--result-fd", resultFd)->group("");
     CLI11_PARSE(app, argc, argv);
+    const std::vector<Configuration> all = configurations();
+    if (!run.empty()) {
+        for (const Configuration& configuration : all)
+            if (configuration.key == run) {
+                try {
+                    return runAndReport(configuration, configuration.wholeRun ? Mesh() : bench::readMeshDump(dump), file, resultFd);
+                } catch (const std::exception& error) {
+                    std::cerr << "conescope-bench-prepare: " << error.what() << "\n";
+                    return 1;
+                }
+            }
+        std::cerr << "conescope-bench-prepare: nothing called " << run << "\n";
+        return 1;
+    }
+    ChildInputs inputs;
+    inputs.forkOnly = forkOnly;
+    const std::filesystem::path temporary = std::filesystem::temp_directory_path() / ("conescope-bench-" + std::to_string(getpid()));
     try {
         const Mesh mesh = minTriangles > 0 ? bench::subdivideToAtLeast(readMesh(meshPath), minTriangles) : readMesh(meshPath);
+        inputs.mesh = &mesh;
+        inputs.dump = temporary.string() + ".mesh";
+        bench::writeMeshDump(mesh, inputs.dump);
         std::cout << "mesh: " << meshPath;
         if (minTriangles > 0) std::cout << " subdivided";
         std::cout << ", " << triangleCount(mesh) << " triangles, " << mesh.positions.size() << " vertices; budget "
-                  << kLimits.maxVertices << "/" << kLimits.maxTriangles << "; " << repeat << " runs each\n\n";
-        auto wanted = [&](const std::string& name) { return only.empty() || std::find(only.begin(), only.end(), name) != only.end(); };
-        std::vector<Row> rows;
-        bool ok = true;
-        for (Effort effort : allEfforts()) {
-            const std::string name = "optimized-" + toString(effort);
-            if (!wanted(name)) continue;
-            Settings settings;
-            settings.limits = kLimits;
-            settings.effort = effort;
-            ok &= measure("ConeScope optimized, effort " + toString(effort), repeat, [&] { return prepareConeScope(mesh, settings); }, rows);
-        }
-        for (Builder builder : {Builder::Meshlet, Builder::KMeans, Builder::Meshopt}) {
-            if (!wanted(toString(builder))) continue;
-            Settings settings;
-            settings.builder = builder;
-            settings.limits = kLimits;
-            ok &= measure("ConeScope " + toString(builder) + " builder", repeat, [&] { return prepareConeScope(mesh, settings); }, rows);
-        }
-        const std::string reference = "meshoptimizer, cone weight 1";
-        if (wanted("meshoptimizer")) {
-            ok &= measure("meshoptimizer, cone weight 0.25", repeat, [&] { return prepareMeshopt(mesh, 0.25f); }, rows);
-            ok &= measure(reference, repeat, [&] { return prepareMeshopt(mesh, 1.0f); }, rows);
-        }
-        printRows(rows, reference, true);
+                  << kLimits.maxVertices << "/" << kLimits.maxTriangles << "; " << repeat << " runs each"
+                  << (forkOnly ? ", forked children" : "") << "\n\n";
+        auto wanted = [&](const Configuration& c) {
+            if (c.wholeRun) return wholeRun;
+            return only.empty() || std::find(only.begin(), only.end(), c.selector) != only.end();
+        };
         if (wholeRun) {
             // Both read the file the CLI would: the mesh as measured, written as OFF text.
-            const std::string file = (std::filesystem::temp_directory_path() / ("conescope-bench-" + std::to_string(getpid()) + ".off")).string();
-            writeOff(mesh, file);
-            std::vector<Row> whole;
-            const std::string meshoptRun = "read + meshoptimizer builder, bounds, one view";
-            ok &= measure("read + conescope-cli stats --views 1", repeat, [&] { return wholeRunConeScope(file); }, whole);
-            ok &= measure(meshoptRun, repeat, [&] { return wholeRunMeshopt(file); }, whole);
-            std::filesystem::remove(file);
+            inputs.file = temporary.string() + ".off";
+            writeOff(mesh, inputs.file);
+        }
+        std::vector<Row> rows, whole;
+        bool ok = true;
+        for (const Configuration& configuration : all)
+            if (wanted(configuration)) ok &= measure(configuration, repeat, inputs, configuration.wholeRun ? whole : rows);
+        std::filesystem::remove(inputs.dump);
+        if (wholeRun) std::filesystem::remove(inputs.file);
+        printRows(rows, kReference, true);
+        if (wholeRun) {
             std::cout << "\n";
-            printRows(whole, meshoptRun, false);
+            printRows(whole, kWholeReference, false);
         }
         return ok ? 0 : 1;
     } catch (const std::exception& error) {
+        std::error_code ignored;
+        std::filesystem::remove(inputs.dump, ignored);
+        if (!inputs.file.empty()) std::filesystem::remove(inputs.file, ignored);
         std::cerr << "conescope-bench-prepare: " << error.what() << "\n";
         return 1;
     }
