@@ -3,9 +3,7 @@
 #include <sys/resource.h>
 
 #include <algorithm>
-#include <cstdio>
 #include <filesystem>
-#include <memory>
 #include <stdexcept>
 #include <unordered_map>
 
@@ -122,52 +120,6 @@ double peakResidentMiB() {
     rusage usage{};
     getrusage(RUSAGE_SELF, &usage);
     return double(usage.ru_maxrss) / 1024.0;  // Linux reports KiB
-}
-
-namespace {
-
-using File = std::unique_ptr<std::FILE, int (*)(std::FILE*)>;
-
-File openDump(const std::string& path, const char* mode) {
-    File file(std::fopen(path.c_str(), mode), &std::fclose);
-    if (!file) throw std::runtime_error("cannot open " + path);
-    return file;
-}
-
-// A count, then that many items.
-template <typename T>
-void writeArray(std::FILE* file, const std::vector<T>& items, const std::string& path) {
-    const uint64_t count = items.size();
-    if (std::fwrite(&count, sizeof count, 1, file) != 1 || std::fwrite(items.data(), sizeof(T), items.size(), file) != items.size())
-        throw std::runtime_error("cannot write " + path);
-}
-
-template <typename T>
-void readArray(std::FILE* file, std::vector<T>& items, const std::string& path) {
-    uint64_t count = 0;
-    if (std::fread(&count, sizeof count, 1, file) != 1) throw std::runtime_error(path + ": cut short");
-    items.resize(count);
-    if (std::fread(items.data(), sizeof(T), items.size(), file) != items.size()) throw std::runtime_error(path + ": cut short");
-}
-
-}  // namespace
-
-void writeMeshDump(const Mesh& mesh, const std::string& path) {
-    const File file = openDump(path, "wb");
-    writeArray(file.get(), mesh.positions, path);
-    writeArray(file.get(), mesh.faceStarts, path);
-    writeArray(file.get(), mesh.faceVertices, path);
-    if (std::fwrite(&mesh.model, sizeof mesh.model, 1, file.get()) != 1) throw std::runtime_error("cannot write " + path);
-}
-
-Mesh readMeshDump(const std::string& path) {
-    const File file = openDump(path, "rb");
-    Mesh mesh;
-    readArray(file.get(), mesh.positions, path);
-    readArray(file.get(), mesh.faceStarts, path);
-    readArray(file.get(), mesh.faceVertices, path);
-    if (std::fread(&mesh.model, sizeof mesh.model, 1, file.get()) != 1) throw std::runtime_error(path + ": cut short");
-    return mesh;
 }
 
 }  // namespace conescope::bench

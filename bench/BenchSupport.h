@@ -69,10 +69,4 @@ MeshletTriangles meshletTriangleMesh(const MeshoptClusters& clusters, const std:
 // Peak resident set size of this process so far (getrusage ru_maxrss), in MiB.
 double peakResidentMiB();
 
-// A mesh's positions, faces and model transform as raw arrays: a benchmark's child process loads
-// the measured mesh (subdivided to millions of triangles, perhaps) in milliseconds. Throws
-// std::runtime_error when the file cannot be written or read back whole.
-void writeMeshDump(const Mesh& mesh, const std::string& path);
-Mesh readMeshDump(const std::string& path);
-
 }  // namespace conescope::bench

@@ -254,14 +254,14 @@ RunStatistics measureRun(const PreparedMesh& prepared, const ClusterSet& cluster
     const size_t steps = settings.cones.size() * settings.tests.size();
     size_t step = 0;
     for (ConeMethod cone : settings.cones) {
-        report(progress, double(step) / double(steps), "bounds (" + toString(cone) + ")");
         // The displayed cone's bounds are built already; the other cones get theirs for the same partition.
         const bool built = cone == displayedCone(clusters.settings) && settings.sphere == clusters.settings.sphere;
+        if (!built) report(progress, double(step) / double(steps), "bounds (" + toString(cone) + ")");
         const ClusterBounds bounds = built ? ClusterBounds()
                                            : computeClusterBounds(prepared.mesh(), prepared.world, prepared.faces,
                                                                   clusters.partition, cone, settings.sphere);
         const CullingInput input{prepared.mesh(), prepared.world, prepared.faces, built ? clusters.bounds : bounds};
-        report(progress, double(step) / double(steps), "cull map (" + toString(cone) + ")");
+        if (!built) report(progress, double(step) / double(steps), "cull map (" + toString(cone) + ")");
         const CullMap computed = built ? CullMap() : computeCullMap(input.bounds);
         const CullMap& map = built ? clusters.cullMap : computed;
         for (CullTest test : settings.tests) {

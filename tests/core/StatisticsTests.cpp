@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <meshoptimizer.h>
 
 #include "TestMeshes.h"
@@ -49,6 +51,28 @@ TEST(Statistics, SingleEyeAndProgressCancel) {
     ASSERT_EQ(run.viewCount, 1u);
     EXPECT_GT(run.results[0].efficiency, 0.1);
     EXPECT_THROW(runStatistics(mesh, settings, "", [](double, const std::string&) { return false; }), OperationCancelled);
+}
+
+// Progress names the bounds and cull maps made for the statistics, not those the clusters came with.
+TEST(Statistics, ProgressNamesOnlyTheBoundsItMakes) {
+    Settings settings;
+    settings.views = 2;
+    settings.cones = {ConeMethod::Minimal, ConeMethod::Average};
+    std::vector<std::string> steps;
+    runStatistics(testmesh::icosphere(3), settings, "", [&](double, const std::string& step) {
+        steps.push_back(step);
+        return true;
+    });
+    const auto after = std::find(steps.begin(), steps.end(), "clusters ready");
+    ASSERT_NE(after, steps.end());
+    const std::vector<std::string> later(after, steps.end());
+    auto count = [&](const std::string& step) { return std::count(later.begin(), later.end(), step); };
+    EXPECT_EQ(count("bounds (minimal)"), 0);  // made with the clusters
+    EXPECT_EQ(count("cull map (minimal)"), 0);
+    EXPECT_EQ(count("bounds (average)"), 1);
+    EXPECT_EQ(count("cull map (average)"), 1);
+    EXPECT_EQ(count("culling (minimal, octagon)"), 1);
+    EXPECT_EQ(count("culling (average, octagon)"), 1);
 }
 
 // The same meshlets, bounds and test as meshoptimizer's own loop (dot(normalize(apex - eye), axis)
