@@ -1,9 +1,9 @@
 #include "BenchSupport.h"
 
-#include <sys/resource.h>
-
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
+#include <string>
 #include <stdexcept>
 #include <unordered_map>
 
@@ -117,9 +117,16 @@ MeshletTriangles meshletTriangleMesh(const MeshoptClusters& clusters, const std:
 }
 
 double peakResidentMiB() {
-    rusage usage{};
-    getrusage(RUSAGE_SELF, &usage);
-    return double(usage.ru_maxrss) / 1024.0;  // Linux reports KiB
+    std::ifstream status("/proc/self/status");
+    for (std::string line; std::getline(status, line);)
+        if (line.rfind("VmHWM:", 0) == 0) return std::stod(line.substr(6)) / 1024.0;  // in kB
+    throw std::runtime_error("no VmHWM in /proc/self/status");
+}
+
+void resetPeakResident() {
+    std::ofstream clearRefs("/proc/self/clear_refs");
+    clearRefs << "5" << std::flush;  // 5: the peak resident size back to the current one
+    if (!clearRefs) throw std::runtime_error("cannot reset the peak resident size (/proc/self/clear_refs)");
 }
 
 }  // namespace conescope::bench

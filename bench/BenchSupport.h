@@ -66,7 +66,11 @@ struct MeshletTriangles {
 };
 MeshletTriangles meshletTriangleMesh(const MeshoptClusters& clusters, const std::vector<glm::vec3>& world);
 
-// Peak resident set size of this process so far (getrusage ru_maxrss), in MiB.
+// Peak resident set size of this process (VmHWM), in MiB: since the process started or since the
+// last resetPeakResident, which brings it down to the current size (Linux's clear_refs), so that
+// what came before (a child reading its input) does not hide what is measured. Both throw
+// std::runtime_error where Linux's /proc does not give them.
 double peakResidentMiB();
+void resetPeakResident();
 
 }  // namespace conescope::bench

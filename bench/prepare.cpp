@@ -4,11 +4,12 @@
 // --views 1` against reading the same file and running meshoptimizer's builder, bounds and one view.
 //
 // Every configuration runs `--repeat` times, each in a process of its own (this program again,
-// loading the measured mesh from a temporary file), so that one's peak memory cannot hide
-// another's and every run starts as a CLI run does: the child reads its peak resident size
-// (getrusage ru_maxrss) when it starts, holding only the input mesh, and again at the end. A row gives the median and the least wall time, the median CPU time (all threads of the
-// child), the largest memory added, and the median wall time as a multiple of meshoptimizer's
-// median (cone weight 1) from the same run. The last column is expectedCullRate (sum T_c
+// reading the measured mesh from a temporary binary .vtk file, which readMesh gives back exactly),
+// so that one's peak memory cannot hide another's and every run starts as a CLI run does: the
+// child resets its peak resident size once it holds only the input mesh (bench::resetPeakResident)
+// and reads it again at the end. A row gives the median and the least wall time, the median CPU
+// time (all threads of the child), the largest memory added, and the median wall time as a
+// multiple of meshoptimizer's median (cone weight 1) from the same run. The last column is expectedCullRate (sum T_c
 // (1 - sin alpha_c) / T over minimal cones), the view-independent guide to what the time buys.
 //
 //   conescope-bench-prepare [--mesh FILE] [--min-triangles N] [--repeat N] [--only NAME...] [--whole-run] [--fork-only]
@@ -181,6 +182,7 @@ std::vector<Configuration> configurations() {
 // Runs a configuration and writes its measurement to `channel`; the exit status of the child.
 int runAndReport(const Configuration& configuration, const Mesh& mesh, const std::string& file, int channel) {
     try {
+        bench::resetPeakResident();
         const double before = bench::peakResidentMiB();
         Measurement m = configuration.run(mesh, file);
         m.peakMiB -= before;
@@ -191,10 +193,10 @@ int runAndReport(const Configuration& configuration, const Mesh& mesh, const std
     }
 }
 
-// What the children are given: the mesh as raw arrays (for a new process to load), the same mesh
-// as the file the whole run reads, and the mesh itself when the children are only forked.
+// What the children are given: the mesh as a binary .vtk file (for a new process to read), the same
+// mesh as the OFF file the whole run reads, and the mesh itself when the children are only forked.
 struct ChildInputs {
-    std::string dump, file;
+    std::string measured, file;
     const Mesh* mesh = nullptr;
     bool forkOnly = false;
 };
@@ -221,7 +223,7 @@ std::optional<Measurement> inChild(const Configuration& configuration, const Chi
         close(channel[0]);
         if (inputs.forkOnly) _exit(runAndReport(configuration, *inputs.mesh, inputs.file, channel[1]));
         const std::string fd = std::to_string(channel[1]);
-        execl("/proc/self/exe", "conescope-bench-prepare", "--run", configuration.key.c_str(), "--dump", inputs.dump.c_str(),
+        execl("/proc/self/exe", "conescope-bench-prepare", "--run", configuration.key.c_str(), "--measured", inputs.measured.c_str(),
               "--file", inputs.file.c_str(), "--result-fd", fd.c_str(), static_cast<char*>(nullptr));
         std::perror("exec");
         _exit(127);
@@ -301,10 +303,10 @@ int main(int argc, char** argv) {
     app.add_flag("--fork-only", forkOnly,
                  "run each child as a forked copy of this process instead of a new process (the method before; for comparison)");
     // A child's side: what to run on which inputs, and where its measurement goes.
-    std::string run, dump, file;
+    std::string run, measured, file;
     int resultFd = -1;
     app.add_option("--run", run)->group("");
-    app.add_option("--dump", dump)->group("");
+    app.add_option("--measured", measured)->group("");
     app.add_option("--file", file)->group("");
     app.add_option("--result-fd", resultFd)->group("");
     CLI11_PARSE(app, argc, argv);
@@ -313,7 +315,7 @@ int main(int argc, char** argv) {
         for (const Configuration& configuration : all)
             if (configuration.key == run) {
                 try {
-                    return runAndReport(configuration, configuration.wholeRun ? Mesh() : bench::readMeshDump(dump), file, resultFd);
+                    return runAndReport(configuration, configuration.wholeRun ? Mesh() : readMesh(measured), file, resultFd);
                 } catch (const std::exception& error) {
                     std::cerr << "conescope-bench-prepare: " << error.what() << "\n";
                     return 1;
@@ -328,8 +330,8 @@ int main(int argc, char** argv) {
     try {
         const Mesh mesh = minTriangles > 0 ? bench::subdivideToAtLeast(readMesh(meshPath), minTriangles) : readMesh(meshPath);
         inputs.mesh = &mesh;
-        inputs.dump = temporary.string() + ".mesh";
-        bench::writeMeshDump(mesh, inputs.dump);
+        inputs.measured = temporary.string() + ".vtk";
+        writePolyData(mesh, inputs.measured);
         std::cout << "mesh: " << meshPath;
         if (minTriangles > 0) std::cout << " subdivided";
         std::cout << ", " << triangleCount(mesh) << " triangles, " << mesh.positions.size() << " vertices; budget "
@@ -348,7 +350,7 @@ int main(int argc, char** argv) {
         bool ok = true;
         for (const Configuration& configuration : all)
             if (wanted(configuration)) ok &= measure(configuration, repeat, inputs, configuration.wholeRun ? whole : rows);
-        std::filesystem::remove(inputs.dump);
+        std::filesystem::remove(inputs.measured);
         if (wholeRun) std::filesystem::remove(inputs.file);
         printRows(rows, kReference, true);
         if (wholeRun) {
@@ -358,7 +360,7 @@ int main(int argc, char** argv) {
         return ok ? 0 : 1;
     } catch (const std::exception& error) {
         std::error_code ignored;
-        std::filesystem::remove(inputs.dump, ignored);
+        if (!inputs.measured.empty()) std::filesystem::remove(inputs.measured, ignored);
         if (!inputs.file.empty()) std::filesystem::remove(inputs.file, ignored);
         std::cerr << "conescope-bench-prepare: " << error.what() << "\n";
         return 1;
