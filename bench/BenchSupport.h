@@ -68,9 +68,9 @@ MeshletTriangles meshletTriangleMesh(const MeshoptClusters& clusters, const std:
 
 // Peak resident set size of this process (VmHWM), in MiB: since the process started or since the
 // last resetPeakResident, which brings it down to the current size (Linux's clear_refs), so that
-// what came before (a child reading its input) does not hide what is measured. Both throw
-// std::runtime_error where Linux's /proc does not give them.
+// what came before (a child reading its input) does not hide what is measured. peakResidentMiB
+// throws std::runtime_error where /proc does not give it; resetPeakResident says whether it could.
 double peakResidentMiB();
-void resetPeakResident();
+bool resetPeakResident();
 
 }  // namespace conescope::bench

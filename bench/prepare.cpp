@@ -182,7 +182,9 @@ std::vector<Configuration> configurations() {
 // Runs a configuration and writes its measurement to `channel`; the exit status of the child.
 int runAndReport(const Configuration& configuration, const Mesh& mesh, const std::string& file, int channel) {
     try {
-        bench::resetPeakResident();
+        if (!bench::resetPeakResident())
+            std::cerr << configuration.name << ": the peak resident size cannot be reset here; memory added counts from the "
+                      << "child's start, reading its input included\n";
         const double before = bench::peakResidentMiB();
         Measurement m = configuration.run(mesh, file);
         m.peakMiB -= before;
