@@ -18,7 +18,8 @@ namespace conescope {
 // How long the optimized builder searches (docs/benchmarks.md has the measured trade):
 //  Fast:     meshoptimizer's meshlets (cone weight 1; the default budget builds them anyway), then
 //            greedy moves of border faces;
-//  Balanced: the same start, then two annealing sweeps (the default);
+//  Balanced: the same start, then annealing: two sweeps on a mesh of one part, one on each part of
+//            a larger mesh (the default);
 //  Best:     clusters grown from like normals and reduced to the budget, also started from
 //            meshoptimizer's meshlets where growth misses the budget or the mesh is small, and up
 //            to 100 annealing sweeps. Several times slower; culls the most.
@@ -63,6 +64,11 @@ Partition buildOptimizedClusters(const Mesh& mesh, const FaceGeometry& faces, co
                                  size_t targetClusters = 0, const ProgressCallback& progress = {},
                                  Effort effort = Effort::Balanced, MeshletStream* meshlets = nullptr,
                                  const PartClusters& partDone = {});
+
+// The annealing sweeps buildOptimizedClusters makes at `effort` on a mesh of `faceCount` faces
+// from meshoptimizer's meshlets in `meshletParts` parts (meshletPartsFor), on each part when there
+// are several; a mesh too large for slow cooling gets none.
+size_t annealingSweepsFor(Effort effort, size_t faceCount, size_t meshletParts);
 
 // Whether buildOptimizedClusters starts from meshoptimizer's meshlets at cone weight 1 (and takes
 // their count as the default budget): the fast levels at limits meshoptimizer takes, for budgets up

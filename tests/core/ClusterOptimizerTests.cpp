@@ -363,3 +363,17 @@ TEST(ClusterOptimizer, ProgressCanCancelTheBuild) {
     EXPECT_THROW(buildOptimizedClusters(small, computeFaceGeometry(small), MeshletLimits{64, 124}, 0, cancel), OperationCancelled);
     EXPECT_EQ(calls, 1u);
 }
+
+TEST(ClusterOptimizer, AnnealingSweepsByEffortAndParts) {
+    // Balanced: two sweeps on a mesh of one part (below 2,048 faces), one on each part above,
+    // where the second added nothing over every CGAL mesh; fast none; best as many as its budget
+    // of face visits buys, none where that is too few to cool slowly.
+    EXPECT_EQ(annealingSweepsFor(Effort::Balanced, 1500, meshletPartsFor(1500)), 2u);
+    EXPECT_EQ(annealingSweepsFor(Effort::Balanced, 2390, meshletPartsFor(2390)), 1u);
+    EXPECT_EQ(annealingSweepsFor(Effort::Balanced, 3'300'000, meshletPartsFor(3'300'000)), 1u);
+    EXPECT_EQ(annealingSweepsFor(Effort::Balanced, 5000, 1), 2u);  // a stream in one part
+    EXPECT_EQ(annealingSweepsFor(Effort::Fast, 1500, 1), 0u);
+    EXPECT_EQ(annealingSweepsFor(Effort::Fast, 5000, meshletPartsFor(5000)), 0u);
+    EXPECT_EQ(annealingSweepsFor(Effort::Best, 1500, 1), 100u);
+    EXPECT_EQ(annealingSweepsFor(Effort::Best, 1'000'000, 1), 0u);
+}

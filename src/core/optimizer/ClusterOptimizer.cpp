@@ -34,20 +34,24 @@ constexpr double kGrowthCap = 1.25;
 // objective for 1.4 s and 2.9 s, half the whole preparation; such meshes get none at the best
 // level. From meshoptimizer's meshlets the first sweeps pay most: over every CGAL demo mesh (octagon
 // test, against meshoptimizer) no sweep gives 1.287x, one 1.330x, two 1.353x, eight 1.395x, thirty
-// 1.436x; the balanced level takes two at every size.
+// 1.436x. The second sweep pays only on meshes of one part (below 2,048 faces: 1.455x to 1.508x
+// over 43 meshes); on meshes in parts it adds nothing (2k-5k triangles 1.260x either way, 5k-20k
+// 1.230x and 1.231x, above 1.114x both) and cost 5% of the whole run of a 2k-5k mesh, so the
+// balanced level takes two sweeps on a mesh of one part and one on each part (annealingSweepsFor).
 struct SearchPlan {
     bool growthStart;  // false: start from meshoptimizer's meshlets where they are within the limits
     size_t maxSweeps, minSweeps;
     double sweepFaceVisits;
+    size_t sweepsPerPart;  // at most this many on each of meshoptimizer's meshlet parts, when more than one
 };
 
 SearchPlan planFor(Effort effort) {
     switch (effort) {
-        case Effort::Fast: return {false, 0, 0, 0.0};
-        case Effort::Balanced: return {false, 2, 2, std::numeric_limits<double>::infinity()};
+        case Effort::Fast: return {false, 0, 0, 0.0, 0};
+        case Effort::Balanced: return {false, 2, 2, std::numeric_limits<double>::infinity(), 1};
         case Effort::Best: break;
     }
-    return {true, 100, 8, 5.0e6};
+    return {true, 100, 8, 5.0e6, 100};
 }
 
 // The annealing sweeps the plan buys for a mesh of this size; too few to cool slowly are not worth
@@ -147,6 +151,12 @@ size_t defaultClusterBudget(const Mesh& mesh, const MeshletLimits& limits) {
     return std::max<size_t>(1, size_t(std::ceil(double(triangleCount(mesh)) / perCluster)));
 }
 
+size_t annealingSweepsFor(Effort effort, size_t faceCount, size_t meshletParts) {
+    const SearchPlan plan = planFor(effort);
+    const size_t sweeps = annealingSweeps(plan, faceCount);
+    return meshletParts > 1 ? std::min(sweeps, plan.sweepsPerPart) : sweeps;
+}
+
 bool startsFromMeshoptMeshlets(const MeshletLimits& limits, Effort effort) {
     return !planFor(effort).growthStart && meshoptTakesLimits(limits);
 }
@@ -233,7 +243,8 @@ Partition buildOptimizedClusters(const Mesh& mesh, const FaceGeometry& faces, co
             meshlets = ownStream.get();
         }
         if (targetClusters == 0 || targetClusters <= meshlets->meshletCount())
-            return optimizeMeshletParts(mesh, faces, limits, targetClusters, plan, sweeps, *meshlets, progress, partDone);
+            return optimizeMeshletParts(mesh, faces, limits, targetClusters, plan,
+                                        annealingSweepsFor(effort, faceCount, meshlets->partCount()), *meshlets, progress, partDone);
     }
     const size_t target = targetClusters != 0 ? targetClusters : defaultClusterBudget(mesh, limits);
     const optimizer::Parts parts = optimizer::splitIntoParts(faces, target);
