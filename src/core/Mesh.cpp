@@ -111,7 +111,6 @@ FaceGeometry computeFaceGeometry(const Mesh& mesh) {
             resizeLarge(geometry.degenerate, faceCount);
         } else {
             resizeLarge(geometry.centroids, faceCount);
-            resizeLarge(geometry.planeOffsets, faceCount);
         }
     };
     if (faceCount < 2 * kFacesPerThread) sizeHalf(0), sizeHalf(1);
@@ -145,7 +144,6 @@ FaceGeometry computeFaceGeometry(const Mesh& mesh) {
             degenerateHere += degenerate ? 1 : 0;
             geometry.normals[f] = degenerate ? glm::dvec3(0.0) : normal / normalLength;
             geometry.centroids[f] = mean;
-            geometry.planeOffsets[f] = -glm::dot(geometry.normals[f], mean);
             geometry.areas[f] = degenerate ? 0.0 : 0.5 * length;
         }
         degenerateCount += degenerateHere;

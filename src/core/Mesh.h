@@ -53,7 +53,6 @@ std::vector<glm::vec3> worldPositions(const Mesh& mesh);
 // per-face oracle and the cone construction read the same numbers.
 struct FaceGeometry {
     std::vector<glm::dvec3> normals;    // unit; zero for degenerate faces
-    std::vector<double> planeOffsets;   // d in n.p + d = 0, d = -n.p_mean
     std::vector<glm::dvec3> centroids;  // p_mean, the average of the face's vertices
     std::vector<double> areas;          // polygon area (half the Newell vector's length)
     std::vector<uint8_t> degenerate;    // 1 when the face has no normal (zero area)

@@ -29,14 +29,16 @@ Projection project(const glm::dvec3& axis, const glm::dvec3* normals, size_t cou
     projection.u = glm::normalize(glm::cross(axis, std::abs(axis.x) < 0.9 ? glm::dvec3(1.0, 0.0, 0.0) : glm::dvec3(0.0, 1.0, 0.0)));
     projection.w = glm::cross(axis, projection.u);
     projection.points.reserve(count);
+    projection.source.reserve(count);
     for (size_t i = 0; i < count; ++i) {
         if (normals[i] == glm::dvec3(0.0)) continue;  // a degenerate face: no normal to hold
         const double along = glm::dot(normals[i], axis);
         if (!(along > 0.0)) return {};  // the cone holds every normal, so never; but never divide by it
         projection.points.emplace_back(glm::dot(normals[i], projection.u) / along, glm::dot(normals[i], projection.w) / along);
         projection.source.push_back(uint32_t(i));
-        projection.reach = std::max(projection.reach, glm::length(projection.points.back()));
+        projection.reach = std::max(projection.reach, glm::dot(projection.points.back(), projection.points.back()));
     }
+    projection.reach = std::sqrt(projection.reach);  // one root: the largest length is the root of the largest square
     return projection;
 }
 
@@ -50,21 +52,28 @@ std::vector<uint32_t> convexHull(const std::vector<Point>& points) {
     order.reserve(points.size());
     if (points.size() >= 8) {
         uint32_t extreme[4] = {0, 0, 0, 0};  // min x+y, max x-y, max x+y, min x-y: counter-clockwise
+        double lowSum = points[0].x + points[0].y, highSum = lowSum;
+        double highDifference = points[0].x - points[0].y, lowDifference = highDifference;
         for (uint32_t i = 1; i < points.size(); ++i) {
-            const Point& p = points[i];
-            if (p.x + p.y < points[extreme[0]].x + points[extreme[0]].y) extreme[0] = i;
-            if (p.x - p.y > points[extreme[1]].x - points[extreme[1]].y) extreme[1] = i;
-            if (p.x + p.y > points[extreme[2]].x + points[extreme[2]].y) extreme[2] = i;
-            if (p.x - p.y < points[extreme[3]].x - points[extreme[3]].y) extreme[3] = i;
+            const double sum = points[i].x + points[i].y, difference = points[i].x - points[i].y;
+            if (sum < lowSum) lowSum = sum, extreme[0] = i;
+            if (difference > highDifference) highDifference = difference, extreme[1] = i;
+            if (sum > highSum) highSum = sum, extreme[2] = i;
+            if (difference < lowDifference) lowDifference = difference, extreme[3] = i;
+        }
+        // Each side's start, direction and margin, once for all the points.
+        Point start[4], along[4];
+        double margin[4];
+        for (int k = 0; k < 4; ++k) {
+            start[k] = points[extreme[k]];
+            along[k] = points[extreme[(k + 1) % 4]] - start[k];
+            const double scale = std::abs(along[k].x) + std::abs(along[k].y);
+            margin[k] = 1e-9 * scale * (scale + 1.0);
         }
         for (uint32_t i = 0; i < points.size(); ++i) {
             bool inside = true;  // strictly left of every side of the quadrilateral (a margin against rounding)
-            for (int k = 0; k < 4 && inside; ++k) {
-                const Point& a = points[extreme[k]];
-                const Point& b = points[extreme[(k + 1) % 4]];
-                const double scale = std::abs(b.x - a.x) + std::abs(b.y - a.y);
-                inside = (b.x - a.x) * (points[i].y - a.y) - (b.y - a.y) * (points[i].x - a.x) > 1e-9 * scale * (scale + 1.0);
-            }
+            for (int k = 0; k < 4 && inside; ++k)
+                inside = along[k].x * (points[i].y - start[k].y) - along[k].y * (points[i].x - start[k].x) > margin[k];
             if (!inside) order.push_back(i);
         }
     } else {
@@ -132,15 +141,22 @@ double octagonArea(const Strips& s) {
     return area;
 }
 
+// A convex polygon of at most 16 corners, on the stack: a square cut by eight sides has at most 12.
+struct SmallPolygon {
+    std::array<Point, 16> corners;
+    size_t size = 0;
+    void add(const Point& p) { corners[size++] = p; }
+};
+
 // The part of a convex polygon where direction.p <= bound (Sutherland-Hodgman, one edge).
-std::vector<Point> clip(const std::vector<Point>& polygon, const Point& direction, double bound) {
-    std::vector<Point> kept;
-    for (size_t i = 0; i < polygon.size(); ++i) {
-        const Point& a = polygon[i];
-        const Point& b = polygon[(i + 1) % polygon.size()];
+SmallPolygon clip(const SmallPolygon& polygon, const Point& direction, double bound) {
+    SmallPolygon kept;
+    for (size_t i = 0; i < polygon.size; ++i) {
+        const Point& a = polygon.corners[i];
+        const Point& b = polygon.corners[(i + 1) % polygon.size];
         const double da = glm::dot(direction, a) - bound, db = glm::dot(direction, b) - bound;
-        if (da <= 0.0) kept.push_back(a);
-        if ((da < 0.0 && db > 0.0) || (da > 0.0 && db < 0.0)) kept.push_back(a + (b - a) * (da / (da - db)));
+        if (da <= 0.0) kept.add(a);
+        if ((da < 0.0 && db > 0.0) || (da > 0.0 && db < 0.0)) kept.add(a + (b - a) * (da / (da - db)));
     }
     return kept;
 }
@@ -148,14 +164,18 @@ std::vector<Point> clip(const std::vector<Point>& polygon, const Point& directio
 // The octagon's corners, counter-clockwise: a square around everything cut by the eight sides;
 // corners closer than rounding (a side through a corner) count once.
 std::vector<Point> octagonCorners(const Strips& strips, const std::array<Point, 4>& directions, double extent) {
-    std::vector<Point> polygon = {{-extent, -extent}, {extent, -extent}, {extent, extent}, {-extent, extent}};
+    SmallPolygon polygon;
+    for (const Point& corner : {Point(-extent, -extent), Point(extent, -extent), Point(extent, extent), Point(-extent, extent)})
+        polygon.add(corner);
     for (int j = 0; j < 4; ++j) {
         polygon = clip(polygon, directions[j], strips.high[j]);
         polygon = clip(polygon, -directions[j], -strips.low[j]);
     }
     std::vector<Point> corners;
-    for (const Point& p : polygon)
+    for (size_t i = 0; i < polygon.size; ++i) {
+        const Point& p = polygon.corners[i];
         if (corners.empty() || glm::length(p - corners.back()) > 1e-14 * extent) corners.push_back(p);
+    }
     while (corners.size() > 1 && glm::length(corners.front() - corners.back()) <= 1e-14 * extent) corners.pop_back();
     return corners;
 }
@@ -179,17 +199,17 @@ OctagonCone octagonAround(const ConeOfNormals& cone, const Projection& projectio
         for (int t = 0; t < kTurns; ++t) turns[t] = Point(std::cos(t * (M_PI / 4.0) / kTurns), std::sin(t * (M_PI / 4.0) / kTurns));
         return turns;
     }();
-    std::vector<Point> turns(evenTurns.begin(), evenTurns.end());
+    double bestArea = std::numeric_limits<double>::infinity();
+    Point bestTurn = evenTurns.front();
+    auto consider = [&](const Point& first) {
+        const double area = octagonArea(stripsAround(hull, sideDirections(first)));
+        if (area < bestArea) bestArea = area, bestTurn = first;
+    };
+    for (const Point& first : evenTurns) consider(first);
     for (size_t i = 0; hull.size() > 1 && i < hull.size(); ++i) {
         const Point edge = hull[(i + 1) % hull.size()] - hull[i];
         const double length = glm::length(edge);
-        if (length > 0.0) turns.push_back(edge / length);
-    }
-    double bestArea = std::numeric_limits<double>::infinity();
-    Point bestTurn = turns.front();
-    for (const Point& first : turns) {
-        const double area = octagonArea(stripsAround(hull, sideDirections(first)));
-        if (area < bestArea) bestArea = area, bestTurn = first;
+        if (length > 0.0) consider(edge / length);
     }
     const std::array<Point, 4> directions = sideDirections(bestTurn);
     Strips strips = stripsAround(hull, directions);

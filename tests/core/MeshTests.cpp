@@ -46,10 +46,10 @@ TEST(Mesh, FaceGeometryOfQuadCube) {
     for (int f = 0; f < 6; ++f) {
         EXPECT_NEAR(glm::length(geometry.normals[f] - expected[f]), 0.0, 1e-12) << f;
         EXPECT_NEAR(geometry.areas[f], 4.0, 1e-12);
-        // Plane [n, d] with d = -n.p_mean passes through every corner.
+        // The face's plane through its centroid passes through every corner.
         for (size_t k = 0; k < 4; ++k)
-            EXPECT_NEAR(glm::dot(geometry.normals[f], glm::dvec3(cube.positions[cube.faceBegin(f)[k]])) +
-                            geometry.planeOffsets[f], 0.0, 1e-12);
+            EXPECT_NEAR(glm::dot(geometry.normals[f], glm::dvec3(cube.positions[cube.faceBegin(f)[k]]) - geometry.centroids[f]), 0.0,
+                        1e-12);
     }
     EXPECT_EQ(geometry.degenerateCount, 0u);
 }
@@ -88,7 +88,7 @@ TEST(Mesh, TransformedPlanesMatchTransformedVertices) {
         for (size_t f = 0; f < mesh.faceCount(); ++f) {
             const glm::dvec3 fromVertices = glm::normalize(newellNormal(world.data(), mesh.faceBegin(f), 3));
             EXPECT_NEAR(glm::length(geometry.normals[f] - fromVertices), 0.0, 1e-5) << "trial " << trial << " face " << f;
-            EXPECT_NEAR(glm::dot(geometry.normals[f], glm::dvec3(world[mesh.faceBegin(f)[0]])) + geometry.planeOffsets[f], 0.0, 1e-5);
+            EXPECT_NEAR(glm::dot(geometry.normals[f], glm::dvec3(world[mesh.faceBegin(f)[0]]) - geometry.centroids[f]), 0.0, 1e-5);
         }
         // A mirror turns the sphere's winding inside out, and the normals follow the winding.
         const glm::dvec3 center(model * glm::dvec4(0, 0, 0, 1));
@@ -129,7 +129,6 @@ TEST(Mesh, FaceGeometryOfLargeMeshesIsComputedOnAllCoresTheSameAsFaceByFace) {
         ASSERT_EQ(geometry.degenerate[f], alone.degenerate[0]) << "face " << f;
         EXPECT_EQ(geometry.normals[f], alone.normals[0]) << "face " << f;
         EXPECT_EQ(geometry.centroids[f], alone.centroids[0]) << "face " << f;
-        EXPECT_EQ(geometry.planeOffsets[f], alone.planeOffsets[0]) << "face " << f;
         EXPECT_EQ(geometry.areas[f], alone.areas[0]) << "face " << f;
     }
     EXPECT_EQ(degenerate, (mesh.faceCount() + 996) / 997);

@@ -113,7 +113,6 @@ MeshPart extractPart(const Mesh& mesh, const FaceGeometry& faces, const uint32_t
         return picked;
     };
     part.faces.normals = pick(faces.normals);
-    part.faces.planeOffsets = pick(faces.planeOffsets);
     part.faces.centroids = pick(faces.centroids);
     part.faces.areas = pick(faces.areas);
     part.faces.degenerate = pick(faces.degenerate);
