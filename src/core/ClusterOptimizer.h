@@ -35,7 +35,9 @@ size_t defaultClusterBudget(const Mesh& mesh, const MeshletLimits& limits);
 // What a caller does with each part of the partition as soon as it is made, on the thread that made
 // it (say its bounds): the part's number among `parts`, its faces (ascending mesh face ids) and
 // their clusters, numbered from 0 within the part. The partition numbers its clusters part after
-// part, each part's in this order. Heard once for every part, empty ones included.
+// part, each part's in this order. Heard once for every part, empty ones included; when meshoptimizer's
+// parts miss a smaller budget and grown clusters come nearer it, heard again once, as one part
+// holding every face, with the partition returned.
 using PartClusters = std::function<void(size_t part, size_t parts, const std::vector<uint32_t>& faces, const Partition& clusters)>;
 
 // Optimises expectedCullRate under the vertex/triangle limits, from one of two starts:
@@ -52,8 +54,10 @@ using PartClusters = std::function<void(size_t part, size_t parts, const std::ve
 // optimised independently, on all cores: from meshoptimizer's meshlets, the parts they come in
 // (MeshletStream.h: consecutive meshlets of about 640 faces, each refined as soon as it is made, on
 // one core while the meshlets are still being built on the other, then on both); from growth,
-// halves of halves of at most 2^17 faces. targetClusters = 0 uses defaultClusterBudget; the result
-// has at most targetClusters clusters whenever the limits allow meshoptimizer's count.
+// halves of halves of at most 2^17 faces; a budget below meshoptimizer's count that its parts miss
+// is grown too, and the result nearer the budget kept. targetClusters = 0 uses defaultClusterBudget;
+// the result has at most targetClusters clusters whenever the limits allow meshoptimizer's count,
+// and never more than meshoptimizer's count when a smaller budget is out of reach.
 // Deterministic: the same input gives the same partition, on any number of cores.
 // `progress` hears (parts done / parts, "clusters") as parts finish, on the calling thread;
 // returning false stops the parts not yet started and throws OperationCancelled.

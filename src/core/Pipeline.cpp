@@ -93,7 +93,7 @@ ClusterSet buildClusters(const PreparedMesh& prepared, const Settings& settings,
                                          settings.sphere),
                         true};
         std::lock_guard<std::mutex> lock(partsMutex);
-        if (parts.size() < partCount) parts.resize(partCount);
+        if (parts.size() != partCount) parts.assign(partCount, PartBounds{});  // a new start: its own parts
         parts[part] = std::move(made);
         partBoundsSeconds += secondsSince(start);
     };

@@ -7,12 +7,9 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <limits>
 #include <random>
-#include <sstream>
 
 #include "TestMeshes.h"
 #include "core/BatchCulling.h"
@@ -135,37 +132,6 @@ void compare(const Mesh& mesh, const Partition& partition, const std::vector<Eye
     }
 }
 
-// Just enough of OFF for the bundled meshes (the core tests do not link the io layer).
-Mesh readBundledOff(const std::string& name) {
-    const std::filesystem::path path =
-        std::filesystem::path(__FILE__).parent_path().parent_path().parent_path() / "datasets" / name;
-    std::ifstream file(path);
-    if (!file) throw std::runtime_error("cannot open " + path.string());
-    std::vector<double> numbers;
-    std::string line;
-    bool header = false;
-    while (std::getline(file, line)) {
-        line = line.substr(0, line.find('#'));
-        std::istringstream words(line);
-        std::string word;
-        while (words >> word) {
-            if (!header && word == "OFF") { header = true; continue; }
-            numbers.push_back(std::stod(word));
-        }
-    }
-    Mesh mesh;
-    const size_t vertices = size_t(numbers.at(0)), faceCount = size_t(numbers.at(1));
-    size_t at = 3;
-    for (size_t v = 0; v < vertices; ++v, at += 3) mesh.positions.emplace_back(numbers.at(at), numbers.at(at + 1), numbers.at(at + 2));
-    for (size_t f = 0; f < faceCount; ++f) {
-        const size_t size = size_t(numbers.at(at++));
-        std::vector<uint32_t> face;
-        for (size_t k = 0; k < size; ++k) face.push_back(uint32_t(numbers.at(at++)));
-        mesh.addFace(face.data(), face.size());
-    }
-    validateMesh(mesh);
-    return mesh;
-}
 
 }  // namespace
 
@@ -332,7 +298,7 @@ TEST(BatchCulling, RandomClustersNeverCullAFrontFacingFace) {
 // most 2% of the double test's culls.
 TEST(BatchCulling, BundledMeshesFromOrbitsLoseAtMostTwoPercent) {
     for (const std::string name : {"elephant.off", "fandisk.off", "icosphere.off", "torus.off"}) {
-        const Mesh mesh = readBundledOff(name);
+        const Mesh mesh = testmesh::readBundledOff(name);
         const Partition partition = buildMeshlets(mesh, computeFaceGeometry(mesh), MeshletLimits{64, 124});
         const Aabb box = computeAabb(worldPositions(mesh));
         std::vector<Eye> eyes;

@@ -3,6 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <vector>
+#include <string>
+#include <stdexcept>
+#include <sstream>
+#include <fstream>
+#include <filesystem>
 
 namespace conescope::testmesh {
 
@@ -88,6 +94,38 @@ Mesh randomPatch(std::mt19937_64& random, int cells, double maxTiltDegrees) {
             mesh.addFace({a, b, c});
             mesh.addFace({a, c, d});
         }
+    return mesh;
+}
+
+// Just enough of OFF for the bundled meshes (the core tests do not link the io layer).
+Mesh readBundledOff(const std::string& name) {
+    const std::filesystem::path path =
+        std::filesystem::path(__FILE__).parent_path().parent_path().parent_path() / "datasets" / name;
+    std::ifstream file(path);
+    if (!file) throw std::runtime_error("cannot open " + path.string());
+    std::vector<double> numbers;
+    std::string line;
+    bool header = false;
+    while (std::getline(file, line)) {
+        line = line.substr(0, line.find('#'));
+        std::istringstream words(line);
+        std::string word;
+        while (words >> word) {
+            if (!header && word == "OFF") { header = true; continue; }
+            numbers.push_back(std::stod(word));
+        }
+    }
+    Mesh mesh;
+    const size_t vertices = size_t(numbers.at(0)), faceCount = size_t(numbers.at(1));
+    size_t at = 3;
+    for (size_t v = 0; v < vertices; ++v, at += 3) mesh.positions.emplace_back(numbers.at(at), numbers.at(at + 1), numbers.at(at + 2));
+    for (size_t f = 0; f < faceCount; ++f) {
+        const size_t size = size_t(numbers.at(at++));
+        std::vector<uint32_t> face;
+        for (size_t k = 0; k < size; ++k) face.push_back(uint32_t(numbers.at(at++)));
+        mesh.addFace(face.data(), face.size());
+    }
+    validateMesh(mesh);
     return mesh;
 }
 

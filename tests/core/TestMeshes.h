@@ -1,7 +1,8 @@
-// Small meshes made in code, so core tests need no reader.
+// Small meshes made in code, so core tests need no reader, and the bundled ones read simply.
 #pragma once
 
 #include <random>
+#include <string>
 
 #include <glm/glm.hpp>
 
@@ -19,5 +20,8 @@ Mesh quadCube();
 glm::dvec3 randomUnit(std::mt19937_64& random);
 // A random height-field patch: a bumpy grid whose normals spread up to about maxTiltDegrees.
 Mesh randomPatch(std::mt19937_64& random, int cells, double maxTiltDegrees);
+
+// A mesh of datasets/ (OFF), read without the io layer, which the core tests do not link.
+Mesh readBundledOff(const std::string& name);
 
 }  // namespace conescope::testmesh

@@ -133,6 +133,9 @@ Partition optimizeClusters(const Mesh& mesh, const FaceGeometry& faces, const Me
         optimizer::grow(state, std::min(double(limits.maxTriangles), triangles / double(target)));
     }
     reduceAndSearch(state, target, sweeps);
+    // The fast levels keep meshoptimizer's start when growth gets no nearer the budget: a budget
+    // the limits do not allow must not end above meshoptimizer's count.
+    if (packed && !closerToTheBudget(state, *packed, target)) return optimizer::result(*packed);
     const bool small = mesh.faceCount() < kBothStartsBelowFaces;
     if (!plan.growthStart || (state.liveClusters <= target && !small) || !meshoptTakesLimits(limits)) return optimizer::result(state);
     packed = meshletStart(mesh, faces, limits, meshlets ? *meshlets : buildMeshoptMeshlets(mesh, limits, 1.0f));
@@ -222,31 +225,10 @@ Partition optimizeMeshletParts(const Mesh& mesh, const FaceGeometry& faces, cons
     return optimizer::joinParts(parts, results);
 }
 
-bool sameLimits(const MeshletLimits& a, const MeshletLimits& b) { return a.maxVertices == b.maxVertices && a.maxTriangles == b.maxTriangles; }
-
-}  // namespace
-
-Partition buildOptimizedClusters(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits,
-                                 size_t targetClusters, const ProgressCallback& progress, Effort effort,
-                                 MeshletStream* meshlets, const PartClusters& partDone) {
-    const size_t faceCount = mesh.faceCount();
-    if (faceCount == 0) return {};
-    const SearchPlan plan = planFor(effort);
-    const size_t sweeps = annealingSweeps(plan, faceCount);
-    // The fast levels start from meshoptimizer's meshlets, whose count is the default budget; a
-    // budget above it is grown instead.
-    std::unique_ptr<MeshletStream> ownStream;
-    if (startsFromMeshoptMeshlets(limits, effort)) {
-        if (!meshlets || &meshlets->mesh() != &mesh || !sameLimits(meshlets->limits(), limits)) {
-            ownStream = std::make_unique<MeshletStream>(std::shared_ptr<const Mesh>(&mesh, [](const Mesh*) {}), limits,
-                                                        meshletPartsFor(faceCount));
-            meshlets = ownStream.get();
-        }
-        if (targetClusters == 0 || targetClusters <= meshlets->meshletCount())
-            return optimizeMeshletParts(mesh, faces, limits, targetClusters, plan,
-                                        annealingSweepsFor(effort, faceCount, meshlets->partCount()), *meshlets, progress, partDone);
-    }
-    const size_t target = targetClusters != 0 ? targetClusters : defaultClusterBudget(mesh, limits);
+// The optimisation from grown clusters, in parts of at most 2^17 faces that share the budget,
+// optimised at once on all cores.
+Partition optimizeGrownParts(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits, size_t target,
+                             const SearchPlan& plan, size_t sweeps, const ProgressCallback& progress, const PartClusters& partDone) {
     const optimizer::Parts parts = optimizer::splitIntoParts(faces, target);
     if (parts.count() == 1) {
         Partition whole = optimizeClusters(mesh, faces, limits, target, plan, sweeps, nullptr);
@@ -275,6 +257,48 @@ Partition buildOptimizedClusters(const Mesh& mesh, const FaceGeometry& faces, co
     });
     if (cancelled || (progress && !progress(1.0, "clusters"))) throw OperationCancelled();
     return optimizer::joinParts(parts, results);
+}
+
+bool sameLimits(const MeshletLimits& a, const MeshletLimits& b) { return a.maxVertices == b.maxVertices && a.maxTriangles == b.maxTriangles; }
+
+}  // namespace
+
+Partition buildOptimizedClusters(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits,
+                                 size_t targetClusters, const ProgressCallback& progress, Effort effort,
+                                 MeshletStream* meshlets, const PartClusters& partDone) {
+    const size_t faceCount = mesh.faceCount();
+    if (faceCount == 0) return {};
+    const SearchPlan plan = planFor(effort);
+    const size_t sweeps = annealingSweeps(plan, faceCount);
+    // The fast levels start from meshoptimizer's meshlets, whose count is the default budget; a
+    // budget above it is grown instead.
+    std::unique_ptr<MeshletStream> ownStream;
+    if (startsFromMeshoptMeshlets(limits, effort)) {
+        if (!meshlets || &meshlets->mesh() != &mesh || !sameLimits(meshlets->limits(), limits)) {
+            ownStream = std::make_unique<MeshletStream>(std::shared_ptr<const Mesh>(&mesh, [](const Mesh*) {}), limits,
+                                                        meshletPartsFor(faceCount));
+            meshlets = ownStream.get();
+        }
+        if (targetClusters == 0 || targetClusters <= meshlets->meshletCount()) {
+            const Partition fromMeshlets = optimizeMeshletParts(mesh, faces, limits, targetClusters, plan,
+                                                                annealingSweepsFor(effort, faceCount, meshlets->partCount()),
+                                                                *meshlets, progress, partDone);
+            if (targetClusters == 0 || fromMeshlets.clusterCount <= targetClusters) return fromMeshlets;
+            // A part's share of the budget can be below what its own faces allow while the whole mesh
+            // allows the budget: the clusters are then grown and reduced as for a budget above
+            // meshoptimizer's count, and the result nearer the budget is kept (heard as one part).
+            const Partition grown = optimizeGrownParts(mesh, faces, limits, targetClusters, plan, sweeps, progress, {});
+            if (grown.clusterCount >= fromMeshlets.clusterCount) return fromMeshlets;
+            if (partDone) {
+                std::vector<uint32_t> every(faceCount);
+                for (uint32_t f = 0; f < faceCount; ++f) every[f] = f;
+                partDone(0, 1, every, grown);
+            }
+            return grown;
+        }
+    }
+    const size_t target = targetClusters != 0 ? targetClusters : defaultClusterBudget(mesh, limits);
+    return optimizeGrownParts(mesh, faces, limits, target, plan, sweeps, progress, partDone);
 }
 
 }  // namespace conescope
