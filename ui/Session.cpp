@@ -86,7 +86,8 @@ void Session::openMesh(const QString& path) {
             adoptBuilderOf(*result.clusters);
             showSceneResult(result, true);
             std::string message = loadMessage(*prepared_);
-            if (!builderNote.empty()) message += (message.empty() ? "" : "; ") + builderNote;
+            for (const std::string& note : {builderNote, budgetMissed(clusters_->settings, clusters_->partition.clusterCount)})
+                if (!note.empty()) message += (message.empty() ? "" : "; ") + note;
             emit meshShown(path, QString::fromStdString(message));
         },
         [this, path](const QString& error) {
@@ -120,7 +121,11 @@ void Session::requestClusters(bool reprepare) {
             result.clusters = clusters;
             return result;
         },
-        [this](SceneResult& result) { showSceneResult(result, false); },
+        [this](SceneResult& result) {
+            showSceneResult(result, false);
+            const std::string missed = budgetMissed(clusters_->settings, clusters_->partition.clusterCount);
+            if (!missed.empty()) emit notice(QString::fromStdString(missed), 8000);
+        },
         [this](const QString& error) {
             if (settings_.builder == Builder::File) {
                 // Back to the default builder: the id file's error is said once, not at every change.

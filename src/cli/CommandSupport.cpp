@@ -52,6 +52,12 @@ void warnAboutWinding(const RunStatistics& run, bool quiet) {
         warn(warning + "; repair with --fix-winding");
 }
 
+// A count other than the one asked for makes every comparison at that count unfair.
+void warnAboutBudget(const RunStatistics& run) {
+    const std::string warning = budgetMissed(run.settings, run.clusters);
+    if (!warning.empty()) warn(warning);
+}
+
 // The format asked for, else the output file's (.csv, .json, .txt), else text for a person at a
 // terminal and `otherwise` for a pipe or file.
 std::string outputFormat(const std::string& format, const std::string& output, const std::string& otherwise) {

@@ -49,6 +49,7 @@ void runStats(const StatsOptions& options) {
     const Mesh mesh = readMeshNoting(options.mesh, options.quiet);
     const RunStatistics run = runStatistics(mesh, settings, fileName(options.mesh), stderrProgress(options.quiet));
     warnAboutWinding(run, options.quiet);
+    warnAboutBudget(run);
     const std::string format = outputFormat(options.format, options.output, "json");
     if (format != "csv" && !options.table.empty()) throw std::invalid_argument("--table applies to CSV output only");
     if (format == "csv") {
@@ -74,6 +75,7 @@ void runClusters(const ClustersOptions& options) {
     const Mesh mesh = readMeshNoting(options.mesh, options.quiet);
     const RunStatistics run = runStatistics(mesh, settings, fileName(options.mesh), stderrProgress(options.quiet));
     warnAboutWinding(run, options.quiet);
+    warnAboutBudget(run);
     const TestStatistics& result = run.results.front();
     const std::vector<uint32_t> order = rankClusters(result, key, options.top);
     std::ostringstream text;

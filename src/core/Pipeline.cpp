@@ -229,6 +229,15 @@ Settings builderForMesh(const Settings& settings, const Mesh& mesh, std::string&
     return result;
 }
 
+std::string budgetMissed(const Settings& settings, size_t clustersMade) {
+    const bool takesBudget = settings.builder == Builder::Optimized || settings.builder == Builder::KMeans;
+    if (!takesBudget || settings.clusterCount == 0 || clustersMade == settings.clusterCount) return {};
+    return "asked for " + std::to_string(settings.clusterCount) + " clusters, made " + std::to_string(clustersMade) +
+           ": the nearest count the " + toString(settings.builder) + " builder reached within " +
+           std::to_string(settings.limits.maxVertices) + " vertices and " + std::to_string(settings.limits.maxTriangles) +
+           " triangles per cluster";
+}
+
 RunStatistics measureRun(const PreparedMesh& prepared, const ClusterSet& clusters, const Settings& settings,
                          const ProgressCallback& progress) {
     // Stages the settings make stale are built again; the rest is reused.

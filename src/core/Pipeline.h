@@ -127,6 +127,11 @@ Settings exportSettings(const Settings& settings, const std::optional<glm::dvec3
 // default builder for a mesh without one. `why` gets a sentence for the user when the builder changed.
 Settings builderForMesh(const Settings& settings, const Mesh& mesh, std::string& why);
 
+// A sentence for the user when a cluster budget was asked for (--clusters) and the builder that takes
+// one made another count (the limits allow no fewer, or the builder reached no nearer); empty
+// otherwise. Numbers compared at the asked count would not be at equal counts.
+std::string budgetMissed(const Settings& settings, size_t clustersMade);
+
 // The statistics of a whole run from the stages: every cone and test of `settings` over its views
 // (the single eye or the orbit), the displayed cone's bounds taken from `clusters`, the others
 // computed for the same partition. When `settings` make a stage stale (another winding repair,

@@ -215,5 +215,22 @@ TEST(CliStats, InsideOutMeshIsWarnedAboutEvenWhenQuietAndFixedOnRequest) {
     EXPECT_EQ(nlohmann::json::parse(run.out)["report"]["inside_out_components"], 1);
 }
 
+// A budget the limits allow no nearer is said even when quiet, with both counts; a budget met is not.
+TEST(CliStats, ABudgetNotMetIsWarnedAbout) {
+    CliRun run = runCli({"stats", dataset("elephant.off"), "--clusters", "50", "--views", "1", "--quiet"});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const size_t made = nlohmann::json::parse(run.out)["clusters"].get<size_t>();
+    EXPECT_GT(made, 50u);
+    EXPECT_NE(run.err.find("conescope-cli: warning: asked for 50 clusters, made " + std::to_string(made)), std::string::npos)
+        << run.err;
+    run = runCli({"stats", dataset("elephant.off"), "--clusters", "60", "--builder", "kmeans", "--views", "1", "--quiet"});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_EQ(nlohmann::json::parse(run.out)["clusters"], 60);
+    EXPECT_EQ(run.err, "");
+    run = runCli({"compare", dataset("elephant.off"), "--a", "clusters=50", "--views", "1", "--quiet"});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_NE(run.err.find("conescope-cli: warning: A: asked for 50 clusters"), std::string::npos) << run.err;
+}
+
 }  // namespace
 }  // namespace conescope

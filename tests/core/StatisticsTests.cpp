@@ -225,3 +225,18 @@ TEST(Statistics, ABudgetTheMeshletPartsMissIsGrownAndBoundedWhole) {
         EXPECT_EQ(buildOptimizedClusters(*mesh, prepared.faces, settings.limits, budget).clusterOfFace, clusters.partition.clusterOfFace);
     }
 }
+
+// Said only when a builder that takes a budget was given one and made another count.
+TEST(Statistics, BudgetMissedSaysBothCounts) {
+    Settings settings;
+    EXPECT_EQ(budgetMissed(settings, 64), "");  // no budget asked for: meshoptimizer's count
+    settings.clusterCount = 50;
+    EXPECT_EQ(budgetMissed(settings, 50), "");
+    const std::string missed = budgetMissed(settings, 64);
+    EXPECT_NE(missed.find("asked for 50 clusters, made 64"), std::string::npos) << missed;
+    EXPECT_NE(missed.find("64 vertices and 124 triangles"), std::string::npos) << missed;
+    settings.builder = Builder::KMeans;
+    EXPECT_NE(budgetMissed(settings, 49), "");
+    settings.builder = Builder::Meshlet;  // takes no budget
+    EXPECT_EQ(budgetMissed(settings, 64), "");
+}

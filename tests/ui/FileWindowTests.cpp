@@ -216,6 +216,20 @@ private slots:
         QCOMPARE(window_->preparedMesh()->path, before);
     }
 
+    void aBudgetNotMetIsSaidInTheStatusBar() {
+        QVERIFY(window_->openMeshBlocking(datasetPath("elephant.off")));
+        Settings budget = window_->settings();
+        budget.clusterCount = 50;  // below what the limits allow on the elephant
+        window_->setSettings(budget);
+        window_->waitUntilIdle();
+        const size_t made = window_->clusters()->partition.clusterCount;
+        QVERIFY(made > 50);
+        const QString message = window_->statusBar()->currentMessage();
+        QVERIFY2(message.contains(QStringLiteral("asked for 50 clusters, made %1").arg(made)), qPrintable(message));
+        window_->setSettings(Settings{});
+        window_->waitUntilIdle();
+    }
+
     void insideOutMeshIsWarnedAboutAndRepairedOnRequest() {
         // The bundled icosphere with every face turned over: consistent, but every normal points in.
         const Mesh sphere = readMesh(datasetPath("icosphere.off").toStdString());
