@@ -53,9 +53,9 @@ void warnAboutWinding(const RunStatistics& run, bool quiet) {
 }
 
 // A count other than the one asked for makes every comparison at that count unfair.
-void warnAboutBudget(const RunStatistics& run) {
+void warnAboutBudget(const RunStatistics& run, const std::string& which) {
     const std::string warning = budgetMissed(run.settings, run.clusters);
-    if (!warning.empty()) warn(warning);
+    if (!warning.empty()) warn(which + warning);
 }
 
 // The format asked for, else the output file's (.csv, .json, .txt), else text for a person at a

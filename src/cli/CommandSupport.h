@@ -19,8 +19,9 @@ std::string fileName(const std::string& path);
 Mesh readMeshNoting(const std::string& path, bool quiet);
 // Inconsistent or inside-out winding makes every number after it wrong without looking wrong.
 void warnAboutWinding(const RunStatistics& run, bool quiet);
-// Warns, even when quiet, when a cluster budget was asked for and another count made.
-void warnAboutBudget(const RunStatistics& run);
+// Warns, even when quiet, when a cluster budget was asked for and another count made; `which`
+// (say "A: ") goes before the warning.
+void warnAboutBudget(const RunStatistics& run, const std::string& which = "");
 // The format asked for, else the output file's (.csv, .json, .txt), else text for a person at a
 // terminal and `otherwise` for a pipe or file.
 std::string outputFormat(const std::string& format, const std::string& output, const std::string& otherwise);

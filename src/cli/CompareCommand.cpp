@@ -26,10 +26,8 @@ void runCompare(const CompareOptions& options) {
     RunStatistics runB = measureRun(prepared, b, settingsB, progress);
     runA.meshName = runB.meshName = fileName(options.mesh);
     warnAboutWinding(runA, options.quiet);
-    for (const RunStatistics* run : {&runA, &runB}) {
-        const std::string missed = budgetMissed(run->settings, run->clusters);
-        if (!missed.empty()) warn((run == &runA ? "A: " : "B: ") + missed);
-    }
+    warnAboutBudget(runA, "A: ");
+    warnAboutBudget(runB, "B: ");
     note(options.quiet, "comparing A and B");
     const Comparison comparison = compareClusterSets(prepared, a, b, viewsFor(base, prepared.box), progress);
     // Unequal counts make the comparison unfair: said even with --quiet.

@@ -141,16 +141,23 @@ double octagonArea(const Strips& s) {
     return area;
 }
 
-// A convex polygon of at most 16 corners, on the stack: a square cut by eight sides has at most 12.
+// A polygon of at most 16 corners, on the stack: a square cut by eight sides has at most 12. Rounding
+// could make a nearly flat polygon cross a side more than twice; a corner beyond the 16th marks it
+// overflowed, and the octagon is then given up (not cullable), never written past the end.
 struct SmallPolygon {
     std::array<Point, 16> corners;
     size_t size = 0;
-    void add(const Point& p) { corners[size++] = p; }
+    bool overflowed = false;
+    void add(const Point& p) {
+        if (size < corners.size()) corners[size++] = p;
+        else overflowed = true;
+    }
 };
 
 // The part of a convex polygon where direction.p <= bound (Sutherland-Hodgman, one edge).
 SmallPolygon clip(const SmallPolygon& polygon, const Point& direction, double bound) {
     SmallPolygon kept;
+    kept.overflowed = polygon.overflowed;
     for (size_t i = 0; i < polygon.size; ++i) {
         const Point& a = polygon.corners[i];
         const Point& b = polygon.corners[(i + 1) % polygon.size];
@@ -172,6 +179,7 @@ std::vector<Point> octagonCorners(const Strips& strips, const std::array<Point, 
         polygon = clip(polygon, -directions[j], -strips.low[j]);
     }
     std::vector<Point> corners;
+    if (polygon.overflowed) return corners;  // fewer than three corners: no octagon
     for (size_t i = 0; i < polygon.size; ++i) {
         const Point& p = polygon.corners[i];
         if (corners.empty() || glm::length(p - corners.back()) > 1e-14 * extent) corners.push_back(p);

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <numeric>
 #include <optional>
 #include <vector>
 
@@ -291,7 +292,7 @@ Partition buildOptimizedClusters(const Mesh& mesh, const FaceGeometry& faces, co
             if (grown.clusterCount >= fromMeshlets.clusterCount) return fromMeshlets;
             if (partDone) {
                 std::vector<uint32_t> every(faceCount);
-                for (uint32_t f = 0; f < faceCount; ++f) every[f] = f;
+                std::iota(every.begin(), every.end(), 0u);
                 partDone(0, 1, every, grown);
             }
             return grown;
