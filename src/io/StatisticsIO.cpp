@@ -1,12 +1,16 @@
 #include "io/StatisticsIO.h"
 
 #include "core/SettingsSchema.h"
+#include "io/JsonWriter.h"
 
+#include <algorithm>
 #include <array>
 #include <cctype>
 #include <charconv>
+#include <functional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <variant>
 #include <vector>
 
@@ -126,51 +130,150 @@ const std::vector<Column<MeshReport>>& reportColumns() {
     return columns;
 }
 
-nlohmann::json cellToJson(const Cell& cell) {
-    return std::visit([](auto value) { return nlohmann::json(value); }, cell);
+void writeCell(JsonWriter& json, const Cell& cell) {
+    std::visit([&json](auto value) { json.value(value); }, cell);
 }
 
+// The members of one object, written in key order whatever order they were added in.
+class Members {
+public:
+    using Write = std::function<void(JsonWriter&)>;
+    void add(std::string_view key, Write write) { members_.emplace_back(key, std::move(write)); }
+    template <typename Row>
+    void addColumns(const std::vector<Column<Row>>& columns, const Row& row) {
+        for (const Column<Row>& column : columns)
+            add(column.name, [&column, &row](JsonWriter& json) { writeCell(json, column.value(row)); });
+    }
+    void write(JsonWriter& json) {
+        std::sort(members_.begin(), members_.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+        json.beginObject();
+        for (const auto& [key, write] : members_) {
+            json.key(key);
+            write(json);
+        }
+        json.endObject();
+    }
+
+private:
+    std::vector<std::pair<std::string_view, Write>> members_;
+};
+
+// A table's columns in key order, for rows written many times over.
 template <typename Row>
-void addCells(nlohmann::json& object, const std::vector<Column<Row>>& columns, const Row& row) {
-    for (const Column<Row>& column : columns) object[column.name] = cellToJson(column.value(row));
+std::vector<const Column<Row>*> inKeyOrder(const std::vector<Column<Row>>& columns) {
+    std::vector<const Column<Row>*> sorted;
+    for (const Column<Row>& column : columns) sorted.push_back(&column);
+    std::sort(sorted.begin(), sorted.end(), [](const auto* a, const auto* b) { return std::string_view(a->name) < b->name; });
+    return sorted;
 }
 
-nlohmann::json vectorToJson(const glm::dvec3& v) { return nlohmann::json::array({v.x, v.y, v.z}); }
-
-nlohmann::json viewToJson(const ViewStatistics& view) {
-    nlohmann::json object = {{"view", view.view}, {"eye", vectorToJson(view.eye.position)},
-                             {"direction", vectorToJson(view.eye.direction)}};
-    addCells(object, viewColumns(), view);
-    return object;
+void writeVector(JsonWriter& json, const glm::dvec3& v) {
+    json.beginArray();
+    for (int k = 0; k < 3; ++k) json.value(v[k]);
+    json.endArray();
 }
 
-nlohmann::json resultToJson(const TestStatistics& result, const StatisticsDetail& detail) {
-    nlohmann::json object = {{"cone", toString(result.cone)}, {"test", toString(result.test)}};
-    addCells(object, totalColumns(), result);
-    addCells(object, laterTotalColumns(), result);
-    if (detail.views) {
-        nlohmann::json views = nlohmann::json::array();
-        for (const ViewStatistics& view : result.views) views.push_back(viewToJson(view));
-        object["views"] = std::move(views);
-    }
-    if (detail.clusters) {
-        std::vector<uint32_t> every(result.clusters.size());
-        for (uint32_t c = 0; c < every.size(); ++c) every[c] = c;
-        object["clusters"] = clusterRowsToJson(result, every);
-    }
-    return object;
+// The per-cluster rows of `order` (every cluster when null), each an object of the cluster columns.
+void writeClusterRows(JsonWriter& json, const TestStatistics& result, const std::vector<uint32_t>* order) {
+    const std::vector<const Column<ClusterStatistics>*> columns = inKeyOrder(clusterColumns());
+    const auto writeRow = [&](const ClusterStatistics& cluster) {
+        json.beginObject();
+        for (const Column<ClusterStatistics>* column : columns) {
+            json.key(column->name);
+            writeCell(json, column->value(cluster));
+        }
+        json.endObject();
+    };
+    json.beginArray();
+    if (order)
+        for (uint32_t c : *order) writeRow(result.clusters.at(c));
+    else
+        for (const ClusterStatistics& cluster : result.clusters) writeRow(cluster);
+    json.endArray();
+}
+
+void writeView(JsonWriter& json, const ViewStatistics& view) {
+    Members members;
+    members.add("view", [&view](JsonWriter& j) { j.value(view.view); });
+    members.add("eye", [&view](JsonWriter& j) { writeVector(j, view.eye.position); });
+    members.add("direction", [&view](JsonWriter& j) { writeVector(j, view.eye.direction); });
+    members.addColumns(viewColumns(), view);
+    members.write(json);
+}
+
+void writeResult(JsonWriter& json, const TestStatistics& result, const StatisticsDetail& detail) {
+    Members members;
+    members.add("cone", [&result](JsonWriter& j) { j.value(nlohmann::json(toString(result.cone))); });
+    members.add("test", [&result](JsonWriter& j) { j.value(nlohmann::json(toString(result.test))); });
+    members.addColumns(totalColumns(), result);
+    members.addColumns(laterTotalColumns(), result);
+    if (detail.views)
+        members.add("views", [&result](JsonWriter& j) {
+            j.beginArray();
+            for (const ViewStatistics& view : result.views) writeView(j, view);
+            j.endArray();
+        });
+    if (detail.clusters) members.add("clusters", [&result](JsonWriter& j) { writeClusterRows(j, result, nullptr); });
+    members.write(json);
 }
 
 // A schema value as JSON; an unset point and an empty path are null.
 nlohmann::json settingToJson(const SettingField& field, const SettingValue& value) {
     if (const auto* point = std::get_if<std::optional<glm::dvec3>>(&value))
-        return *point ? vectorToJson(**point) : nlohmann::json(nullptr);
+        return *point ? nlohmann::json::array({(**point).x, (**point).y, (**point).z}) : nlohmann::json(nullptr);
     if (const auto* text = std::get_if<std::string>(&value))
         return field.kind == SettingKind::Path && text->empty() ? nlohmann::json(nullptr) : nlohmann::json(*text);
     if (const auto* names = std::get_if<std::vector<std::string>>(&value)) return nlohmann::json(*names);
     if (const size_t* count = std::get_if<size_t>(&value)) return nlohmann::json(*count);
     if (const double* number = std::get_if<double>(&value)) return nlohmann::json(*number);
     return nlohmann::json(std::get<bool>(value));
+}
+
+void writeMeshReport(JsonWriter& json, const MeshReport& report) {
+    Members members;
+    members.addColumns(reportColumns(), report);
+    // Added after the others; the CSV writes it last so columns keep their positions.
+    members.add("inside_out_components", [&report](JsonWriter& j) { j.value(report.insideOutComponents); });
+    members.write(json);
+}
+
+void writeSettings(JsonWriter& json, const Settings& settings) {
+    Members members;
+    for (const SettingField& field : settingFields())
+        members.add(field.key, [&field, &settings](JsonWriter& j) { j.value(settingToJson(field, field.value(settings))); });
+    members.write(json);
+}
+
+void writeStatistics(JsonWriter& json, const RunStatistics& run, const StatisticsDetail& detail) {
+    Members mesh;
+    mesh.add("name", [&run](JsonWriter& j) { j.value(nlohmann::json(run.meshName)); });
+    mesh.add("vertices", [&run](JsonWriter& j) { j.value(run.vertices); });
+    mesh.add("faces", [&run](JsonWriter& j) { j.value(run.faces); });
+    mesh.add("triangles", [&run](JsonWriter& j) { j.value(run.triangles); });
+    mesh.add("degenerate_faces", [&run](JsonWriter& j) { j.value(run.degenerateFaces); });
+    mesh.add("report", [&run](JsonWriter& j) { writeMeshReport(j, run.meshReport); });
+    mesh.add("winding_fixed_faces", [&run](JsonWriter& j) { j.value(run.windingFixedFaces); });
+    Members top;
+    top.add("conescope_version", [](JsonWriter& j) { j.value(nlohmann::json(conescopeVersion())); });
+    top.add("mesh", [&mesh](JsonWriter& j) { mesh.write(j); });
+    top.add("settings", [&run](JsonWriter& j) { writeSettings(j, run.settings); });
+    top.add("clusters", [&run](JsonWriter& j) { j.value(run.clusters); });
+    top.add("view_count", [&run](JsonWriter& j) { j.value(run.viewCount); });
+    top.add("results", [&run, &detail](JsonWriter& j) {
+        j.beginArray();
+        for (const TestStatistics& result : run.results) writeResult(j, result, detail);
+        j.endArray();
+    });
+    top.write(json);
+}
+
+// The tree of what `write` writes: the one layout of each document is the writer's.
+template <typename Write>
+nlohmann::json treeOf(Write write) {
+    std::string text;
+    JsonWriter json(text);
+    write(json);
+    return nlohmann::json::parse(text);
 }
 
 std::string csvCell(const Cell& cell) {
@@ -192,13 +295,7 @@ void writeCells(std::ostream& out, const std::vector<Column<Row>>& columns, cons
 }  // namespace
 
 nlohmann::json clusterRowsToJson(const TestStatistics& result, const std::vector<uint32_t>& order) {
-    nlohmann::json rows = nlohmann::json::array();
-    for (uint32_t c : order) {
-        nlohmann::json row = nlohmann::json::object();
-        addCells(row, clusterColumns(), result.clusters.at(c));
-        rows.push_back(std::move(row));
-    }
-    return rows;
+    return treeOf([&](JsonWriter& json) { writeClusterRows(json, result, &order); });
 }
 
 void writeClusterRowsCsv(const TestStatistics& result, const std::vector<uint32_t>& order, std::ostream& out) {
@@ -213,39 +310,24 @@ void writeClusterRowsCsv(const TestStatistics& result, const std::vector<uint32_
 }
 
 nlohmann::json meshReportToJson(const MeshReport& report) {
-    nlohmann::json object = nlohmann::json::object();
-    addCells(object, reportColumns(), report);
-    // Added after the others; the CSV writes it last so columns keep their positions.
-    object["inside_out_components"] = report.insideOutComponents;
-    return object;
+    return treeOf([&](JsonWriter& json) { writeMeshReport(json, report); });
 }
 
 nlohmann::json settingsToJson(const Settings& settings) {
-    nlohmann::json object = nlohmann::json::object();
-    for (const SettingField& field : settingFields()) object[field.key] = settingToJson(field, field.value(settings));
-    return object;
+    return treeOf([&](JsonWriter& json) { writeSettings(json, settings); });
 }
 
 nlohmann::json statisticsToJson(const RunStatistics& run, const StatisticsDetail& detail) {
-    nlohmann::json results = nlohmann::json::array();
-    for (const TestStatistics& result : run.results) results.push_back(resultToJson(result, detail));
-    return {{"conescope_version", conescopeVersion()},
-            {"mesh",
-             {{"name", run.meshName},
-              {"vertices", run.vertices},
-              {"faces", run.faces},
-              {"triangles", run.triangles},
-              {"degenerate_faces", run.degenerateFaces},
-              {"report", meshReportToJson(run.meshReport)},
-              {"winding_fixed_faces", run.windingFixedFaces}}},
-            {"settings", settingsToJson(run.settings)},
-            {"clusters", run.clusters},
-            {"view_count", run.viewCount},
-            {"results", std::move(results)}};
+    return treeOf([&](JsonWriter& json) { writeStatistics(json, run, detail); });
 }
 
+// Written as it is made: no tree of the whole document (JsonWriter.h).
 void writeStatisticsJson(const RunStatistics& run, std::ostream& out, const StatisticsDetail& detail) {
-    out << statisticsToJson(run, detail).dump(2) << '\n';
+    std::string text;
+    JsonWriter json(text);
+    writeStatistics(json, run, detail);
+    text += '\n';
+    out << text;
 }
 
 std::string toString(CsvTable table) {

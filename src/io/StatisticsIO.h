@@ -37,9 +37,12 @@ nlohmann::json meshReportToJson(const MeshReport& report);
 // The settings a run was made with, as written under "settings".
 nlohmann::json settingsToJson(const Settings& settings);
 
+// The document as a tree, for callers that nest or query it. The trees here are read back from the
+// text the writer below makes (JsonWriter.h), so each document has one layout in one place.
 nlohmann::json statisticsToJson(const RunStatistics& run, const StatisticsDetail& detail = {});
 
-// Pretty-printed JSON followed by a newline.
+// Pretty-printed JSON followed by a newline, written as it is made: the same text as
+// statisticsToJson(run, detail).dump(2) without building the tree.
 void writeStatisticsJson(const RunStatistics& run, std::ostream& out, const StatisticsDetail& detail = {});
 
 // The CSV tables: one row per (cone, test); per view of each; per cluster of each. Every row starts

@@ -39,6 +39,19 @@ void expectSameDocument(nlohmann::json actual, const nlohmann::json& expected) {
     EXPECT_TRUE(differences.empty()) << differences.dump().substr(0, 2000);
 }
 
+// A real run, many clusters and views and two tests: the file, written without a tree, is nlohmann's
+// layout of the same document.
+TEST(CliStats, JsonOfARealRunIsLaidOutAsItsTree) {
+    Settings settings;
+    settings.views = 4;
+    settings.tests = {CullTest::Octagon, CullTest::Apex};
+    const RunStatistics run = runStatistics(readMesh(dataset("torus.off")), settings, "torus \"quoted\".off");
+    std::ostringstream text;
+    writeStatisticsJson(run, text);
+    EXPECT_EQ(text.str(), statisticsToJson(run).dump(2) + "\n");
+    EXPECT_EQ(statisticsToJson(run)["mesh"]["name"], "torus \"quoted\".off");
+}
+
 TEST(CliStats, DefaultRunEqualsTheCoreWithDefaultSettings) {
     const nlohmann::json json = runStatsJson({dataset("icosphere.off")});
     expectSameDocument(json, inProcessJson(dataset("icosphere.off"), Settings{}, "icosphere.off"));
