@@ -75,15 +75,46 @@ Orientation orientFaces(const Mesh& mesh, const std::vector<HalfEdge>& edges) {
     return result;
 }
 
+// A triangle with three different corners: most faces, and those whose duplicates the sorted
+// half-edges find (countDuplicateTriangles). No other face can have such a triangle's vertex set.
+bool simpleTriangle(const Mesh& mesh, size_t face) {
+    if (mesh.faceSize(face) != 3) return false;
+    const uint32_t* v = mesh.faceBegin(face);
+    return v[0] != v[1] && v[1] != v[2] && v[0] != v[2];
+}
+
+std::array<uint32_t, 3> cornersOf(const Mesh& mesh, size_t face) {
+    const uint32_t* v = mesh.faceBegin(face);
+    return sortedCorners(v[0], v[1], v[2]);
+}
+
+// Simple triangles whose corners an earlier simple triangle already has. Two such triangles run the
+// same three edges, so an earlier twin is among the half-edges of the face's two lowest corners,
+// which come in face order: a look along one edge per face instead of a table of every face.
+size_t countDuplicateTriangles(const Mesh& mesh, const std::vector<HalfEdge>& edges) {
+    size_t duplicates = 0;
+    for (size_t i = 0; i < edges.size();) {
+        size_t j = i;
+        while (j < edges.size() && edges[j].key == edges[i].key) ++j;
+        for (size_t k = i + 1; k < j; ++k) {  // the edge's first face has no earlier twin here
+            const uint32_t f = edges[k].face;
+            if (!simpleTriangle(mesh, f)) continue;
+            const std::array<uint32_t, 3> corners = cornersOf(mesh, f);
+            if (edgeKey(corners[0], corners[1]) != edges[i].key) continue;  // f's twins are looked for along its lowest edge
+            for (size_t h = i; h < k; ++h)
+                if (edges[h].face != f && simpleTriangle(mesh, edges[h].face) && cornersOf(mesh, edges[h].face) == corners) {
+                    ++duplicates;
+                    break;
+                }
+        }
+        i = j;
+    }
+    return duplicates;
+}
+
 // A face's vertex set: its vertices sorted, so any rotation or winding of a face gives the same.
 void sortedVertices(const Mesh& mesh, size_t face, std::vector<uint32_t>& out) {
-    const uint32_t* vertices = mesh.faceBegin(face);
-    if (mesh.faceSize(face) == 3) {  // most faces
-        const std::array<uint32_t, 3> corners = sortedCorners(vertices[0], vertices[1], vertices[2]);
-        out.assign(corners.begin(), corners.end());
-        return;
-    }
-    out.assign(vertices, vertices + mesh.faceSize(face));
+    out.assign(mesh.faceBegin(face), mesh.faceBegin(face) + mesh.faceSize(face));
     std::sort(out.begin(), out.end());
 }
 
@@ -93,13 +124,17 @@ uint32_t hashOf(const std::vector<uint32_t>& vertices) {
     return uint32_t(hash >> 32);
 }
 
-// Faces whose vertex set an earlier face already has. An open-addressing table of (hash, face)
-// holds one entry per distinct set; equal hashes are compared exactly. A node-based hash set of
-// strings cost a heap allocation per face and most of the check's time on millions of faces.
-size_t countDuplicateFaces(const Mesh& mesh) {
+// The other faces (polygons, triangles repeating a corner) whose vertex set an earlier such face
+// already has. An open-addressing table of (hash, face) holds one entry per distinct set; equal
+// hashes are compared exactly. A node-based hash set of strings cost a heap allocation per face and
+// most of the check's time on millions of faces.
+size_t countDuplicateOtherFaces(const Mesh& mesh) {
     const size_t faceCount = mesh.faceCount();
+    size_t others = 0;
+    for (size_t f = 0; f < faceCount; ++f) others += !simpleTriangle(mesh, f);
+    if (others < 2) return 0;
     size_t capacity = 16;
-    while (capacity < faceCount + faceCount / 3) capacity *= 2;  // load at most 3/4
+    while (capacity < others + others / 3) capacity *= 2;  // load at most 3/4
     constexpr uint64_t kEmpty = ~uint64_t(0);
     std::vector<uint64_t> slots;  // hash << 32 | face
     reserveLarge(slots, capacity);
@@ -107,6 +142,7 @@ size_t countDuplicateFaces(const Mesh& mesh) {
     std::vector<uint32_t> vertices, other;
     size_t duplicates = 0;
     for (size_t f = 0; f < faceCount; ++f) {
+        if (simpleTriangle(mesh, f)) continue;
         sortedVertices(mesh, f, vertices);
         const uint32_t hash = hashOf(vertices);
         for (size_t i = hash & (capacity - 1);; i = (i + 1) & (capacity - 1)) {
@@ -209,7 +245,7 @@ MeshReport checkMesh(const Mesh& mesh, const FaceGeometry& faces) {
     const Orientation orientation = orientFaces(mesh, edges);
     report.components = orientation.components;
     report.orientable = orientation.orientable;
-    report.duplicateFaces = countDuplicateFaces(mesh);
+    report.duplicateFaces = countDuplicateTriangles(mesh, edges) + countDuplicateOtherFaces(mesh);
     const std::vector<uint8_t> asTheyStand(mesh.faceCount(), 0);
     for (uint8_t insideOut : insideOutComponents(mesh, edges, orientation, asTheyStand)) report.insideOutComponents += insideOut;
     return report;

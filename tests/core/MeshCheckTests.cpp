@@ -49,8 +49,9 @@ TEST(MeshChecks, OpenNonManifoldAndDuplicateFaces) {
 }
 
 TEST(MeshChecks, DuplicateFacesCountedAsABruteForceSetWould) {
-    // Thousands of faces of 3-5 vertices over few vertices, many repeating an earlier face's
-    // vertex set in another rotation or winding: the count is faces minus distinct vertex sets.
+    // Thousands of faces of 3-5 vertices over few vertices, some triangles repeating a corner, many
+    // faces repeating an earlier face's vertex set in another rotation or winding: the count is
+    // faces minus distinct vertex lists.
     std::mt19937_64 random(7);
     for (int round = 0; round < 5; ++round) {
         Mesh mesh;
@@ -62,6 +63,9 @@ TEST(MeshChecks, DuplicateFacesCountedAsABruteForceSetWould) {
                 face = faces[random() % faces.size()];
                 std::rotate(face.begin(), face.begin() + long(random() % face.size()), face.end());
                 if (random() % 2) std::reverse(face.begin(), face.end());
+            } else if (random() % 8 == 0) {  // a triangle repeating a corner: counted by its vertex list too
+                const uint32_t a = uint32_t(random() % 40), b = uint32_t(random() % 40);
+                face = random() % 2 ? std::vector<uint32_t>{a, a, b} : std::vector<uint32_t>{a, b, b};
             } else {
                 const size_t size = 3 + random() % 3;
                 while (face.size() < size) {
