@@ -90,10 +90,8 @@ bool closerToTheBudget(const optimizer::State& a, const optimizer::State& b, siz
 void reduceAndSearch(optimizer::State& state, size_t target, size_t sweeps) {
     optimizer::reduceTo(state, target);
     optimizer::refine(state);
-    if (sweeps > 0) {
-        optimizer::anneal(state, sweeps);
-        optimizer::refine(state);
-    }
+    // Annealing moves change only the clusters they touch: the refinement after it looks there.
+    if (sweeps > 0) optimizer::refineAround(state, optimizer::anneal(state, sweeps));
 }
 
 // Below this many faces the best effort also starts from meshoptimizer's meshlets every time: on

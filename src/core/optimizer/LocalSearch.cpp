@@ -77,34 +77,59 @@ bool onBorder(const State& state, uint32_t face) {
     return border;
 }
 
+// Faces queued for another look once `face` has moved: its neighbourhood changed, so its edge
+// neighbours (and the face itself) may now have a better place.
+void queueAround(const State& state, uint32_t face, std::vector<uint8_t>& queued, std::vector<uint32_t>& work) {
+    for (const uint32_t* g = state.acrossEdge.begin(face); g != state.acrossEdge.end(face); ++g)
+        if (!queued[*g]) queued[*g] = 1, work.push_back(*g);
+    if (!queued[face]) queued[face] = 1, work.push_back(face);
+}
+
+// Greedy passes over `work` and, pass by pass, over the faces around the last moves.
+void refineFrom(State& state, std::vector<uint32_t> work, std::vector<uint8_t>& queued) {
+    std::vector<uint32_t> next;
+    for (size_t pass = 0; pass < kRefinementPasses && !work.empty(); ++pass) {
+        next.clear();
+        for (uint32_t f : work) queued[f] = 0;
+        for (uint32_t f : work)
+            if (tryMove(state, f, kGreedyThreshold)) queueAround(state, f, queued, next);
+        work.swap(next);
+    }
+}
+
 }  // namespace
 
 void refine(State& state) {
-    std::vector<uint32_t> work, next;
+    std::vector<uint32_t> work;
     std::vector<uint8_t> queued(state.faceCount, 0);
     for (uint32_t f = 0; f < state.faceCount; ++f) {
         uint32_t around[8];
         if (neighbourClusters(state, f, around) > 0) work.push_back(f), queued[f] = 1;
     }
-    for (size_t pass = 0; pass < kRefinementPasses && !work.empty(); ++pass) {
-        next.clear();
-        for (uint32_t f : work) queued[f] = 0;
-        for (uint32_t f : work) {
-            if (!tryMove(state, f, kGreedyThreshold)) continue;
-            // The neighbourhood changed: its faces may now have a better place.
-            for (const uint32_t* g = state.acrossEdge.begin(f); g != state.acrossEdge.end(f); ++g)
-                if (!queued[*g]) queued[*g] = 1, next.push_back(*g);
-            if (!queued[f]) queued[f] = 1, next.push_back(f);
-        }
-        work.swap(next);
+    refineFrom(state, std::move(work), queued);
+}
+
+// A move changes the caps and counts of the clusters it leaves and joins, and so what every border
+// face of those may gain. One cold sweep touches a part of the clusters; a full refinement after it
+// spent most of its time where nothing had changed.
+void refineAround(State& state, const std::vector<uint32_t>& moved) {
+    std::vector<uint32_t> work;
+    std::vector<uint8_t> queued(state.faceCount, 0), touched(state.clusters.size(), 0);
+    for (uint32_t f : moved) {
+        touched[state.clusterOf[f]] = 1;
+        for (const uint32_t* g = state.acrossEdge.begin(f); g != state.acrossEdge.end(f); ++g) touched[state.clusterOf[*g]] = 1;
     }
+    for (uint32_t f = 0; f < state.faceCount; ++f)
+        if (touched[state.clusterOf[f]] && onBorder(state, f)) work.push_back(f), queued[f] = 1;
+    refineFrom(state, std::move(work), queued);
 }
 
 // Annealing in sweeps: every border face in turn is offered its best move, taken when the gain
 // beats -T * Exp(1), with T falling geometrically from sweep to sweep. It crosses the ridges
 // where a group of faces must move together but each single move loses. Walking faces in order
 // keeps memory access local; the generator is fixed, so the result is deterministic.
-void anneal(State& state, size_t sweeps) {
+std::vector<uint32_t> anneal(State& state, size_t sweeps) {
+    std::vector<uint32_t> moved;
     uint64_t random = 0x853C49E6748FEA9Bull;
     auto uniform = [&]() {
         random = random * 6364136223846793005ull + 1442695040888963407ull;
@@ -114,8 +139,9 @@ void anneal(State& state, size_t sweeps) {
         const double progress = sweeps > 1 ? double(sweep) / double(sweeps - 1) : 1.0;
         const double temperature = kStartTemperature * std::pow(kEndTemperature / kStartTemperature, progress);
         for (uint32_t face = 0; face < state.faceCount; ++face)
-            if (onBorder(state, face)) tryMove(state, face, temperature * std::log(uniform()));
+            if (onBorder(state, face) && tryMove(state, face, temperature * std::log(uniform()))) moved.push_back(face);
     }
+    return moved;
 }
 
 }  // namespace conescope::optimizer

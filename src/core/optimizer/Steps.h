@@ -3,6 +3,8 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
+#include <vector>
 
 #include "State.h"
 
@@ -19,7 +21,12 @@ void reduceTo(State& state, size_t target);
 // LocalSearch.cpp: border faces moved to the neighbouring cluster where the objective gains, until
 // no move gains (or a pass limit).
 void refine(State& state);
+// LocalSearch.cpp: the same, starting from the border faces of the clusters that `moved` faces
+// left or joined (and their neighbours' clusters) since a refinement: elsewhere nothing changed
+// that a greedy move could use.
+void refineAround(State& state, const std::vector<uint32_t>& moved);
 // LocalSearch.cpp: `sweeps` annealing sweeps over all border faces, cooling from sweep to sweep.
-void anneal(State& state, size_t sweeps);
+// Returns the faces moved, in order (a face moved twice is listed twice).
+std::vector<uint32_t> anneal(State& state, size_t sweeps);
 
 }  // namespace conescope::optimizer
