@@ -1,6 +1,7 @@
 #include "Adjacency.h"
 
 #include <algorithm>
+#include <stdexcept>
 
 #include "LargeArrays.h"
 
@@ -35,6 +36,7 @@ std::vector<HalfEdge> sortedHalfEdges(const Mesh& mesh, std::vector<uint32_t>* s
     // A counting sort by the smaller vertex, then each vertex's few half-edges sorted by key in
     // place (stably: the face order they were filled in stays within an edge). Linear where a
     // sort of all half-edges by key is not, and it was most of the mesh checks' time.
+    if (mesh.faceCount() >= (size_t(1) << 31)) throw std::length_error("sortedHalfEdges: 2^31 faces or more");
     std::vector<uint32_t> starts(mesh.positions.size() + 1, 0);
     for (size_t f = 0; f < mesh.faceCount(); ++f) forEachSide(mesh, f, [&](uint32_t a, uint32_t b) { ++starts[std::min(a, b) + 1]; });
     for (size_t v = 0; v + 1 < starts.size(); ++v) starts[v + 1] += starts[v];
@@ -47,7 +49,7 @@ std::vector<HalfEdge> sortedHalfEdges(const Mesh& mesh, std::vector<uint32_t>* s
         uint32_t side = mesh.faceStarts[f];
         forEachSide(mesh, f, [&](uint32_t a, uint32_t b) {
             const uint32_t at = cursor[std::min(a, b)]++;
-            edges[at] = HalfEdge{edgeKey(a, b), uint32_t(f), a < b};
+            edges[at] = HalfEdge{std::min(a, b), std::max(a, b), uint32_t(f), a < b};
             if (sideOf) sides[at] = side;
             ++side;
         });
@@ -60,7 +62,7 @@ std::vector<HalfEdge> sortedHalfEdges(const Mesh& mesh, std::vector<uint32_t>* s
         if (end - begin < 2) continue;
         if (end - begin <= 32) {  // insertion sort, carrying the sides along
             for (uint32_t i = begin + 1; i < end; ++i)
-                for (uint32_t j = i; j > begin && edges[j - 1].key > edges[j].key; --j) {
+                for (uint32_t j = i; j > begin && edges[j - 1].high > edges[j].high; --j) {  // one bucket: one low vertex
                     std::swap(edges[j - 1], edges[j]);
                     if (sideOf) std::swap(sides[j - 1], sides[j]);
                 }
@@ -68,7 +70,7 @@ std::vector<HalfEdge> sortedHalfEdges(const Mesh& mesh, std::vector<uint32_t>* s
         }
         order.resize(end - begin);  // a vertex of many edges (a fan's centre)
         for (uint32_t i = 0; i < order.size(); ++i) order[i] = begin + i;
-        std::stable_sort(order.begin(), order.end(), [&](uint32_t x, uint32_t y) { return edges[x].key < edges[y].key; });
+        std::stable_sort(order.begin(), order.end(), [&](uint32_t x, uint32_t y) { return edges[x].high < edges[y].high; });
         movedEdges.clear(), movedSides.clear();
         for (uint32_t i : order) {
             movedEdges.push_back(edges[i]);
@@ -87,7 +89,7 @@ Rows facesAcrossEdges(const Mesh& mesh) {
     // Where each side's edge starts among the sorted half-edges.
     std::vector<uint32_t> edgeOfSide(mesh.faceVertices.size(), 0);
     for (size_t i = 0, first = 0; i < edges.size(); ++i) {
-        if (edges[i].key != edges[first].key) first = i;
+        if (edges[i].key() != edges[first].key()) first = i;
         edgeOfSide[sideOf[i]] = uint32_t(first);
     }
     Rows rows;
@@ -98,7 +100,7 @@ Rows facesAcrossEdges(const Mesh& mesh) {
         uint32_t side = mesh.faceStarts[f];
         forEachSide(mesh, f, [&](uint32_t, uint32_t) {
             const uint32_t first = edgeOfSide[side++];
-            for (uint32_t i = first; i < edges.size() && edges[i].key == edges[first].key; ++i) {
+            for (uint32_t i = first; i < edges.size() && edges[i].key() == edges[first].key(); ++i) {
                 const uint32_t g = edges[i].face;
                 if (g != f && std::find(rows.items.begin() + long(rowStart), rows.items.end(), g) == rows.items.end()) rows.items.push_back(g);
             }

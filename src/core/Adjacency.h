@@ -40,10 +40,12 @@ inline uint64_t edgeKey(uint32_t a, uint32_t b) { return uint64_t(std::min(a, b)
 Rows facesAroundVertices(const Mesh& mesh);
 
 // A side of a face as a half-edge: the edge it runs along, the face, and which way the face runs it.
+// Twelve bytes: the checks sort one per side of every face, and each fresh page of them is a fault.
 struct HalfEdge {
-    uint64_t key;   // edgeKey
-    uint32_t face;
-    bool forward;   // the face runs the edge from its smaller to its larger vertex
+    uint32_t low, high;     // the edge's smaller and larger vertex
+    uint32_t face : 31;     // faces number below 2^31 (sortedHalfEdges checks)
+    uint32_t forward : 1;   // the face runs the edge from its smaller to its larger vertex
+    uint64_t key() const { return uint64_t(low) << 32 | high; }  // edgeKey
 };
 
 // Every side of every face (forEachSide), sorted by edge key, the sides of one edge in face order.

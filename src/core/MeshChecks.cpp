@@ -31,19 +31,20 @@ Orientation orientFaces(const Mesh& mesh, const std::vector<HalfEdge>& edges) {
     auto forEachManifoldPair = [&](auto visit) {
         for (size_t i = 0; i < edges.size();) {
             size_t j = i;
-            while (j < edges.size() && edges[j].key == edges[i].key) ++j;
+            while (j < edges.size() && edges[j].key() == edges[i].key()) ++j;
             if (j - i == 2 && edges[i].face != edges[i + 1].face) visit(edges[i], edges[i + 1]);
             i = j;
         }
     };
     forEachManifoldPair([&](const HalfEdge& a, const HalfEdge& b) { ++starts[a.face + 1], ++starts[b.face + 1]; });
     for (size_t f = 0; f < faceCount; ++f) starts[f + 1] += starts[f];
-    std::vector<std::pair<uint32_t, bool>> neighbours(starts[faceCount]);
+    // Each neighbour as (other face << 1 | same direction): half the memory of a pair.
+    std::vector<uint32_t> neighbours(starts[faceCount]);
     std::vector<uint32_t> cursor(starts.begin(), starts.end() - 1);
     forEachManifoldPair([&](const HalfEdge& a, const HalfEdge& b) {
-        const bool same = a.forward == b.forward;
-        neighbours[cursor[a.face]++] = {b.face, same};
-        neighbours[cursor[b.face]++] = {a.face, same};
+        const uint32_t same = a.forward == b.forward;
+        neighbours[cursor[a.face]++] = uint32_t(b.face) << 1 | same;
+        neighbours[cursor[b.face]++] = uint32_t(a.face) << 1 | same;
     });
     Orientation result;
     result.flip.assign(faceCount, 0);
@@ -59,7 +60,7 @@ Orientation orientFaces(const Mesh& mesh, const std::vector<HalfEdge>& edges) {
             const uint32_t f = queue.back();
             queue.pop_back();
             for (uint32_t n = starts[f]; n < starts[f + 1]; ++n) {
-                const auto [g, same] = neighbours[n];
+                const uint32_t g = neighbours[n] >> 1, same = neighbours[n] & 1;
                 // Two faces running a shared edge the same way disagree: one of them must flip.
                 const uint8_t wanted = result.flip[f] ^ uint8_t(same);
                 if (result.component[g] == unvisited) {
@@ -95,12 +96,12 @@ size_t countDuplicateTriangles(const Mesh& mesh, const std::vector<HalfEdge>& ed
     size_t duplicates = 0;
     for (size_t i = 0; i < edges.size();) {
         size_t j = i;
-        while (j < edges.size() && edges[j].key == edges[i].key) ++j;
+        while (j < edges.size() && edges[j].key() == edges[i].key()) ++j;
         for (size_t k = i + 1; k < j; ++k) {  // the edge's first face has no earlier twin here
             const uint32_t f = edges[k].face;
             if (!simpleTriangle(mesh, f)) continue;
             const std::array<uint32_t, 3> corners = cornersOf(mesh, f);
-            if (edgeKey(corners[0], corners[1]) != edges[i].key) continue;  // f's twins are looked for along its lowest edge
+            if (edgeKey(corners[0], corners[1]) != edges[i].key()) continue;  // f's twins are looked for along its lowest edge
             for (size_t h = i; h < k; ++h)
                 if (edges[h].face != f && simpleTriangle(mesh, edges[h].face) && cornersOf(mesh, edges[h].face) == corners) {
                     ++duplicates;
@@ -172,7 +173,7 @@ ComponentEdges componentEdges(const std::vector<HalfEdge>& edges, const Orientat
     ComponentEdges result{std::vector<uint8_t>(orientation.components, 1), std::vector<uint8_t>(orientation.components, 1)};
     for (size_t i = 0; i < edges.size();) {
         size_t j = i;
-        while (j < edges.size() && edges[j].key == edges[i].key) ++j;
+        while (j < edges.size() && edges[j].key() == edges[i].key()) ++j;
         const HalfEdge& a = edges[i];
         if (j - i != 2 || a.face == edges[i + 1].face) {
             for (size_t k = i; k < j; ++k) result.closed[orientation.component[edges[k].face]] = 0;
@@ -236,7 +237,7 @@ MeshReport checkMesh(const Mesh& mesh, const FaceGeometry& faces) {
     const std::vector<HalfEdge> edges = sortedHalfEdges(mesh);
     for (size_t i = 0; i < edges.size();) {
         size_t j = i;
-        while (j < edges.size() && edges[j].key == edges[i].key) ++j;
+        while (j < edges.size() && edges[j].key() == edges[i].key()) ++j;
         if (j - i == 1) ++report.openEdges;
         else if (j - i >= 3) ++report.nonManifoldEdges;
         else if (edges[i].forward == edges[i + 1].forward) ++report.inconsistentEdges;
