@@ -5,7 +5,9 @@
 // add (a triangle left alone at a vertex ranks just after one that adds none) and then by a cone
 // score, and keeps the first best; when the best does not fit, the meshlet is closed and the next
 // one starts with it; when there is none, a k-d tree gives the unplaced triangle nearest to the
-// meshlet's centre. Here the triangles around the meshlet are kept in five buckets by that rank,
+// meshlet's centre. Here a scan stands in for the tree's few searches while it is cheap and the
+// nearest is clear (56 of 198 CGAL and assimp meshes never build the tree), and the triangles
+// around the meshlet are kept in five buckets by that rank,
 // updated as vertices join the meshlet and vertices lose their last triangles, so a step scores
 // only the lowest non-empty bucket (a few dozen triangles) and breaks ties by what the library's
 // visiting order would have met first. Everything that decides (normals, centres, the score, the
@@ -191,6 +193,13 @@ size_t kdBuild(KdNode* nodes, const float* points, size_t stride, unsigned int* 
                    count > leafSize ? spreadOf(points, stride, indices, count) : Spread{});
 }
 
+// The distance the library's search measures from `position` to a triangle's centre.
+float centreDistance(const float* point, const float* position) {
+    float distance2 = (point[0] - position[0]) * (point[0] - position[0]) + (point[1] - position[1]) * (point[1] - position[1]) +
+                      (point[2] - position[2]) * (point[2] - position[2]);
+    return sqrtf(distance2);
+}
+
 // The library's nearest-neighbour search, plus `dead` marks on subtrees found to hold only placed
 // triangles: placed triangles never come back, so skipping such a subtree changes no answer, and
 // late in the build, when most of the tree is placed, the search stops visiting it all.
@@ -204,10 +213,7 @@ void kdNearest(const KdNode* nodes, unsigned int root, const float* points, size
             unsigned int index = nodes[root + i].index;
             if (emitted[index]) continue;
             live = true;
-            const float* point = points + index * stride;
-            float distance2 = (point[0] - position[0]) * (point[0] - position[0]) + (point[1] - position[1]) * (point[1] - position[1]) +
-                              (point[2] - position[2]) * (point[2] - position[2]);
-            float distance = sqrtf(distance2);
+            float distance = centreDistance(points + index * stride, position);
             if (distance < limit) {
                 result = index;
                 limit = distance;
@@ -237,8 +243,9 @@ struct Builder {
     // vertex is (kUnused: none), which triangles are placed.
     std::vector<uint32_t> counts, offsets, around;
     std::vector<Cone> cones;
-    std::vector<KdNode> nodes;
+    std::vector<KdNode> nodes;       // empty until built (nearestUnplaced)
     std::vector<uint8_t> deadNodes;  // subtrees holding only placed triangles (kdNearest)
+    size_t placedCount = 0, scanned = 0, treesBuilt = 0;
     std::vector<uint8_t> used, emitted;
 
     // The meshlet being built.
@@ -348,7 +355,50 @@ struct Builder {
         return best;
     }
 
+    // The library's k-d tree, built the first time a scan cannot stand in for it.
+    void buildTree() {
+        std::vector<unsigned int> kdIndices(triangleCount);
+        for (size_t i = 0; i < triangleCount; ++i) kdIndices[i] = unsigned(i);
+        nodes.resize(triangleCount * 2);
+        kdBuild(nodes.data(), &cones[0].px, sizeof(Cone) / sizeof(float), kdIndices.data(), triangleCount, 8);
+        deadNodes.assign(nodes.size(), 0);
+    }
+
+    // The unplaced triangle whose centre is nearest, by a scan, when it is nearer than every other
+    // by a clear margin: then the tree's search finds it too (a point in a subtree the search skips
+    // is at least the split's distance away, which exceeds the best found, up to a few float
+    // roundings). False when it is not clear (ties, nearly equal distances, numbers that are not
+    // finite): the tree decides then, with the library's own order.
+    bool nearestByScan(const Cone& cone, uint32_t& nearest) const {
+        const float position[3] = {cone.px, cone.py, cone.pz};
+        float best = FLT_MAX, second = FLT_MAX;
+        uint32_t bestIndex = kNone;
+        for (uint32_t t = 0; t < triangleCount; ++t) {
+            if (emitted[t]) continue;
+            const float distance = centreDistance(&cones[t].px, position);
+            if (!(distance < FLT_MAX)) return false;  // not a number, or too far for the search's first limit
+            if (distance < best) second = best, best = distance, bestIndex = t;
+            else if (distance < second) second = distance;
+        }
+        if (bestIndex != kNone && second < FLT_MAX && !(double(second) > double(best) * (1.0 + 1e-5))) return false;
+        nearest = bestIndex;  // kNone: every triangle is placed, as the search would find
+        return true;
+    }
+
+    // Where the tree is not built yet, scans stand in for it while they have looked at no more
+    // than twice the triangles in all (most small meshes then never build it: their few dead ends
+    // come when most triangles are placed); the tree is built once they would look at more.
     uint32_t nearestUnplaced(const Cone& cone) {
+        if (nodes.empty()) {
+            const size_t unplaced = triangleCount - placedCount;
+            uint32_t nearest = kNone;
+            if (scanned + unplaced <= 2 * triangleCount) {
+                scanned += unplaced;
+                if (nearestByScan(cone, nearest)) return nearest;
+            }
+            buildTree();
+            ++treesBuilt;
+        }
         float position[3] = {cone.px, cone.py, cone.pz};
         unsigned int index = kNone;
         float limit = FLT_MAX;
@@ -396,6 +446,7 @@ struct Builder {
         sum.ny += cone.ny;
         sum.nz += cone.nz;
         emitted[t] = 1;
+        ++placedCount;
         // Ranks that changed: the triangles around a vertex that joined (one vertex fewer to add),
         // and the last triangle left at a corner (now alone there).
         for (size_t j = 0; j < joinedCount; ++j)
@@ -441,12 +492,6 @@ void reproduceMeshoptMeshlets(MeshoptMeshlets& result, const uint32_t* indices, 
     const float triangleAreaAverage = meshArea / float(triangleCount) * 0.5f;
     b.expectedRadius = sqrtf(triangleAreaAverage * maxTriangles) * 0.5f;
 
-    std::vector<unsigned int> kdIndices(triangleCount);
-    for (size_t i = 0; i < triangleCount; ++i) kdIndices[i] = unsigned(i);
-    b.nodes.resize(triangleCount * 2);
-    kdBuild(b.nodes.data(), &b.cones[0].px, sizeof(Cone) / sizeof(float), kdIndices.data(), triangleCount, 8);
-    b.deadNodes.assign(b.nodes.size(), 0);
-
     b.used.assign(vertexCount, kUnused);
     b.emitted.assign(triangleCount, 0);
     b.listed.assign(triangleCount, 0);
@@ -465,6 +510,7 @@ void reproduceMeshoptMeshlets(MeshoptMeshlets& result, const uint32_t* indices, 
         const uint32_t meshletBefore = b.meshlet;
         b.place(best, result.meshletOfTriangle);
         if (b.meshlet != meshletBefore && closed && !closed(b.meshlet, placed)) {
+            result.builtTree = b.treesBuilt > 0;
             result.placementOrder.resize(placed);
             result.count = b.meshlet;
             return;
@@ -473,6 +519,7 @@ void reproduceMeshoptMeshlets(MeshoptMeshlets& result, const uint32_t* indices, 
     }
     result.placementOrder.resize(placed);
     result.count = b.meshlet + (b.triangles > 0 ? 1 : 0);
+    result.builtTree = b.treesBuilt > 0;
     if (closed) closed(result.count, placed);
 }
 

@@ -21,6 +21,9 @@ struct MeshoptMeshlets {
     std::vector<uint32_t> meshletOfTriangle;  // per input triangle
     std::vector<uint32_t> placementOrder;     // the triangles in the order the builder placed them
     size_t count = 0;                         // meshlets
+    // Whether the library's k-d tree of triangle centres was built: scans stand in for its few
+    // searches where they can (same answers; the tests see both ways taken).
+    bool builtTree = false;
 };
 
 // Hears (meshlets closed, triangles placed) each time a meshlet is closed, the last one included,

@@ -97,6 +97,28 @@ TEST(MeshoptMeshlets, SameAsTheLibraryOnSmoothClosedMeshes) {
     expectSameAsLibraryAtSeveralLimits(fromMesh(testmesh::torus(1.0, 0.3, 96, 48)));
 }
 
+// The library searches its k-d tree when no triangle around the meshlet is left (the first
+// triangle, pieces' ends, pockets). Scans stand in for it while they are cheap and the nearest is
+// clear; the tree decides ties. Both ways, the same meshlets as the library's.
+TEST(MeshoptMeshlets, TheTreeIsBuiltOnlyWhereScansCannotStandIn) {
+    const auto built = [](const Case& c) {
+        expectSameAsLibrary(c, 64, 124, 1.0f);
+        return reproduceMeshoptMeshlets(c.indices.data(), c.indices.size(), &c.positions[0].x, c.positions.size(), sizeof(glm::vec3), 64,
+                                        124, 1.0f)
+            .builtTree;
+    };
+    // The first search starts at the origin. Moved off it, the torus has a clear nearest there and
+    // at its few dead ends: scans answer every search.
+    Case moved = fromMesh(testmesh::readBundledOff("torus.off"));
+    for (glm::vec3& p : moved.positions) p += glm::vec3(3.0f, 0.4f, 0.7f);
+    EXPECT_FALSE(built(moved));
+    // Centred on the origin, every centre of the torus is nearly as near as the nearest: a tie.
+    EXPECT_TRUE(built(fromMesh(testmesh::readBundledOff("torus.off"))));
+    // Forty pieces: too many searches for scans.
+    std::mt19937_64 random(5);
+    EXPECT_TRUE(built(scatteredPieces(random, 40)));
+}
+
 TEST(MeshoptMeshlets, SameAsTheLibraryOnBumpyPatchesAndPolygons) {
     std::mt19937_64 random(11);
     for (int i = 0; i < 4; ++i) expectSameAsLibraryAtSeveralLimits(fromMesh(testmesh::randomPatch(random, 20 + 7 * i, 10.0 + 25.0 * i)));
