@@ -31,10 +31,15 @@ bool viewDirectionSeesBack(const ConeOfNormals& cone, const glm::dvec3& unitView
     return cone.cullable && glm::dot(unitView, cone.axis) > cone.sinHalfAngle + kCullMargin;
 }
 
-// Same comparison for an unnormalised view vector v = point - eye: v.V1 > sin(alpha) |v|.
-static bool vectorSeesBack(const ConeOfNormals& cone, const glm::dvec3& view) {
+// Same comparison for an unnormalised view vector v = point - eye: v.V1 > sin(alpha) |v| (+ slack).
+static bool vectorSeesBack(const ConeOfNormals& cone, const glm::dvec3& view, double slack = 0.0) {
     const double length = glm::length(view);
-    return length > 0.0 && glm::dot(view, cone.axis) > (cone.sinHalfAngle + kCullMargin) * length;
+    return length > 0.0 && glm::dot(view, cone.axis) > (cone.sinHalfAngle + kCullMargin) * length + slack;
+}
+
+double apexRoundingSlack(const glm::dvec3& apex, const glm::dvec3& eyePosition) {
+    const glm::dvec3 largest = glm::max(glm::abs(apex), glm::abs(eyePosition));
+    return kApexRoundingSlack * std::max({largest.x, largest.y, largest.z});
 }
 
 bool pointSeesBackUnnormalised(const ConeOfNormals& cone, const glm::dvec3& point, const glm::dvec3& eye) {
@@ -106,9 +111,12 @@ bool cullCluster(const CullingInput& input, uint32_t cluster, const Eye& eye, Cu
                 if (!pointSeesBackUnnormalised(cone, corner, eye.position)) return false;
             return true;
         case CullTest::Sphere: return sphereSeesBack(cone, bounds.spheres[cluster], eye.position);
-        case CullTest::Apex: return vectorSeesBack(cone, bounds.apexes[cluster] - eye.position);
+        case CullTest::Apex:
+            return vectorSeesBack(cone, bounds.apexes[cluster] - eye.position, apexRoundingSlack(bounds.apexes[cluster], eye.position));
         case CullTest::MeshoptSphere: return meshoptSphereSeesBack(cone, bounds.spheres[cluster], eye.position);
-        case CullTest::Octagon: return octagonSeesBack(bounds.octagons[cluster], bounds.apexes[cluster] - eye.position);
+        case CullTest::Octagon:
+            return octagonSeesBack(bounds.octagons[cluster], bounds.apexes[cluster] - eye.position,
+                                   apexRoundingSlack(bounds.apexes[cluster], eye.position));
         case CullTest::Oracle: break;
     }
     return false;
@@ -149,12 +157,16 @@ CullExplanation explainCull(const CullingInput& input, uint32_t cluster, const E
     why.viewDotAxis = glm::dot(why.view, cone.axis);
     why.eyeInsideSphere = !eye.orthographic && !(why.distance > sphere.radius);
     why.sphereAngleDegrees = why.eyeInsideSphere ? 90.0 : glm::degrees(std::asin(sphere.radius / why.distance));
-    // The apex tests' view vector runs from the eye to the apex, not to the sphere's centre.
+    // The apex tests' view vector runs from the eye to the apex, not to the sphere's centre, and
+    // their thresholds allow for the apex's rounding (in units of the unit view's dot products).
+    double apexSlack = 0.0;
     if ((test == CullTest::Apex || test == CullTest::Octagon) && !eye.orthographic) {
         const glm::dvec3 toApex = why.apex - eye.position;
         const double length = glm::length(toApex);
         why.view = length > 0.0 ? toApex / length : glm::dvec3(0.0);
         why.viewDotAxis = glm::dot(why.view, cone.axis);
+        apexSlack = length > 0.0 ? apexRoundingSlack(why.apex, eye.position) / length : 0.0;
+        why.threshold += apexSlack;
     }
     if (test == CullTest::Sphere && !why.eyeInsideSphere && !eye.orthographic)
         why.threshold = std::cos(glm::radians(why.angleBDegrees - why.sphereAngleDegrees)) + kCullMargin;
@@ -189,11 +201,11 @@ CullExplanation explainCull(const CullingInput& input, uint32_t cluster, const E
     why.octagonEdges = octagon.edges;
     for (size_t k = 0; k < 8; ++k) {
         why.edgeDotView[k] = glm::dot(octagon.edges[k], why.view);
-        why.edgesBack += octagon.cullable && why.edgeDotView[k] > kCullMargin;
+        why.edgesBack += octagon.cullable && why.edgeDotView[k] > kCullMargin + apexSlack;
     }
     if (test == CullTest::Octagon) {
         // Each edge's g.v must pass kCullMargin: the margin is the tightest edge's.
-        why.threshold = kCullMargin;
+        why.threshold = kCullMargin + apexSlack;
         tightest = octagonTightest(octagon, why.view);
     }
     why.margin = tightest - why.threshold;

@@ -278,11 +278,11 @@ OctagonAndShare octagonAndNormalsShare(const ConeOfNormals& cone, const glm::dve
     return {octagonAround(cone, projection, hull), shareOfHull(normals, projection, hull)};
 }
 
-bool octagonSeesBack(const OctagonCone& octagon, const glm::dvec3& view) {
+bool octagonSeesBack(const OctagonCone& octagon, const glm::dvec3& view, double slack) {
     const double length = glm::length(view);
     if (!octagon.cullable || !(length > 0.0)) return false;
     for (const glm::dvec3& edge : octagon.edges)
-        if (!(glm::dot(edge, view) > kCullMargin * length)) return false;
+        if (!(glm::dot(edge, view) > kCullMargin * length + slack)) return false;
     return true;
 }
 

@@ -33,8 +33,9 @@ struct OctagonCone {
 OctagonCone octagonCone(const ConeOfNormals& cone, const glm::dvec3* normals, size_t count);
 
 // Whether `view` (from the eye to the apex, or an orthographic view direction) sees every normal
-// of the octagon from behind: g.view > kCullMargin |view| for each edge g.
-bool octagonSeesBack(const OctagonCone& octagon, const glm::dvec3& view);
+// of the octagon from behind: g.view > kCullMargin |view| + slack for each edge g (slack: the
+// apex's rounding, apexRoundingSlack in Culling.h, for a view from an eye).
+bool octagonSeesBack(const OctagonCone& octagon, const glm::dvec3& view, double slack = 0.0);
 
 // The tightest edge: min over edges of g.view / |view| (unit view), what octagonSeesBack compares
 // with kCullMargin; -1 for a cone that is not cullable or a zero view.

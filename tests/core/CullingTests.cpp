@@ -4,6 +4,9 @@
 #include "core/Culling.h"
 #include "core/Settings.h"
 
+#include <glm/gtc/matrix_transform.hpp>
+#include <random>
+
 using namespace conescope;
 
 namespace {
@@ -166,4 +169,56 @@ TEST(ClusterBounds, ManyClustersAreBoundedOnAllCoresTheSameAsOneByOne) {
             EXPECT_EQ(bounds.apexes[c], one.apexes[0]);
         }
     }
+}
+
+// A cluster a few nanometres across placed 2.9e19 from the origin (found by fuzz_mesh_ingestion):
+// its world positions are floats, so every corner gets the same z, while its normals, made from
+// the untranslated geometry, keep their tilt. Moving the apex behind the face planes then moved it
+// by less than a coordinate's rounding, and the apex and octagon tests culled from an eye beside
+// the cluster that sees a face's front. No test may cull there.
+TEST(Culling, ATinyClusterFarFromTheOriginIsNeverCulledFromBesideIt) {
+    Mesh mesh;
+    const float s = 1e-9f;
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) {
+            const float x = s * float(i), y = s * float(j);
+            mesh.positions.emplace_back(x, y, 0.05f * x + 0.02f * y * float(j) / 3.0f);  // a gentle fold
+        }
+    for (uint32_t i = 0; i < 3; ++i)
+        for (uint32_t j = 0; j < 3; ++j) {
+            const uint32_t a = i * 4 + j;
+            mesh.addFace({a, a + 4, a + 5});
+            mesh.addFace({a, a + 5, a + 1});
+        }
+    mesh.model = glm::translate(glm::dmat4(1.0), glm::dvec3(0.0, 0.0, -2.9229375e19));
+    const std::vector<glm::vec3> world = worldPositions(mesh);
+    ASSERT_EQ(world.front().z, world.back().z);  // the fold is below the float's resolution there
+    const FaceGeometry faces = computeFaceGeometry(mesh);
+    const Partition partition{std::vector<uint32_t>(mesh.faceCount(), 0), 1};
+    std::mt19937_64 random(3);
+    std::uniform_real_distribution<double> around(-1.0 * s, 4.0 * s);
+    size_t eyesSeeingAFront = 0;
+    for (ConeMethod cone : allConeMethods()) {
+        const ClusterBounds bounds = computeClusterBounds(mesh, world, faces, partition, cone);
+        const CullingInput input{mesh, world, faces, bounds};
+        // Far behind it, where every face shows its back, the apex tests still cull.
+        const Eye behind = Eye::perspective(glm::dvec3(0.0, 0.0, double(world[0].z) - 1e12));
+        for (Facing facing : classifyFaces(mesh, world, faces, behind)) ASSERT_EQ(facing, Facing::Back);
+        if (bounds.cones[0].cullable) {
+            EXPECT_TRUE(cullCluster(input, 0, behind, CullTest::Apex)) << toString(cone);
+            EXPECT_TRUE(cullCluster(input, 0, behind, CullTest::Octagon)) << toString(cone);
+        }
+        for (int k = 0; k < 2000; ++k) {
+            // Eyes beside the cluster, in the plane its corners share, and a little off it.
+            const double off = k % 4 == 0 ? 0.0 : around(random) * (k % 2 ? 1.0 : -1.0);
+            const Eye eye = Eye::perspective(glm::dvec3(around(random), around(random), double(world[0].z) + off));
+            size_t front = 0;
+            for (Facing facing : classifyFaces(mesh, world, faces, eye)) front += facing == Facing::Front;
+            if (front == 0) continue;
+            ++eyesSeeingAFront;
+            for (CullTest test : allCullTests())
+                EXPECT_FALSE(cullCluster(input, 0, eye, test)) << toString(cone) << " / " << toString(test) << ", eye " << k;
+        }
+    }
+    EXPECT_GT(eyesSeeingAFront, 5000u);
 }
