@@ -40,7 +40,7 @@ void runCompare(const CompareOptions& options) {
     else if (format == "text")
         writeComparisonText(runA, runB, comparison, base, text);
     else
-        text << comparisonDocument(runA, runB, comparison, options.detail).dump(2) << '\n';
+        writeComparisonJson(runA, runB, comparison, options.detail, text);
     writeText(options.output, text.str());
     if (!options.output.empty()) note(options.quiet, "wrote " + options.output);
 }

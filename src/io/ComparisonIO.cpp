@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "core/SettingsSchema.h"
+#include "io/JsonWriter.h"
 
 namespace conescope {
 
@@ -62,9 +63,20 @@ nlohmann::json comparisonToJson(const Comparison& comparison) {
             {"views", std::move(views)}};
 }
 
-nlohmann::json comparisonDocument(const RunStatistics& a, const RunStatistics& b, const Comparison& comparison,
-                                  const StatisticsDetail& detail) {
-    return {{"a", statisticsToJson(a, detail)}, {"b", statisticsToJson(b, detail)}, {"diff", comparisonToJson(comparison)}};
+void writeComparisonJson(const RunStatistics& a, const RunStatistics& b, const Comparison& comparison,
+                         const StatisticsDetail& detail, std::ostream& out) {
+    std::string text;
+    JsonWriter json(text);
+    json.beginObject();
+    json.key("a");
+    writeStatistics(json, a, detail);
+    json.key("b");
+    writeStatistics(json, b, detail);
+    json.key("diff");
+    json.value(comparisonToJson(comparison));
+    json.endObject();
+    text += '\n';
+    out << text;
 }
 
 void writeComparisonCsv(const Comparison& comparison, std::ostream& out) {

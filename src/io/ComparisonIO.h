@@ -16,9 +16,11 @@ namespace conescope {
 // The `diff` object: totals over the views, the cluster counts and their warning, and per view.
 nlohmann::json comparisonToJson(const Comparison& comparison);
 
-// {"a": statisticsToJson(a), "b": statisticsToJson(b), "diff": comparisonToJson(comparison)}.
-nlohmann::json comparisonDocument(const RunStatistics& a, const RunStatistics& b, const Comparison& comparison,
-                                  const StatisticsDetail& detail = {});
+// {"a": statisticsToJson(a), "b": statisticsToJson(b), "diff": comparisonToJson(comparison)},
+// pretty-printed as dump(2) would and followed by a newline; each side written as it is made
+// (writeStatistics), so neither becomes a tree.
+void writeComparisonJson(const RunStatistics& a, const RunStatistics& b, const Comparison& comparison,
+                         const StatisticsDetail& detail, std::ostream& out);
 
 // One row per view: view,eye_x,eye_y,eye_z,back_facing_triangles,triangles_culled_only_a,
 // triangles_culled_only_b,triangles_culled_both,efficiency_a,efficiency_b.

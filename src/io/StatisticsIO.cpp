@@ -244,6 +244,8 @@ void writeSettings(JsonWriter& json, const Settings& settings) {
     members.write(json);
 }
 
+}  // namespace
+
 void writeStatistics(JsonWriter& json, const RunStatistics& run, const StatisticsDetail& detail) {
     Members mesh;
     mesh.add("name", [&run](JsonWriter& j) { j.value(nlohmann::json(run.meshName)); });
@@ -266,6 +268,8 @@ void writeStatistics(JsonWriter& json, const RunStatistics& run, const Statistic
     });
     top.write(json);
 }
+
+namespace {
 
 // The tree of what `write` writes: the one layout of each document is the writer's.
 template <typename Write>

@@ -16,6 +16,8 @@
 
 namespace conescope {
 
+class JsonWriter;
+
 // A number as every CSV here writes it: the shortest text that reads back to the same value, with
 // '.' whatever the locale.
 std::string csvNumber(double value);
@@ -40,6 +42,9 @@ nlohmann::json settingsToJson(const Settings& settings);
 // The document as a tree, for callers that nest or query it. The trees here are read back from the
 // text the writer below makes (JsonWriter.h), so each document has one layout in one place.
 nlohmann::json statisticsToJson(const RunStatistics& run, const StatisticsDetail& detail = {});
+
+// The document into a writer, for documents that hold it (compare's "a" and "b").
+void writeStatistics(JsonWriter& json, const RunStatistics& run, const StatisticsDetail& detail = {});
 
 // Pretty-printed JSON followed by a newline, written as it is made: the same text as
 // statisticsToJson(run, detail).dump(2) without building the tree.

@@ -23,7 +23,10 @@ nlohmann::json runCompareJson(const std::vector<std::string>& arguments, std::st
     const CliRun run = runCli(command);
     EXPECT_EQ(run.exitCode, 0) << run.err;
     if (err) *err = run.err;
-    return nlohmann::json::parse(run.out);
+    const nlohmann::json json = nlohmann::json::parse(run.out);
+    // Each side is written as it is made, never as a tree: the text must still be the tree's layout.
+    EXPECT_EQ(run.out, json.dump(2) + "\n");
+    return json;
 }
 
 void expectSame(nlohmann::json actual, nlohmann::json expected) {
