@@ -5,8 +5,9 @@
 // add (a triangle left alone at a vertex ranks just after one that adds none) and then by a cone
 // score, and keeps the first best; when the best does not fit, the meshlet is closed and the next
 // one starts with it; when there is none, a k-d tree gives the unplaced triangle nearest to the
-// meshlet's centre. Here a scan stands in for the tree's few searches while it is cheap and the
-// nearest is clear (56 of 198 CGAL and assimp meshes never build the tree), and the triangles
+// meshlet's centre. Here a scan stands in for the tree's few searches while it is cheap, and
+// where centres are exactly as near only the nodes on the search's way to the first are made (141
+// of 205 CGAL, assimp and bundled meshes never build the tree), and the triangles
 // around the meshlet are kept in five buckets by that rank,
 // updated as vertices join the meshlet and vertices lose their last triangles, so a step scores
 // only the lowest non-empty bucket (a few dozen triangles) and breaks ties by what the library's
@@ -27,6 +28,9 @@ namespace {
 constexpr uint32_t kNone = ~0u;
 constexpr uint8_t kUnused = 0xff;  // used[v]: the vertex is not in the meshlet
 constexpr int kRanks = 5;          // 0: adds no vertex, 1: left alone at a vertex, 2..4: adds 1..3
+// Below this distance a scan does not stand in for the tree: squares of its terms could fall below
+// the float range, where the rounded square root of a square may be less than the number.
+constexpr float kLeastScannedDistance = 0x1p-60f;
 
 struct Cone {
     float px, py, pz;
@@ -245,7 +249,7 @@ struct Builder {
     std::vector<Cone> cones;
     std::vector<KdNode> nodes;       // empty until built (nearestUnplaced)
     std::vector<uint8_t> deadNodes;  // subtrees holding only placed triangles (kdNearest)
-    size_t placedCount = 0, scanned = 0, treesBuilt = 0;
+    size_t placedCount = 0, scanned = 0, searched = 0, treesBuilt = 0;
     std::vector<uint8_t> used, emitted;
 
     // The meshlet being built.
@@ -364,25 +368,70 @@ struct Builder {
         deadNodes.assign(nodes.size(), 0);
     }
 
-    // The unplaced triangle whose centre is nearest, by a scan, when it is nearer than every other
-    // by a clear margin: then the tree's search finds it too (a point in a subtree the search skips
-    // is at least the split's distance away, which exceeds the best found, up to a few float
-    // roundings). False when it is not clear (ties, nearly equal distances, numbers that are not
-    // finite): the tree decides then, with the library's own order.
-    bool nearestByScan(const Cone& cone, uint32_t& nearest) const {
+    // The unplaced triangle the tree's search would find, by a scan: the search finds the nearest
+    // centre, as it never skips a subtree holding it (the split's distance from the position, |delta|,
+    // is at most the centre's distance along that axis, both rounded alike, and the rounded square
+    // root of a sum of rounded squares is at least that, so |delta| <= limit when the search gets
+    // there); among centres exactly as near, the search's order decides (firstInSearchOrder, while
+    // its searches have split no more than four times the triangles in all). False
+    // when distances are not finite, or so small that squares of their terms could lose precision
+    // below the float range: the tree decides then.
+    bool nearestByScan(const Cone& cone, uint32_t& nearest) {
         const float position[3] = {cone.px, cone.py, cone.pz};
-        float best = FLT_MAX, second = FLT_MAX;
-        uint32_t bestIndex = kNone;
+        float best = FLT_MAX;
+        uint32_t bestIndex = kNone, ties = 0;
         for (uint32_t t = 0; t < triangleCount; ++t) {
             if (emitted[t]) continue;
             const float distance = centreDistance(&cones[t].px, position);
             if (!(distance < FLT_MAX)) return false;  // not a number, or too far for the search's first limit
-            if (distance < best) second = best, best = distance, bestIndex = t;
-            else if (distance < second) second = distance;
+            if (distance < best) best = distance, bestIndex = t, ties = 0;
+            else if (distance == best) ++ties;
         }
-        if (bestIndex != kNone && second < FLT_MAX && !(double(second) > double(best) * (1.0 + 1e-5))) return false;
         nearest = bestIndex;  // kNone: every triangle is placed, as the search would find
+        if (bestIndex == kNone || ties == 0) return bestIndex == kNone || best >= kLeastScannedDistance;
+        if (best < kLeastScannedDistance || searched > 4 * triangleCount) return false;
+        nearest = firstInSearchOrder(position, best);
         return true;
+    }
+
+    // Of the unplaced centres at exactly `distance` from `position`, the one the tree's search meets
+    // first: it visits the nearer side of each split first and a leaf's centres in order. Only the
+    // nodes on the way to it are made, as the library would make them (each node's points split at
+    // their mean on the axis of largest spread, in the order its parent's split left them).
+    uint32_t firstInSearchOrder(const float* position, float distance) {
+        constexpr size_t kLeafSize = 8;
+        const float* points = &cones[0].px;
+        constexpr size_t stride = sizeof(Cone) / sizeof(float);
+        auto tied = [&](unsigned int t) { return !emitted[t] && centreDistance(points + t * stride, position) == distance; };
+        std::vector<unsigned int> order(triangleCount);
+        for (size_t i = 0; i < triangleCount; ++i) order[i] = unsigned(i);
+        // Returns the first tied centre of the node holding order[begin, begin + count), or kNone.
+        auto search = [&](auto& self, size_t begin, size_t count) -> uint32_t {
+            unsigned int* indices = order.data() + begin;
+            searched += count;
+            size_t middle = 0;
+            float split = 0;
+            unsigned int axis = 0;
+            if (count > kLeafSize) {
+                const Spread spread = spreadOf(points, stride, indices, count);
+                const float* vars = spread.vars;
+                axis = vars[0] >= vars[1] && vars[0] >= vars[2] ? 0 : vars[1] >= vars[2] ? 1 : 2;
+                split = spread.mean[axis];
+                middle = kdPartition(indices, count, points, stride, axis, split);
+            }
+            if (count <= kLeafSize || middle <= kLeafSize / 2 || middle >= count - kLeafSize / 2) {
+                for (size_t i = 0; i < count; ++i)
+                    if (tied(indices[i])) return indices[i];
+                return kNone;
+            }
+            const bool leftFirst = position[axis] - split <= 0;
+            const size_t firstBegin = leftFirst ? begin : begin + middle, firstCount = leftFirst ? middle : count - middle;
+            const size_t secondBegin = leftFirst ? begin + middle : begin, secondCount = count - firstCount;
+            if (std::any_of(order.begin() + long(firstBegin), order.begin() + long(firstBegin + firstCount), tied))
+                return self(self, firstBegin, firstCount);
+            return self(self, secondBegin, secondCount);
+        };
+        return search(search, 0, triangleCount);
     }
 
     // Where the tree is not built yet, scans stand in for it while they have looked at no more

@@ -98,8 +98,9 @@ TEST(MeshoptMeshlets, SameAsTheLibraryOnSmoothClosedMeshes) {
 }
 
 // The library searches its k-d tree when no triangle around the meshlet is left (the first
-// triangle, pieces' ends, pockets). Scans stand in for it while they are cheap and the nearest is
-// clear; the tree decides ties. Both ways, the same meshlets as the library's.
+// triangle, pieces' ends, pockets). Scans stand in for it while they are cheap: the nearest centre,
+// or among centres exactly as near the one the search meets first, found by making only the nodes
+// on its way. Both ways, the same meshlets as the library's.
 TEST(MeshoptMeshlets, TheTreeIsBuiltOnlyWhereScansCannotStandIn) {
     const auto built = [](const Case& c) {
         expectSameAsLibrary(c, 64, 124, 1.0f);
@@ -107,16 +108,59 @@ TEST(MeshoptMeshlets, TheTreeIsBuiltOnlyWhereScansCannotStandIn) {
                                         124, 1.0f)
             .builtTree;
     };
-    // The first search starts at the origin. Moved off it, the torus has a clear nearest there and
-    // at its few dead ends: scans answer every search.
+    // The first search starts at the origin. Moved off it, the torus has one nearest centre there
+    // and at its few dead ends.
     Case moved = fromMesh(testmesh::readBundledOff("torus.off"));
     for (glm::vec3& p : moved.positions) p += glm::vec3(3.0f, 0.4f, 0.7f);
     EXPECT_FALSE(built(moved));
-    // Centred on the origin, every centre of the torus is nearly as near as the nearest: a tie.
-    EXPECT_TRUE(built(fromMesh(testmesh::readBundledOff("torus.off"))));
+    // Centred on the origin, 32 centres of its inner ring are exactly as near: the search's order
+    // decides, and no tree is needed for it.
+    EXPECT_FALSE(built(fromMesh(testmesh::readBundledOff("torus.off"))));
     // Forty pieces: too many searches for scans.
     std::mt19937_64 random(5);
     EXPECT_TRUE(built(scatteredPieces(random, 40)));
+}
+
+// Regular grids, flat, bowl-shaped or bumpy, centred on the origin or copied side by side, their
+// triangles shuffled or not: many centres exactly as near as the nearest at the first search and
+// at pieces' ends, where the tree's order of search picks one.
+TEST(MeshoptMeshlets, SameAsTheLibraryWhereCentresAreExactlyAsNear) {
+    std::mt19937_64 random(42);
+    for (int trial = 0; trial < 40; ++trial) {
+        SCOPED_TRACE(testing::Message() << "trial " << trial);
+        Case c;
+        const int kind = trial % 4, columns = 3 + int(random() % 24), rows = 3 + int(random() % 24);
+        const float step = random() % 2 ? 1.0f : 0.1f;
+        const int copies = kind == 2 ? 2 + int(random() % 12) : 1;
+        for (int copy = 0; copy < copies; ++copy) {
+            const uint32_t first = uint32_t(c.positions.size());
+            const glm::vec3 offset = kind == 2 ? glm::vec3(float(int(random() % 11) - 5) * 5.0f, float(int(random() % 11) - 5) * 5.0f,
+                                                           float(random() % 3))
+                                               : glm::vec3(0.0f);
+            for (int y = 0; y <= rows; ++y)
+                for (int x = 0; x <= columns; ++x) {
+                    glm::vec3 p(step * (float(x) - float(columns) / 2.0f), step * (float(y) - float(rows) / 2.0f), 0.0f);
+                    if (kind == 1) p.z = 0.3f * step * (p.x * p.x + p.y * p.y);
+                    if (kind == 3) p.z = 0.1f * float(random() % 3);
+                    c.positions.push_back(p + offset);
+                }
+            for (int y = 0; y < rows; ++y)
+                for (int x = 0; x < columns; ++x) {
+                    const uint32_t a = first + uint32_t(y * (columns + 1) + x), b = a + 1, d = a + uint32_t(columns) + 1, e = d + 1;
+                    if ((x + y + copy) % 2) c.indices.insert(c.indices.end(), {a, b, e, a, e, d});
+                    else c.indices.insert(c.indices.end(), {a, b, d, b, e, d});
+                }
+        }
+        if (random() % 2) {
+            for (size_t i = c.indices.size() / 3 - 1; i > 0; --i) {
+                const size_t j = random() % (i + 1);
+                for (int k = 0; k < 3; ++k) std::swap(c.indices[i * 3 + k], c.indices[j * 3 + k]);
+            }
+        }
+        expectSameAsLibrary(c, 64, 124, 1.0f);
+        expectSameAsLibrary(c, 32, 64, 0.5f);
+        expectSameAsLibrary(c, 3, 4, 1.0f);
+    }
 }
 
 TEST(MeshoptMeshlets, SameAsTheLibraryOnBumpyPatchesAndPolygons) {
