@@ -6,7 +6,7 @@
 // score, and keeps the first best; when the best does not fit, the meshlet is closed and the next
 // one starts with it; when there is none, a k-d tree gives the unplaced triangle nearest to the
 // meshlet's centre. Here a scan stands in for the tree's few searches while it is cheap, and
-// where centres are exactly as near only the nodes on the search's way to the first are made (141
+// where centres are exactly as near only the nodes on the search's way to the first are made (191
 // of 205 CGAL, assimp and bundled meshes never build the tree), and the triangles
 // around the meshlet are kept in five buckets by that rank,
 // updated as vertices join the meshlet and vertices lose their last triangles, so a step scores
