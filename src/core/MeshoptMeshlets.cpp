@@ -52,6 +52,16 @@ float meshletScore(float distance2, float spread, float coneWeight, float expect
     return (1 + sqrtf(distance2) / expectedRadius * (1 - coneWeight)) * coneClamped;
 }
 
+// The same at cone weight 1 (every default run), where the distance's term is multiplied by 0: the
+// score is the clamped cone term, exactly, whenever that term is finite (distance2 finite and the
+// expected radius at least kLeastPlainRadius). No square root or division per candidate.
+float coneScore(float spread) {
+    float cone = 1.f - spread;
+    return cone < 1e-3f ? 1e-3f : cone;
+}
+// sqrt(FLT_MAX) / this is below FLT_MAX: the distance's term stays finite for finite distances.
+constexpr float kLeastPlainRadius = 1e-19f;
+
 Cone meshletCone(const Cone& acc, unsigned int triangleCount) {
     Cone result = acc;
     float centerScale = triangleCount == 0 ? 0.f : 1.f / float(triangleCount);
@@ -248,6 +258,7 @@ struct Builder {
     size_t triangleCount;
     size_t maxVertices, maxTriangles;
     float coneWeight, expectedRadius;
+    bool distanceFree = false;  // scoreOf is coneScore (cone weight 1, a radius the term keeps finite)
 
     // The library's state: the unplaced triangles around each vertex (counts[v] of them from
     // offsets[v]; placed ones are swapped out with the last), which vertex of the meshlet each
@@ -289,6 +300,7 @@ struct Builder {
         const Cone& tri = cones[t];
         float distance2 = (tri.px - cone.px) * (tri.px - cone.px) + (tri.py - cone.py) * (tri.py - cone.py) + (tri.pz - cone.pz) * (tri.pz - cone.pz);
         float spread = tri.nx * cone.nx + tri.ny * cone.ny + tri.nz * cone.nz;
+        if (distanceFree) return distance2 <= FLT_MAX ? coneScore(spread) : NAN;
         return meshletScore(distance2, spread, coneWeight, expectedRadius);
     }
 
@@ -547,6 +559,7 @@ void reproduceMeshoptMeshlets(MeshoptMeshlets& result, const uint32_t* indices, 
     const float meshArea = triangleCones(b.cones.data(), indices, triangleCount, positions, positionStride / sizeof(float));
     const float triangleAreaAverage = meshArea / float(triangleCount) * 0.5f;
     b.expectedRadius = sqrtf(triangleAreaAverage * maxTriangles) * 0.5f;
+    b.distanceFree = coneWeight == 1.f && b.expectedRadius >= kLeastPlainRadius;
 
     b.used.assign(vertexCount, kUnused);
     b.emitted.assign(triangleCount, 0);

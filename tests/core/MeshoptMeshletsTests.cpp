@@ -218,6 +218,18 @@ TEST(MeshoptMeshlets, SameAsTheLibraryWhereScoresAreNotNumbers) {
     for (glm::vec3& p : flat.positions) p = glm::vec3(1.f, 2.f, 3.f);
     expectSameAsLibrary(flat, 64, 124, 1.0f);
     expectSameAsLibrary(flat, 64, 124, 0.5f);
+    // Tiny meshes, placed off the origin: at cone weight 1 the distance's term is multiplied by 0,
+    // which the reproduction skips only while the term stays finite; with an expected radius near
+    // or below 1e-19 a distance over it can overflow, and the product is NaN.
+    for (float scale : {1e-17f, 1e-19f, 1e-20f, 1e-22f}) {
+        Case tiny = fromMesh(testmesh::icosphere(2));
+        for (glm::vec3& p : tiny.positions) p = p * scale + glm::vec3(0.5f, 0.0f, 0.0f);
+        expectSameAsLibrary(tiny, 64, 124, 1.0f);
+    }
+    // Zero area but not one point (every triangle on a line): distance / 0 is infinite.
+    Case line = fromMesh(testmesh::icosphere(2));
+    for (glm::vec3& p : line.positions) p = glm::vec3(p.x, 0.0f, 0.0f);
+    expectSameAsLibrary(line, 64, 124, 1.0f);
 }
 
 TEST(MeshoptMeshlets, PartitionOfFacesIsTheLibrarysOnMeshesWithoutDuplicateFaces) {
