@@ -53,14 +53,24 @@ float meshletScore(float distance2, float spread, float coneWeight, float expect
 }
 
 // The same at cone weight 1 (every default run), where the distance's term is multiplied by 0: the
-// score is the clamped cone term, exactly, whenever that term is finite (distance2 finite and the
-// expected radius at least kLeastPlainRadius). No square root or division per candidate.
+// score is the clamped cone term, exactly, whenever that term is finite. It is when every centre is
+// finite and within kFarthestPlainCentre of the origin (a meshlet's centre, a mean of theirs, is
+// too, so a squared distance stays below FLT_MAX) and the expected radius is at least
+// kLeastPlainRadius. No distance, square root or division per candidate then.
 float coneScore(float spread) {
     float cone = 1.f - spread;
     return cone < 1e-3f ? 1e-3f : cone;
 }
 // sqrt(FLT_MAX) / this is below FLT_MAX: the distance's term stays finite for finite distances.
 constexpr float kLeastPlainRadius = 1e-19f;
+// Three squared differences of coordinates this large sum to about 5e37, below FLT_MAX.
+constexpr float kFarthestPlainCentre = 1e18f;
+
+bool centresWithin(const Cone* triangles, size_t count, float reach) {
+    for (size_t i = 0; i < count; ++i)
+        if (!(std::fabs(triangles[i].px) <= reach && std::fabs(triangles[i].py) <= reach && std::fabs(triangles[i].pz) <= reach)) return false;
+    return true;
+}
 
 Cone meshletCone(const Cone& acc, unsigned int triangleCount) {
     Cone result = acc;
@@ -258,7 +268,7 @@ struct Builder {
     size_t triangleCount;
     size_t maxVertices, maxTriangles;
     float coneWeight, expectedRadius;
-    bool distanceFree = false;  // scoreOf is coneScore (cone weight 1, a radius the term keeps finite)
+    bool distanceFree = false;  // scoreOf is coneScore (cone weight 1, the distance's term always finite)
 
     // The library's state: the unplaced triangles around each vertex (counts[v] of them from
     // offsets[v]; placed ones are swapped out with the last), which vertex of the meshlet each
@@ -300,7 +310,7 @@ struct Builder {
         const Cone& tri = cones[t];
         float distance2 = (tri.px - cone.px) * (tri.px - cone.px) + (tri.py - cone.py) * (tri.py - cone.py) + (tri.pz - cone.pz) * (tri.pz - cone.pz);
         float spread = tri.nx * cone.nx + tri.ny * cone.ny + tri.nz * cone.nz;
-        if (distanceFree) return distance2 <= FLT_MAX ? coneScore(spread) : NAN;
+        if (distanceFree) return coneScore(spread);
         return meshletScore(distance2, spread, coneWeight, expectedRadius);
     }
 
@@ -559,7 +569,8 @@ void reproduceMeshoptMeshlets(MeshoptMeshlets& result, const uint32_t* indices, 
     const float meshArea = triangleCones(b.cones.data(), indices, triangleCount, positions, positionStride / sizeof(float));
     const float triangleAreaAverage = meshArea / float(triangleCount) * 0.5f;
     b.expectedRadius = sqrtf(triangleAreaAverage * maxTriangles) * 0.5f;
-    b.distanceFree = coneWeight == 1.f && b.expectedRadius >= kLeastPlainRadius;
+    b.distanceFree = coneWeight == 1.f && b.expectedRadius >= kLeastPlainRadius &&
+                     centresWithin(b.cones.data(), triangleCount, kFarthestPlainCentre);
 
     b.used.assign(vertexCount, kUnused);
     b.emitted.assign(triangleCount, 0);

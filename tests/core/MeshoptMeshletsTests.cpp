@@ -208,7 +208,11 @@ TEST(MeshoptMeshlets, SameAsTheLibraryWhereScoresAreNotNumbers) {
     // Centres near the float range overflow to infinity; the scores become NaN and the library's
     // order of comparison decides (at 3e38 even its k-d tree finds nothing and it places no
     // triangle at all). And a mesh of zero area: the expected radius is 0.
-    for (float scale : {1e38f, 3e38f}) {
+    for (float scale : {1e19f, 1e20f, 1e22f, 1e38f, 3e38f}) {
+        // Coarse and fine: neighbouring centres of the coarse one are 1e19 and more apart.
+        Case coarse = fromMesh(testmesh::icosphere(0));
+        for (glm::vec3& p : coarse.positions) p *= scale;
+        expectSameAsLibrary(coarse, 64, 124, 1.0f);
         Case huge = fromMesh(testmesh::icosphere(2));
         for (glm::vec3& p : huge.positions) p *= scale;
         expectSameAsLibrary(huge, 64, 124, 1.0f);
@@ -225,6 +229,20 @@ TEST(MeshoptMeshlets, SameAsTheLibraryWhereScoresAreNotNumbers) {
         Case tiny = fromMesh(testmesh::icosphere(2));
         for (glm::vec3& p : tiny.positions) p = p * scale + glm::vec3(0.5f, 0.0f, 0.0f);
         expectSameAsLibrary(tiny, 64, 124, 1.0f);
+    }
+    // A strip of slivers 1e19 long and 1 wide, bent: normals and areas stay finite, while squared
+    // distances between neighbouring centres overflow (the score is then NaN; a reproduction that
+    // dropped the distance there would pick by the cone alone).
+    std::mt19937_64 random(3);
+    std::uniform_real_distribution<float> bend(-1.0f, 1.0f);
+    for (float spacing : {1e19f, 1e20f}) {
+        Case strip;
+        for (int i = 0; i <= 60; ++i) {
+            strip.positions.push_back(glm::vec3(float(i) * spacing, 0.0f, bend(random)));
+            strip.positions.push_back(glm::vec3(float(i) * spacing, 1.0f, bend(random)));
+        }
+        for (uint32_t a = 0; a < 120; a += 2) strip.indices.insert(strip.indices.end(), {a, a + 2, a + 1, a + 1, a + 2, a + 3});
+        expectSameAsLibrary(strip, 64, 124, 1.0f);
     }
     // Zero area but not one point (every triangle on a line): distance / 0 is infinite.
     Case line = fromMesh(testmesh::icosphere(2));
