@@ -57,12 +57,15 @@ void runStats(const StatsOptions& options) {
         return;
     }
     // The whole text is made before anything is written, so stdout never gets half a document.
-    std::ostringstream text;
-    if (format == "text")
-        writeStatisticsText(run, text);
-    else
-        writeStatisticsJson(run, text, options.detail);
-    writeText(options.output, text.str());
+    std::string text;
+    if (format == "text") {
+        std::ostringstream out;
+        writeStatisticsText(run, out);
+        text = out.str();
+    } else {
+        text = statisticsJsonText(run, options.detail);
+    }
+    writeText(options.output, text);
     if (!options.output.empty()) note(options.quiet, "wrote " + options.output);
 }
 

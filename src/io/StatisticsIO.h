@@ -49,6 +49,9 @@ void writeStatistics(JsonWriter& json, const RunStatistics& run, const Statistic
 // Pretty-printed JSON followed by a newline, written as it is made: the same text as
 // statisticsToJson(run, detail).dump(2) without building the tree.
 void writeStatisticsJson(const RunStatistics& run, std::ostream& out, const StatisticsDetail& detail = {});
+// The same text, in a string sized for it at the start (no copies as it grows; the CLI writes it
+// out as it is).
+std::string statisticsJsonText(const RunStatistics& run, const StatisticsDetail& detail = {});
 
 // The CSV tables: one row per (cone, test); per view of each; per cluster of each. Every row starts
 // with cone,test so the tables join on them.
