@@ -1,6 +1,7 @@
 #include "MeshletStream.h"
 
 #include <algorithm>
+#include <chrono>
 #include <utility>
 
 #include <meshoptimizer.h>
@@ -25,6 +26,9 @@ constexpr size_t kFacesPerPart = 640;
 constexpr size_t kMostShares = 64;
 
 constexpr bool kReproduced = MESHOPTIMIZER_VERSION == kReproducedMeshoptVersion;
+
+// How long finishWork watches for the other thread's end before it waits to be woken.
+constexpr std::chrono::microseconds kWorkWatch(300);
 
 // (face, meshlet) pairs by face, each face once: a radix sort on the face's bytes, as many as the
 // face count needs (two below 65,536 faces), linear where a comparison sort was a tenth of a
@@ -85,6 +89,7 @@ MeshletStream::MeshletStream(std::shared_ptr<const Mesh> mesh, const MeshletLimi
         } catch (...) {
             workError_ = std::current_exception();
         }
+        workFinished_.store(true, std::memory_order_release);
         lock.lock();
         workDone_ = true;
         changed_.notify_all();
@@ -218,9 +223,22 @@ void MeshletStream::runAfterwards(std::function<void()> work) {
 }
 
 void MeshletStream::finishWork() {
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        if (!work_) return;
+    }
+    // The other thread is on its last part, which takes a small mesh's part a tenth of a
+    // millisecond: watched for that long, its end is seen at once, where waking from a wait took
+    // about 0.04 ms here. The watch yields the core, in case both threads share one.
+    const auto watchUntil = std::chrono::steady_clock::now() + kWorkWatch;
+    for (unsigned i = 1; !workFinished_.load(std::memory_order_acquire); ++i) {
+        if (i % 64 == 0) {
+            if (std::chrono::steady_clock::now() > watchUntil) break;
+            std::this_thread::yield();
+        }
+    }
     std::unique_lock<std::mutex> lock(mutex_);
-    if (!work_) return;
-    changed_.wait(lock, [this] { return workDone_; });
+    changed_.wait(lock, [this] { return workDone_ || workFinished_.load(std::memory_order_acquire); });
     if (workError_) std::rethrow_exception(workError_);
 }
 

@@ -8,6 +8,7 @@
 // (MeshoptMeshlets.h), the library builds them and they come as one part.
 #pragma once
 
+#include <atomic>
 #include <condition_variable>
 #include <cstddef>
 #include <cstdint>
@@ -99,6 +100,7 @@ private:
     std::condition_variable changed_;
     size_t partsMade_ = 0;
     bool stopping_ = false, working_ = false, workDone_ = false;
+    std::atomic<bool> workFinished_{false};  // workDone_, readable without the lock (finishWork watches it)
     std::function<void()> work_;
     std::exception_ptr buildError_, workError_;
     CoreSplit cores_;

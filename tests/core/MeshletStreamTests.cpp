@@ -4,6 +4,9 @@
 // builds stops.
 #include <gtest/gtest.h>
 
+#include <atomic>
+#include <chrono>
+
 #include <map>
 #include <random>
 #include <set>
@@ -135,6 +138,15 @@ TEST(MeshletStream, WorkRunsOnTheStreamsThreadAfterTheMeshletsAndPassesItsErrorO
     EXPECT_THROW(failing.finishWork(), std::runtime_error);
     MeshletStream idle(shared(testmesh::icosphere(2)), {64, 124}, 1);
     idle.finishWork();  // no work handed over: nothing to wait for
+    // Work that outlasts finishWork's watch: it then waits to be woken, and returns only after.
+    MeshletStream slow(shared(testmesh::icosphere(2)), {64, 124}, 1);
+    std::atomic<bool> finished{false};
+    slow.runAfterwards([&] {
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+        finished = true;
+    });
+    slow.finishWork();
+    EXPECT_TRUE(finished);
 }
 
 TEST(MeshletStream, LimitsMeshoptimizerRefusesComeBackFromEveryPart) {
