@@ -4,25 +4,13 @@
 #include <new>
 #include <vector>
 
-#include <vtkAlgorithm.h>
-#include <vtkErrorCode.h>
-#include <vtkExecutive.h>
-#include <vtkPolyData.h>
-#include <vtkPolyDataReader.h>
-#include <vtkSTLReader.h>
-#include <vtkSmartPointer.h>
-#include <vtkXMLPolyDataReader.h>
-
-#include "io/ClassicLocale.h"
 #include "io/FileChecks.h"
 #include "io/GltfReader.h"
-#include "io/HeaderChecks.h"
 #include "io/ObjFormat.h"
 #include "io/OffFormat.h"
 #include "io/PlyFormat.h"
-#include "io/PolyDataConversion.h"
 #include "io/PositionMerging.h"
-#include "io/VtkMessageCapture.h"
+#include "io/VtkFormats.h"
 
 namespace conescope {
 
@@ -46,67 +34,6 @@ std::string supportedExtensionList() {
     return list;
 }
 
-// The reader for a VTK-handled extension, pointed at the file (for .vtp, at its patched text), after
-// the structural checks of HeaderChecks.h: VTK 9.1's readers trust their input and crash on some
-// damaged files, so each file is checked before VTK sees it.
-vtkSmartPointer<vtkAlgorithm> makeVtkReader(const std::string& path, const std::string& extension) {
-    if (extension == ".stl") {
-        checkStlFile(path);
-        vtkSmartPointer<vtkSTLReader> reader = vtkSmartPointer<vtkSTLReader>::New();
-        reader->SetFileName(path.c_str());
-        // Its merging drops every triangle two of whose corners merge; mergeEqualPositions merges
-        // instead and keeps them (see there).
-        reader->MergingOff();
-        return reader;
-    }
-    if (extension == ".vtp") {
-        vtkSmartPointer<vtkXMLPolyDataReader> reader = vtkSmartPointer<vtkXMLPolyDataReader>::New();
-        if (!reader->CanReadFile(path.c_str())) throw MeshReadError(path + ": not a VTK XML PolyData (.vtp) file");
-        reader->SetInputString(prepareVtpForVtk(path));
-        reader->ReadFromInputStringOn();
-        return reader;
-    }
-    // .vtk: the legacy format holds any dataset type; we only take polygonal data.
-    vtkSmartPointer<vtkPolyDataReader> reader = vtkSmartPointer<vtkPolyDataReader>::New();
-    reader->SetFileName(path.c_str());
-    if (!reader->IsFilePolyData()) throw MeshReadError(path + ": not a legacy VTK file with POLYDATA");
-    checkLegacyVtkFile(path);
-    return reader;
-}
-
-std::string describeFailure(const VtkMessageCapture& capture, vtkAlgorithm* reader) {
-    std::string messages = capture.summary();
-    if (!messages.empty()) return messages;
-    unsigned long code = reader ? reader->GetErrorCode() : static_cast<unsigned long>(vtkErrorCode::NoError);
-    if (code != vtkErrorCode::NoError) return vtkErrorCode::GetStringFromErrorCode(code);
-    return "the VTK reader failed without a message";
-}
-
-Mesh readWithVtk(const std::string& path, const std::string& extension) {
-    ScopedClassicNumericLocale classicNumbers;
-    VtkMessageCapture capture;
-    vtkSmartPointer<vtkAlgorithm> reader = makeVtkReader(path, extension);
-    if (capture.hasErrors()) throw MeshReadError(path + ": " + describeFailure(capture, reader));
-    capture.watch(reader);
-    capture.watch(reader->GetExecutive());
-    reader->Update();
-    if (capture.hasErrors() || reader->GetErrorCode() != vtkErrorCode::NoError)
-        throw MeshReadError(path + ": " + describeFailure(capture, reader));
-    vtkPolyData* polyData = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
-    if (!polyData || polyData->GetNumberOfPoints() == 0) {
-        std::string warnings = capture.summary();
-        throw MeshReadError(path + ": no points" + (warnings.empty() ? "" : " (" + warnings + ")"));
-    }
-    if (polyData->GetNumberOfPolys() + polyData->GetNumberOfStrips() == 0)
-        throw MeshReadError(path + ": no faces (" + std::to_string(polyData->GetNumberOfPoints()) + " points, " +
-                            std::to_string(polyData->GetNumberOfLines()) + " lines, no polygons)");
-    try {
-        return meshFromPolyData(polyData);
-    } catch (const std::runtime_error& error) {
-        throw MeshReadError(path + ": " + error.what());
-    }
-}
-
 // What a reader gets besides the path: where to leave notes and whom to tell its progress.
 struct ReadContext {
     std::vector<std::string>& notes;
@@ -118,7 +45,7 @@ Mesh readByExtension(const std::string& path, const std::string& extension, Read
     if (extension == ".obj") return readObj(path, context.notes, context.progress);
     if (extension == ".ply") return readPly(path, context.notes, context.progress);
     if (extension == ".gltf" || extension == ".glb") return readGltf(path, context.notes, context.progress);
-    return readWithVtk(path, extension);
+    return vtkFormats().read(path, extension);
 }
 
 }  // namespace

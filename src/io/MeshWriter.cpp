@@ -7,18 +7,8 @@
 #include <cstring>
 #include <fstream>
 
-#include <vtkExecutive.h>
-#include <vtkNew.h>
-#include <vtkPLYWriter.h>
-#include <vtkPolyData.h>
-#include <vtkPolyDataWriter.h>
-#include <vtkSmartPointer.h>
-#include <vtkXMLPolyDataWriter.h>
-
-#include "io/ClassicLocale.h"
 #include "io/FileChecks.h"
-#include "io/PolyDataConversion.h"
-#include "io/VtkMessageCapture.h"
+#include "io/VtkFormats.h"
 
 namespace conescope {
 
@@ -85,40 +75,6 @@ Mesh withExtraArrays(const Mesh& mesh, const std::string& path,
     return combined;
 }
 
-// Runs any VTK writer (the XML writers do not share vtkWriter's base) with its messages captured.
-template <class Writer>
-void runVtkWriter(Writer* writer, vtkPolyData* polyData, const std::string& path) {
-    ScopedClassicNumericLocale classicNumbers;
-    VtkMessageCapture capture;
-    capture.watch(writer);
-    capture.watch(writer->GetExecutive());
-    writer->SetFileName(path.c_str());
-    writer->SetInputData(polyData);
-    int written = writer->Write();
-    if (!written || capture.hasErrors()) {
-        std::string reason = capture.summary();
-        throw MeshWriteError(path + ": cannot write file" + (reason.empty() ? "" : " (" + reason + ")"));
-    }
-}
-
-void writeWithVtk(const Mesh& mesh, const std::string& path, const std::string& extension) {
-    vtkSmartPointer<vtkPolyData> polyData = polyDataFromMesh(mesh);
-    if (extension == ".vtp") {
-        vtkNew<vtkXMLPolyDataWriter> writer;
-        writer->SetDataModeToAppended();
-        writer->EncodeAppendedDataOff();  // raw binary: smaller than base64, and exact
-        return runVtkWriter(writer.Get(), polyData, path);
-    }
-    if (extension == ".vtk") {
-        vtkNew<vtkPolyDataWriter> writer;
-        writer->SetFileTypeToBinary();  // ASCII legacy output rounds floats
-        return runVtkWriter(writer.Get(), polyData, path);
-    }
-    vtkNew<vtkPLYWriter> writer;
-    writer->SetFileTypeToBinary();
-    runVtkWriter(writer.Get(), polyData, path);
-}
-
 }  // namespace
 
 void writeOff(const Mesh& mesh, const std::string& path) {
@@ -141,7 +97,13 @@ void writePolyData(const Mesh& mesh, const std::string& path,
     requireValidMesh(mesh, path);
     Mesh combined = withExtraArrays(mesh, path, extraFaceArrays);
     if (extension == ".off") return writeOff(combined, path);
-    writeWithVtk(combined, path, extension);
+    const VtkFormats* formats = nullptr;
+    try {
+        formats = &vtkFormats();
+    } catch (const std::exception& error) {
+        throw MeshWriteError(path + ": " + error.what());
+    }
+    formats->write(combined, path, extension);
 }
 
 std::vector<std::string> writableMeshExtensions() { return {".vtp", ".vtk", ".ply", ".off"}; }

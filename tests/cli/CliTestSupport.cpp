@@ -52,7 +52,7 @@ std::vector<std::string> splitLines(const std::string& text) {
 }
 
 // fork + exec rather than system(): the arguments reach the program exactly as given.
-CliRun runCli(const std::vector<std::string>& arguments) {
+CliRun runCli(const std::vector<std::string>& arguments, const std::vector<std::string>& environment) {
     ScratchDirectory capture;
     const std::string outPath = capture.file("stdout"), errPath = capture.file("stderr");
     const pid_t child = ::fork();
@@ -63,6 +63,10 @@ CliRun runCli(const std::vector<std::string>& arguments) {
         if (out < 0 || err < 0) ::_exit(126);
         ::dup2(out, STDOUT_FILENO);
         ::dup2(err, STDERR_FILENO);
+        for (const std::string& variable : environment) {
+            const size_t equals = variable.find('=');
+            ::setenv(variable.substr(0, equals).c_str(), variable.substr(equals + 1).c_str(), 1);
+        }
         std::vector<char*> argv;
         std::string program = CONESCOPE_CLI_PATH;
         argv.push_back(program.data());

@@ -35,8 +35,9 @@ struct CliRun {
     std::string err;
 };
 
-// Runs conescope-cli with these arguments (each passed as one word, no shell expansion).
-CliRun runCli(const std::vector<std::string>& arguments);
+// Runs conescope-cli with these arguments (each passed as one word, no shell expansion), and these
+// environment variables ("NAME=value") set besides the test's own.
+CliRun runCli(const std::vector<std::string>& arguments, const std::vector<std::string>& environment = {});
 
 std::string readTextFile(const std::string& path);
 

@@ -39,6 +39,30 @@ void expectSameDocument(nlohmann::json actual, const nlohmann::json& expected) {
     EXPECT_TRUE(differences.empty()) << differences.dump().substr(0, 2000);
 }
 
+// The VTK formats are a module opened when a file needs one (io/VtkFormats.h): a run on an OFF file
+// never loads VTK's libraries, whose loading cost every run 10 ms; a run on a .vtp file does. The
+// dynamic loader's own log (LD_DEBUG=files) says which libraries the process opened.
+std::string librariesOpenedFor(const std::string& mesh) {
+    ScratchDirectory scratch;
+    const std::string log = scratch.file("loader");
+    const CliRun run = runCli({"stats", "--quiet", "--views", "1", mesh}, {"LD_DEBUG=files", "LD_DEBUG_OUTPUT=" + log});
+    EXPECT_EQ(run.exitCode, 0) << run.err;
+    std::string opened;  // the loader adds the process id to the file's name
+    for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::path(log).parent_path()))
+        if (entry.path().filename().string().rfind("loader", 0) == 0) opened += readTextFile(entry.path().string());
+    return opened;
+}
+
+TEST(CliStats, LoadsVtkOnlyForFilesThatNeedIt) {
+    const std::string forOff = librariesOpenedFor(dataset("torus.off"));
+    EXPECT_NE(forOff.find("libmeshoptimizer"), std::string::npos) << "the loader's log is read";
+    EXPECT_EQ(forOff.find("libvtkCommonCore"), std::string::npos);
+    EXPECT_EQ(forOff.find("conescope_vtk_formats"), std::string::npos);
+    const std::string forVtp = librariesOpenedFor(dataset("icosphere-clusters.vtp"));
+    EXPECT_NE(forVtp.find("conescope_vtk_formats"), std::string::npos);
+    EXPECT_NE(forVtp.find("libvtkCommonCore"), std::string::npos);
+}
+
 // A real run, many clusters and views and two tests: the file, written without a tree, is nlohmann's
 // layout of the same document.
 TEST(CliStats, JsonOfARealRunIsLaidOutAsItsTree) {
