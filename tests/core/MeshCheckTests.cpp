@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <random>
 #include <set>
 #include <vector>
@@ -21,6 +22,55 @@ TEST(MeshChecks, ClosedSphereIsClean) {
     EXPECT_EQ(report.duplicateFaces, 0u);
     EXPECT_EQ(report.components, 1u);
     EXPECT_TRUE(report.orientable);
+}
+
+// A band of `segments` quads around a circle, given a half twist (a Moebius strip) or not.
+Mesh band(int segments, bool twisted) {
+    Mesh mesh;
+    for (int i = 0; i < segments; ++i) {
+        const double t = 2.0 * 3.14159265358979 * i / segments, half = twisted ? t / 2.0 : 0.0;
+        for (double w : {-0.3, 0.3}) {
+            const double r = 1.0 + w * std::cos(half);
+            mesh.positions.push_back(glm::vec3(float(r * std::cos(t)), float(r * std::sin(t)), float(w * std::sin(half))));
+        }
+    }
+    for (int i = 0; i < segments; ++i) {
+        const uint32_t a = uint32_t(2 * i), b = a + 1;
+        const bool last = i + 1 == segments;
+        // The last quad joins the first rung, its two ends swapped by the twist.
+        const uint32_t c = last ? (twisted ? 1u : 0u) : a + 2, d = last ? (twisted ? 0u : 1u) : a + 3;
+        mesh.addFace({a, c, d});
+        mesh.addFace({a, d, b});
+    }
+    return mesh;
+}
+
+// A Moebius strip has one side: no winding agrees across all its edges, whichever faces flip. A
+// plain band, and the strip's halves, can be wound one way.
+TEST(MeshChecks, MoebiusStripIsNotOrientable) {
+    const Mesh strip = band(24, true), ring = band(24, false);
+    const MeshReport twisted = checkMesh(strip, computeFaceGeometry(strip));
+    EXPECT_FALSE(twisted.orientable);
+    EXPECT_EQ(twisted.components, 1u);
+    EXPECT_EQ(twisted.nonManifoldEdges, 0u);
+    EXPECT_GT(twisted.inconsistentEdges, 0u);
+    const MeshReport plain = checkMesh(ring, computeFaceGeometry(ring));
+    EXPECT_TRUE(plain.orientable);
+    EXPECT_EQ(plain.inconsistentEdges, 0u);
+    // Both in one mesh: two components, and the one that cannot be wound makes the mesh so.
+    Mesh both = ring;
+    const uint32_t offset = uint32_t(both.positions.size());
+    for (const glm::vec3& p : strip.positions) both.positions.push_back(p + glm::vec3(5.0f, 0.0f, 0.0f));
+    for (size_t f = 0; f < strip.faceCount(); ++f)
+        both.addFace({strip.faceBegin(f)[0] + offset, strip.faceBegin(f)[1] + offset, strip.faceBegin(f)[2] + offset});
+    const MeshReport two = checkMesh(both, computeFaceGeometry(both));
+    EXPECT_FALSE(two.orientable);
+    EXPECT_EQ(two.components, 2u);
+    // Flipping faces changes which edges disagree, never whether the strip can be wound.
+    Mesh flipped = strip;
+    for (size_t f = 0; f < flipped.faceCount(); f += 3)
+        std::reverse(flipped.faceVertices.begin() + flipped.faceStarts[f], flipped.faceVertices.begin() + flipped.faceStarts[f + 1]);
+    EXPECT_FALSE(checkMesh(flipped, computeFaceGeometry(flipped)).orientable);
 }
 
 TEST(MeshChecks, FlippedFacesAreFoundAndFixed) {
