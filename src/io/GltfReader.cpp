@@ -7,6 +7,7 @@
 
 #include "io/GltfDecoding.h"
 #include "io/GltfDocument.h"
+#include "io/FormatModules.h"
 #include "io/MeshReader.h"
 #include "io/PositionMerging.h"
 
@@ -115,6 +116,11 @@ Mesh readGltf(const std::string& path, std::vector<std::string>& notes, const Pr
     Mesh mesh = placeInstances(path, scene, decoded, progressWithin(progress, 0.6, 0.95));
     for (std::string& note : skippedNotes(scene.skipped)) notes.push_back(std::move(note));
     return mesh;
+}
+
+extern "C" const GltfFormat* conescope_gltf_format() {
+    static const GltfFormat format{readGltf};
+    return &format;
 }
 
 }  // namespace conescope

@@ -5,12 +5,11 @@
 #include <vector>
 
 #include "io/FileChecks.h"
-#include "io/GltfReader.h"
 #include "io/ObjFormat.h"
 #include "io/OffFormat.h"
 #include "io/PlyFormat.h"
 #include "io/PositionMerging.h"
-#include "io/VtkFormats.h"
+#include "io/FormatModules.h"
 
 namespace conescope {
 
@@ -44,7 +43,7 @@ Mesh readByExtension(const std::string& path, const std::string& extension, Read
     if (extension == ".off") return readOff(path);
     if (extension == ".obj") return readObj(path, context.notes, context.progress);
     if (extension == ".ply") return readPly(path, context.notes, context.progress);
-    if (extension == ".gltf" || extension == ".glb") return readGltf(path, context.notes, context.progress);
+    if (extension == ".gltf" || extension == ".glb") return gltfFormat().read(path, context.notes, context.progress);
     return vtkFormats().read(path, extension);
 }
 

@@ -8,7 +8,7 @@
 #include <fstream>
 
 #include "io/FileChecks.h"
-#include "io/VtkFormats.h"
+#include "io/FormatModules.h"
 
 namespace conescope {
 

@@ -1,6 +1,6 @@
-// The VTK side of conescope_io, built into libconescope_vtk_formats.so (VtkFormats.h): VTK's
+// The VTK side of conescope_io, built into libconescope_vtk_formats.so (FormatModules.h): VTK's
 // readers behind the checks of HeaderChecks.h, and VTK's writers, with VTK's messages captured.
-#include "io/VtkFormats.h"
+#include "io/FormatModules.h"
 
 #include <vtkAlgorithm.h>
 #include <vtkErrorCode.h>

@@ -39,9 +39,10 @@ void expectSameDocument(nlohmann::json actual, const nlohmann::json& expected) {
     EXPECT_TRUE(differences.empty()) << differences.dump().substr(0, 2000);
 }
 
-// The VTK formats are a module opened when a file needs one (io/VtkFormats.h): a run on an OFF file
-// never loads VTK's libraries, whose loading cost every run 10 ms; a run on a .vtp file does. The
-// dynamic loader's own log (LD_DEBUG=files) says which libraries the process opened.
+// VTK's formats and glTF are modules opened when a file needs one (io/FormatModules.h): a run on an
+// OFF file loads neither VTK's libraries nor assimp's, whose loading cost every run 11 ms; a run on
+// a .vtp file opens VTK's, one on a .glb assimp's. The dynamic loader's own log (LD_DEBUG=files)
+// says which libraries the process opened.
 std::string librariesOpenedFor(const std::string& mesh) {
     ScratchDirectory scratch;
     const std::string log = scratch.file("loader");
@@ -53,14 +54,20 @@ std::string librariesOpenedFor(const std::string& mesh) {
     return opened;
 }
 
-TEST(CliStats, LoadsVtkOnlyForFilesThatNeedIt) {
+TEST(CliStats, LoadsVtkAndAssimpOnlyForFilesThatNeedThem) {
+    auto opens = [](const std::string& libraries, const char* name) { return libraries.find(name) != std::string::npos; };
     const std::string forOff = librariesOpenedFor(dataset("torus.off"));
-    EXPECT_NE(forOff.find("libmeshoptimizer"), std::string::npos) << "the loader's log is read";
-    EXPECT_EQ(forOff.find("libvtkCommonCore"), std::string::npos);
-    EXPECT_EQ(forOff.find("conescope_vtk_formats"), std::string::npos);
+    EXPECT_TRUE(opens(forOff, "libmeshoptimizer")) << "the loader's log is read";
+    for (const char* name : {"libvtkCommonCore", "libassimp", "conescope_vtk_formats", "conescope_gltf_format"})
+        EXPECT_FALSE(opens(forOff, name)) << name;
     const std::string forVtp = librariesOpenedFor(dataset("icosphere-clusters.vtp"));
-    EXPECT_NE(forVtp.find("conescope_vtk_formats"), std::string::npos);
-    EXPECT_NE(forVtp.find("libvtkCommonCore"), std::string::npos);
+    EXPECT_TRUE(opens(forVtp, "conescope_vtk_formats"));
+    EXPECT_TRUE(opens(forVtp, "libvtkCommonCore"));
+    EXPECT_FALSE(opens(forVtp, "libassimp"));
+    const std::string forGlb = librariesOpenedFor(std::string(CONESCOPE_TESTDATA_DIR) + "/gltf/cube.glb");
+    EXPECT_TRUE(opens(forGlb, "conescope_gltf_format"));
+    EXPECT_TRUE(opens(forGlb, "libassimp"));
+    EXPECT_FALSE(opens(forGlb, "libvtkCommonCore"));
 }
 
 // A real run, many clusters and views and two tests: the file, written without a tree, is nlohmann's
