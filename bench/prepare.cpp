@@ -260,15 +260,24 @@ struct Row {
     }
 };
 
-bool measure(const Configuration& configuration, size_t repeat, const ChildInputs& inputs, std::vector<Row>& rows) {
-    Row row{configuration.name, {}};
-    for (size_t i = 0; i < repeat; ++i) {
-        const std::optional<Measurement> m = inChild(configuration, inputs);
-        if (!m) return false;
-        row.runs.push_back(*m);
-    }
-    rows.push_back(row);
-    return true;
+// `repeat` rounds, each running every configuration once in turn, so that the machine's drift (its
+// speed moves by a few percent within minutes here) falls on all of them alike, not on whichever
+// ran last. A configuration whose child fails is left out of the rows; false then.
+bool measureInRounds(const std::vector<const Configuration*>& configurations, size_t repeat, const ChildInputs& inputs,
+                     std::vector<Row>& rows, std::vector<Row>& whole) {
+    std::vector<Row> measured;
+    std::vector<bool> failed(configurations.size(), false);
+    for (const Configuration* configuration : configurations) measured.push_back(Row{configuration->name, {}});
+    for (size_t round = 0; round < repeat; ++round)
+        for (size_t i = 0; i < configurations.size(); ++i) {
+            if (failed[i]) continue;
+            const std::optional<Measurement> m = inChild(*configurations[i], inputs);
+            if (m) measured[i].runs.push_back(*m);
+            else failed[i] = true;
+        }
+    for (size_t i = 0; i < configurations.size(); ++i)
+        if (!failed[i]) (configurations[i]->wholeRun ? whole : rows).push_back(measured[i]);
+    return std::find(failed.begin(), failed.end(), true) == failed.end();
 }
 
 // One markdown row per configuration; `reference` is the row the ratio is taken against.
@@ -341,7 +350,7 @@ int main(int argc, char** argv) {
         std::cout << "mesh: " << meshPath;
         if (minTriangles > 0) std::cout << " subdivided";
         std::cout << ", " << triangleCount(mesh) << " triangles, " << mesh.positions.size() << " vertices; budget "
-                  << kLimits.maxVertices << "/" << kLimits.maxTriangles << "; " << repeat << " runs each"
+                  << kLimits.maxVertices << "/" << kLimits.maxTriangles << "; " << repeat << " runs each, in rounds of every configuration"
                   << (forkOnly ? ", forked children" : "") << "\n\n";
         auto wanted = [&](const Configuration& c) {
             if (c.wholeRun) return wholeRun;
@@ -352,10 +361,11 @@ int main(int argc, char** argv) {
             inputs.file = temporary.string() + ".off";
             writeOff(mesh, inputs.file);
         }
-        std::vector<Row> rows, whole;
-        bool ok = true;
+        std::vector<const Configuration*> chosen;
         for (const Configuration& configuration : all)
-            if (wanted(configuration)) ok &= measure(configuration, repeat, inputs, configuration.wholeRun ? whole : rows);
+            if (wanted(configuration)) chosen.push_back(&configuration);
+        std::vector<Row> rows, whole;
+        const bool ok = measureInRounds(chosen, repeat, inputs, rows, whole);
         std::filesystem::remove(inputs.measured);
         if (wholeRun) std::filesystem::remove(inputs.file);
         printRows(rows, kReference, true);

@@ -43,20 +43,9 @@ if [[ $quick -eq 1 ]]; then
 fi
 
 start=$(date +%s)
-# From the source directory, so that the command the report records reads the same on every machine.
-(cd "$root" && "$bin/conescope-bench-report" --meshes datasets/cgal --output "$(realpath --relative-to="$root" "$output")" \
-  --jobs "$(nproc)" "${report_flags[@]}")
-echo "bench-report: report took $(( $(date +%s) - start )) s" >&2
-
-xvfb-run -a -s "-screen 0 1600x1000x24" "$bin/conescope-bench-plot" "$output/summary.csv" "$output/efficiency.png"
-
-{
-  echo "# $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ //'), $(nproc) cores"
-  "$bin/conescope-bench-speed" "${speed_flags[@]}"
-} > "$output/speed.txt" 2>&1
-echo "bench-report: cull speed took $(( $(date +%s) - start )) s" >&2
-
-# Preparation against meshoptimizer, median of 5 runs each, at about 2k, 5k and 13k triangles (the
+# The timings of a few milliseconds first: this machine runs them a few percent slower right after
+# minutes of full load on both cores (docs/benchmarks.md), which the report and the cull speed are.
+# Preparation against meshoptimizer, median of 5 runs each (in rounds of every configuration), at about 2k, 5k and 13k triangles (the
 # bundled torus, elephant and fandisk), 20k, 50k and 90k (CGAL's camel, armadillo, refined_elephant
 # as they are), 1.2M (bunny00 subdivided twice) and 3.3M (armadillo three times); the whole stats
 # run at 5k, 52k and 1.2M. The quick run takes one size.
@@ -89,4 +78,19 @@ echo "bench-report: cull speed took $(( $(date +%s) - start )) s" >&2
 if [[ $quick -eq 0 ]]; then
   CONESCOPE_BENCH_BUILD_DIR="$build" CONESCOPE_BENCH_OUTPUT="$output" "$root/scripts/bench-small-meshes.sh"
 fi
+echo "bench-report: preparation and small meshes took $(( $(date +%s) - start )) s" >&2
+
+# From the source directory, so that the command the report records reads the same on every machine.
+(cd "$root" && "$bin/conescope-bench-report" --meshes datasets/cgal --output "$(realpath --relative-to="$root" "$output")" \
+  --jobs "$(nproc)" "${report_flags[@]}")
+echo "bench-report: report took $(( $(date +%s) - start )) s" >&2
+
+xvfb-run -a -s "-screen 0 1600x1000x24" "$bin/conescope-bench-plot" "$output/summary.csv" "$output/efficiency.png"
+
+{
+  echo "# $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ //'), $(nproc) cores"
+  "$bin/conescope-bench-speed" "${speed_flags[@]}"
+} > "$output/speed.txt" 2>&1
+echo "bench-report: cull speed took $(( $(date +%s) - start )) s" >&2
+
 echo "bench-report: wrote $output/{report.csv,report.md,summary.csv,efficiency.png,speed.txt,prepare.txt} in $(( $(date +%s) - start )) s" >&2
