@@ -16,6 +16,7 @@
 // contracted multiply-adds so that the compiler keeps it so. A score that is not a number (from
 // coordinates near the float range) makes that step visit like the library does.
 #include "MeshoptMeshlets.h"
+#include "MeshoptKdTree.h"
 
 #include <algorithm>
 #include <cfloat>
@@ -24,6 +25,10 @@
 namespace conescope {
 
 namespace {
+
+using meshoptkd::centreDistance;
+using meshoptkd::KdNode;
+using meshoptkd::Spread;
 
 constexpr uint32_t kNone = ~0u;
 constexpr uint8_t kUnused = 0xff;  // used[v]: the vertex is not in the meshlet
@@ -109,156 +114,6 @@ float triangleCones(Cone* triangles, const uint32_t* indices, size_t triangleCou
         meshArea += area;
     }
     return meshArea;
-}
-
-// The k-d tree over triangle centres: branches split at the mean of the axis of largest variance,
-// leaves hold up to 8 points and list them in the nodes that follow.
-struct KdNode {
-    union {
-        float split;
-        unsigned int index;
-    };
-    unsigned int axis : 2;  // 3: leaf
-    unsigned int children : 30;
-};
-
-size_t kdPartition(unsigned int* indices, size_t count, const float* points, size_t stride, unsigned int axis, float pivot) {
-    size_t m = 0;
-    for (size_t i = 0; i < count; ++i) {
-        float v = points[indices[i] * stride + axis];
-        unsigned int t = indices[m];
-        indices[m] = indices[i];
-        indices[i] = t;
-        m += v < pivot;
-    }
-    return m;
-}
-
-size_t kdBuildLeaf(size_t offset, KdNode* nodes, unsigned int* indices, size_t count) {
-    KdNode& result = nodes[offset];
-    result.index = indices[0];
-    result.axis = 3;
-    result.children = unsigned(count - 1);
-    for (size_t i = 1; i < count; ++i) {
-        KdNode& tail = nodes[offset + i];
-        tail.index = indices[i];
-        tail.axis = 3;
-        tail.children = ~0u >> 2;
-    }
-    return offset + count;
-}
-
-// Welford's running mean and variance of some points, as the library computes them: one running
-// sum after another, in index order.
-struct Spread {
-    float mean[3] = {};
-    float vars[3] = {};
-};
-
-Spread spreadOf(const float* points, size_t stride, const unsigned int* indices, size_t count) {
-    Spread s;
-    float runc = 1, runs = 1;
-    for (size_t i = 0; i < count; ++i, runc += 1.f, runs = 1.f / runc) {
-        const float* point = points + indices[i] * stride;
-        for (int k = 0; k < 3; ++k) {
-            float delta = point[k] - s.mean[k];
-            s.mean[k] += delta * runs;
-            s.vars[k] += delta * (point[k] - s.mean[k]);
-        }
-    }
-    return s;
-}
-
-// The same for two sets of points at once: each step waits for the step before of its own set
-// only, so the two interleave on the processor; the arithmetic of each is spreadOf's.
-void spreadsOf(const float* points, size_t stride, const unsigned int* a, size_t countA, const unsigned int* b, size_t countB,
-               Spread& sa, Spread& sb) {
-    const size_t both = std::min(countA, countB);
-    float runc = 1, runs = 1;
-    for (size_t i = 0; i < both; ++i, runc += 1.f, runs = 1.f / runc) {
-        const float* pa = points + a[i] * stride;
-        const float* pb = points + b[i] * stride;
-        for (int k = 0; k < 3; ++k) {
-            float deltaA = pa[k] - sa.mean[k], deltaB = pb[k] - sb.mean[k];
-            sa.mean[k] += deltaA * runs, sb.mean[k] += deltaB * runs;
-            sa.vars[k] += deltaA * (pa[k] - sa.mean[k]), sb.vars[k] += deltaB * (pb[k] - sb.mean[k]);
-        }
-    }
-    // The longer set goes on alone, its running count where it was.
-    Spread& s = countA > both ? sa : sb;
-    const unsigned int* rest = countA > both ? a : b;
-    const size_t count = std::max(countA, countB);
-    for (size_t i = both; i < count; ++i, runc += 1.f, runs = 1.f / runc) {
-        const float* point = points + rest[i] * stride;
-        for (int k = 0; k < 3; ++k) {
-            float delta = point[k] - s.mean[k];
-            s.mean[k] += delta * runs;
-            s.vars[k] += delta * (point[k] - s.mean[k]);
-        }
-    }
-}
-
-// The library's recursion, with each node's spread computed by its parent together with its
-// sibling's (the spreads of two disjoint sets do not depend on which is built first).
-size_t kdBuild(size_t offset, KdNode* nodes, const float* points, size_t stride, unsigned int* indices, size_t count, size_t leafSize,
-               const Spread& spread) {
-    if (count <= leafSize) return kdBuildLeaf(offset, nodes, indices, count);
-    const float* vars = spread.vars;
-    unsigned int axis = vars[0] >= vars[1] && vars[0] >= vars[2] ? 0 : vars[1] >= vars[2] ? 1 : 2;
-    float split = spread.mean[axis];
-    size_t middle = kdPartition(indices, count, points, stride, axis, split);
-    if (middle <= leafSize / 2 || middle >= count - leafSize / 2) return kdBuildLeaf(offset, nodes, indices, count);
-    KdNode& result = nodes[offset];
-    result.split = split;
-    result.axis = axis;
-    Spread left, right;  // only nodes above the leaf size use theirs
-    spreadsOf(points, stride, indices, middle > leafSize ? middle : 0, indices + middle, count - middle > leafSize ? count - middle : 0,
-              left, right);
-    size_t nextOffset = kdBuild(offset + 1, nodes, points, stride, indices, middle, leafSize, left);
-    result.children = unsigned(nextOffset - offset - 1);
-    return kdBuild(nextOffset, nodes, points, stride, indices + middle, count - middle, leafSize, right);
-}
-
-size_t kdBuild(KdNode* nodes, const float* points, size_t stride, unsigned int* indices, size_t count, size_t leafSize) {
-    return kdBuild(0, nodes, points, stride, indices, count, leafSize,
-                   count > leafSize ? spreadOf(points, stride, indices, count) : Spread{});
-}
-
-// The distance the library's search measures from `position` to a triangle's centre.
-float centreDistance(const float* point, const float* position) {
-    float distance2 = (point[0] - position[0]) * (point[0] - position[0]) + (point[1] - position[1]) * (point[1] - position[1]) +
-                      (point[2] - position[2]) * (point[2] - position[2]);
-    return sqrtf(distance2);
-}
-
-// The library's nearest-neighbour search, plus `dead` marks on subtrees found to hold only placed
-// triangles: placed triangles never come back, so skipping such a subtree changes no answer, and
-// late in the build, when most of the tree is placed, the search stops visiting it all.
-void kdNearest(const KdNode* nodes, unsigned int root, const float* points, size_t stride, const unsigned char* emitted,
-               const float* position, unsigned int& result, float& limit, unsigned char* dead) {
-    if (dead[root]) return;
-    const KdNode& node = nodes[root];
-    if (node.axis == 3) {
-        bool live = false;
-        for (unsigned int i = 0; i <= node.children; ++i) {
-            unsigned int index = nodes[root + i].index;
-            if (emitted[index]) continue;
-            live = true;
-            float distance = centreDistance(points + index * stride, position);
-            if (distance < limit) {
-                result = index;
-                limit = distance;
-            }
-        }
-        dead[root] = !live;
-    } else {
-        float delta = position[node.axis] - node.split;
-        unsigned int first = (delta <= 0) ? 0 : node.children;
-        unsigned int second = first ^ node.children;
-        kdNearest(nodes, root + 1 + first, points, stride, emitted, position, result, limit, dead);
-        if (fabsf(delta) <= limit) kdNearest(nodes, root + 1 + second, points, stride, emitted, position, result, limit, dead);
-        dead[root] = dead[root + 1] && dead[root + 1 + node.children];
-    }
 }
 
 // --- the builder ---------------------------------------------------------------------------------
@@ -393,7 +248,7 @@ struct Builder {
         std::vector<unsigned int> kdIndices(triangleCount);
         for (size_t i = 0; i < triangleCount; ++i) kdIndices[i] = unsigned(i);
         nodes.resize(triangleCount * 2);
-        kdBuild(nodes.data(), &cones[0].px, sizeof(Cone) / sizeof(float), kdIndices.data(), triangleCount, 8);
+        meshoptkd::kdBuild(nodes.data(), &cones[0].px, sizeof(Cone) / sizeof(float), kdIndices.data(), triangleCount, 8);
         deadNodes.assign(nodes.size(), 0);
     }
 
@@ -438,22 +293,15 @@ struct Builder {
         auto search = [&](auto& self, size_t begin, size_t count) -> uint32_t {
             unsigned int* indices = order.data() + begin;
             searched += count;
-            size_t middle = 0;
-            float split = 0;
-            unsigned int axis = 0;
-            if (count > kLeafSize) {
-                const Spread spread = spreadOf(points, stride, indices, count);
-                const float* vars = spread.vars;
-                axis = vars[0] >= vars[1] && vars[0] >= vars[2] ? 0 : vars[1] >= vars[2] ? 1 : 2;
-                split = spread.mean[axis];
-                middle = kdPartition(indices, count, points, stride, axis, split);
-            }
-            if (count <= kLeafSize || middle <= kLeafSize / 2 || middle >= count - kLeafSize / 2) {
+            const meshoptkd::KdSplit node = meshoptkd::kdSplit(points, stride, indices, count, kLeafSize,
+                                                               count > kLeafSize ? meshoptkd::spreadOf(points, stride, indices, count) : Spread{});
+            if (node.leaf) {
                 for (size_t i = 0; i < count; ++i)
                     if (tied(indices[i])) return indices[i];
                 return kNone;
             }
-            const bool leftFirst = position[axis] - split <= 0;
+            const size_t middle = node.middle;
+            const bool leftFirst = position[node.axis] - node.split <= 0;
             const size_t firstBegin = leftFirst ? begin : begin + middle, firstCount = leftFirst ? middle : count - middle;
             const size_t secondBegin = leftFirst ? begin + middle : begin, secondCount = count - firstCount;
             if (std::any_of(order.begin() + long(firstBegin), order.begin() + long(firstBegin + firstCount), tied))
@@ -480,7 +328,7 @@ struct Builder {
         float position[3] = {cone.px, cone.py, cone.pz};
         unsigned int index = kNone;
         float limit = FLT_MAX;
-        kdNearest(nodes.data(), 0, &cones[0].px, sizeof(Cone) / sizeof(float), emitted.data(), position, index, limit, deadNodes.data());
+        meshoptkd::kdNearest(nodes.data(), 0, &cones[0].px, sizeof(Cone) / sizeof(float), emitted.data(), position, index, limit, deadNodes.data());
         return index;
     }
 
