@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cerrno>
 #include <fstream>
 #include <random>
 #include <sstream>
@@ -52,9 +53,8 @@ std::vector<std::string> splitLines(const std::string& text) {
 }
 
 // fork + exec rather than system(): the arguments reach the program exactly as given.
-CliRun runCli(const std::vector<std::string>& arguments, const std::vector<std::string>& environment) {
-    ScratchDirectory capture;
-    const std::string outPath = capture.file("stdout"), errPath = capture.file("stderr");
+pid_t startCli(const std::vector<std::string>& arguments, const std::vector<std::string>& environment,
+               const std::string& outPath, const std::string& errPath) {
     const pid_t child = ::fork();
     if (child < 0) throw std::runtime_error("fork failed");
     if (child == 0) {
@@ -76,10 +76,21 @@ CliRun runCli(const std::vector<std::string>& arguments, const std::vector<std::
         ::execv(program.c_str(), argv.data());
         ::_exit(127);
     }
+    return child;
+}
+
+int waitCli(pid_t pid) {
     int status = 0;
-    ::waitpid(child, &status, 0);
+    while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+    }
+    return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
+CliRun runCli(const std::vector<std::string>& arguments, const std::vector<std::string>& environment) {
+    ScratchDirectory capture;
+    const std::string outPath = capture.file("stdout"), errPath = capture.file("stderr");
     CliRun run;
-    run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    run.exitCode = waitCli(startCli(arguments, environment, outPath, errPath));
     run.out = readTextFile(outPath);
     run.err = readTextFile(errPath);
     return run;

@@ -2,6 +2,8 @@
 // exit code, stdout and stderr are captured through files in a scratch directory.
 #pragma once
 
+#include <sys/types.h>
+
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -38,6 +40,12 @@ struct CliRun {
 // Runs conescope-cli with these arguments (each passed as one word, no shell expansion), and these
 // environment variables ("NAME=value") set besides the test's own.
 CliRun runCli(const std::vector<std::string>& arguments, const std::vector<std::string>& environment = {});
+
+// conescope-cli started as runCli starts it, its stdout and stderr going to the files `out` and `err`;
+// returns its pid, so a test can signal it midway. waitCli: its exit code, or 128 + the signal.
+pid_t startCli(const std::vector<std::string>& arguments, const std::vector<std::string>& environment,
+               const std::string& out, const std::string& err);
+int waitCli(pid_t pid);
 
 std::string readTextFile(const std::string& path);
 
