@@ -91,7 +91,7 @@ BatchRow batchRowStart(const BatchMesh& mesh, const BatchConfig& config) {
     row["content_hash"] = contentHash(mesh.path);
     row["settings_hash"] = settingsHash(config.settings, config.compare, config.detail);
     addSettingCells(row, config.settings);
-    row["compare"] = config.compare;
+    row["a_options"] = config.compare;
     return row;
 }
 

@@ -36,7 +36,7 @@ struct BatchJob {
 BatchRow runBatchJob(const BatchConfig& config, const BatchJob& job, const std::function<void()>& testFault = {});
 
 // The cells that say which mesh and settings a row is about: file, json, compare_json, content_hash,
-// settings_hash, setting_KEY and compare. The content hash is taken now.
+// settings_hash, setting_KEY and a_options (the comparison asked for). The content hash is taken now.
 BatchRow batchRowStart(const BatchMesh& mesh, const BatchConfig& config);
 
 // An error row's own cells.

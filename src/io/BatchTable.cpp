@@ -47,7 +47,7 @@ std::vector<std::string> makeColumns() {
     columns.insert(columns.end(), totalsColumns().begin(), totalsColumns().end());
     columns.insert(columns.end(), meshColumns.begin(), meshColumns.end());
     for (const SettingField& field : settingFields()) columns.push_back("setting_" + field.key);
-    columns.push_back("compare");
+    columns.push_back("a_options");
     for (const std::string& column : totalsColumns())
         if (describesSide(column)) columns.push_back("a_" + column);
     columns.insert(columns.end(), comparisonColumns.begin(), comparisonColumns.end());

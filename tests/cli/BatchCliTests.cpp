@@ -296,7 +296,7 @@ TEST(CliBatch, ComparisonColumnsAreCompareTotals) {
         expectSameDocument(nlohmann::json::parse(readTextFile(out + "/" + row.at("compare_json"))), json);
         expectSameDocument(nlohmann::json::parse(readTextFile(out + "/" + row.at("json"))), json["b"]);
         expectRowEqualsDocument(row, json["b"]);
-        EXPECT_EQ(row.at("compare"), "builder=meshopt,cone=meshopt,test=apex");
+        EXPECT_EQ(row.at("a_options"), "builder=meshopt,cone=meshopt,test=apex");
         EXPECT_EQ(row.at("a_cone"), "meshopt");
         EXPECT_EQ(row.at("a_test"), "apex");
         EXPECT_EQ(std::stod(row.at("a_efficiency")), json["a"]["results"][0]["efficiency"].get<double>());
