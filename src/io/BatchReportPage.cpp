@@ -22,7 +22,7 @@ h2 { font-size: 17px; margin: 28px 0 8px; }
 .total b { display: block; font-size: 19px; }
 #plots { display: flex; flex-wrap: wrap; gap: 18px; }
 figure { margin: 0; border: 1px solid #ddd; border-radius: 6px; padding: 8px; }
-figcaption { font-weight: 600; margin-bottom: 4px; }
+figcaption { font-weight: 600; margin-bottom: 4px; max-width: 480px; }
 svg text { font: 11px system-ui, sans-serif; fill: #444; }
 svg .axis { stroke: #888; }
 svg .grid { stroke: #eee; }
@@ -36,7 +36,9 @@ th, td { padding: 3px 8px; border-bottom: 1px solid #eee; text-align: right; whi
 th { position: sticky; top: 0; background: #f6f6f6; cursor: pointer; user-select: none; }
 th.sorted-up::after { content: " \25B2"; } th.sorted-down::after { content: " \25BC"; }
 td.text, th.text { text-align: left; }
-td.message { white-space: normal; text-align: left; max-width: 900px; }
+td.message { white-space: normal; text-align: left; max-width: 700px; }
+td.wrap { white-space: normal; word-break: break-all; max-width: 360px; }
+#errors, #table { overflow-x: auto; }
 tr.selected td { background: #fff3bf; }
 </style>
 </head>
@@ -158,25 +160,32 @@ function scatter(id, caption, points, x, y, options) {
   return figure;
 }
 
-// Where each mesh's back faces went: culled, lost to the test, lost to the partition (worst first).
-function lossBars(worst) {
+// Where the back faces went: culled, lost to the test, lost to the partition; the whole library first,
+// then the meshes that lose the most back faces.
+function lossBars(rowsShown) {
   const width = 480, barHeight = 14, left = 150, right = 34, top = 8;
   const figure = element("figure", {id: "plot-losses"});
-  figure.append(element("figcaption", {}, "Where the back faces went (the " + worst.length + " least efficient meshes)"));
+  figure.append(element("figcaption", {}, `Where the back faces went (all meshes, then the ${rowsShown.length} that lose the most)`));
   const legend = element("div", {class: "legend muted"});
   legend.innerHTML = '<span style="background:#2f9e44"></span>culled' +
     '<span style="background:#f08c00"></span>lost to the test<span style="background:#c92a2a"></span>lost to the partition';
   figure.append(legend);
-  const height = top + worst.length * (barHeight + 4) + 8;
+  const library = {name: "all meshes", file: "all meshes", back_facing_triangles: sum(ok, "back_facing_triangles"),
+    triangles_culled: sum(ok, "triangles_culled"), test_loss_triangles: sum(ok, "test_loss_triangles"),
+    partition_loss_triangles: sum(ok, "partition_loss_triangles")};
+  const bars = [library, ...rowsShown];
+  const height = top + bars.length * (barHeight + 4) + 14;
   const svg = svgElement("svg", {width: width, height: height, viewBox: `0 0 ${width} ${height}`});
-  worst.forEach((row, k) => {
-    const y = top + k * (barHeight + 4);
-    svg.append(svgElement("text", {x: left - 6, y: y + barHeight - 3, "text-anchor": "end"}, row.name.slice(0, 24)));
+  bars.forEach((row, k) => {
+    const y = top + k * (barHeight + 4) + (k > 0 ? 6 : 0);
+    svg.append(svgElement("text", {x: left - 6, y: y + barHeight - 3, "text-anchor": "end", "font-weight": k === 0 ? "bold" : "normal"},
+      row.name.slice(0, 24)));
     let x = left;
     for (const [key, css] of [["triangles_culled", "culled"], ["test_loss_triangles", "test-loss"], ["partition_loss_triangles", "partition-loss"]]) {
       const share = row.back_facing_triangles > 0 ? row[key] / row.back_facing_triangles : 0;
-      const bar = svgElement("rect", {class: "bar " + css, x: x, y: y, height: barHeight, width: share * (width - left - right)});
-      bar.append(svgElement("title", {}, `${row.file}: ${css.replace("-", " ")} ${percent(share)}`));
+      const bar = svgElement("rect", {class: "bar " + css + (k === 0 ? " library" : ""), x: x, y: y, height: barHeight,
+        width: share * (width - left - right)});
+      bar.append(svgElement("title", {}, `${row.file}: ${css.replace("-", " ")} ${percent(share)} (${count(row[key])} triangles)`));
       svg.append(bar);
       x += share * (width - left - right);
     }
@@ -195,7 +204,8 @@ function drawPlots() {
       (row) => row.a_efficiency, (row) => row.efficiency, {diagonal: true, xLabel: "A's efficiency", yLabel: "efficiency"}));
   else
     plots.append(element("p", {class: "muted", id: "plot-compare-missing"}, "Run the batch with --compare-meshopt to plot against meshoptimizer's pipeline."));
-  plots.append(lossBars(ok.slice().sort((a, b) => a.efficiency - b.efficiency).slice(0, 30)));
+  const lost = (row) => row.test_loss_triangles + row.partition_loss_triangles;
+  plots.append(lossBars(ok.slice().sort((a, b) => lost(b) - lost(a)).slice(0, 30)));
 }
 
 function drawErrors() {
@@ -206,7 +216,7 @@ function drawErrors() {
   table.append(headerRow([["file", "text"], ["kind", "text"], ["message", "text"]]));
   for (const row of failed) {
     const line = element("tr", {class: "error-row"});
-    line.append(element("td", {class: "text"}, row.file), element("td", {class: "text"}, row.error_kind), element("td", {class: "message"}, row.error));
+    line.append(element("td", {class: "text wrap"}, row.file), element("td", {class: "text"}, row.error_kind), element("td", {class: "message"}, row.error));
     table.append(line);
   }
   box.append(table);
