@@ -3,6 +3,7 @@ line's batch: worker processes, crash isolation, resuming) or on a Dask cluster.
 
 import io
 import os
+import signal
 import subprocess
 import tempfile
 
@@ -40,7 +41,9 @@ def _local_batch(paths, output_dir, pairs, compare, per_view, per_cluster, jobs,
     try:
         _, errors = process.communicate()
     except KeyboardInterrupt:
-        # The batch had Ctrl-C too: it finishes its rows (the folder stays consistent) and stops.
+        # The batch stops as on its own Ctrl-C (a notebook's interrupt reaches this process only): it
+        # writes the rows it has, the folder stays consistent, and the same call resumes.
+        process.send_signal(signal.SIGINT)
         process.wait()
         raise
     # 0: every mesh ok; 3: finished with error rows, which the table holds.

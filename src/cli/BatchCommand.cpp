@@ -73,9 +73,9 @@ int lockFolder(const fs::path& folder) {
     return fd;
 }
 
-// Files a killed worker was writing (OutputFiles.h names them ".NAME.partial-PID.EXT").
+// Files a killed worker or batch was writing (OutputFiles.h names them ".NAME.partial-PID.EXT").
 void removePartialFiles(const fs::path& folder) {
-    static const std::regex partial(R"(\..*\.partial-[0-9]+\.json)");
+    static const std::regex partial(R"(\..*\.partial-[0-9]+\.(json|csv|html))");
     std::error_code error;
     for (const fs::directory_entry& entry : fs::directory_iterator(folder, error))
         if (std::regex_match(entry.path().filename().string(), partial)) fs::remove(entry.path(), error);
@@ -317,6 +317,7 @@ int runBatch(const BatchOptions& options) {
     const fs::path folder = options.output;
     fs::create_directories(folder / "meshes");
     const int lock = lockFolder(folder);
+    removePartialFiles(folder);
     removePartialFiles(folder / "meshes");
     BatchPlan plan = planBatch(options, config, folder);
     // The kept rows alone first: from here on the file holds one row per mesh, whenever it stops.
@@ -324,11 +325,12 @@ int runBatch(const BatchOptions& options) {
     note(options.quiet, std::to_string(plan.meshes.size()) + " meshes, " + std::to_string(plan.skipped) +
                             " skipped (done before with the same content and settings)");
     {
+        // Held while the results are written too: a second Ctrl-C cannot cut them short.
         StopSignals signals;
         runMeshes(plan, options, config, folder);
+        removePartialFiles(folder / "meshes");
+        writeResults(plan, folder, config);
     }
-    removePartialFiles(folder / "meshes");
-    writeResults(plan, folder, config);
     ::close(lock);
     const BatchCounts counts = countRows(plan);
     const size_t left = plan.meshes.size() - counts.ok - counts.errors;

@@ -104,7 +104,8 @@ function drawHeader() {
 
 function drawTotals() {
   const back = sum(ok, "back_facing_triangles");
-  const share = (key) => (back > 0 ? sum(ok, key) / back : 1);
+  // Nothing facing away culls everything (efficiency 1), as the statistics count it; no mesh, nothing.
+  const share = (key) => (back > 0 ? sum(ok, key) / back : ok.length > 0 && key === "triangles_culled" ? 1 : ok.length > 0 ? 0 : NaN);
   const totals = [
     ["meshes", count(rows.length) + (data.meshes > rows.length ? " of " + count(data.meshes) : "")],
     ["ok", count(ok.length)], ["errors", count(failed.length)], ["triangles", count(sum(ok, "triangles"))],
