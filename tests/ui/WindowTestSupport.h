@@ -13,7 +13,6 @@
 #include <QtTest>
 
 #include <QVTKOpenGLNativeWidget.h>
-#include <vtkLegendBoxActor.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkRendererCollection.h>
@@ -58,8 +57,7 @@ inline vtkRenderer* observerRenderer(MainWindow& window) {
 // Every legend entry's text, one per line.
 inline QString legendText(const ClusterScene& scene) {
     QString text;
-    vtkLegendBoxActor* legend = scene.legend();
-    for (int i = 0; i < legend->GetNumberOfEntries(); ++i) text += QString::fromUtf8(legend->GetEntryString(i)) + '\n';
+    for (const LegendEntry& entry : scene.legend().entries()) text += QString::fromStdString(entry.label) + '\n';
     return text;
 }
 
