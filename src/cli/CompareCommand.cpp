@@ -29,7 +29,7 @@ void runCompare(const CompareOptions& options) {
     warnAboutBudget(runA, "A: ");
     warnAboutBudget(runB, "B: ");
     note(options.quiet, "comparing A and B");
-    const Comparison comparison = compareClusterSets(prepared, a, b, viewsFor(base, prepared.box), progress);
+    const Comparison comparison = compareClusterSets(prepared, {a, settingsA}, {b, settingsB}, viewsFor(base, prepared.box), progress);
     // Unequal counts make the comparison unfair: said even with --quiet.
     const std::string warning = clusterCountWarning(comparison);
     if (!warning.empty()) warn(warning);

@@ -119,7 +119,8 @@ private slots:
         const ClusterSet& a = *window_->session().pinnedClusters();
         const ClusterSet& current = *window_->clusters();
         const Eye eye = window_->currentStatistics()->eye;
-        const std::vector<FaceDiff> diff = faceDiff(a, measureEye(prepared, a, eye, displayedTest(a.settings)).culled, current,
+        const Settings& settingsA = *window_->session().pinnedSettings();
+        const std::vector<FaceDiff> diff = faceDiff(a, measureEye(prepared, a, eye, displayedTest(settingsA)).culled, current,
                                                     window_->currentStatistics()->culled);
         vtkDataArray* shown = window_->scene()->meshPolyData()->GetCellData()->GetArray(comparisonArrayName);
         QVERIFY(shown);
@@ -131,7 +132,8 @@ private slots:
         QVERIFY(legendText(*window_->scene()).contains(QStringLiteral("culled by A only (%1 tris)").arg(onlyA)));
         // The paired statistics over the orbit are the core's comparison.
         QTRY_VERIFY(window_->session().orbitComparison());
-        const Comparison expected = compareClusterSets(prepared, a, current, orbitOf(window_->settings(), prepared.box));
+        const Comparison expected = compareClusterSets(prepared, {a, settingsA}, {current, window_->settings()},
+                                                       orbitOf(window_->settings(), prepared.box));
         const Comparison& orbit = *window_->session().orbitComparison();
         QCOMPARE(orbit.trianglesCulledOnlyA, expected.trianglesCulledOnlyA);
         QCOMPARE(orbit.trianglesCulledOnlyB, expected.trianglesCulledOnlyB);

@@ -168,7 +168,7 @@ private slots:
         // With the file builder chosen, a plain mesh still opens, with the default builder and a word why.
         QVERIFY(window_->openMeshBlocking(datasetPath("torus.off")));
         QVERIFY(window_->settings().builder == Settings{}.builder);
-        QVERIFY(window_->clusters()->settings.builder == Settings{}.builder);
+        QVERIFY(window_->clusters()->builtWith.builder == Settings{}.builder);
         QCOMPARE(window_->settingsPanel()->builderBox()->currentText(), QString::fromStdString(toString(Settings{}.builder)));
         QVERIFY(window_->statusBar()->currentMessage().contains(QStringLiteral("no cluster_id")));
         QCOMPARE(errors.count(), 0);
@@ -192,7 +192,7 @@ private slots:
         window_->setSettings(other);
         window_->waitUntilIdle();
         QCOMPARE(errors.count(), 1);
-        QCOMPARE(window_->clusters()->settings.limits.maxTriangles, size_t(64));
+        QCOMPARE(window_->clusters()->builtWith.limits.maxTriangles, size_t(64));
         window_->setSettings(Settings{});
         window_->waitUntilIdle();
     }

@@ -10,6 +10,7 @@
 #include "ClusterReport.h"
 #include "CommandLine.h"
 #include "Datasets.h"
+#include "core/CullMap.h"
 #include "core/Pipeline.h"
 #include "MeshLoading.h"
 #include "UiTestSupport.h"
@@ -128,7 +129,7 @@ private slots:
     void partitionArraysSpreadClusterValues() {
         const PreparedMesh prepared = loadMesh(datasetPath("icosphere.off").toStdString(), Settings{});
         const ClusterSet clusters = buildClusters(prepared, Settings{});
-        const auto arrays = partitionFaceArrays(prepared, clusters);
+        const auto arrays = partitionFaceArrays(prepared, clusters, CullTest::Apex);
         for (const auto& [name, values] : arrays) QCOMPARE(values.size(), prepared.mesh().faceCount());
         for (size_t f = 0; f < prepared.mesh().faceCount(); f += 17) {
             const uint32_t c = clusters.partition.clusterOfFace[f];
@@ -136,6 +137,8 @@ private slots:
             QCOMPARE(arrays.at("cone_axis_y")[f], clusters.bounds.cones[c].axis.y);
             QCOMPARE(arrays.at("cone_half_angle_deg")[f], glm::degrees(clusters.bounds.cones[c].halfAngle()));
             QCOMPARE(arrays.at("aabb_max_z")[f], double(clusters.bounds.boxes[c].max.z));
+            // The fraction of the test asked for, not of the one the clusters were built under.
+            QCOMPARE(arrays.at("cull_fraction")[f], cullFraction(clusters.cullMap, c, CullTest::Apex));
         }
     }
 
