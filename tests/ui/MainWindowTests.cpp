@@ -7,7 +7,13 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDockWidget>
+#include <QDialog>
 #include <QDoubleSpinBox>
+#include <QMouseEvent>
+#include <QProgressBar>
+#include <QStatusBar>
+#include <QTextBrowser>
+#include <QTimer>
 #include <QFile>
 #include <QSurfaceFormat>
 #include <QTabWidget>
@@ -39,13 +45,6 @@ using namespace conescope;
 using namespace conescope::testing;
 
 namespace {
-
-// Selects the entry of a combo box whose text is `name`, as a user would.
-void chooseInCombo(QComboBox* box, const std::string& name) {
-    const int index = box->findText(QString::fromStdString(name));
-    QVERIFY2(index >= 0, name.c_str());
-    box->setCurrentIndex(index);
-}
 
 // Types a value into a spin box and presses Enter.
 void typeInto(QDoubleSpinBox* box, double value) {
@@ -511,6 +510,85 @@ private slots:
         for (int axis = 0; axis < 3; ++axis)
             QVERIFY(std::abs(window_->eyePanel()->position()[axis] - window_->eyePosition()[axis]) < 1e-3);
         compareWithCore(*window_);
+    }
+
+    void nextViewAfterDraggingTheEyeGoesOnFromWhereItWas() {
+        QVERIFY(window_->openMeshBlocking(datasetPath("icosphere.off")));
+        const std::vector<Eye> views = orbitOf(window_->settings(), window_->preparedMesh()->box);
+        const long onView = 5;
+        for (size_t press = 0; press < views.size() && window_->session().orbitStep() != onView; ++press)
+            QTest::keyClick(window_.get(), Qt::Key_N);
+        QCOMPARE(window_->session().orbitStep(), onView);
+        window_->resetCamera();  // the eye and its handle in the picture
+        // The handle dragged a few pixels: the eye leaves the orbit, still nearest view 5.
+        QWidget* view = window_->observerView();
+        const QPoint start = window_->viewPositionOf(window_->eyePosition());
+        QVERIFY(view->rect().contains(start));
+        QTest::mousePress(view, Qt::LeftButton, Qt::NoModifier, start);
+        QMouseEvent move(QEvent::MouseMove, start + QPoint(-4, 3), view->mapToGlobal(start + QPoint(-4, 3)), Qt::NoButton,
+                         Qt::LeftButton, Qt::NoModifier);
+        QApplication::sendEvent(view, &move);
+        QTest::mouseRelease(view, Qt::LeftButton, Qt::NoModifier, start + QPoint(-4, 3));
+        QTRY_VERIFY(window_->eyePosition() != views[size_t(onView)].position);
+        QCOMPARE(window_->session().orbitStep(), -1L);
+        const glm::dvec3 center(window_->preparedMesh()->box.center());
+        const glm::dvec3 direction = glm::normalize(window_->eyePosition() - center);
+        size_t nearest = 0;
+        for (size_t v = 0; v < views.size(); ++v)
+            if (glm::dot(direction, glm::normalize(views[v].position - center)) >
+                glm::dot(direction, glm::normalize(views[nearest].position - center)))
+                nearest = v;
+        QCOMPARE(long(nearest), onView);
+        // N: the view after it, not the first; P from there goes back.
+        QTest::keyClick(window_.get(), Qt::Key_N);
+        QCOMPARE(window_->session().orbitStep(), onView + 1);
+        QCOMPARE(window_->eyePosition(), views[size_t(onView + 1)].position);
+        QTest::keyClick(window_.get(), Qt::Key_P);
+        QCOMPARE(window_->session().orbitStep(), onView);
+    }
+
+    void progressBarShowsItsWholeText() {
+        QVERIFY(window_->openMeshBlocking(datasetPath("torus.off")));
+        QProgressBar* bar = window_->statusBar()->findChild<QProgressBar*>();
+        QVERIFY(bar);
+        // Progress as a long orbit reports it.
+        Session& session = window_->session();
+        emit session.taskStarted(QStringLiteral("Orbit statistics"));
+        emit session.progressChanged(0.88, QStringLiteral("orbit statistics"));
+        QApplication::processEvents();
+        QCOMPARE(bar->text(), QStringLiteral("orbit statistics 88%"));
+        const int textWidth = bar->fontMetrics().horizontalAdvance(bar->text());
+        QVERIFY2(bar->width() >= textWidth + 12, qPrintable(QStringLiteral("bar %1 px for %2 px of text").arg(bar->width()).arg(textWidth)));
+        emit session.progressChanged(0.5, QStringLiteral("Comparing A and B over the orbit"));
+        QApplication::processEvents();
+        QVERIFY(bar->width() >= bar->fontMetrics().horizontalAdvance(bar->text()) + 12);
+        saveWindowPicture(QStringLiteral("window-progress.png"));
+        emit session.idle();
+    }
+
+    void f1HelpListsEveryShortcut() {
+        // The dialog F1 opens, read while it is open, then closed.
+        QString shown;
+        QTimer reader;
+        connect(&reader, &QTimer::timeout, this, [&]() {
+            auto* dialog = qobject_cast<QDialog*>(QApplication::activeModalWidget());
+            if (!dialog) return;
+            if (auto* browser = dialog->findChild<QTextBrowser*>()) shown = browser->toPlainText();
+            dialog->reject();
+        });
+        reader.start(20);
+        QTest::keyClick(window_.get(), Qt::Key_F1);
+        QTRY_VERIFY(!shown.isEmpty());
+        reader.stop();
+        QApplication::setActiveWindow(window_.get());
+        QTRY_COMPARE(QApplication::activeWindow(), window_.get());
+        QVERIFY2(shown.contains(QStringLiteral("Show the Gauss map")), qPrintable(shown));
+        for (QAction* action : window_->findChildren<QAction*>()) {
+            if (action->shortcut().isEmpty()) continue;
+            QString text = action->text();
+            text.remove(QLatin1Char('&'));
+            QVERIFY2(shown.contains(text), qPrintable(text + " " + action->shortcut().toString()));
+        }
     }
 
     void resetKeyLooksAtTheMesh() {

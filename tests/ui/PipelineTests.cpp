@@ -196,6 +196,20 @@ private slots:
         }
     }
 
+    void loadMessagesAreSentences() {
+        // A reader's note that ends its sentence, then the winding warning: not "faces.; warning:".
+        PreparedMesh prepared = loadMesh(datasetPath("icosphere.off").toStdString(), Settings{});
+        prepared.readerNotes = {"Skipped 2 primitives of points or lines: they have no faces.", "merged 3 vertices into others"};
+        prepared.report.inconsistentEdges = 4;
+        const QString message = QString::fromStdString(loadMessage(prepared));
+        QVERIFY2(!message.contains(QStringLiteral(".;")) && !message.contains(QStringLiteral("; warning")), qPrintable(message));
+        QVERIFY2(message.startsWith(QStringLiteral("Skipped 2 primitives of points or lines: they have no faces. Merged 3 vertices into "
+                                                   "others. Warning: the mesh has 4 edges")),
+                 qPrintable(message));
+        QVERIFY(message.endsWith(QStringLiteral("tick 'Fix winding' in Settings to repair.")));
+        QCOMPARE(QString::fromStdString(joinSentences({"", "one", "two!", "  "})), QStringLiteral("One. Two!"));
+    }
+
     void bundledMeshIsFound() {
         const QString path = defaultMeshPath();
         QVERIFY(!path.isEmpty());

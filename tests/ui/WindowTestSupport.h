@@ -5,6 +5,7 @@
 #include <memory>
 
 #include <QApplication>
+#include <QComboBox>
 #include <QCoreApplication>
 #include <QDir>
 #include <QStandardPaths>
@@ -49,6 +50,13 @@ struct WindowFixture {
         window_->grab().save(QDir(outputDir_).filePath(name));
     }
 };
+
+// Selects the entry of a combo box whose text is `name`, as a user would.
+inline void chooseInCombo(QComboBox* box, const std::string& name) {
+    const int index = box->findText(QString::fromStdString(name));
+    QVERIFY2(index >= 0, name.c_str());
+    box->setCurrentIndex(index);
+}
 
 inline vtkRenderer* observerRenderer(MainWindow& window) {
     return window.observerView()->renderWindow()->GetRenderers()->GetFirstRenderer();
