@@ -3,16 +3,11 @@
 #include <QEventLoop>
 #include <QTimer>
 
+#include <memory>
+
 #include "MainWindow.h"
 
 namespace conescope {
-
-namespace {
-
-// How often the player looks whether the background work of a step is done.
-constexpr int idlePollMs = 10;
-
-}  // namespace
 
 ReplayPlayer::ReplayPlayer(MainWindow& window, QObject* parent) : QObject(parent), window_(window) {
     connect(&window_, &MainWindow::errorShown, this, [this](const QString& message) {
@@ -62,7 +57,6 @@ void ReplayPlayer::playNext() {
             fail(stepError_.toStdString());
             return;
         }
-        window_.render();
         emit stepFinished(steps_[next_].number);
         ++next_;
         playNext();
@@ -72,11 +66,16 @@ void ReplayPlayer::playNext() {
 void ReplayPlayer::whenIdle(const std::function<void()>& then) {
     // Through the event loop first: queued work (an eye moved while dragging, a render) comes in.
     QTimer::singleShot(0, this, [this, then]() {
-        if (window_.session().busy()) {
-            QTimer::singleShot(idlePollMs, this, [this, then]() { whenIdle(then); });
+        if (!window_.session().busy()) {
+            then();
             return;
         }
-        then();
+        // Once, when the session's last background task has ended; then through the loop again.
+        auto connection = std::make_shared<QMetaObject::Connection>();
+        *connection = connect(&window_.session(), &Session::idle, this, [this, then, connection]() {
+            disconnect(*connection);
+            whenIdle(then);
+        });
     });
 }
 
