@@ -12,6 +12,7 @@
 #include <QMessageBox>
 #include <QMimeData>
 #include <QProcess>
+#include <QProgressBar>
 #include <QPushButton>
 #include <QSet>
 #include <QSignalSpy>
@@ -317,6 +318,25 @@ private slots:
         QCOMPARE(exported["clusters"].get<size_t>(), core.clusters);
         window_->setSettings(Settings{});
         window_->waitUntilIdle();
+    }
+
+    void progressBarShowsItsWholeText() {
+        QVERIFY(window_->openMeshBlocking(datasetPath("torus.off")));
+        QProgressBar* bar = window_->statusBar()->findChild<QProgressBar*>();
+        QVERIFY(bar);
+        // Progress as a long orbit reports it.
+        Session& session = window_->session();
+        emit session.taskStarted(QStringLiteral("Orbit statistics"));
+        emit session.progressChanged(0.88, QStringLiteral("orbit statistics"));
+        QApplication::processEvents();
+        QCOMPARE(bar->text(), QStringLiteral("orbit statistics 88%"));
+        const int textWidth = bar->fontMetrics().horizontalAdvance(bar->text());
+        QVERIFY2(bar->width() >= textWidth + 12, qPrintable(QStringLiteral("bar %1 px for %2 px of text").arg(bar->width()).arg(textWidth)));
+        emit session.progressChanged(0.5, QStringLiteral("Comparing A and B over the orbit"));
+        QApplication::processEvents();
+        QVERIFY(bar->width() >= bar->fontMetrics().horizontalAdvance(bar->text()) + 12);
+        saveWindowPicture(QStringLiteral("window-progress.png"));
+        emit session.idle();
     }
 
     void errorDialogOpensAfterTheProgressBarIsGone() {
