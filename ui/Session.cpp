@@ -217,8 +217,9 @@ void Session::requestOrbit() {
             return measureOrbit(*snapshot.prepared, *snapshot.clusters, snapshot.settings, progress);
         },
         [this, snapshot](TestStatistics& orbit) {
-            // Made for another snapshot meanwhile: its own orbit follows.
-            if (snapshot.clusters != shown_.clusters || !sameSettings(snapshot.settings, shown_.settings)) return;
+            // Made for other clusters meanwhile: their own orbit follows. (A change of test, views or
+            // projection asks for a new orbit, which cancels this one.)
+            if (snapshot.clusters != shown_.clusters) return;
             orbit_ = std::move(orbit);
             emit orbitChanged();
         },

@@ -4,7 +4,6 @@
 
 #include "SceneBinding.h"
 #include "TaskGroups.h"
-#include "core/SettingsSchema.h"
 
 namespace conescope {
 
@@ -81,10 +80,9 @@ void Session::requestOrbitComparison() {
             return compareClusterSets(*b.prepared, a.configuration(), b.configuration(), views, progress);
         },
         [this, a, b](Comparison& comparison) {
-            // A or B changed meanwhile: their own comparison follows.
-            if (!pin_ || pin_->clusters != a.clusters || shown_.clusters != b.clusters || !sameSettings(pin_->settings, a.settings) ||
-                !sameSettings(shown_.settings, b.settings))
-                return;
+            // Other clusters meanwhile: their own comparison follows. (Other tests or views ask for a
+            // new comparison, which cancels this one.)
+            if (!pin_ || pin_->clusters != a.clusters || shown_.clusters != b.clusters) return;
             orbitComparison_ = std::move(comparison);
             emit comparisonChanged();
         },

@@ -263,6 +263,28 @@ private slots:
         unpinAndResetSettings();
     }
 
+    void measurementsInFlightSurviveAChangeThatDoesNotConcernThem() {
+        openElephantWithFewViews();
+        Settings meshopt = window_->settings();
+        meshopt.builder = Builder::Meshopt;
+        window_->setSettings(meshopt);
+        window_->waitUntilIdle();
+        QTest::keyClick(window_.get(), Qt::Key_A);
+        // New views start the orbit and the comparison; the builder's effort, which meshoptimizer's
+        // builder does not use, changes before either is delivered.
+        Settings more = window_->settings();
+        more.views = 40;
+        window_->setSettings(more);
+        more.effort = Effort::Fast;
+        window_->setSettings(more);
+        window_->waitUntilIdle();
+        QVERIFY(window_->session().orbitStatistics());
+        QCOMPARE(window_->orbitStatistics().size(), size_t(40));
+        QVERIFY(window_->session().orbitComparison());
+        QCOMPARE(window_->session().orbitComparison()->views.size(), size_t(40));
+        unpinAndResetSettings();
+    }
+
     void pickedClusterPageKeepsItsPlaceWhileTheEyeMoves() {
         QVERIFY(window_->openMeshBlocking(datasetPath("torus.off")));
         window_->setEyePosition({0.4, -2.2, 1.3});
