@@ -4,6 +4,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "core/Pipeline.h"
 
@@ -17,7 +18,12 @@ PreparedMesh loadMesh(const std::string& path, const Settings& settings, const P
                       std::shared_ptr<MeshletStream>* meshlets = nullptr);
 
 // What the user should know about a loaded mesh, in one line for the status bar: the reader's notes
-// and the winding warning (with how to repair it, or what was repaired). Empty when nothing.
+// and the winding warning (with how to repair it, or what was repaired), as sentences. Empty when
+// nothing.
 std::string loadMessage(const PreparedMesh& prepared);
+
+// Pieces of text as sentences on one line: each capitalised and ended with a full stop (unless it
+// ends with one already, or ! or ?), separated by spaces; empty pieces left out.
+std::string joinSentences(const std::vector<std::string>& pieces);
 
 }  // namespace conescope

@@ -76,7 +76,7 @@ PreparedMesh prepareMesh(std::shared_ptr<const Mesh> mesh, const std::string& pa
 ClusterSet buildClusters(const PreparedMesh& prepared, const Settings& settings, const ClusterSet* previous,
                          const ProgressCallback& progress, MeshletStream* meshlets) {
     ClusterSet clusters;
-    clusters.settings = settings;
+    clusters.builtWith = settings;
     const ConeMethod cone = displayedCone(settings);
     // The optimized builder hands over its parts as they are made: their bounds are made at once,
     // on the core that made the part, while the other core still builds.
@@ -97,7 +97,7 @@ ClusterSet buildClusters(const PreparedMesh& prepared, const Settings& settings,
         parts[part] = std::move(made);
         partBoundsSeconds += secondsSince(start);
     };
-    if (previous && !partitionChanged(previous->settings, settings)) {
+    if (previous && !partitionChanged(previous->builtWith, settings)) {
         clusters.partition = previous->partition;
         clusters.partitionSeconds = previous->partitionSeconds;
     } else {
@@ -149,6 +149,21 @@ std::vector<Eye> orbitOf(const Settings& settings, const Aabb& worldBox) {
     Settings orbit = settings;
     orbit.eye.reset();
     return viewsFor(orbit, worldBox);
+}
+
+size_t nearestOrbitView(const Settings& settings, const Aabb& worldBox, const glm::dvec3& position) {
+    const glm::dvec3 center(worldBox.center());
+    const std::vector<Eye> views = orbitOf(settings, worldBox);
+    size_t nearest = 0;
+    double best = -2.0;
+    for (size_t v = 0; v < views.size(); ++v) {
+        // Cosine of the angle between the two directions from the centre (0 for a zero vector).
+        const glm::dvec3 a = position - center, b = views[v].position - center;
+        const double lengths = glm::length(a) * glm::length(b);
+        const double cosine = lengths > 0.0 ? glm::dot(a, b) / lengths : 0.0;
+        if (cosine > best) best = cosine, nearest = v;
+    }
+    return nearest;
 }
 
 EyeMeasurement measureEye(const PreparedMesh& prepared, const ClusterSet& clusters, const Eye& eye, CullTest test) {
@@ -246,7 +261,7 @@ RunStatistics measureRun(const PreparedMesh& prepared, const ClusterSet& cluster
         again.name = prepared.name;
         return measureRun(again, buildClusters(again, settings), settings, progress);
     }
-    if (partitionChanged(clusters.settings, settings))
+    if (partitionChanged(clusters.builtWith, settings))
         return measureRun(prepared, buildClusters(prepared, settings, &clusters), settings, progress);
     RunStatistics run;
     run.settings = settings;
@@ -264,7 +279,7 @@ RunStatistics measureRun(const PreparedMesh& prepared, const ClusterSet& cluster
     size_t step = 0;
     for (ConeMethod cone : settings.cones) {
         // The displayed cone's bounds are built already; the other cones get theirs for the same partition.
-        const bool built = cone == displayedCone(clusters.settings) && settings.sphere == clusters.settings.sphere;
+        const bool built = cone == displayedCone(clusters.builtWith) && settings.sphere == clusters.builtWith.sphere;
         if (!built) report(progress, double(step) / double(steps), "bounds (" + toString(cone) + ")");
         const ClusterBounds bounds = built ? ClusterBounds()
                                            : computeClusterBounds(prepared.mesh(), prepared.world, prepared.faces,
@@ -297,7 +312,8 @@ RunStatistics runStatistics(const Mesh& mesh, const Settings& settings, const st
     return measureRun(prepared, clusters, settings, progressWithin(progress, 0.1, 1.0));
 }
 
-std::map<std::string, std::vector<double>> partitionFaceArrays(const PreparedMesh& prepared, const ClusterSet& clusters) {
+std::map<std::string, std::vector<double>> partitionFaceArrays(const PreparedMesh& prepared, const ClusterSet& clusters,
+                                                               CullTest test) {
     const size_t faceCount = prepared.mesh().faceCount();
     std::map<std::string, std::vector<double>> arrays;
     auto spread = [&](const std::string& name, auto valueOfCluster) {
@@ -318,7 +334,7 @@ std::map<std::string, std::vector<double>> partitionFaceArrays(const PreparedMes
     }
     spread("sphere_radius", [&](uint32_t c) { return bounds.spheres[c].radius; });
     const CullMap& map = clusters.cullMap;
-    spread("cull_fraction", [&](uint32_t c) { return cullFraction(map, c, displayedTest(clusters.settings)); });
+    spread("cull_fraction", [&](uint32_t c) { return cullFraction(map, c, test); });
     spread("oracle_fraction", [&](uint32_t c) { return map.oracleFraction[c]; });
     return arrays;
 }

@@ -1,7 +1,6 @@
 #include "scene/ClusterScene.h"
 
 #include <vtkActor.h>
-#include <vtkLegendBoxActor.h>
 #include <vtkLookupTable.h>
 #include <vtkPolyData.h>
 #include <vtkRenderer.h>
@@ -91,7 +90,7 @@ void ClusterScene::addTo(vtkRenderer* renderer) const {
         for (vtkActor* actor : layer->actors()) renderer->AddActor(actor);
     for (SceneLayer* layer : impl_->drawingOrder())
         for (vtkProp* overlay : layer->overlays()) renderer->AddViewProp(overlay);
-    renderer->AddViewProp(impl_->legend.actor());
+    renderer->AddViewProp(impl_->legend.prop());
 }
 
 void ClusterScene::removeFrom(vtkRenderer* renderer) const {
@@ -99,7 +98,7 @@ void ClusterScene::removeFrom(vtkRenderer* renderer) const {
         for (vtkActor* actor : layer->actors()) renderer->RemoveActor(actor);
     for (SceneLayer* layer : impl_->drawingOrder())
         for (vtkProp* overlay : layer->overlays()) renderer->RemoveViewProp(overlay);
-    renderer->RemoveViewProp(impl_->legend.actor());
+    renderer->RemoveViewProp(impl_->legend.prop());
 }
 
 void ClusterScene::setLayerVisible(Layer layer, bool visible) {
@@ -202,7 +201,7 @@ vtkPolyData* ClusterScene::spherePolyData() const { return impl_->spheres.glyphs
 vtkLookupTable* ClusterScene::paletteLookupTable() const { return impl_->data.tables.palette; }
 vtkLookupTable* ClusterScene::decisionLookupTable() const { return impl_->data.tables.decision; }
 vtkLookupTable* ClusterScene::visibleClustersLookupTable() const { return impl_->data.tables.visible; }
-vtkLegendBoxActor* ClusterScene::legend() const { return impl_->legend.actor(); }
+const SceneLegend& ClusterScene::legend() const { return impl_->legend; }
 
 vtkActor* ClusterScene::actor(Layer layer) const {
     SceneLayer* shown = impl_->layer(layer);

@@ -24,11 +24,11 @@ namespace conescope {
 
 namespace {
 
-// Colours of the drawing; the view vector takes the eye's colour, the target the highlight's.
+// Colours of the drawing; the target takes the highlight's (it is the picked cluster's point).
 constexpr Rgb regionColour{0.20, 0.85, 0.35};
 constexpr Rgb axisColour{0.95, 0.95, 0.95};
 constexpr Rgb pointBack{0.20, 0.80, 0.30};
-constexpr Rgb pointFront{0.95, 0.25, 0.20};
+constexpr Rgb pointFront{1.00, 0.35, 0.55};  // rose: red is a false cull, orange a miss
 constexpr double regionOpacity = 0.15;
 
 // Points around a region's boundary at one distance: a circle, or the pyramid's eight edges.
@@ -150,7 +150,7 @@ TestLayer::TestLayer(const SceneData& data)
     region_->GetProperty()->SetOpacity(regionOpacity);
     region_->GetProperty()->BackfaceCullingOff();
     setColour(axis_, axisColour);
-    setColour(view_, SceneColours::eye);
+    setColour(view_, SceneColours::viewVector);
     auto labelMapper = vtkSmartPointer<vtkLabeledDataMapper>::New();
     labelMapper->SetInputData(emptyPolyData());
     labelMapper->SetLabelModeToLabelFieldData();
@@ -171,7 +171,8 @@ std::vector<vtkProp*> TestLayer::overlays() const { return {labels_}; }
 void TestLayer::addLegendEntries(FaceColoring, std::vector<LegendEntry>& entries) const {
     const std::string test = toString(drawing_.test);
     if (!drawing_.region.empty()) entries.push_back({"eyes " + test + " culls from", {regionColour}});
-    entries.push_back({"view vector v, cone axis", {SceneColours::eye, axisColour}});
+    entries.push_back({"view vector v", {SceneColours::viewVector}});
+    entries.push_back({"cone axis V1", {axisColour}});
     if (!drawing_.why.vertices.empty() || drawing_.test == CullTest::Aabb || drawing_.test == CullTest::AabbFast)
         entries.push_back({"point sees back / may face", {pointBack, pointFront}});
 }

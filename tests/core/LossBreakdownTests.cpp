@@ -205,7 +205,7 @@ TEST(LossBreakdown, PerFaceArraysAgreeWithTheViewsCounts) {
         EXPECT_EQ(triangles[size_t(FaceLoss::Test)], view.testLossTriangles);
         EXPECT_EQ(triangles[size_t(FaceLoss::Partition)], view.partitionLossTriangles);
     }
-    const auto partitionArrays = partitionFaceArrays(prepared, clusters);
+    const auto partitionArrays = partitionFaceArrays(prepared, clusters, CullTest::Octagon);
     for (size_t f = 0; f < mesh->faceCount(); f += 7)
         EXPECT_GE(partitionArrays.at("oracle_fraction")[f], partitionArrays.at("cull_fraction")[f]);
 }
