@@ -61,11 +61,18 @@ struct ClusterScene::Impl {
 
     // The legend lists the visible layers' entries in the order of allLayers().
     void updateLegend() {
+        legendStale = false;
         std::vector<LegendEntry> entries;
         for (Layer which : allLayers())
             if (SceneLayer* shown = layer(which); shown && shown->visible() && shown->hasContent())
                 shown->addLegendEntries(coloring, entries);
         legend.show(entries);
+    }
+    // Laying the legend out measures its text with VTK's FreeType tools, which are not thread-safe:
+    // a scene made on a worker thread lays it out when it is first added to a view or asked for.
+    bool legendStale = true;
+    void updateStaleLegend() {
+        if (legendStale) updateLegend();
     }
 };
 
@@ -78,7 +85,6 @@ ClusterScene::ClusterScene(const Mesh& mesh, const std::vector<glm::vec3>& world
         if (layer == Layer::Legend) impl_->legend.setVisible(shown);
         else impl_->layer(layer)->setVisible(shown);
     }
-    impl_->updateLegend();
 }
 
 ClusterScene::~ClusterScene() = default;
@@ -90,6 +96,7 @@ void ClusterScene::addTo(vtkRenderer* renderer) const {
         for (vtkActor* actor : layer->actors()) renderer->AddActor(actor);
     for (SceneLayer* layer : impl_->drawingOrder())
         for (vtkProp* overlay : layer->overlays()) renderer->AddViewProp(overlay);
+    impl_->updateStaleLegend();
     renderer->AddViewProp(impl_->legend.prop());
 }
 
@@ -201,7 +208,10 @@ vtkPolyData* ClusterScene::spherePolyData() const { return impl_->spheres.glyphs
 vtkLookupTable* ClusterScene::paletteLookupTable() const { return impl_->data.tables.palette; }
 vtkLookupTable* ClusterScene::decisionLookupTable() const { return impl_->data.tables.decision; }
 vtkLookupTable* ClusterScene::visibleClustersLookupTable() const { return impl_->data.tables.visible; }
-const SceneLegend& ClusterScene::legend() const { return impl_->legend; }
+const SceneLegend& ClusterScene::legend() const {
+    impl_->updateStaleLegend();
+    return impl_->legend;
+}
 
 vtkActor* ClusterScene::actor(Layer layer) const {
     SceneLayer* shown = impl_->layer(layer);
