@@ -1,0 +1,189 @@
+#include "Lesson.h"
+
+#include <cmath>
+
+#include "LessonSteps.h"
+#include "LessonText.h"
+
+namespace conescope {
+
+using namespace lessontext;
+
+std::string toString(LessonOutcome outcome) {
+    switch (outcome) {
+        case LessonOutcome::Culled: return "culled";
+        case LessonOutcome::LostToTest: return "lost to the test";
+        case LessonOutcome::LostToPartition: return "lost to the partition";
+        case LessonOutcome::Visible: return "visible";
+        case LessonOutcome::FalseCull: return "false cull";
+    }
+    return "visible";
+}
+
+std::string testInWords(CullTest test) {
+    switch (test) {
+        case CullTest::Oracle: return "the oracle";
+        case CullTest::Vertices: return "the vertex test";
+        case CullTest::Aabb: return "the bounding-box test";
+        case CullTest::AabbFast: return "the bounding-box test without square roots";
+        case CullTest::Sphere: return "the bounding-sphere test";
+        case CullTest::Apex: return "the apex test";
+        case CullTest::MeshoptSphere: return "meshoptimizer's sphere test";
+        case CullTest::Octagon: return "the octagon test";
+    }
+    return "the test";
+}
+
+namespace {
+
+LessonOutcome outcomeOf(const CullExplanation& why) {
+    if (why.culled) return why.frontFaces > 0 ? LessonOutcome::FalseCull : LessonOutcome::Culled;
+    if (why.backFaces == 0) return LessonOutcome::Visible;
+    return why.frontFaces == 0 ? LessonOutcome::LostToTest : LessonOutcome::LostToPartition;
+}
+
+std::string facesStep(const Lesson& lesson, const std::string& meshName) {
+    const CullExplanation& why = lesson.why;
+    std::string text = "Cluster " + std::to_string(lesson.cluster) + (meshName.empty() ? "" : " of " + meshName) +
+                       " is a patch of " + count(lesson.faces, "neighbouring face", "neighbouring faces");
+    if (lesson.triangles != lesson.faces) text += " (" + count(lesson.triangles, "triangle", "triangles") + ")";
+    text += " with " + count(lesson.vertices, "vertex", "vertices") + ". ";
+    text += "Each arrow is a face normal: it stands at right angles on its face and points out of the surface, "
+            "to the side the face can be seen from. A face turns its back on the eye when the eye is behind it, "
+            "on the side its normal points away from.";
+    if (why.degenerateFaces > 0)
+        text += " " + count(why.degenerateFaces, "face has", "faces have") + " no area and so no normal; it never decides anything.";
+    return text;
+}
+
+std::string gaussStep(const Lesson& lesson) {
+    const CullExplanation& why = lesson.why;
+    std::string text = "Slide the " + count(lesson.normals.size(), "arrow", "arrows") +
+                       " so that they all start at one point: their tips then lie on a sphere of radius 1, the Gauss "
+                       "sphere. Where the patch is flat the tips bunch together; where it bends they spread apart. "
+                       "Seen from the eye, a face turns away when its normal points away from the eye. ";
+    if (why.backFaces == 0)
+        text += "From the current eye no face turns away";
+    else if (why.frontFaces == 0)
+        text += "From the current eye all " + count(why.backFaces, "face turns", "faces turn") + " away";
+    else
+        text += "From the current eye " + count(why.backFaces, "face turns", "faces turn") + " away and " +
+                count(why.frontFaces, "faces", "face") + " the eye";
+    return text + ": the cluster may be skipped only when every one turns away.";
+}
+
+std::string coneStep(const Lesson& lesson) {
+    const CullExplanation& why = lesson.why;
+    const std::string shown = toString(lesson.coneMethod);
+    if (!why.cullable) {
+        std::string text = "A cone holds the normals when none is more than its half-angle \u03b1 away from its axis V1. "
+                           "No cone narrower than a half-sphere holds these: they point into more than half of all "
+                           "directions, so no cone test can ever cull this cluster, from any eye.";
+        if (lesson.minimalCone.cullable)
+            text += " (The narrowest cone would need \u03b1 = " + degrees(glm::degrees(lesson.minimalCone.halfAngle())) +
+                    "; the " + shown + " cone found none below 90\u00b0.)";
+        return text;
+    }
+    std::string text = "A cone holds the normals when none is more than its half-angle \u03b1 away from its axis V1. The " +
+                       shown + " cone the test uses has V1 = " + vector3(why.axis) + " and \u03b1 = " +
+                       degrees(why.halfAngleDegrees) + ": the normal farthest from V1 has n\u00b7V1 = cos \u03b1 = " +
+                       dot(why.cosHalfAngle) + ". Seed 000 calls 90\u00b0 \u2212 \u03b1 = " + degrees(why.angleBDegrees) +
+                       " the angle B. ";
+    const double average = glm::degrees(lesson.averageCone.halfAngle());
+    const double minimal = glm::degrees(lesson.minimalCone.halfAngle());
+    const std::string averageText = lesson.averageCone.cullable ? degrees(average) : "more than 90\u00b0";
+    if (lesson.coneMethod == ConeMethod::Minimal)
+        text += "It is the narrowest cone that holds them; the seed's average cone (V1 = the mean normal) needs \u03b1 = " +
+                averageText + ". ";
+    else if (lesson.coneMethod == ConeMethod::Average)
+        text += "V1 is the mean normal, as in the seed; the narrowest cone (minimal) needs only \u03b1 = " + degrees(minimal) + ". ";
+    else
+        text += "The seed's average cone needs \u03b1 = " + averageText + ", the narrowest (minimal) " + degrees(minimal) + ". ";
+    return text + "A narrower cone culls from more places: seen from far away this one culls from (1 \u2212 sin \u03b1)/2 = " +
+           percent((1.0 - std::sin(glm::radians(why.halfAngleDegrees))) / 2.0) + " of all directions.";
+}
+
+std::string verdictStep(const Lesson& lesson) {
+    const CullExplanation& why = lesson.why;
+    const std::string unit = lesson.test == CullTest::Octagon ? "g\u00b7v" : "v\u00b7V1";
+    std::string text;
+    if (lesson.test == CullTest::Oracle)
+        text = why.culled ? "Culled: the oracle found every face turned away. " : "Drawn: the oracle found a face that is not turned away. ";
+    else if (why.culled)
+        text = "Culled: the test holds with " + amount(why.margin) + " to spare (" + unit + " could drop that much). ";
+    else if (std::isnan(why.margin))
+        text = "Drawn: " + testInWords(lesson.test) + " cannot cull this cluster from here. ";
+    else
+        text = "Drawn: the test falls short by " + amount(-why.margin) + ". ";
+    if (why.culled != why.exactCulled)
+        text += "The exact test would cull it, but it lies within the fast kernel's rounding slack of the threshold. ";
+    const std::string triangles = count(lesson.backTriangles, "back-facing triangle", "back-facing triangles");
+    switch (lesson.outcome) {
+        case LessonOutcome::Culled:
+            text += "The oracle, which checks every face, agrees: all " + count(why.backFaces, "face turns", "faces turn") +
+                    " away, and " + count(lesson.triangles, "triangle is", "triangles are") + " skipped. ";
+            break;
+        case LessonOutcome::FalseCull:
+            text += "But the oracle finds " + count(why.frontFaces, "face", "faces") +
+                    " facing the eye: a false cull, which must never happen. Please report it. ";
+            break;
+        case LessonOutcome::LostToTest:
+            text += "Yet the oracle, which checks every face, finds all of them turned away: the cluster could have been "
+                    "skipped. Its " + triangles + " are lost to the test: a narrower cone, a tighter bound or another test "
+                    "could save them, with the same clusters. ";
+            break;
+        case LessonOutcome::LostToPartition:
+            text += "The oracle finds " + count(why.frontFaces, "face", "faces") + " facing the eye, so the cluster must be "
+                    "drawn and no test may cull it. Its " + triangles + " are lost to the partition: only grouping the "
+                    "faces differently could save them. ";
+            break;
+        case LessonOutcome::Visible:
+            text += "The oracle agrees: no face turns away, so nothing is lost. ";
+            break;
+    }
+    if (lesson.test == CullTest::Oracle)
+        return text + "From far away every face turns away from " + percent(lesson.oracleFraction) + " of all directions.";
+    return text + "From far away, the test culls this cluster from " + percent(lesson.cullFraction) +
+           " of all directions; every face turns away from " + percent(lesson.oracleFraction) +
+           " of them, the most any test could reach with these faces.";
+}
+
+}  // namespace
+
+Lesson makeLesson(const PreparedMesh& prepared, const ClusterSet& clusters, uint32_t cluster, const Eye& eye, CullTest test) {
+    Lesson lesson;
+    const ClusterBounds& bounds = clusters.bounds;
+    lesson.cluster = cluster;
+    lesson.test = test;
+    lesson.coneMethod = bounds.coneMethod;
+    lesson.eye = eye;
+    const CullingInput input = cullingInput(prepared, clusters);
+    lesson.why = explainCull(input, cluster, eye, test);
+    const uint32_t* faces = bounds.faces.faces.data() + bounds.faces.starts[cluster];
+    lesson.faces = bounds.faces.starts[cluster + 1] - bounds.faces.starts[cluster];
+    lesson.triangles = bounds.triangles[cluster];
+    lesson.vertices = bounds.vertexStarts[cluster + 1] - bounds.vertexStarts[cluster];
+    lesson.sphere = bounds.spheres[cluster];
+    for (size_t i = 0; i < lesson.faces; ++i) {
+        const uint32_t face = faces[i];
+        if (!prepared.faces.degenerate[face]) lesson.normals.push_back(prepared.faces.normals[face]);
+        if (classifyFace(prepared.mesh(), prepared.world, prepared.faces, face, eye) == Facing::Back)
+            lesson.backTriangles += prepared.mesh().faceSize(face) - 2;
+    }
+    lesson.averageCone = clusterCone(prepared.mesh(), prepared.world, prepared.faces, faces, lesson.faces, ConeMethod::Average);
+    lesson.minimalCone = clusterCone(prepared.mesh(), prepared.world, prepared.faces, faces, lesson.faces, ConeMethod::Minimal);
+    lesson.cullFraction = cullFraction(clusters.cullMap, cluster, test);
+    lesson.oracleFraction = clusters.cullMap.oracleFraction[cluster];
+    lesson.outcome = outcomeOf(lesson.why);
+    lesson.steps = {
+        {"The cluster and its face normals", facesStep(lesson, prepared.name)},
+        {"The normals on the Gauss sphere", gaussStep(lesson)},
+        {"The cone that holds them", coneStep(lesson)},
+        {"The bound: where the faces are", boundStep(lesson)},
+        {"The eye, the view vector and the test", testStep(lesson)},
+        {"The verdict, and what the oracle says", verdictStep(lesson)},
+    };
+    return lesson;
+}
+
+}  // namespace conescope

@@ -1,0 +1,161 @@
+#include "LessonSteps.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "LessonText.h"
+
+namespace conescope {
+
+using namespace lessontext;
+
+namespace {
+
+const std::string manyDirections =
+    "The eye sees each face from a slightly different direction, so one view vector can stand for all of them "
+    "only with some care. ";
+
+std::string apexSentence(const Lesson& lesson) {
+    return "This test uses the apex, a point " + number(glm::distance(lesson.why.apex, lesson.sphere.center)) +
+           " from the cluster's centre along \u2212V1, behind the plane of every one of its faces. An eye that sees the "
+           "apex from behind the cone sees every face from behind, so one view vector, from the eye to the apex, "
+           "stands for all of them.";
+}
+
+std::string holdsOrFails(double margin) { return margin > 0.0 ? "so the test holds" : "so the test fails"; }
+
+std::string eyeSentence(const Lesson& lesson) {
+    if (lesson.eye.orthographic)
+        return "The eye is infinitely far away, looking along d = " + vector3(lesson.eye.direction) +
+               ": every view vector is d. ";
+    return "The eye is at e = " + vector3(lesson.eye.position) + ", " + number(lesson.why.distance) +
+           " from the cluster's centre. ";
+}
+
+// v.V1 > sin(alpha) for one view vector `v` (named `name`): the apex test's form, and every round
+// test's from a far eye.
+std::string roundCone(const Lesson& lesson, const std::string& name) {
+    const CullExplanation& why = lesson.why;
+    const double angle = glm::degrees(std::acos(std::clamp(why.viewDotAxis, -1.0, 1.0)));
+    const auto [value, threshold] = compared(why.viewDotAxis, why.threshold);
+    return "The test culls when " + name + "\u00b7V1 > sin \u03b1, that is when " + name + " is within B = " +
+           degrees(why.angleBDegrees) + " of V1. Here " + name + "\u00b7V1 = " + value + " and sin \u03b1 = " + threshold +
+           ": " + inequality(why.viewDotAxis, why.threshold) + ", " + holdsOrFails(why.margin) + " (" + name + " is " +
+           degrees(angle) + " from V1).";
+}
+
+// Every point or corner p: v = (p - e)/|p - e| must have v.V1 > sin(alpha).
+std::string eachPoint(const Lesson& lesson, const std::string& points, size_t total) {
+    const CullExplanation& why = lesson.why;
+    const double lowest = why.margin + why.threshold;
+    return "For each " + points + " p, v = (p \u2212 e)/|p \u2212 e|. The test culls when v\u00b7V1 > sin \u03b1 = " +
+           dot(why.threshold) + " at all " + std::to_string(total) + " of them. Here " + std::to_string(why.pointsBack) +
+           " of " + std::to_string(total) + " pass; the lowest has v\u00b7V1 = " + inequality(lowest, why.threshold) + ", " +
+           holdsOrFails(why.margin) + ".";
+}
+
+std::string octagonTest(const Lesson& lesson) {
+    const CullExplanation& why = lesson.why;
+    const double tightest = why.margin + why.threshold;
+    const std::string v = lesson.eye.orthographic ? "d" : "v";
+    return std::string(lesson.eye.orthographic ? "" : "The view vector v runs from the eye to the apex. ") +
+           "The octagon test culls when g\u00b7" + v + " > 0 for each of the eight edges g of its cone of normals: then " +
+           v + " sees every edge, and so every normal, from behind. Here " + std::to_string(why.edgesBack) +
+           " of 8 edges pass; the smallest is g\u00b7" + v + " = " + compared(tightest, why.threshold).first +
+           (why.margin > 0.0 ? " > 0" : " \u2264 0") + ", " + holdsOrFails(why.margin) + ".";
+}
+
+std::string sphereTest(const Lesson& lesson) {
+    const CullExplanation& why = lesson.why;
+    if (why.eyeInsideSphere)
+        return "The eye is inside the bounding sphere (d = " + number(why.distance) + ", r = " + number(why.radius) +
+               "): from inside, a face may lie in any direction, so the test cannot cull.";
+    const std::string spread = degrees(why.sphereAngleDegrees);
+    if (!(why.angleBDegrees - why.sphereAngleDegrees > 0.0))
+        return "From here the sphere spreads the view vectors by asin(r/d) = " + spread + ", more than the B = " +
+               degrees(why.angleBDegrees) + " the cone leaves: the test cannot cull from this distance.";
+    const auto [value, threshold] = compared(why.viewDotAxis, why.threshold);
+    return "v runs from the eye to the sphere's centre, d = " + number(why.distance) + " away, so asin(r/d) = asin(" +
+           number(why.radius) + "/" + number(why.distance) + ") = " + spread + ". The test culls when v\u00b7V1 > cos(B \u2212 asin(r/d)) = cos(" +
+           degrees(why.angleBDegrees) + " \u2212 " + spread + ") = " + threshold + ". Here v\u00b7V1 = " + value + ": " +
+           inequality(why.viewDotAxis, why.threshold) + ", " + holdsOrFails(why.margin) + ".";
+}
+
+std::string meshoptSphereTest(const Lesson& lesson) {
+    const CullExplanation& why = lesson.why;
+    const double share = why.distance > 0.0 ? why.radius / why.distance : 0.0;
+    const double threshold = why.threshold + share;
+    return "v runs from the eye to the sphere's centre, d = " + number(why.distance) +
+           " away. The test culls when v\u00b7V1 > sin \u03b1 + r/d = " + dot(why.threshold) + " + " + dot(share) + " = " +
+           compared(why.viewDotAxis, threshold).second + ". Here v\u00b7V1 = " + inequality(why.viewDotAxis, threshold) + ", " +
+           holdsOrFails(why.margin) + ".";
+}
+
+}  // namespace
+
+std::string boundStep(const Lesson& lesson) {
+    switch (lesson.test) {
+        case CullTest::Oracle:
+            return "The oracle needs no bound: it checks every face at each of its corners q, n\u00b7(e \u2212 q) < 0. That is "
+                   "exact, but costs a check per face; the cone tests cost one per cluster.";
+        case CullTest::Apex: return manyDirections + apexSentence(lesson);
+        case CullTest::Octagon: {
+            const double round = lesson.why.cullable ? (1.0 - std::sin(glm::radians(lesson.why.halfAngleDegrees))) / 2.0 : 0.0;
+            return manyDirections + apexSentence(lesson) +
+                   " It also wraps the normals more tightly than the round cone, in an eight-sided cone (yellow on the "
+                   "Gauss map): from far away it culls from " + percent(lesson.cullFraction) + " of all directions, the "
+                   "round cone from " + percent(round) + ".";
+        }
+        case CullTest::Sphere:
+            return manyDirections + "This test uses the smallest sphere around the cluster: centre c = " +
+                   vector3(lesson.sphere.center) + ", radius r = " + number(lesson.sphere.radius) +
+                   ". From an eye at distance d from c, every point of the sphere lies within asin(r/d) of the direction "
+                   "to c, so the test takes asin(r/d) off the angle B.";
+        case CullTest::MeshoptSphere:
+            return manyDirections + "meshoptimizer's sphere test uses the sphere around the cluster (centre c = " +
+                   vector3(lesson.sphere.center) + ", radius r = " + number(lesson.sphere.radius) +
+                   ") and asks for r/d more room, d being the eye's distance from c.";
+        case CullTest::Aabb:
+        case CullTest::AabbFast:
+            return manyDirections + "This test uses the cluster's bounding box, from " + vector3(lesson.why.corners[0]) +
+                   " to " + vector3(lesson.why.corners[7]) +
+                   ", and checks the view vector to each of its 8 corners. The view vectors that see the cone from behind "
+                   "form a cone of their own; when all 8 corners lie in it, so does every point of the box." +
+                   (lesson.test == CullTest::AabbFast ? " This form compares squares instead of normalising each view "
+                                                        "vector, as the seed's optimised version does."
+                                                      : "");
+        case CullTest::Vertices:
+            return manyDirections + "This test checks the view vector to each of the cluster's " +
+                   count(lesson.vertices, "vertex", "vertices") +
+                   ": every face lies between its corners, so when all of them are seen from behind the cone, so is every "
+                   "point of every face.";
+    }
+    return {};
+}
+
+std::string testStep(const Lesson& lesson) {
+    const CullExplanation& why = lesson.why;
+    const std::string eye = eyeSentence(lesson);
+    if (lesson.test == CullTest::Oracle)
+        return eye + "The oracle checks n\u00b7(e \u2212 q) < 0 at every corner q of every face (for a far eye, n\u00b7d > 0): " +
+               count(why.backFaces, "face passes", "faces pass") + ", " + count(why.frontFaces, "does", "do") +
+               " not. It culls only when every face passes.";
+    if (!why.cullable) return eye + "Without a cone the test has nothing to compare: the cluster is drawn from every eye.";
+    if (lesson.test == CullTest::Octagon) return eye + octagonTest(lesson);
+    if (lesson.eye.orthographic) return eye + roundCone(lesson, "d");
+    switch (lesson.test) {
+        case CullTest::Apex:
+            return eye + "The view vector v runs from the eye to the apex: v = " + vector3(why.view) + ", of length 1. " +
+                   roundCone(lesson, "v");
+        case CullTest::Sphere: return eye + sphereTest(lesson);
+        case CullTest::MeshoptSphere: return eye + meshoptSphereTest(lesson);
+        case CullTest::Aabb:
+        case CullTest::AabbFast: return eye + eachPoint(lesson, "corner", 8);
+        case CullTest::Vertices: return eye + eachPoint(lesson, "vertex", why.pointsTested);
+        case CullTest::Oracle:
+        case CullTest::Octagon: break;
+    }
+    return eye;
+}
+
+}  // namespace conescope

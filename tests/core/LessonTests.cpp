@@ -1,0 +1,173 @@
+// The lesson's words and the textbook cross-section: the numbers in the sentences are the ones the
+// test compared, the verdict and the oracle's outcome are the decision's, and the figure's wedge
+// holds the view vector exactly when the test culls.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <memory>
+#include <random>
+
+#include "TestMeshes.h"
+#include "core/CrossSection.h"
+#include "core/Lesson.h"
+#include "core/LessonText.h"
+
+using namespace conescope;
+using testmesh::randomUnit;
+
+namespace {
+
+// A small torus in clusters of 24 triangles, every cone its own method's.
+struct Prepared {
+    explicit Prepared(ConeMethod cone) : mesh(prepareMesh(std::make_shared<Mesh>(testmesh::torus(1.0, 0.35, 48, 24)), "torus", false)) {
+        Settings settings;
+        settings.builder = Builder::Meshlet;
+        settings.limits.maxTriangles = settings.limits.maxVertices = 24;
+        settings.cones = {cone};
+        clusters = buildClusters(mesh, settings);
+    }
+    PreparedMesh mesh;
+    ClusterSet clusters;
+};
+
+bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+}  // namespace
+
+TEST(LessonText, ComparedNumbersAreWrittenFarEnoughToDiffer) {
+    using namespace lessontext;
+    EXPECT_EQ(compared(0.41201, 0.41204), std::make_pair(std::string("0.41201"), std::string("0.41204")));
+    EXPECT_EQ(compared(0.5, 0.25), std::make_pair(std::string("0.5000"), std::string("0.2500")));
+    EXPECT_EQ(inequality(0.41204, 0.41201), "0.41204 > 0.41201");
+    EXPECT_EQ(inequality(-0.25, 0.5), "\u22120.2500 \u2264 0.5000");
+    EXPECT_EQ(degrees(23.449), "23.4\u00b0");
+    EXPECT_EQ(percent(0.3014), "30.1%");
+    EXPECT_EQ(amount(0.0012345), "0.0012");
+    EXPECT_EQ(count(1, "face", "faces"), "1 face");
+    EXPECT_EQ(count(3, "face", "faces"), "3 faces");
+}
+
+TEST(Lesson, SixStepsWithTheDecisionsNumbersAndOutcome) {
+    const Prepared p(ConeMethod::Minimal);
+    const CullingInput input = cullingInput(p.mesh, p.clusters);
+    std::mt19937_64 random(11);
+    std::map<LessonOutcome, size_t> seen;
+    for (int trial = 0; trial < 24; ++trial) {
+        Eye eye = Eye::perspective(randomUnit(random) * (1.2 + 1.5 * (trial % 4)));
+        if (trial % 6 == 5) eye = Eye::orthographicAlong(randomUnit(random));
+        for (CullTest test : {CullTest::Apex, CullTest::Octagon, CullTest::Sphere, CullTest::Aabb, CullTest::Oracle}) {
+            for (uint32_t c = 0; c < p.clusters.bounds.count(); c += 7) {
+                const Lesson lesson = makeLesson(p.mesh, p.clusters, c, eye, test);
+                const CullExplanation why = explainCull(input, c, eye, test);
+                ASSERT_EQ(lesson.steps.size(), size_t(kLessonStepCount));
+                for (const LessonStep& step : lesson.steps) {
+                    EXPECT_FALSE(step.title.empty());
+                    EXPECT_GT(step.text.size(), 80u) << step.title;
+                }
+                EXPECT_EQ(lesson.why.culled, why.culled);
+                EXPECT_EQ(lesson.verdict(), why.culled ? "culled" : "drawn");
+                EXPECT_DOUBLE_EQ(lesson.alphaDegrees(), glm::degrees(p.clusters.bounds.cones[c].halfAngle()));
+                // The outcome is the oracle's, as the statistics count it.
+                LessonOutcome expected = LessonOutcome::Visible;
+                if (why.culled) expected = LessonOutcome::Culled;
+                else if (why.backFaces > 0) expected = why.frontFaces == 0 ? LessonOutcome::LostToTest : LessonOutcome::LostToPartition;
+                EXPECT_EQ(lesson.outcome, expected);
+                ++seen[lesson.outcome];
+                EXPECT_TRUE(contains(lesson.steps[5].text, lesson.outcome == LessonOutcome::LostToTest ? "lost to the test"
+                                                           : lesson.outcome == LessonOutcome::LostToPartition ? "lost to the partition"
+                                                                                                              : ""));
+                EXPECT_TRUE(contains(lesson.steps[5].text, why.culled ? "Culled" : "Drawn"));
+                EXPECT_TRUE(contains(lesson.steps[0].text, "Cluster " + std::to_string(c) + " of torus"));
+            }
+        }
+    }
+    EXPECT_GT(seen[LessonOutcome::Culled], 0u);
+    EXPECT_GT(seen[LessonOutcome::LostToTest], 0u);
+    EXPECT_GT(seen[LessonOutcome::LostToPartition], 0u);
+    EXPECT_GT(seen[LessonOutcome::Visible], 0u);
+    EXPECT_EQ(seen[LessonOutcome::FalseCull], 0u);
+}
+
+// The inequality the step writes is the one the test decided by, with the numbers it compared.
+TEST(Lesson, TheTestStepWritesTheComparedNumbersAndTheRightSign) {
+    const Prepared p(ConeMethod::Average);
+    std::mt19937_64 random(3);
+    for (int trial = 0; trial < 30; ++trial) {
+        const Eye eye = Eye::perspective(randomUnit(random) * (1.3 + trial % 5));
+        for (uint32_t c = 0; c < p.clusters.bounds.count(); c += 5) {
+            const Lesson apex = makeLesson(p.mesh, p.clusters, c, eye, CullTest::Apex);
+            if (!apex.why.cullable) continue;
+            const std::string& text = apex.steps[4].text;
+            EXPECT_TRUE(contains(text, lessontext::inequality(apex.why.viewDotAxis, apex.why.threshold))) << text;
+            EXPECT_TRUE(contains(text, apex.why.margin > 0.0 ? "so the test holds" : "so the test fails")) << text;
+            EXPECT_TRUE(contains(apex.steps[2].text, lessontext::degrees(apex.why.halfAngleDegrees)));
+            EXPECT_TRUE(contains(apex.steps[2].text, "average cone")) << apex.steps[2].text;
+            const Lesson sphere = makeLesson(p.mesh, p.clusters, c, eye, CullTest::Sphere);
+            if (!std::isnan(sphere.why.margin))
+                EXPECT_TRUE(contains(sphere.steps[4].text, lessontext::inequality(sphere.why.viewDotAxis, sphere.why.threshold)));
+            const Lesson octagon = makeLesson(p.mesh, p.clusters, c, eye, CullTest::Octagon);
+            EXPECT_TRUE(contains(octagon.steps[4].text, std::to_string(octagon.why.edgesBack) + " of 8 edges pass"));
+        }
+    }
+}
+
+TEST(Lesson, AClusterWithoutAConeIsNeverCulledAndSaysSo) {
+    // A closed cube as one cluster: its normals point every way.
+    const Mesh cube = testmesh::quadCube();
+    PreparedMesh prepared = prepareMesh(std::make_shared<Mesh>(cube), "cube", false);
+    Settings settings;
+    settings.builder = Builder::KMeans;
+    settings.clusterCount = 1;
+    const ClusterSet clusters = buildClusters(prepared, settings);
+    ASSERT_EQ(clusters.partition.clusterCount, 1u);
+    const Lesson lesson = makeLesson(prepared, clusters, 0, Eye::perspective({3.0, 2.0, 4.0}), CullTest::Apex);
+    EXPECT_FALSE(lesson.why.cullable);
+    EXPECT_EQ(lesson.verdict(), "drawn");
+    EXPECT_TRUE(contains(lesson.steps[2].text, "no cone test can ever cull this cluster"));
+    EXPECT_TRUE(contains(lesson.steps[4].text, "Without a cone"));
+    EXPECT_EQ(lesson.outcome, LessonOutcome::LostToPartition);
+    EXPECT_FALSE(crossSectionOf(lesson).hasWedge());
+}
+
+// Seed 000's figure: the normals between the boundary lines, v of unit length at its true angle from
+// V1, and v in the wedge exactly when the test culls (away from the threshold's rounding).
+TEST(CrossSection, NormalsInsideTheConeAndTheViewInTheWedgeExactlyWhenCulled) {
+    for (ConeMethod method : {ConeMethod::Minimal, ConeMethod::Average}) {
+        const Prepared p(method);
+        std::mt19937_64 random(5);
+        size_t culled = 0, drawn = 0;
+        for (int trial = 0; trial < 30; ++trial) {
+            Eye eye = Eye::perspective(randomUnit(random) * (1.2 + trial % 6));
+            if (trial % 5 == 4) eye = Eye::orthographicAlong(randomUnit(random));
+            for (uint32_t c = 0; c < p.clusters.bounds.count(); c += 4) {
+                for (CullTest test : {CullTest::Apex, CullTest::Sphere, CullTest::MeshoptSphere, CullTest::Octagon}) {
+                    const Lesson lesson = makeLesson(p.mesh, p.clusters, c, eye, test);
+                    const CrossSection section = crossSectionOf(lesson);
+                    ASSERT_EQ(section.normals.size(), lesson.normals.size());
+                    EXPECT_NEAR(glm::length(section.view), 1.0, 1e-9);
+                    EXPECT_NEAR(section.view.y, lesson.why.viewDotAxis, 1e-9);
+                    if (!section.cone) continue;
+                    for (const glm::dvec2& n : section.normals) {
+                        EXPECT_NEAR(glm::length(n), 1.0, 1e-9);
+                        EXPECT_LE(std::abs(std::atan2(n.x, n.y)), section.alpha + 1e-9);
+                    }
+                    EXPECT_NEAR(section.alpha + section.angleB, M_PI / 2.0, 1e-9);
+                    if (std::isnan(lesson.why.margin) || std::abs(lesson.why.margin) < 1e-7) continue;
+                    const double angle = std::atan2(section.view.x, section.view.y);
+                    const bool inWedge = section.cullingAngles[0] < angle && angle < section.cullingAngles[1];
+                    EXPECT_EQ(inWedge, lesson.why.margin > 0.0) << toString(test) << " cluster " << c;
+                    (lesson.why.margin > 0.0 ? culled : drawn) += 1;
+                    if (test == CullTest::Octagon) {
+                        EXPECT_TRUE(section.octagon);
+                        for (const glm::dvec2& edge : section.octagonBoundaries) EXPECT_NEAR(glm::length(edge), 1.0, 1e-9);
+                        EXPECT_LT(section.octagonBoundaries[0].x, 0.0);
+                        EXPECT_GT(section.octagonBoundaries[1].x, 0.0);
+                    }
+                }
+            }
+        }
+        EXPECT_GT(culled, 20u);
+        EXPECT_GT(drawn, 20u);
+    }
+}
