@@ -11,6 +11,7 @@
 #include "scene/FacesLayer.h"
 #include "scene/GlyphLayer.h"
 #include "scene/HighlightLayer.h"
+#include "scene/LessonLayer.h"
 #include "scene/NormalsLayer.h"
 #include "scene/SceneData.h"
 #include "scene/SceneLegend.h"
@@ -23,7 +24,7 @@ struct ClusterScene::Impl {
          const ClusterBounds& clusterBounds)
         : data(mesh, world, partition, clusterBounds), faces(data), borders(data, mesh, partition), cones(conesLayer(data)),
           normals(data, faceGeometry, partition), boxes(boxesLayer(data)), spheres(spheresLayer(data)), eye(data),
-          highlight(data), test(data), eyeView(data) {}
+          highlight(data), test(data), lesson(data), eyeView(data) {}
 
     SceneData data;
     FacesLayer faces;
@@ -34,6 +35,7 @@ struct ClusterScene::Impl {
     EyeLayer eye;
     HighlightLayer highlight;
     TestLayer test;
+    LessonLayer lesson;
     SceneLegend legend;
     EyeView eyeView;
     FaceColoring coloring = FaceColoring::Cluster;
@@ -51,12 +53,13 @@ struct ClusterScene::Impl {
         case Layer::Highlight: return &highlight;
         case Layer::Test: return &test;
         case Layer::Legend: return nullptr;
+        case Layer::Lesson: return &lesson;
         }
         return nullptr;
     }
     // The order the actors go into a renderer: the picked cluster and its test over the glyphs, the eye last.
     std::vector<SceneLayer*> drawingOrder() {
-        return {&faces, &borders, &cones, &normals, &boxes, &spheres, &highlight, &test, &eye};
+        return {&faces, &borders, &cones, &normals, &boxes, &spheres, &highlight, &test, &lesson, &eye};
     }
 
     // The legend lists the visible layers' entries in the order of allLayers().
@@ -165,6 +168,13 @@ void ClusterScene::setTestDrawing(const TestDrawing& drawing) {
 }
 
 const TestDrawing& ClusterScene::testDrawing() const { return impl_->test.drawing(); }
+
+void ClusterScene::setLessonDrawing(const LessonDrawing& drawing) {
+    impl_->lesson.setDrawing(drawing);
+    impl_->updateLegend();
+}
+
+const LessonDrawing& ClusterScene::lessonDrawing() const { return impl_->lesson.drawing(); }
 
 void ClusterScene::setEye(const Eye& eye, const glm::dvec3& lookAt) {
     impl_->eye.setEye(eye, lookAt);

@@ -30,6 +30,7 @@
 #include "core/Partition.h"
 #include "core/Views.h"
 #include "scene/ClusterPalette.h"
+#include "scene/LessonLayer.h"
 #include "scene/SceneLegend.h"
 #include "scene/SceneTypes.h"
 #include "scene/TestLayer.h"
@@ -93,6 +94,11 @@ public:
     // Throws std::out_of_range for a cluster outside [-1, K).
     void setTestDrawing(const TestDrawing& drawing);
     const TestDrawing& testDrawing() const;
+
+    // A lesson step's picture of its cluster (Layer::Lesson); step 0 clears it. Throws
+    // std::out_of_range for a cluster outside [0, K).
+    void setLessonDrawing(const LessonDrawing& drawing);
+    const LessonDrawing& lessonDrawing() const;
 
     // Places the eye marker: for a perspective eye a sphere at the position with a cone pointing at
     // lookAt; for an orthographic eye an arrow along eye.direction outside the mesh bounds, aimed at

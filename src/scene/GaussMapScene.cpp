@@ -93,27 +93,6 @@ GlyphGeometry octagonOnSphere(const OctagonCone& octagon, double radius) {
     return geometry;
 }
 
-vtkSmartPointer<vtkPolyData> pointCloud(const std::vector<glm::dvec3>& points, double radius) {
-    auto vtkPointList = vtkSmartPointer<vtkPoints>::New();
-    auto vertices = vtkSmartPointer<vtkCellArray>::New();
-    for (const glm::dvec3& p : points) {
-        const vtkIdType id = vtkPointList->InsertNextPoint(radius * p.x, radius * p.y, radius * p.z);
-        vertices->InsertNextCell(1, &id);
-    }
-    auto data = vtkSmartPointer<vtkPolyData>::New();
-    data->SetPoints(vtkPointList);
-    data->SetVerts(vertices);
-    return data;
-}
-
-vtkSmartPointer<vtkActor> pointsActor(const Rgb& colour, double size) {
-    auto actor = actorFor(plainMapper(emptyPolyData()));
-    setColour(actor, colour);
-    actor->GetProperty()->SetPointSize(float(size));
-    actor->GetProperty()->RenderPointsAsSpheresOn();
-    return actor;
-}
-
 std::string degreesText(double radians) {
     char text[32];
     std::snprintf(text, sizeof text, "%.1f deg", radians * 180.0 / M_PI);
@@ -184,7 +163,7 @@ void GaussMapScene::show(const std::optional<GaussMap>& map, ConeMethod displaye
     }
     std::vector<LegendEntry> entries;
     entries.push_back({"cluster " + std::to_string(cluster) + ": " + std::to_string(map->normals.size()) + " face normals", {normalColour}});
-    setInput(impl_->normals, pointCloud(map->normals, 1.004));
+    setInput(impl_->normals, pointPolyData(map->normals, 1.004));
     impl_->cap->SetVisibility(false);
     for (size_t i = 0; i < map->cones.size() && i < impl_->rims.size(); ++i) {
         const auto& [method, cone] = map->cones[i];
@@ -218,7 +197,7 @@ void GaussMapScene::show(const std::optional<GaussMap>& map, ConeMethod displaye
     line.points = {glm::vec3(0.0f), glm::vec3(map->view * 1.35)};
     line.addCell({0, 1}, 0);
     setInput(impl_->view, polyDataFrom(line, CellKind::Lines));
-    setInput(impl_->viewTip, pointCloud({map->view}, 1.35));
+    setInput(impl_->viewTip, pointPolyData({map->view}, 1.35));
     setInput(impl_->horizon, polyDataFrom(circleOnSphere(map->view, M_PI / 2.0, 1.002), CellKind::Lines));
     entries.push_back({"view vector v and its horizon", {SceneColours::viewVector}});
     impl_->legend.show(entries);

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include <vtkActor.h>
+#include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkIntArray.h>
 #include <vtkLookupTable.h>
@@ -86,6 +87,27 @@ vtkSmartPointer<vtkPolyData> emptyPolyData() {
     auto polyData = vtkSmartPointer<vtkPolyData>::New();
     polyData->SetPoints(vtkSmartPointer<vtkPoints>::New());
     return polyData;
+}
+
+vtkSmartPointer<vtkPolyData> pointPolyData(const std::vector<glm::dvec3>& positions, double scale) {
+    auto points = vtkSmartPointer<vtkPoints>::New();
+    auto vertices = vtkSmartPointer<vtkCellArray>::New();
+    for (const glm::dvec3& p : positions) {
+        const vtkIdType id = points->InsertNextPoint(scale * p.x, scale * p.y, scale * p.z);
+        vertices->InsertNextCell(1, &id);
+    }
+    auto data = vtkSmartPointer<vtkPolyData>::New();
+    data->SetPoints(points);
+    data->SetVerts(vertices);
+    return data;
+}
+
+vtkSmartPointer<vtkActor> pointsActor(const Rgb& colour, double size) {
+    auto actor = actorFor(plainMapper(emptyPolyData()));
+    setColour(actor, colour);
+    actor->GetProperty()->SetPointSize(float(size));
+    actor->GetProperty()->RenderPointsAsSpheresOn();
+    return actor;
 }
 
 void setInput(vtkActor* actor, vtkPolyData* data) { vtkMapper::SafeDownCast(actor->GetMapper())->SetInputDataObject(data); }

@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include <glm/glm.hpp>
 #include <vtkSmartPointer.h>
 #include <vtkType.h>
 
@@ -79,6 +80,9 @@ vtkSmartPointer<vtkActor> actorFor(vtkMapper* mapper);
 vtkSmartPointer<vtkActor> lineActor(vtkMapper* mapper, double width);
 void setColour(vtkActor* actor, const Rgb& colour);
 vtkSmartPointer<vtkPolyData> emptyPolyData();
+// Points as vertex cells (each position times `scale`), and an actor drawing them as round dots.
+vtkSmartPointer<vtkPolyData> pointPolyData(const std::vector<glm::dvec3>& positions, double scale = 1.0);
+vtkSmartPointer<vtkActor> pointsActor(const Rgb& colour, double size);
 // Replaces the input of the actor's mapper (the eye marker, the picked cluster's geometry).
 void setInput(vtkActor* actor, vtkPolyData* data);
 

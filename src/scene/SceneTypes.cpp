@@ -7,7 +7,7 @@ namespace conescope {
 const std::vector<Layer>& allLayers() {
     static const std::vector<Layer> layers = {Layer::Faces, Layer::Borders, Layer::Cones,     Layer::Normals, Layer::Boxes,
                                               Layer::Spheres, Layer::Eye,   Layer::Highlight, Layer::Test,
-                                              Layer::Legend};
+                                              Layer::Legend, Layer::Lesson};
     return layers;
 }
 
@@ -23,6 +23,7 @@ std::string toString(Layer layer) {
     case Layer::Highlight: return "highlight";
     case Layer::Test: return "test";
     case Layer::Legend: return "legend";
+    case Layer::Lesson: return "lesson";
     }
     return "unknown";
 }

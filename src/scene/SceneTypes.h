@@ -22,7 +22,7 @@ inline const char* const lossArrayName = "loss";
 // 3 by both; 4 not compared), written by setFaceComparison.
 inline const char* const comparisonArrayName = "comparison";
 
-// Switchable parts of the scene. Default visibility: Faces, Borders, Cones, Eye, Highlight, Test, Legend on;
+// Switchable parts of the scene. Default visibility: Faces, Borders, Cones, Eye, Highlight, Test, Legend, Lesson on;
 // Normals, Boxes, Spheres off.
 enum class Layer {
     Faces,      // the mesh, coloured as FaceColoring says
@@ -38,6 +38,7 @@ enum class Layer {
                 // shown whatever the Cones / Boxes / Spheres layers say
     Test,       // the picked cluster's cull test in 3D (setTestDrawing): axis, view vector, cull region, points
     Legend,     // what the colours mean, for the visible layers
+    Lesson,     // a lesson step's picture of the picked cluster (setLessonDrawing): normals, Gauss sphere, cone, bound
 };
 const std::vector<Layer>& allLayers();
 std::string toString(Layer);  // "faces", "borders", "cones", "normals", "boxes", "spheres", "eye", ...
@@ -70,6 +71,7 @@ struct SceneColours {
     static constexpr Rgb unclassified{0.80, 0.80, 0.80};
     static constexpr Rgb border{0.08, 0.08, 0.08};
     static constexpr Rgb normals{0.55, 1.00, 0.25};     // lime: green is the test's region of eyes
+    static constexpr Rgb lessonNormal{0.85, 0.12, 0.10};  // a lesson's normals: red, as in seed 000's figure
     static constexpr Rgb eye{0.95, 0.10, 0.85};         // magenta: the cull eye, and nothing else
     static constexpr Rgb viewVector{0.00, 1.00, 0.70};  // turquoise: v, from the eye (and on the Gauss map)
     static constexpr Rgb highlight{1.00, 0.95, 0.15};
