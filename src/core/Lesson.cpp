@@ -166,7 +166,10 @@ Lesson makeLesson(const PreparedMesh& prepared, const ClusterSet& clusters, uint
     lesson.sphere = bounds.spheres[cluster];
     for (size_t i = 0; i < lesson.faces; ++i) {
         const uint32_t face = faces[i];
-        if (!prepared.faces.degenerate[face]) lesson.normals.push_back(prepared.faces.normals[face]);
+        if (!prepared.faces.degenerate[face]) {
+            lesson.normals.push_back(prepared.faces.normals[face]);
+            lesson.centroids.push_back(prepared.faces.centroids[face]);
+        }
         if (classifyFace(prepared.mesh(), prepared.world, prepared.faces, face, eye) == Facing::Back)
             lesson.backTriangles += prepared.mesh().faceSize(face) - 2;
     }

@@ -43,6 +43,7 @@ struct Lesson {
     size_t faces = 0, triangles = 0, vertices = 0;
     size_t backTriangles = 0;            // triangles of the faces that face away (the oracle's)
     std::vector<glm::dvec3> normals;     // unit normals of the non-degenerate faces
+    std::vector<glm::dvec3> centroids;   // where those faces are (the same order)
     Sphere sphere;                       // the cluster's bounding sphere
     ConeOfNormals averageCone;           // seed 000's cone (V1 = the mean normal)
     ConeOfNormals minimalCone;           // the narrowest cone that holds the normals
