@@ -23,16 +23,25 @@ EyePanel::EyePanel(QWidget* parent) : QWidget(parent) {
         box->setKeyboardTracking(false);
         box->setObjectName(QStringLiteral("eye_") + QLatin1String(names[axis]));
         coordinates_[axis] = box;
+        box->setToolTip(tr("The cull eye's %1 coordinate, in the mesh's units. Type a value, or drag the magenta handle in "
+                           "the view.").arg(QLatin1String(names[axis])));
+        box->setWhatsThis(tr("The cull eye is the point the cull decisions are made from. Change a coordinate and every "
+                             "cluster's decision, the statistics and the lesson's numbers follow."));
         form->addRow(QStringLiteral("Eye %1").arg(QLatin1String(names[axis])), box);
         connect(box, qOverload<double>(&QDoubleSpinBox::valueChanged), this,
                 [this, axis](double value) { emit coordinateEdited(axis, value); });
     }
     lookFromHere_ = new QPushButton(tr("Look from here"), this);
-    lookFromHere_->setToolTip(tr("Put the cull eye where the observer's camera is (L)"));
+    lookFromHere_->setToolTip(tr("Put the cull eye where the observer's camera is (E)"));
+    lookFromHere_->setWhatsThis(tr("Moves the cull eye to the observer's camera: the decisions are then made from where you look."));
     follow_ = new QCheckBox(tr("Follow the observer's camera"), this);
+    follow_->setToolTip(tr("The cull eye moves with the observer's camera (F)"));
+    follow_->setWhatsThis(tr("While checked, every turn of the observer's camera moves the cull eye there: you see the "
+                             "decisions change as you move."));
     animate_ = new QPushButton(tr("Animate orbit"), this);
     animate_->setCheckable(true);
     animate_->setToolTip(tr("Step the cull eye along the standard orbit (Space)"));
+    animate_->setWhatsThis(tr("Moves the cull eye from one orbit view to the next, around the mesh, until pressed again."));
     orbitStep_ = new QLabel(this);
     orbitStep_->hide();
 

@@ -34,6 +34,11 @@ void GaussMapView::showPick(const Session& session, bool newPick) {
     render();
 }
 
+void GaussMapView::resizeEvent(QResizeEvent* event) {
+    QVTKOpenGLNativeWidget::resizeEvent(event);
+    scene_.fitLegend(height());
+}
+
 void GaussMapView::render() {
     if (isVisible()) renderWindow()->Render();
 }

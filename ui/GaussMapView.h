@@ -27,6 +27,9 @@ public:
     // Renders when the view is on screen.
     void render();
 
+protected:
+    void resizeEvent(QResizeEvent* event) override;
+
 private:
     vtkSmartPointer<vtkRenderer> renderer_;
     GaussMapScene scene_;

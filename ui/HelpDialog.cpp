@@ -10,7 +10,8 @@ namespace conescope {
 QString HelpDialog::shortcutsHtml(const QList<QAction*>& actions) {
     QString html = QStringLiteral(
         "<h2>ConeScope</h2><p>Clusters whose every face turns away from the <b>cull eye</b> are culled by the chosen "
-        "test; the <b>observer</b> camera looks at the result from anywhere.</p>"
+        "test; the <b>observer</b> camera looks at the result from anywhere. New here? Pick a cluster and press <b>L</b> "
+        "for a lesson; Help &gt; Glossary explains the words, Shift+F1 any control.</p>"
         "<h3>Keyboard</h3><table border='1' cellspacing='0' cellpadding='4'><tr><th>Keys</th><th>Action</th></tr>");
     for (const QAction* action : actions) {
         if (action->shortcuts().isEmpty()) continue;
@@ -36,10 +37,12 @@ QString HelpDialog::shortcutsHtml(const QList<QAction*>& actions) {
     return html;
 }
 
-HelpDialog::HelpDialog(const QList<QAction*>& actions, QWidget* parent) : QDialog(parent) {
-    setWindowTitle(tr("ConeScope help"));
+HelpDialog::HelpDialog(const QList<QAction*>& actions, QWidget* parent) : HelpDialog(tr("ConeScope help"), shortcutsHtml(actions), parent) {}
+
+HelpDialog::HelpDialog(const QString& title, const QString& html, QWidget* parent) : QDialog(parent) {
+    setWindowTitle(title);
     auto* browser = new QTextBrowser(this);
-    browser->setHtml(shortcutsHtml(actions));
+    browser->setHtml(html);
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, this);
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
     auto* layout = new QVBoxLayout(this);

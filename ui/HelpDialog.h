@@ -1,5 +1,5 @@
 // F1: the keyboard shortcuts (read from the window's actions, so the list cannot go stale) and the
-// mouse controls.
+// mouse controls; the same dialog shows the other help pages (the glossary, About).
 #pragma once
 
 #include <QDialog>
@@ -13,6 +13,7 @@ class HelpDialog : public QDialog {
     Q_OBJECT
 public:
     HelpDialog(const QList<QAction*>& actions, QWidget* parent = nullptr);
+    HelpDialog(const QString& title, const QString& html, QWidget* parent = nullptr);
 
     // The HTML the dialog shows, for tests.
     static QString shortcutsHtml(const QList<QAction*>& actions);

@@ -8,6 +8,9 @@
 #include <QDragEnterEvent>
 #include <QDropEvent>
 #include <QFileInfo>
+#include <QGuiApplication>
+#include <QScreen>
+#include <QLabel>
 #include <QMessageBox>
 #include <QMimeData>
 #include <QScrollArea>
@@ -15,11 +18,15 @@
 #include <QStatusBar>
 #include <QTimer>
 #include <QUrl>
+#include <QVBoxLayout>
 
+#include "CrossSectionView.h"
 #include "EyePanel.h"
 #include "EyeView.h"
 #include "ObserverView.h"
 #include "GaussMapView.h"
+#include "Glossary.h"
+#include "LessonView.h"
 #include "PickedClusterView.h"
 #include "WorstClustersView.h"
 #include "PlotsView.h"
@@ -43,7 +50,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     settingsPanel_->setSettings(session_.settings());
     connectSession();
     connectControls();
-    resize(1400, 900);
+    // At most the screen: a 1280x720 projector shows the whole window.
+    const QRect screen = QGuiApplication::primaryScreen() ? QGuiApplication::primaryScreen()->availableGeometry() : QRect(0, 0, 1400, 900);
+    resize(std::min(1400, screen.width()), std::min(900, screen.height()));
 }
 
 MainWindow::~MainWindow() = default;
@@ -72,6 +81,21 @@ void MainWindow::createDocks() {
         area->setMinimumWidth(panel->sizeHint().width() + area->verticalScrollBar()->sizeHint().width());
         return area;
     };
+    // A picture with a line of words under it.
+    auto captioned = [this](QWidget* picture, const QString& words, const QString& help) {
+        auto* page = new QWidget(this);
+        auto* caption = new QLabel(words, page);
+        caption->setWordWrap(true);
+        caption->setToolTip(help);
+        picture->setToolTip(help);
+        picture->setWhatsThis(help);
+        auto* layout = new QVBoxLayout(page);
+        layout->setContentsMargins(0, 0, 0, 0);
+        layout->setSpacing(2);
+        layout->addWidget(picture, 1);
+        layout->addWidget(caption);
+        return page;
+    };
     settingsPanel_ = new SettingsPanel(this);
     eyePanel_ = new EyePanel(this);
     statisticsPanel_ = new StatisticsPanel(this);
@@ -81,13 +105,28 @@ void MainWindow::createDocks() {
                   dock(tr("Cull eye"), "eyeDock", eyePanel_, Qt::LeftDockWidgetArea),
                   dock(tr("Statistics"), "statisticsDock", scrolled(statisticsPanel_), Qt::RightDockWidgetArea),
                   dock(tr("Picked cluster"), "clusterDock", clusterView_, Qt::RightDockWidgetArea)};
-    // Beside the picked cluster's numbers: its normals and cones on the unit sphere (G raises it).
-    gaussMapDock_ = dock(tr("Gauss map"), "gaussMapDock", gaussMap_, Qt::RightDockWidgetArea);
+    // Beside the picked cluster's numbers: its normals and cones on the unit sphere (G raises it), and
+    // seed 000's figure of them in the plane of V1 and v.
+    gaussMapDock_ = dock(tr("Gauss map"), "gaussMapDock", captioned(gaussMap_, tr("Dots: face normals. Circles: cones. Turquoise: v and its horizon."), tr(
+        "Each white dot is a face normal of the picked cluster, drawn from the centre of a sphere of radius 1. The "
+        "circles are the cones of the four methods (the one in use filled). The turquoise line is the view vector v and "
+        "its circle the horizon: every face turns away when all dots lie beyond it, on v's side.")), Qt::RightDockWidgetArea);
     tabifyDockWidget(sideDocks_[3], gaussMapDock_);
+    crossSection_ = new CrossSectionView(this);
+    crossSectionDock_ = dock(tr("Cross-section"), "crossSectionDock", crossSection_, Qt::RightDockWidgetArea);
+    tabifyDockWidget(gaussMapDock_, crossSectionDock_);
     sideDocks_[3]->raise();
     connect(gaussMapDock_, &QDockWidget::visibilityChanged, this, [this](bool visible) {
         if (visible) gaussMap_->render();
     });
+    connect(crossSectionDock_, &QDockWidget::visibilityChanged, this, [this](bool visible) {
+        if (visible) crossSection_->showLesson(session_);
+    });
+    // The lesson's words over the statistics: L starts it.
+    lessonView_ = new LessonView(this);
+    lessonDock_ = dock(tr("Lesson"), "lessonDock", lessonView_, Qt::RightDockWidgetArea);
+    tabifyDockWidget(sideDocks_[2], lessonDock_);
+    sideDocks_[2]->raise();
 
     plots_ = new PlotsView(this);
     plotsDock_ = dock(tr("Plots"), "plotsDock", plots_, Qt::BottomDockWidgetArea);
@@ -122,6 +161,11 @@ void MainWindow::connectSession() {
         gaussMap_->showPick(session_, true);
         render();
     });
+    connect(&session_, &Session::lessonChanged, this, [this]() {
+        lessonView_->showLesson(session_);
+        crossSection_->showLesson(session_);
+    });
+    connect(&session_, &Session::lessonStepChanged, this, &MainWindow::stageLessonStep);
     connect(&session_, &Session::meshShown, this, &MainWindow::showMesh);
     connect(&session_, &Session::settingsChanged, settingsPanel_, &SettingsPanel::setSettings);
     connect(&session_, &Session::faceColoringChanged, this, [this](FaceColoring coloring) {
@@ -143,7 +187,20 @@ void MainWindow::connectControls() {
     connect(eyePanel_, &EyePanel::followToggled, this, &MainWindow::setFollowing);
     connect(eyePanel_, &EyePanel::animateToggled, this, &MainWindow::setAnimating);
     connect(view_, &ObserverView::clicked, this, &MainWindow::pickDisplay);
+    connect(view_, &ObserverView::resized, this, [this]() { session_.fitLegend(view_->height()); });
+    // Over the legend, each entry says what it means.
+    view_->setToolTipSource([this](const QPoint& display) -> QString {
+        if (!session_.scene() || !layerVisible(Layer::Legend)) return {};
+        const SceneLegend& legend = session_.scene()->legend();
+        const SceneLegend::Rectangle box = legend.box();
+        if (display.x() < box[0] || display.x() > box[2]) return {};
+        for (const SceneLegend::Placed& text : legend.texts())
+            if (display.y() >= text.box[1] - 2 && display.y() <= text.box[3] + 2) return explainLegendLabel(text.text);
+        return {};
+    });
     connect(worstClusters_, &WorstClustersView::clusterChosen, this, &MainWindow::chooseCluster);
+    connect(lessonView_, &LessonView::stepRequested, this, &MainWindow::showLessonStep);
+    connect(lessonView_, &LessonView::costliestClusterRequested, this, [this]() { chooseWorstCluster(ClusterSortKey::TestLoss); });
     connect(plots_, &PlotsView::viewClicked, &session_, &Session::moveEyeToOrbitView);
     connect(view_, &ObserverView::cameraMoved, &session_, &Session::followCamera);
     connect(view_, &ObserverView::eyeHandleMoved, &session_, &Session::moveEyeSoon);
@@ -297,6 +354,19 @@ void MainWindow::showCaption(const QString& text) {
     view_->setCaption(text);
     view_->render();
 }
+
+bool MainWindow::saveCrossSection(const QString& path) {
+    try {
+        writeCrossSectionPng(session_, path);
+    } catch (const std::exception& error) {
+        showError(tr("Cannot save the cross-section"), QString::fromStdString(error.what()));
+        return false;
+    }
+    statusBar()->showMessage(tr("Wrote %1").arg(path), 6000);
+    return true;
+}
+
+bool MainWindow::exportExplanation(const QString& path) { return session_.exportExplanation(path); }
 
 bool MainWindow::saveScreenshot(const QString& path) {
     try {

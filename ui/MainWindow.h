@@ -9,12 +9,16 @@
 #pragma once
 
 #include <array>
+#include <map>
+#include <optional>
+#include <vector>
 
 #include <QMainWindow>
 #include <QPoint>
 
 #include "Exports.h"
 #include "Session.h"
+#include "core/ClusterRanking.h"
 
 class QAction;
 class QDockWidget;
@@ -22,8 +26,10 @@ class QVTKOpenGLNativeWidget;
 
 namespace conescope {
 
+class CrossSectionView;
 class EyePanel;
 class EyeView;
+class LessonView;
 class ObserverView;
 class PickedClusterView;
 class GaussMapView;
@@ -82,6 +88,10 @@ public:
     bool saveWindowScreenshot(const QString& path);
     // A line of text over the 3D view (a replay's caption); empty removes it.
     void showCaption(const QString& text);
+    // The lesson's figure (writeCrossSectionPng) and its words (Session::exportExplanation); false and
+    // errorShown when there is no picked cluster or the file cannot be written.
+    bool saveCrossSection(const QString& path);
+    bool exportExplanation(const QString& path);
 
     // Errors always emit errorShown(); with dialogs off no QMessageBox is opened (tests).
     void setErrorDialogsEnabled(bool enabled) { errorDialogs_ = enabled; }
@@ -119,6 +129,19 @@ public:
     // What a row of the worst-cluster table does: picks the cluster, frames it and moves the eye to
     // the first orbit view that loses its back faces.
     void chooseCluster(int cluster);
+    // chooseCluster for the orbit's worst cluster by `key` (the first row of `conescope-cli clusters
+    // --sort KEY`); -1 (nothing chosen) before the orbit is measured.
+    int chooseWorstCluster(ClusterSortKey key);
+    // --- The lesson -----------------------------------------------------------------------------------
+    // Step 1 to kLessonStepCount: shows the layers the step talks about, frames them and raises the
+    // lesson dock (the layers and colours before the lesson are kept); 0 ends the lesson and puts them
+    // back. Starting without a picked cluster chooses the one the test loses most, once the orbit is
+    // measured. False for a step outside 0..kLessonStepCount.
+    bool showLessonStep(int step);
+    // L: starts the lesson at step 1, or ends it.
+    void toggleLesson();
+    LessonView* lessonView() const { return lessonView_; }
+    CrossSectionView* crossSectionView() const { return crossSection_; }
     WorstClustersView* worstClustersView() const { return worstClusters_; }
     GaussMapView* gaussMapView() const { return gaussMap_; }
     PlotsView* plotsView() const { return plots_; }
@@ -148,6 +171,8 @@ private:
     void showMesh(const QString& path, const QString& loadMessage);
     void showError(const QString& title, const QString& message);
     int pickDisplay(const QPoint& display);
+    // The layers, colouring, framing, docks and caption of a lesson step (MainWindowLesson.cpp).
+    void stageLessonStep(int step);
 
     Session session_;
     ObserverView* view_ = nullptr;
@@ -162,6 +187,14 @@ private:
     StatisticsPanel* statisticsPanel_ = nullptr;
     QDockWidget* eyeViewDock_ = nullptr;
     QDockWidget* plotsDock_ = nullptr;
+    LessonView* lessonView_ = nullptr;
+    QDockWidget* lessonDock_ = nullptr;
+    CrossSectionView* crossSection_ = nullptr;
+    QDockWidget* crossSectionDock_ = nullptr;
+    // What the window showed before the lesson, put back when it ends.
+    std::optional<std::map<Layer, bool>> layersBeforeLesson_;
+    FaceColoring coloringBeforeLesson_ = FaceColoring::CullDecision;
+    std::vector<QDockWidget*> docksHiddenByLesson_;
     std::array<QDockWidget*, 4> sideDocks_{};  // settings, eye, statistics, picked cluster
     bool docksSized_ = false;
     StatusLine* statusLine_ = nullptr;

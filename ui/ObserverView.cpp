@@ -2,6 +2,9 @@
 
 #include <cmath>
 
+#include <QHelpEvent>
+#include <QToolTip>
+
 #include <vtkCallbackCommand.h>
 #include <vtkCamera.h>
 #include <vtkCellPicker.h>
@@ -156,6 +159,18 @@ void ObserverView::frameBox(const Aabb& box, const glm::dvec3& from) {
     render();
 }
 
+void ObserverView::placeCamera(const CameraPlacement& placement) {
+    vtkCamera* camera = renderer_->GetActiveCamera();
+    camera->SetFocalPoint(placement.focalPoint.x, placement.focalPoint.y, placement.focalPoint.z);
+    camera->SetPosition(placement.position.x, placement.position.y, placement.position.z);
+    camera->SetViewUp(placement.viewUp.x, placement.viewUp.y, placement.viewUp.z);
+    camera->OrthogonalizeViewUp();
+    renderer_->ResetCameraClippingRange();
+    render();
+}
+
+double ObserverView::viewAngle() const { return renderer_->GetActiveCamera()->GetViewAngle(); }
+
 QPoint ObserverView::displayPointOf(const QPoint& viewPosition) const {
     // As QVTKInteractorAdapter converts mouse events.
     const double ratio = devicePixelRatioF();
@@ -186,6 +201,22 @@ void ObserverView::setCaption(const QString& text) {
 }
 
 QString ObserverView::caption() const { return caption_->GetVisibility() ? QString::fromUtf8(caption_->GetInput()) : QString(); }
+
+bool ObserverView::event(QEvent* event) {
+    if (event->type() == QEvent::ToolTip && toolTipSource_) {
+        auto* help = static_cast<QHelpEvent*>(event);
+        const QString text = toolTipSource_(displayPointOf(help->pos()));
+        if (text.isEmpty()) QToolTip::hideText();
+        else QToolTip::showText(help->globalPos(), text, this);
+        return true;
+    }
+    return QVTKOpenGLNativeWidget::event(event);
+}
+
+void ObserverView::resizeEvent(QResizeEvent* event) {
+    QVTKOpenGLNativeWidget::resizeEvent(event);
+    emit resized();
+}
 
 void ObserverView::onLeftButtonPress() { interactor()->GetEventPosition(pressPosition_); }
 

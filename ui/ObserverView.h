@@ -4,6 +4,8 @@
 // moved. It holds no scene and no eye of its own: the window hands them in.
 #pragma once
 
+#include <functional>
+
 #include <QPoint>
 #include <QVTKOpenGLNativeWidget.h>
 
@@ -11,6 +13,7 @@
 #include <vtkSmartPointer.h>
 
 #include "core/Mesh.h"
+#include "scene/LessonLayer.h"
 
 class vtkCallbackCommand;
 class vtkCellPicker;
@@ -47,6 +50,9 @@ public:
     // Looks at `box` from the side of `from`, the box in the middle with some of its surroundings:
     // how a chosen cluster is framed.
     void frameBox(const Aabb& box, const glm::dvec3& from);
+    // Puts the camera there (a lesson step's framing); the view angle stays.
+    void placeCamera(const CameraPlacement& placement);
+    double viewAngle() const;
 
     // Qt's widget coordinates (top-left origin, logical pixels) to VTK's display coordinates and back.
     QPoint displayPointOf(const QPoint& viewPosition) const;
@@ -58,11 +64,20 @@ public:
     // A line of text centred over the top of the view; empty hides it.
     void setCaption(const QString& text);
     QString caption() const;
+    // Where a tooltip over the view comes from: the text for a point (VTK display coordinates), empty
+    // for none (the legend's entries explain themselves through it).
+    void setToolTipSource(std::function<QString(const QPoint& display)> source) { toolTipSource_ = std::move(source); }
 
 signals:
     void clicked(const QPoint& display);
     void cameraMoved(const glm::dvec3& position);
     void eyeHandleMoved(const glm::dvec3& position);
+    // The view's size changed (its legend is fitted to it).
+    void resized();
+
+protected:
+    bool event(QEvent* event) override;
+    void resizeEvent(QResizeEvent* event) override;
 
 private:
     void onLeftButtonPress();
@@ -80,6 +95,7 @@ private:
     vtkSmartPointer<vtkHandleWidget> eyeHandle_;
     vtkSmartPointer<vtkTextActor> caption_;
     vtkSmartPointer<vtkPointHandleRepresentation3D> eyeHandleRepresentation_;
+    std::function<QString(const QPoint&)> toolTipSource_;
 };
 
 }  // namespace conescope

@@ -1,5 +1,7 @@
 #include "PlotsView.h"
 
+#include <QLabel>
+#include <QVBoxLayout>
 #include <QVTKOpenGLNativeWidget.h>
 #include <cmath>
 #include <cstdlib>
@@ -19,8 +21,14 @@
 namespace conescope {
 
 PlotsView::PlotsView(QWidget* parent) : QTabWidget(parent) {
-    efficiency_ = addPlot(tr("Efficiency per view"), "Efficiency per orbit view: triangles culled / back-facing");
-    histogram_ = addPlot(tr("Cone half-angles"), "Cone half-angles");
+    efficiency_ = addPlot(tr("Efficiency per view"), "Efficiency per orbit view: triangles culled / back-facing",
+                          tr("Share of the back faces culled, per orbit eye; click one to put the eye there."),
+                          tr("For each eye position of the orbit: the share of the back-facing triangles the test culled "
+                             "(1: as many as checking every triangle would). Click a point to put the cull eye there."));
+    histogram_ = addPlot(tr("Cone half-angles"), "Cone half-angles",
+                         tr("Clusters per cone half-angle \u03b1: narrow cones are culled from more places."),
+                         tr("How many clusters have a cone of each half-angle \u03b1. Narrow cones are culled from more "
+                            "places; a cluster whose normals need 90\u00b0 or more can never be culled."));
     connect(this, &QTabWidget::currentChanged, this, [this]() { render(); });
     // A click on the efficiency plot moves the eye to that view; a drag still pans the chart. The
     // chart takes the press, so the clicks are watched passively.
@@ -60,10 +68,21 @@ double PlotsView::displayXOfView(long index) const {
     return from[0] + (double(index) - axis->GetMinimum()) / (axis->GetMaximum() - axis->GetMinimum()) * (to[0] - from[0]);
 }
 
-PlotsView::Plot PlotsView::addPlot(const QString& tab, const char* title) {
-    // The context view renders into the widget's window.
+PlotsView::Plot PlotsView::addPlot(const QString& tab, const char* title, const QString& caption, const QString& help) {
+    // The context view renders into the widget's window; a line of words under it says what it plots.
     Plot plot;
-    plot.widget = new QVTKOpenGLNativeWidget(this);
+    auto* page = new QWidget(this);
+    plot.widget = new QVTKOpenGLNativeWidget(page);
+    auto* words = new QLabel(caption, page);
+    words->setWordWrap(true);
+    words->setToolTip(help);
+    plot.widget->setToolTip(help);
+    plot.widget->setWhatsThis(help);
+    auto* layout = new QVBoxLayout(page);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->setSpacing(2);
+    layout->addWidget(plot.widget, 1);
+    layout->addWidget(words);
     plot.context = vtkSmartPointer<vtkContextView>::New();
     plot.context->SetRenderWindow(plot.widget->renderWindow());
     plot.context->SetInteractor(plot.widget->interactor());
@@ -71,7 +90,7 @@ PlotsView::Plot PlotsView::addPlot(const QString& tab, const char* title) {
     plot.chart = vtkSmartPointer<vtkChartXY>::New();
     plot.context->GetScene()->AddItem(plot.chart);
     plot.chart->SetTitle(title);
-    addTab(plot.widget, tab);
+    addTab(page, tab);
     return plot;
 }
 

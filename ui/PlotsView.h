@@ -45,7 +45,7 @@ private:
         vtkSmartPointer<vtkContextView> context;
         vtkSmartPointer<vtkChartXY> chart;
     };
-    Plot addPlot(const QString& tab, const char* title);
+    Plot addPlot(const QString& tab, const char* title, const QString& caption, const QString& help);
     static void render(const Plot& plot);
 
     Plot efficiency_;

@@ -10,6 +10,8 @@
 
 #include "MainWindow.h"
 #include "SettingsPanel.h"
+#include "core/ClusterRanking.h"
+#include "core/Lesson.h"
 #include "core/SettingsSchema.h"
 
 namespace conescope {
@@ -126,6 +128,46 @@ std::function<Action(const Json&, const QDir&)> exportStep(bool orbit) {
     };
 }
 
+// A lesson step, 0 (the end of the lesson) to kLessonStepCount.
+Action parseLessonStep(const Json& value, const QDir&) {
+    const long step = wholeNumber(value, 0, "a lesson step, 1 to 6, or 0 to end the lesson");
+    if (step > kLessonStepCount) throw std::invalid_argument("takes a lesson step, 1 to 6, or 0 to end the lesson");
+    return [step](MainWindow& window) {
+        shownClusters(window);
+        window.showLessonStep(int(step));
+        if (step > 0 && !window.session().lesson()) throw std::runtime_error("no cluster is picked (pick or choose one first)");
+    };
+}
+
+// A cluster id, or the key of the orbit's ranking whose first cluster to take (as `conescope-cli
+// clusters --sort KEY --top 1`).
+Action parseChoose(const Json& value, const QDir&) {
+    if (value.is_string()) {
+        const ClusterSortKey key = parseClusterSortKey(value.get<std::string>());
+        return [key](MainWindow& window) {
+            shownClusters(window);
+            if (window.chooseWorstCluster(key) < 0) throw std::runtime_error("the orbit has not been measured");
+        };
+    }
+    const long cluster = wholeNumber(value, 0, "a cluster id or a ranking such as \"test-loss\"");
+    return [cluster](MainWindow& window) {
+        const size_t count = shownClusters(window).partition.clusterCount;
+        if (cluster >= long(count))
+            throw std::runtime_error("the mesh has " + std::to_string(count) + " clusters (0 to " + std::to_string(count - 1) + ")");
+        window.chooseCluster(int(cluster));
+    };
+}
+
+// A file the window writes through `write` (false: it said why in its last error).
+std::function<Action(const Json&, const QDir&)> writeStep(bool (MainWindow::*write)(const QString&)) {
+    return [write](const Json& value, const QDir& folder) -> Action {
+        const QString path = pathIn(folder, value);
+        return [path, write](MainWindow& window) {
+            if (!(window.*write)(path)) throw std::runtime_error(window.lastError().toStdString());
+        };
+    };
+}
+
 struct StepKind {
     const char* name;
     // Checks the step's value (throws std::invalid_argument saying what it takes) and returns the
@@ -189,20 +231,12 @@ const std::vector<StepKind>& stepKinds() {
              requireTrue(value);
              return [](MainWindow& window) { window.session().cancelNextBuild(); };
          }},
-        {"screenshot",
-         [](const Json& value, const QDir& folder) -> Action {
-             const QString path = pathIn(folder, value);
-             return [path](MainWindow& window) {
-                 if (!window.saveScreenshot(path)) throw std::runtime_error(window.lastError().toStdString());
-             };
-         }},
-        {"window-screenshot",
-         [](const Json& value, const QDir& folder) -> Action {
-             const QString path = pathIn(folder, value);
-             return [path](MainWindow& window) {
-                 if (!window.saveWindowScreenshot(path)) throw std::runtime_error(window.lastError().toStdString());
-             };
-         }},
+        {"choose", parseChoose},
+        {"lesson-step", parseLessonStep},
+        {"screenshot", writeStep(&MainWindow::saveScreenshot)},
+        {"window-screenshot", writeStep(&MainWindow::saveWindowScreenshot)},
+        {"cross-section", writeStep(&MainWindow::saveCrossSection)},
+        {"export-explanation", writeStep(&MainWindow::exportExplanation)},
         {"export", exportStep(true)},
         {"export-eye", exportStep(false)},
         {"caption",

@@ -6,7 +6,8 @@ namespace conescope {
 
 std::map<Layer, bool> firstLookLayers() {
     std::map<Layer, bool> layers;
-    for (Layer layer : allLayers()) layers[layer] = layer != Layer::Normals && layer != Layer::Spheres;
+    for (Layer layer : allLayers())
+        layers[layer] = layer != Layer::Normals && layer != Layer::Spheres && layer != Layer::Cones && layer != Layer::Boxes;
     return layers;
 }
 

@@ -11,8 +11,9 @@
 
 namespace conescope {
 
-// A first look shows clusters, cones and boxes; normals and spheres crowd the view, so they wait
-// for their keys. The window and the headless screenshot start with these.
+// A first look shows the faces coloured by decision, the cluster borders and the eye: cones, boxes,
+// normals and spheres hide the mesh, so they wait for their keys. The window and the headless
+// screenshot start with these.
 std::map<Layer, bool> firstLookLayers();
 
 std::unique_ptr<ClusterScene> makeScene(const PreparedMesh& prepared, const ClusterSet& clusters);

@@ -22,6 +22,7 @@
 #include "Exports.h"
 #include "TaskRunner.h"
 #include "core/Comparison.h"
+#include "core/Lesson.h"
 #include "core/Pipeline.h"
 #include "scene/ClusterScene.h"
 
@@ -78,6 +79,8 @@ public:
                                const std::function<void(bool)>& finished);
     void setFaceColoring(FaceColoring coloring);
     void setLayerVisible(Layer layer, bool visible);
+    // The legend fitted to a view this many pixels high (ClusterScene::fitLegend), kept for new scenes.
+    void fitLegend(int viewHeight);
 
     // Blocking forms and helpers for the window's test interface.
     bool exportStatistics(const QString& path, StatisticsFormat format, bool orbit);
@@ -124,6 +127,18 @@ public:
     // of the test first, else the partition's loss): the view that shows why it costs.
     void showClusterWhereItIsLost(int cluster);
 
+    // --- The lesson (SessionEye.cpp) --------------------------------------------------------------------
+    // Shows lesson step `step` (1 to kLessonStepCount) on the picked cluster; 0 ends the lesson. False,
+    // and nothing changes, for a step outside 0..kLessonStepCount.
+    bool setLessonStep(int step);
+    int lessonStep() const { return lessonStep_; }
+    // The lesson on the picked cluster from the measured eye with the shown test (core makeLesson), kept
+    // whenever a cluster is picked: null without a pick or a measured eye. The lesson dock, the
+    // cross-section and the explanation export all show this one value.
+    const Lesson* lesson() const { return lesson_ ? &*lesson_ : nullptr; }
+    // Writes the lesson as JSON (io/LessonIO.h); false (and errorOccurred) without one or on failure.
+    bool exportExplanation(const QString& path);
+
     // --- A/B comparison (SessionComparison.cpp) ----------------------------------------------------
     bool hasPin() const { return pin_.has_value(); }
     // A's snapshot; its shared options (views, distance, projection) are the shown snapshot's.
@@ -151,6 +166,10 @@ signals:
     // The orbit's rows changed, or moveEye put the eye on an orbit view (or off it).
     void orbitChanged();
     void pickChanged(int cluster);
+    // The lesson's step changed (0: the lesson ended).
+    void lessonStepChanged(int step);
+    // The lesson's numbers and words changed: another eye, cluster, test or step.
+    void lessonChanged();
     // The settings the widgets show: asked for, adopted (the builder a mesh is shown with) or put
     // back (a cancelled or failed build).
     void settingsChanged(const conescope::Settings& settings);
@@ -185,6 +204,8 @@ private:
     void clearOrbit();
     void updateEye();
     void measureCurrentEye();
+    // The picked cluster's lesson from the measured eye, and the lesson layer's drawing of it.
+    void updateLesson();
     // A against B from the measured eye, its per-face diff in the scene (or none without a pin).
     void measurePinnedEye();
     void requestOrbitComparison();
@@ -207,8 +228,11 @@ private:
     bool eyeUpdateScheduled_ = false;
     QTimer animationTimer_;
     std::map<Layer, bool> layers_;
+    int legendViewHeight_ = 0;  // 0: not known yet
     FaceColoring coloring_ = FaceColoring::CullDecision;
     int picked_ = -1;
+    int lessonStep_ = 0;
+    std::optional<Lesson> lesson_;
     std::optional<Snapshot> pin_;
     std::optional<Comparison> eyeComparison_;
     std::optional<Comparison> orbitComparison_;

@@ -4,6 +4,7 @@
 #include <chrono>
 
 #include "SceneBinding.h"
+#include "io/LessonIO.h"
 
 namespace conescope {
 
@@ -91,6 +92,7 @@ void Session::measureCurrentEye() {
         scene_->clearClusterDecisions();
         scene_->setTestDrawing({});
         measurePinnedEye();
+        updateLesson();
         return;
     }
     eyeError_.clear();
@@ -98,6 +100,7 @@ void Session::measureCurrentEye() {
     showEyeColouring(*scene_, prepared, clusters, *measurement_, coloring_);
     showTestDrawing(*scene_, prepared, clusters, picked_, *measurement_);
     measurePinnedEye();
+    updateLesson();
     eyeSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
@@ -106,6 +109,11 @@ void Session::measureCurrentEye() {
 void Session::setLayerVisible(Layer layer, bool visible) {
     layers_[layer] = visible;
     if (scene_) scene_->setLayerVisible(layer, visible);
+}
+
+void Session::fitLegend(int viewHeight) {
+    legendViewHeight_ = viewHeight;
+    if (scene_ && viewHeight > 0) scene_->fitLegend(viewHeight);
 }
 
 void Session::setFaceColoring(FaceColoring coloring) {
@@ -122,7 +130,42 @@ void Session::pickCluster(int cluster) {
     picked_ = cluster;
     if (scene_) scene_->setHighlightedCluster(cluster);
     if (scene_ && measurement_) showTestDrawing(*scene_, *shown_.prepared, *shown_.clusters, cluster, *measurement_);
+    updateLesson();
     emit pickChanged(cluster);
+}
+
+// --- The lesson ----------------------------------------------------------------------------------------
+
+bool Session::setLessonStep(int step) {
+    if (step < 0 || step > kLessonStepCount) return false;
+    const bool changed = step != lessonStep_;
+    lessonStep_ = step;
+    updateLesson();
+    if (changed) emit lessonStepChanged(step);
+    return true;
+}
+
+void Session::updateLesson() {
+    lesson_.reset();
+    if (scene_ && measurement_ && picked_ >= 0)
+        lesson_ = makeLesson(*shown_.prepared, *shown_.clusters, uint32_t(picked_), measurement_->eye, measurement_->statistics.test);
+    if (scene_) scene_->setLessonDrawing(lessonStep_ > 0 && lesson_ ? LessonDrawing{lessonStep_, *lesson_} : LessonDrawing{});
+    emit lessonChanged();
+}
+
+bool Session::exportExplanation(const QString& path) {
+    if (!lesson_) {
+        emit errorOccurred(tr("Cannot export the explanation"), tr("Pick a cluster first: the explanation is about the picked cluster."));
+        return false;
+    }
+    try {
+        writeLessonJson(*lesson_, path.toStdString());
+    } catch (const std::exception& error) {
+        emit errorOccurred(tr("Cannot export the explanation"), QString::fromStdString(error.what()));
+        return false;
+    }
+    emit notice(tr("Wrote %1").arg(path), 6000);
+    return true;
 }
 
 const std::vector<ViewStatistics>& Session::orbitRows() const {

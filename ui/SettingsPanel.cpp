@@ -15,6 +15,7 @@
 #include <QSpinBox>
 #include <QVBoxLayout>
 
+#include "Glossary.h"
 #include "core/SettingsSchema.h"
 
 namespace conescope {
@@ -71,28 +72,19 @@ std::vector<Enum> withFirst(std::vector<Enum> list, Enum value) {
 
 SettingsPanel::SettingsPanel(QWidget* parent) : QWidget(parent) {
     builder_ = enumBox(allBuilders(), this);
-    builder_->setToolTip(tr("How faces are grouped into clusters"));
     // meshoptimizer's meshlets hold at most 255 vertices and 512 triangles.
     maxVertices_ = countBox(3, 255, this);
     maxTriangles_ = countBox(1, 512, this);
     clusterCount_ = countBox(0, 10000000, this);
     // 0 leaves the count to the builder (Settings::clusterCount), which differs per builder.
     clusterCount_->setSpecialValueText(tr("auto (the builder's default)"));
-    clusterCount_->setToolTip(tr("Cluster budget. Auto: the optimized builder aims at about the count meshoptimizer "
-                                 "reaches at these limits; k-means uses triangles / max triangles; the meshlet and "
-                                 "meshopt builders always choose their own count."));
     effort_ = enumBox(allEfforts(), this);
-    effort_->setToolTip(tr("optimized builder: how long it searches. fast refines meshoptimizer's meshlets; balanced "
-                           "(default) adds a few annealing sweeps; best grows its own clusters and searches longest, "
-                           "several times slower (docs/benchmarks.md has the measured trade)"));
     clusterFile_ = new QLineEdit(this);
     clusterFile_->setPlaceholderText(tr("the mesh's cluster_id array"));
     clusterFile_->setClearButtonEnabled(true);
     browseClusterFile_ = new QPushButton(tr("Browse..."), this);
     normalWeight_ = weightBox(100.0, 0.25, this);
-    normalWeight_->setToolTip(tr("meshlet / kmeans: preference for narrow cones (0 = locality only)"));
     coneWeight_ = weightBox(1.0, 0.05, this);
-    coneWeight_->setToolTip(tr("meshopt builder: meshopt_buildMeshlets' cone_weight"));
 
     cone_ = enumBox(allConeMethods(), this);
     test_ = enumBox(allCullTests(), this);
@@ -104,7 +96,6 @@ SettingsPanel::SettingsPanel(QWidget* parent) : QWidget(parent) {
     views_ = countBox(1, 100000, this);
     distance_ = weightBox(1000.0, 0.25, this);
     distance_->setMinimum(0.01);
-    distance_->setToolTip(tr("orbit distance in half AABB diagonals"));
 
     auto* clusterFileRow = new QHBoxLayout;
     clusterFileRow->addWidget(clusterFile_, 1);
@@ -140,6 +131,7 @@ SettingsPanel::SettingsPanel(QWidget* parent) : QWidget(parent) {
     layout->addWidget(orbitGroup);
     layout->addStretch(1);
 
+    describeWidgets();
     setSettings(Settings{});
 
     for (QComboBox* box : {builder_, effort_, cone_, test_, sphere_, projection_})
@@ -221,6 +213,50 @@ void SettingsPanel::enableForBuilder() {
         {"normal_weight", {normalWeight_}}, {"cone_weight", {coneWeight_}}};
     for (const auto& [key, widgets] : widgetsOfField)
         for (QWidget* widget : widgets) widget->setEnabled(fieldMatters(settingField(key), current));
+}
+
+void SettingsPanel::describeWidgets() {
+    // The command line's help for the setting (the schema's), then the words a newcomer needs.
+    const std::pair<const char*, std::vector<std::pair<QWidget*, QString>>> described[] = {
+        {"builder", {{builder_, explain(QStringLiteral("builder"))}}},
+        {"max_vertices", {{maxVertices_, tr("A cluster may use at most this many distinct vertices (a GPU meshlet's limit).")}}},
+        {"max_triangles", {{maxTriangles_, tr("A cluster may hold at most this many triangles.")}}},
+        {"clusters_target", {{clusterCount_, tr("How many clusters to make. Auto: the optimized builder aims at the count "
+                                               "meshoptimizer reaches at these limits, so comparisons are at equal counts; "
+                                               "k-means uses triangles / max triangles; the meshlet and meshopt builders "
+                                               "always choose their own count.")}}},
+        {"effort", {{effort_, tr("How long the optimized builder searches: fast refines meshoptimizer's meshlets, balanced "
+                                 "(default) adds a few annealing sweeps, best grows its own clusters and searches longest "
+                                 "(docs/benchmarks.md has the measured trade).")}}},
+        {"cluster_file", {{clusterFile_, tr("The file builder's clusters: a text file with one cluster id per face; empty "
+                                            "takes the mesh's own cluster_id array.")},
+                          {browseClusterFile_, tr("Choose the text file of cluster ids.")}}},
+        {"normal_weight", {{normalWeight_, tr("meshlet and k-means builders: how much they prefer faces that look the same "
+                                              "way (narrow cones) over faces close together (0: closeness only).")}}},
+        {"cone_weight", {{coneWeight_, tr("meshopt builder: meshopt_buildMeshlets' cone_weight, its own preference for "
+                                          "narrow cones.")}}},
+        {"cones", {{cone_, explain(QStringLiteral("normal cone")) + tr(" How the cone is found:")}}},
+        {"tests", {{test_, tr("The cheap test that decides from the cull eye whether a whole cluster faces away.")}}},
+        {"sphere", {{sphere_, explain(QStringLiteral("bounding sphere")) + tr(" Ritter's is quick, minimal the smallest.")}}},
+        {"orthographic", {{projection_, tr("Perspective: the eye is a point. Orthographic: the eye is infinitely far away and "
+                                           "every view vector is the same direction.")}}},
+        {"fix_winding", {{fixWinding_, tr("Turns faces wound against their neighbours, and inside-out pieces, outward, so that "
+                                          "every normal points out of the surface.")}}},
+        {"views", {{views_, explain(QStringLiteral("orbit")) + tr(" How many eye positions it has.")}}},
+        {"distance", {{distance_, tr("How far the orbit's eyes are from the mesh centre, in half the diagonal of its bounding "
+                                     "box (3: about three mesh sizes away).")}}},
+    };
+    for (const auto& [key, widgets] : described) {
+        const QString help = QString::fromStdString(settingHelp(settingField(key)));
+        for (const auto& [widget, words] : widgets) {
+            widget->setToolTip(QStringLiteral("<p>%1</p><p><i>%2</i></p>").arg(words.toHtmlEscaped(), help.toHtmlEscaped()));
+            widget->setWhatsThis(words + QStringLiteral("\n\n") + help);
+        }
+    }
+    // Each choice says what it is.
+    for (int i = 0; i < builder_->count(); ++i) builder_->setItemData(i, explain(Builder(builder_->itemData(i).toInt())), Qt::ToolTipRole);
+    for (int i = 0; i < cone_->count(); ++i) cone_->setItemData(i, explain(ConeMethod(cone_->itemData(i).toInt())), Qt::ToolTipRole);
+    for (int i = 0; i < test_->count(); ++i) test_->setItemData(i, explain(CullTest(test_->itemData(i).toInt())), Qt::ToolTipRole);
 }
 
 void SettingsPanel::browseClusterFile() {

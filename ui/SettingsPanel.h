@@ -43,6 +43,8 @@ signals:
 private:
     void emitChanged();
     void enableForBuilder();
+    // Tooltips and What's This for every control, from the settings schema and the glossary.
+    void describeWidgets();
     void browseClusterFile();
 
     // Fields the panel does not edit (extra cones/tests, the eye) pass through unchanged.

@@ -11,7 +11,9 @@
 #include <QSettings>
 #include <QStyle>
 #include <QToolBar>
+#include <QWhatsThis>
 
+#include "Glossary.h"
 #include "HelpDialog.h"
 #include "MainWindow.h"
 #include "Session.h"
@@ -60,8 +62,18 @@ WindowActions::WindowActions(MainWindow* window, Session* session, QDockWidget* 
     createViewMenu(eyeViewDock, plotsDock, gaussMapDock);
     createEyeMenu();
     createCullingMenu();
+    createLessonMenu();
     QMenu* help = window_->menuBar()->addMenu(tr("&Help"));
     help_ = add(help, tr("&Shortcuts and controls"), QKeySequence::HelpContents, [this]() { showHelp(); });
+    add(help, tr("&Glossary"), {}, [this]() { showPage(tr("ConeScope glossary"), glossaryHtml()); },
+        tr("What cluster, normal cone, alpha, B, apex, the tests, the fractions and the losses mean"));
+    QAction* whatsThis = QWhatsThis::createAction(this);
+    whatsThis->setShortcut(QKeySequence(tr("Shift+F1")));
+    help->addAction(whatsThis);
+    window_->addAction(whatsThis);
+    shortcutActions_ << whatsThis;
+    help->addSeparator();
+    add(help, tr("&About ConeScope"), {}, [this]() { showPage(tr("About ConeScope"), aboutHtml()); });
     createToolBar();
 }
 
@@ -72,7 +84,11 @@ QAction* WindowActions::add(QMenu* menu, const QString& text, const QKeySequence
         action->setShortcut(key);
         shortcutActions_ << action;
     }
-    if (!tip.isEmpty()) action->setStatusTip(tip);
+    if (!tip.isEmpty()) {
+        action->setStatusTip(tip);
+        action->setToolTip(tip);
+        action->setWhatsThis(tip);
+    }
     if (run) connect(action, &QAction::triggered, this, run);
     // Shortcuts work wherever the focus is in the window, also when the menu bar is hidden.
     window_->addAction(action);
@@ -107,7 +123,7 @@ void WindowActions::createViewMenu(QDockWidget* eyeViewDock, QDockWidget* plotsD
     for (Layer layer : allLayers()) {
         // 1 .. 9, then 0 for the tenth, as on the keyboard.
         const QKeySequence key = number <= 10 ? QKeySequence(Qt::Key_0 + number % 10) : QKeySequence();
-        QAction* action = add(layers, tr("Show %1").arg(QString::fromStdString(toString(layer))), key, {});
+        QAction* action = add(layers, tr("Show %1").arg(QString::fromStdString(toString(layer))), key, {}, explain(layer));
         action->setCheckable(true);
         action->setChecked(session_->layerVisible(layer));
         connect(action, &QAction::toggled, this, [this, layer](bool visible) {
@@ -124,7 +140,7 @@ void WindowActions::createViewMenu(QDockWidget* eyeViewDock, QDockWidget* plotsD
     for (FaceColoring mode : allFaceColorings()) {
         QAction* action = add(coloring, tr("Colour by %1").arg(QString::fromStdString(toString(mode))),
                               QKeySequence(tr("Ctrl+%1").arg(key++)),
-                              [this, mode = mode]() { session_->setFaceColoring(mode); });
+                              [this, mode = mode]() { session_->setFaceColoring(mode); }, explain(mode));
         action->setCheckable(true);
         action->setChecked(mode == session_->faceColoring());
         coloringGroup->addAction(action);
@@ -140,15 +156,15 @@ void WindowActions::createViewMenu(QDockWidget* eyeViewDock, QDockWidget* plotsD
     add(view, tr("Show the &Gauss map"), QKeySequence(tr("G")), [gaussMapDock]() {
         gaussMapDock->show();
         gaussMapDock->raise();
-    });
+    }, explain(QStringLiteral("gauss sphere")));
     for (QDockWidget* dock : window_->findChildren<QDockWidget*>())
         if (dock != eyeViewDock && dock != plotsDock) view->addAction(dock->toggleViewAction());
 }
 
 void WindowActions::createEyeMenu() {
     QMenu* eye = window_->menuBar()->addMenu(tr("&Eye"));
-    look_ = add(eye, tr("&Look from here"), QKeySequence(tr("L")), [this]() { window_->lookFromHere(); },
-                tr("Put the cull eye at the observer's camera"));
+    look_ = add(eye, tr("Put the &eye at the camera (look from here)"), QKeySequence(tr("E")), [this]() { window_->lookFromHere(); },
+                tr("Put the cull eye where the observer's camera is"));
     followAction_ = add(eye, tr("&Follow the observer's camera"), QKeySequence(tr("F")), {});
     followAction_->setCheckable(true);
     connect(followAction_, &QAction::toggled, window_, &MainWindow::setFollowing);
@@ -175,6 +191,34 @@ void WindowActions::createCullingMenu() {
     add(culling, tr("Clear A"), QKeySequence(tr("Shift+A")), [this]() { session_->clearPin(); });
 }
 
+void WindowActions::createLessonMenu() {
+    QMenu* lesson = window_->menuBar()->addMenu(tr("&Lesson"));
+    add(lesson, tr("Start or end the &lesson"), QKeySequence(tr("L")), [this]() { window_->toggleLesson(); },
+        tr("Six steps through the picked cluster's cull decision, in words, with its numbers"));
+    add(lesson, tr("&Next lesson step"), QKeySequence(Qt::Key_PageDown), [this]() {
+        if (session_->lessonStep() > 0) window_->showLessonStep(std::min(session_->lessonStep() + 1, kLessonStepCount));
+    });
+    add(lesson, tr("&Previous lesson step"), QKeySequence(Qt::Key_PageUp), [this]() {
+        if (session_->lessonStep() > 0) window_->showLessonStep(std::max(session_->lessonStep() - 1, 1));
+    });
+    add(lesson, tr("Pick the cluster the test loses &most"), QKeySequence(tr("M")),
+        [this]() { window_->chooseWorstCluster(ClusterSortKey::TestLoss); },
+        tr("The cluster whose back faces the test draws most over the orbit, seen from where it draws them"));
+    lesson->addSeparator();
+    add(lesson, tr("Export the &explanation..."), {}, [this]() { writeWithDialog(tr("Export the explanation"), QStringLiteral("explanation.json"),
+                                                                                tr("JSON (*.json)"), &MainWindow::exportExplanation); },
+        tr("The lesson's steps and numbers as JSON"));
+    add(lesson, tr("Save the &cross-section..."), {}, [this]() { writeWithDialog(tr("Save the cross-section"), QStringLiteral("cross-section.png"),
+                                                                                tr("PNG (*.png)"), &MainWindow::saveCrossSection); },
+        tr("Seed 000's figure of the picked cluster as a picture"));
+}
+
+void WindowActions::writeWithDialog(const QString& title, const QString& name, const QString& filter,
+                                    bool (MainWindow::*write)(const QString&)) {
+    const QString path = QFileDialog::getSaveFileName(window_, title, name, filter);
+    if (!path.isEmpty()) (window_->*write)(path);
+}
+
 void WindowActions::createToolBar() {
     // Short labels for the toolbar; the menus keep the full text. A null action is a separator.
     const struct {
@@ -187,7 +231,7 @@ void WindowActions::createToolBar() {
         {screenshot_, QStyle::SP_DesktopIcon, tr("Screenshot")},
         {nullptr, QStyle::SP_CustomBase, {}},
         {reset_, QStyle::SP_BrowserReload, tr("Reset camera")},
-        {look_, QStyle::SP_ArrowForward, tr("Look from here")},
+        {look_, QStyle::SP_ArrowForward, tr("Eye at camera")},
         {followAction_, QStyle::SP_CustomBase, tr("Follow camera")},
         {animateAction_, QStyle::SP_MediaPlay, tr("Animate orbit")},
         {nullptr, QStyle::SP_CustomBase, {}},
@@ -210,6 +254,11 @@ void WindowActions::createToolBar() {
 
 void WindowActions::showHelp() {
     HelpDialog dialog(shortcutActions_, window_);
+    dialog.exec();
+}
+
+void WindowActions::showPage(const QString& title, const QString& html) {
+    HelpDialog dialog(title, html, window_);
     dialog.exec();
 }
 

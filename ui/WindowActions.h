@@ -44,6 +44,8 @@ public:
     void addRecentFile(const QString& path);
 
     void showHelp();
+    // A page of the help (the glossary, About) in the help dialog.
+    void showPage(const QString& title, const QString& html);
 
 private:
     QAction* add(QMenu* menu, const QString& text, const QKeySequence& key, const std::function<void()>& run,
@@ -53,6 +55,7 @@ private:
     void createViewMenu(QDockWidget* eyeViewDock, QDockWidget* plotsDock, QDockWidget* gaussMapDock);
     void createEyeMenu();
     void createCullingMenu();
+    void createLessonMenu();
     void createToolBar();
     void rebuildRecentMenu();
 
@@ -61,6 +64,8 @@ private:
     void exportStatisticsWithDialog(bool orbit);
     void exportPartitionWithDialog();
     void screenshotWithDialog();
+    // Asks for a file and hands it to `write` (which reports its own errors).
+    void writeWithDialog(const QString& title, const QString& name, const QString& filter, bool (MainWindow::*write)(const QString&));
 
     MainWindow* window_;
     Session* session_;

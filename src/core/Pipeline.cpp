@@ -186,7 +186,8 @@ std::vector<uint8_t> allBackFacingClusters(const EyeMeasurement& measurement) {
 glm::dvec3 startingEyePosition(const Aabb& worldBox, const Settings& settings) {
     const glm::dvec3 direction = glm::normalize(glm::dvec3(0.45, 0.5, 1.0));
     const double radius = std::max(double(worldBox.halfDiagonal()), 1e-6);
-    return glm::dvec3(worldBox.center()) + settings.distance * radius * direction;
+    // Near enough that the eye and the mesh share the first picture at a readable size.
+    return glm::dvec3(worldBox.center()) + std::min(settings.distance, 2.0) * radius * direction;
 }
 
 TestStatistics measureOrbit(const PreparedMesh& prepared, const ClusterSet& clusters, const Settings& settings,

@@ -111,8 +111,8 @@ EyeMeasurement measureEye(const PreparedMesh& prepared, const ClusterSet& cluste
 // measureCulling counted them: what the scene colours a missed cull.
 std::vector<uint8_t> allBackFacingClusters(const EyeMeasurement& measurement);
 
-// Where the cull eye starts on a new mesh: on the orbit sphere (settings.distance half-diagonals
-// from the centre), above and in front, so the first picture shows culled and drawn clusters.
+// Where the cull eye starts on a new mesh: above and in front, settings.distance half-diagonals from
+// the centre but at most 2, so the first picture shows culled and drawn clusters and the eye near.
 glm::dvec3 startingEyePosition(const Aabb& worldBox, const Settings& settings);
 
 // The displayed test over the standard orbit (measureCulling over orbitOf) with the cull map of the

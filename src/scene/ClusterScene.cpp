@@ -223,6 +223,11 @@ const SceneLegend& ClusterScene::legend() const {
     return impl_->legend;
 }
 
+void ClusterScene::fitLegend(int viewHeight) {
+    impl_->updateStaleLegend();
+    impl_->legend.setScale(legendScaleFor(viewHeight));
+}
+
 vtkActor* ClusterScene::actor(Layer layer) const {
     SceneLayer* shown = impl_->layer(layer);
     return shown ? shown->actors().front() : nullptr;

@@ -147,6 +147,8 @@ public:
     vtkActor* actor(Layer layer) const;     // the layer's main actor; nullptr for Legend
     // Entries follow the visible layers and the colouring (SceneLegend.h).
     const SceneLegend& legend() const;
+    // The legend's size for a view this many pixels high: smaller in a small view (SceneLegend::setScale).
+    void fitLegend(int viewHeight);
 
 private:
     struct Impl;

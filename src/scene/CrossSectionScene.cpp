@@ -1,5 +1,6 @@
 #include "scene/CrossSectionScene.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <sstream>
@@ -244,9 +245,13 @@ void CrossSectionScene::show(const std::optional<CrossSection>& section) {
     }
 }
 
-void CrossSectionScene::fitCaption(int widthPixels) {
-    // About 7.5 pixels a character at the caption's 14 points.
-    impl_->captionWidth = size_t(std::max(24, int((widthPixels - 20) / 7.5)));
+void CrossSectionScene::fitTo(int widthPixels, int heightPixels) {
+    // Sized for a 480-pixel picture; the caption has about 7.5 pixels a character at 14 points.
+    const double scale = std::clamp(std::min(widthPixels, heightPixels) / 480.0, 0.6, 1.5);
+    impl_->title->GetTextProperty()->SetFontSize(int(std::lround(18 * scale)));
+    impl_->caption->GetTextProperty()->SetFontSize(int(std::lround(14 * scale)));
+    for (const auto& label : impl_->labels) label->GetTextProperty()->SetFontSize(int(std::lround(15 * scale)));
+    impl_->captionWidth = size_t(std::max(24, int((widthPixels - 20) / (7.5 * scale))));
     if (impl_->section) impl_->caption->SetInput(wrapped(impl_->section->caption, impl_->captionWidth).c_str());
 }
 
@@ -265,9 +270,10 @@ void CrossSectionScene::removeFrom(vtkRenderer* renderer) const {
 void CrossSectionScene::placeCamera(vtkCamera* camera, double aspect) const {
     // The figure fills the top share of the height (and fits the width); the caption the rest.
     const double figureHeight = figureHigh - figureLow;
-    double visibleHeight = figureHeight / figureShare;
+    // Without the caption (shown as text beside it) the figure takes nearly the whole height.
+    double visibleHeight = figureHeight / (impl_->caption->GetVisibility() ? figureShare : 0.9);
     if (aspect > 0.0 && visibleHeight * aspect < 2.0 * figureHalfWidth) visibleHeight = 2.0 * figureHalfWidth / aspect;
-    const double bottom = figureHigh - visibleHeight + 0.12 * figureHeight;
+    const double bottom = figureHigh - visibleHeight + 0.1 * figureHeight;
     const double centreY = bottom + visibleHeight / 2.0;
     camera->ParallelProjectionOn();
     camera->SetParallelScale(visibleHeight / 2.0);
@@ -279,7 +285,7 @@ void CrossSectionScene::placeCamera(vtkCamera* camera, double aspect) const {
 
 vtkSmartPointer<vtkImageData> renderCrossSectionToImage(CrossSectionScene& scene, int width, int height) {
     requireDisplay();
-    scene.fitCaption(width);
+    scene.fitTo(width, height);
     auto renderer = vtkSmartPointer<vtkRenderer>::New();
     renderer->SetBackground(1.0, 1.0, 1.0);
     scene.addTo(renderer);

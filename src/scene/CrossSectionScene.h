@@ -27,13 +27,16 @@ public:
     // Shows `section`; nullopt shows only a note to pick a cluster.
     void show(const std::optional<CrossSection>& section);
     bool hasSection() const;
-    // The caption broken into lines that fit a picture this wide; hidden where words are shown beside it.
-    void fitCaption(int widthPixels);
+    // The text sized for a picture of this many pixels (smaller in a small view) and the caption broken
+    // into lines that fit its width.
+    void fitTo(int widthPixels, int heightPixels);
+    // Hidden where the caption is shown as words beside the picture.
     void setCaptionVisible(bool visible);
 
     void addTo(vtkRenderer* renderer) const;
     void removeFrom(vtkRenderer* renderer) const;
-    // A parallel camera on the figure, room left below it for the caption; `aspect` is width / height.
+    // A parallel camera on the figure, room left below it for the caption when that is shown; `aspect`
+    // is width / height.
     void placeCamera(vtkCamera* camera, double aspect) const;
 
 private:
@@ -41,8 +44,8 @@ private:
     std::unique_ptr<Impl> impl_;
 };
 
-// Renders the cross-section alone into an RGB image (multisampling off), the caption fitted to the
-// width. Needs an X display.
+// Renders the cross-section alone into an RGB image (multisampling off), fitted to its size. Needs
+// an X display.
 vtkSmartPointer<vtkImageData> renderCrossSectionToImage(CrossSectionScene& scene, int width, int height);
 
 }  // namespace conescope

@@ -244,6 +244,8 @@ void GaussMapScene::placeCamera(vtkCamera* camera) const {
 
 const SceneLegend& GaussMapScene::legend() const { return impl_->legend; }
 
+void GaussMapScene::fitLegend(int viewHeight) { impl_->legend.setScale(legendScaleFor(viewHeight)); }
+
 vtkSmartPointer<vtkImageData> renderGaussMapToImage(const GaussMapScene& scene, int width, int height) {
     requireDisplay();
     auto renderer = vtkSmartPointer<vtkRenderer>::New();

@@ -42,6 +42,8 @@ public:
     // Looks at the unit sphere from the side of the displayed cap, with v's horizon in view.
     void placeCamera(vtkCamera* camera) const;
     const SceneLegend& legend() const;
+    // The legend's size for a view this many pixels high (SceneLegend::setScale).
+    void fitLegend(int viewHeight);
 
 private:
     struct Impl;

@@ -140,7 +140,10 @@ CameraPlacement lessonCamera(const Lesson& lesson, int step, double viewAngleDeg
     const double r = std::max(lesson.sphere.radius, 1e-9);
     glm::dvec3 side, other;
     orthonormalFrame(up, side, other);
+    // The faces from outside, where their normals point: the arrows (step 1), the faces coloured by
+    // what happened to them (step 6).
     if (step <= 1) return lookAt(centre, 1.7 * r, side + 0.8 * up, up, viewAngleDegrees);
+    if (step >= 6) return lookAt(centre, 2.2 * r, side + 0.8 * up, up, viewAngleDegrees);
     if (step <= 3) {
         // The Gauss sphere fills the picture, the cluster's top below it.
         const double radius = gaussSphereRadius(lesson);
@@ -160,9 +163,8 @@ CameraPlacement lessonCamera(const Lesson& lesson, int step, double viewAngleDeg
     const glm::dvec3 eye = centre + glm::normalize(towardsEye) * distance;
     glm::dvec3 across = glm::cross(glm::normalize(towardsEye), up);
     if (glm::length(across) < 1e-6) across = other;
-    const glm::dvec3 from = glm::normalize(across) + 0.25 * up;
-    // The verdict looks at the cluster's faces, the view vector coming in from the eye's side.
-    if (step >= 6) return lookAt(centre + 0.15 * (eye - centre), 2.4 * r, from, up, viewAngleDegrees);
+    // From the side of the plane of V1 and v, raised towards V1 so the cluster shows its faces.
+    const glm::dvec3 from = glm::normalize(across) + 0.6 * up;
     return lookAt(0.5 * (centre + eye), 0.5 * distance + 1.3 * r, from, up, viewAngleDegrees);
 }
 

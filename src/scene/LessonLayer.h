@@ -32,8 +32,8 @@ glm::dvec3 gaussSphereCentre(const Lesson& lesson);
 std::map<Layer, bool> lessonLayers(int step);
 FaceColoring lessonColouring(int step);
 
-// Where a step looks from, V1 pointing up: at the cluster (and the Gauss sphere) from the side, and
-// from step 5 on at the cluster and the eye together.
+// Where a step looks from, V1 pointing up: at the cluster (and the Gauss sphere) from the side, at
+// the cluster and the eye together for the test (step 5), at the cluster's faces for the verdict.
 struct CameraPlacement {
     glm::dvec3 focalPoint{0.0};
     glm::dvec3 position{0.0, 0.0, 1.0};

@@ -29,10 +29,10 @@ constexpr double swatchWidth = 22.0, swatchHeight = 12.0, swatchGap = 8.0, barWi
 constexpr int labelFontSize = 13, scaleFontSize = 12;
 const Rgb frameColour{0.85, 0.85, 0.85};  // around every swatch, so dark colours show on the dark box
 
-vtkSmartPointer<vtkTextProperty> textProperty(int fontSize) {
+vtkSmartPointer<vtkTextProperty> textProperty(double fontSize) {
     auto property = vtkSmartPointer<vtkTextProperty>::New();
     property->SetFontFamilyToArial();
-    property->SetFontSize(fontSize);
+    property->SetFontSize(int(std::lround(fontSize)));
     property->SetColor(1.0, 1.0, 1.0);
     property->ShadowOff();
     property->SetJustificationToLeft();
@@ -93,6 +93,8 @@ void addRectangle(vtkPolyData* data, const SceneLegend::Rectangle& r, const Rgb&
 
 }  // namespace
 
+double legendScaleFor(int height) { return std::clamp(double(height) / 600.0, 0.75, 1.0); }
+
 SceneLegend::SceneLegend()
     : assembly_(vtkSmartPointer<vtkPropAssembly>::New()), backgroundData_(emptyColoured()), colourData_(emptyColoured()) {
     background_ = actorOf(backgroundData_);
@@ -108,7 +110,7 @@ SceneLegend::~SceneLegend() = default;
 
 vtkProp* SceneLegend::prop() const { return assembly_; }
 
-void SceneLegend::addText(const std::string& text, double x, double centreY, int fontSize) {
+void SceneLegend::addText(const std::string& text, double x, double centreY, double fontSize) {
     auto actor = vtkSmartPointer<vtkTextActor>::New();
     actor->SetInput(text.c_str());
     actor->GetTextProperty()->ShallowCopy(textProperty(fontSize));
@@ -140,36 +142,43 @@ void SceneLegend::show(const std::vector<LegendEntry>& entries) {
     colourData_->ShallowCopy(emptyColoured());
     size_t rows = 0;
     for (const LegendEntry& entry : entries) rows += entry.scale ? 2 : 1;
-    const double left = legendMargin + legendPadding;
-    const double top = legendMargin + 2.0 * legendPadding + double(rows) * rowHeight;
-    double y = top - legendPadding - 0.5 * rowHeight;  // the centre of the current row
+    const double k = scale_, margin = k * legendMargin, padding = k * legendPadding, row = k * rowHeight;
+    const double left = margin + padding;
+    const double top = margin + 2.0 * padding + double(rows) * row;
+    double y = top - padding - 0.5 * row;  // the centre of the current row
     for (const LegendEntry& entry : entries) {
         if (!entry.scale) {
-            const Rectangle swatch{left, y - 0.5 * swatchHeight, left + swatchWidth, y + 0.5 * swatchHeight};
+            const Rectangle swatch{left, y - 0.5 * k * swatchHeight, left + k * swatchWidth, y + 0.5 * k * swatchHeight};
             addColours(entry.colours, swatch);
-            addText(entry.label, swatch[2] + swatchGap, y, labelFontSize);
-            y -= rowHeight;
+            addText(entry.label, swatch[2] + k * swatchGap, y, k * labelFontSize);
+            y -= row;
             continue;
         }
         // A continuous colouring: its label, and under it the bar with its ends written beside them.
-        addText(entry.label, left, y, labelFontSize);
-        y -= rowHeight;
-        addText(scaleText((*entry.scale)[0]), left, y, scaleFontSize);
-        const double barLeft = texts_.back().box[2] + 0.5 * swatchGap;
-        const Rectangle bar{barLeft, y - 0.5 * swatchHeight, barLeft + barWidth, y + 0.5 * swatchHeight};
+        addText(entry.label, left, y, k * labelFontSize);
+        y -= row;
+        addText(scaleText((*entry.scale)[0]), left, y, k * scaleFontSize);
+        const double barLeft = texts_.back().box[2] + 0.5 * k * swatchGap;
+        const Rectangle bar{barLeft, y - 0.5 * k * swatchHeight, barLeft + k * barWidth, y + 0.5 * k * swatchHeight};
         addColours(entry.colours, bar);
-        addText(scaleText((*entry.scale)[1]), bar[2] + 0.5 * swatchGap, y, scaleFontSize);
-        y -= rowHeight;
+        addText(scaleText((*entry.scale)[1]), bar[2] + 0.5 * k * swatchGap, y, k * scaleFontSize);
+        y -= row;
     }
     double right = left;
     for (const Placed& text : texts_) right = std::max(right, text.box[2]);
     for (const Rectangle& swatch : swatches_) right = std::max(right, swatch[2]);
-    box_ = {legendMargin, legendMargin, right + legendPadding, top};
+    box_ = {margin, margin, right + padding, top};
     backgroundData_->ShallowCopy(emptyColoured());
     addRectangle(backgroundData_, box_, {0.0, 0.0, 0.0});
     backgroundData_->Modified();
     colourData_->Modified();
     setVisible(visible_);
+}
+
+void SceneLegend::setScale(double scale) {
+    if (scale == scale_ || !(scale > 0.0)) return;
+    scale_ = scale;
+    show(std::vector<LegendEntry>(entries_));
 }
 
 void SceneLegend::setVisible(bool visible) {

@@ -20,6 +20,9 @@ class vtkTextActor;
 
 namespace conescope {
 
+// The legend's scale for a view `height` pixels high: full size from 600 pixels up, down to 3/4.
+double legendScaleFor(int height);
+
 class SceneLegend {
 public:
     SceneLegend();
@@ -27,6 +30,9 @@ public:
 
     // Replaces the entries; an empty legend is hidden.
     void show(const std::vector<LegendEntry>& entries);
+    // Every size (text, rows, swatches) times `scale`: a small view gets a smaller legend. 1 by default.
+    void setScale(double scale);
+    double scale() const { return scale_; }
     void setVisible(bool visible);
     bool visible() const { return visible_; }
     // Drawn: visible and with entries.
@@ -47,11 +53,12 @@ public:
     const std::vector<Rectangle>& swatches() const { return swatches_; }
 
 private:
-    void addText(const std::string& text, double x, double centreY, int fontSize);
+    void addText(const std::string& text, double x, double centreY, double fontSize);
     void addColours(const std::vector<Rgb>& colours, const Rectangle& where);
 
     std::vector<LegendEntry> entries_;
     bool visible_ = false;
+    double scale_ = 1.0;
     vtkSmartPointer<vtkPropAssembly> assembly_;
     vtkSmartPointer<vtkActor2D> background_, colours_;
     vtkSmartPointer<vtkPolyData> backgroundData_, colourData_;

@@ -124,11 +124,13 @@ private slots:
         QCOMPARE(shown.views, defaults.views);
         QCOMPARE(shown.distance, defaults.distance);
         QCOMPARE(shown.orthographic, defaults.orthographic);
-        // A first look shows the clusters with their cones and boxes.
-        for (Layer layer : {Layer::Faces, Layer::Borders, Layer::Cones, Layer::Boxes, Layer::Eye})
+        // A first look a class can read: the faces by decision, the borders and the eye; cones, boxes,
+        // normals and spheres wait for their keys.
+        for (Layer layer : {Layer::Faces, Layer::Borders, Layer::Eye, Layer::Legend})
             QVERIFY2(fresh.layerVisible(layer), toString(layer).c_str());
-        QVERIFY(!fresh.layerVisible(Layer::Normals));
-        QVERIFY(!fresh.layerVisible(Layer::Spheres));
+        for (Layer layer : {Layer::Cones, Layer::Boxes, Layer::Normals, Layer::Spheres})
+            QVERIFY2(!fresh.layerVisible(layer), toString(layer).c_str());
+        QCOMPARE(int(fresh.session().faceColoring()), int(FaceColoring::CullDecision));
     }
 
     void settingsWidgetsRecompute() {
@@ -233,7 +235,7 @@ private slots:
         QVERIFY(window_->openMeshBlocking(datasetPath("icosphere.off")));
         window_->activateWindow();
         window_->observerView()->setFocus();
-        QTest::keyClick(window_.get(), Qt::Key_L);
+        QTest::keyClick(window_.get(), Qt::Key_E);
         QCOMPARE(window_->eyePosition(), cameraPosition(*window_));
         compareWithCore(*window_);
 
@@ -383,9 +385,12 @@ private slots:
     void clickPicksACluster() {
         QVERIFY(window_->openMeshBlocking(datasetPath("icosphere.off")));
         window_->setEyePosition({0.0, 0.0, 4.0});
-        // Cones and the eye marker would hide the face behind them: switch them off with their keys.
+        // Cones and the eye marker would hide the face behind them: the cones are off at first, the eye
+        // is switched off with its key (and the cones' key toggles them on and off again).
         const int conesKey = Qt::Key_1 + int(std::find(allLayers().begin(), allLayers().end(), Layer::Cones) - allLayers().begin());
         const int eyeKey = Qt::Key_1 + int(std::find(allLayers().begin(), allLayers().end(), Layer::Eye) - allLayers().begin());
+        QVERIFY(!window_->layerVisible(Layer::Cones));
+        QTest::keyClick(window_.get(), Qt::Key(conesKey));
         QVERIFY(window_->layerVisible(Layer::Cones));
         QTest::keyClick(window_.get(), Qt::Key(conesKey));
         QTest::keyClick(window_.get(), Qt::Key(eyeKey));
@@ -561,7 +566,7 @@ private slots:
         QApplication::setActiveWindow(window_.get());
         QTRY_COMPARE(QApplication::activeWindow(), window_.get());
         for (const char* key : {"Ctrl+O", "Ctrl+S", "Ctrl+Shift+S", "F1", "Space"}) QVERIFY2(shown.contains(QLatin1String(key)), key);
-        for (const char* text : {"Look from here", "Reset camera", "Animate along the orbit", "Show faces", "Pin as A",
+        for (const char* text : {"Put the eye at the camera", "Start or end the lesson", "Reset camera", "Animate along the orbit", "Show faces", "Pin as A",
                                  "Swap A and B", "Show the Gauss map"})
             QVERIFY2(shown.contains(QLatin1String(text)), text);
         // Every shortcut the window answers to is in the list.

@@ -285,7 +285,7 @@ private slots:
         QCOMPARE(QImage(fromEye).size(), QSize(200, 150));
 
         // --layers: only the layers named are drawn, so each set gives its own image, and none is
-        // the default set (faces, borders, cones, eye, highlight, legend).
+        // the default set (faces, borders, eye, highlight, test, legend).
         auto shot = [&](const QString& name, const QStringList& layers) {
             const QString file = temporary_.filePath(name);
             QStringList arguments{QStringLiteral("--screenshot"), file, QStringLiteral("--size"), QStringLiteral("240x180"),
@@ -303,8 +303,8 @@ private slots:
         QCOMPARE(shot(QStringLiteral("faces-again.png"), {QStringLiteral("faces")}), faces);
         // Headless starts with the window's first-look layers.
         QCOMPARE(defaults, shot(QStringLiteral("window-layers.png"),
-                                {QStringLiteral("faces"), QStringLiteral("borders"), QStringLiteral("cones"), QStringLiteral("boxes"),
-                                 QStringLiteral("eye"), QStringLiteral("highlight"), QStringLiteral("legend")}));
+                                {QStringLiteral("faces"), QStringLiteral("borders"), QStringLiteral("eye"), QStringLiteral("highlight"),
+                                 QStringLiteral("test"), QStringLiteral("legend"), QStringLiteral("lesson")}));
     }
 
     void headlessScreenshotPicksACluster() {

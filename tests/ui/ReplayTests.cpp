@@ -12,6 +12,7 @@
 #include "ReplaySteps.h"
 #include "UiTestSupport.h"
 #include "WindowTestSupport.h"
+#include "core/Lesson.h"
 
 using namespace conescope;
 using namespace conescope::testing;
@@ -80,6 +81,10 @@ private slots:
         QVERIFY(refusal("[{\"swap\": false}]").contains(QStringLiteral("takes true")));
         QVERIFY(refusal("[{\"open\": \"a.off\", \"pin\": \"A\"}]").contains(QStringLiteral("one member")));
         QVERIFY(refusal("[{\"caption\": 3}]").contains(QStringLiteral("takes a text")));
+        QVERIFY(refusal("[{\"lesson-step\": 7}]").contains(QStringLiteral("takes a lesson step")));
+        QVERIFY(refusal("[{\"lesson-step\": -1}]").contains(QStringLiteral("takes a lesson step")));
+        QVERIFY(refusal("[{\"choose\": \"worst\"}]").contains(QStringLiteral("test-loss")));
+        QVERIFY(refusal("[{\"cross-section\": \"\"}]").contains(QStringLiteral("takes a file path")));
         try {
             readReplayFile(temporary_.filePath(QStringLiteral("no-such-replay.json")));
             QFAIL("a missing file was read");
@@ -91,9 +96,10 @@ private slots:
             R"([{"open": "m.off"}, {"set": {"builder": "meshopt", "max-tris": 64, "test": ["apex", "sphere"], "ortho": true}},
                 {"eye": [1, 2, 3.5]}, {"orbit-view": 3}, {"pick": -1}, {"pin": "A"}, {"swap": true}, {"drop-pin": true},
                 {"cancel-next-build": true}, {"screenshot": "a.png"}, {"window-screenshot": "b.png"}, {"export": "c.json"},
-                {"export-eye": "d.csv"}, {"caption": "text"}])",
+                {"export-eye": "d.csv"}, {"caption": "text"}, {"choose": 3}, {"choose": "test-loss"}, {"lesson-step": 2},
+                {"cross-section": "e.png"}, {"export-explanation": "f.json"}])",
             QDir::tempPath());
-        QCOMPARE(steps.size(), replayStepNames().size());
+        QCOMPARE(steps.size(), replayStepNames().size() + 1);
     }
 
     void commandLineTakesAReplay() {
@@ -192,6 +198,48 @@ private slots:
         QVERIFY(!cli.is_null());
         QCOMPARE(window["diff"]["efficiency_a"].get<double>(), cli["diff"]["efficiency_a"].get<double>());
         QVERIFY(withoutTimings(window) == withoutTimings(cli));
+    }
+
+    // Issue 33, done when: the elephant's cluster that `conescope-cli clusters --sort test-loss --top 1`
+    // names, its six lesson steps as six different pictures, the cross-section and the explanation,
+    // whose alpha is the CLI's half_angle_deg.
+    void lessonOnTheClusterTheCliRanksFirst() {
+        const QString table = temporary_.filePath(QStringLiteral("worst.json"));
+        QString errors;
+        QCOMPARE(runProgram(QStringLiteral(CONESCOPE_CLI_PATH),
+                            {QStringLiteral("clusters"), datasetPath("elephant.off"), QStringLiteral("--sort"), QStringLiteral("test-loss"),
+                             QStringLiteral("--top"), QStringLiteral("1"), QStringLiteral("--quiet"), QStringLiteral("-o"), table},
+                            &errors),
+                 0);
+        const nlohmann::json worst = readJsonFile(table)["rows"][0];
+        const int cluster = worst["cluster"].get<int>();
+        QDir folder(temporary_.path());
+        QVERIFY(folder.mkpath(QStringLiteral("lesson")));
+        QString steps = QStringLiteral(R"([{"open": "%1"}, {"choose": %2})").arg(datasetPath("elephant.off")).arg(cluster);
+        for (int step = 1; step <= kLessonStepCount; ++step)
+            steps += QStringLiteral(R"(, {"lesson-step": %1}, {"screenshot": "lesson/step%1.png"})").arg(step);
+        steps += QStringLiteral(R"(, {"cross-section": "lesson/cross-section.png"}, {"export-explanation": "lesson/explanation.json"}])");
+        QCOMPARE(replay(QStringLiteral("elephant-lesson.json"), steps.toUtf8(), &errors), 0);
+        std::vector<QImage> pictures;
+        for (int step = 1; step <= kLessonStepCount; ++step) {
+            pictures.emplace_back(folder.filePath(QStringLiteral("lesson/step%1.png").arg(step)));
+            QVERIFY(!pictures.back().isNull());
+        }
+        for (size_t a = 0; a < pictures.size(); ++a)
+            for (size_t b = a + 1; b < pictures.size(); ++b) QVERIFY2(pictures[a] != pictures[b], qPrintable(QStringLiteral("%1 %2").arg(a + 1).arg(b + 1)));
+        QCOMPARE(QImage(folder.filePath(QStringLiteral("lesson/cross-section.png"))).size(), QSize(640, 640));
+        const nlohmann::json explanation = readJsonFile(folder.filePath(QStringLiteral("lesson/explanation.json")));
+        QCOMPARE(explanation["cluster"].get<int>(), cluster);
+        QVERIFY2(std::abs(explanation["alpha_degrees"].get<double>() - worst["half_angle_deg"].get<double>()) < 0.05,
+                 qPrintable(QString::fromStdString(explanation.dump())));
+        QCOMPARE(explanation["test"].get<std::string>(), readJsonFile(table)["test"].get<std::string>());
+        QCOMPARE(explanation["steps"].size(), size_t(kLessonStepCount));
+        for (const nlohmann::json& step : explanation["steps"])
+            QVERIFY(!step["title"].get<std::string>().empty() && step["text"].get<std::string>().size() > 80);
+        QVERIFY(explanation["verdict"] == "culled" || explanation["verdict"] == "drawn");
+        // The cluster was chosen where the test loses it: the words say so.
+        QCOMPARE(explanation["outcome"].get<std::string>(), std::string("lost to the test"));
+        QVERIFY(explanation["steps"][5]["text"].get<std::string>().find("lost to the test") != std::string::npos);
     }
 };
 

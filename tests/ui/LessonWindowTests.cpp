@@ -1,0 +1,188 @@
+// The lesson in the window (issue 33): L starts it on the cluster the test loses most, each step shows
+// the layers it talks about and the core's words, the words follow the eye, the end puts the window
+// back; and words everywhere: every control has a tooltip and What's This, every legend entry and
+// glossary term an explanation.
+#include <QAbstractButton>
+#include <QAction>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDockWidget>
+#include <QDoubleSpinBox>
+#include <QLineEdit>
+#include <QSpinBox>
+#include <QSurfaceFormat>
+#include <QtTest>
+
+#include <QVTKOpenGLNativeWidget.h>
+
+#include "CrossSectionView.h"
+#include "EyePanel.h"
+#include "Glossary.h"
+#include "LessonView.h"
+#include "MainWindow.h"
+#include "SettingsPanel.h"
+#include "UiTestSupport.h"
+#include "WindowTestSupport.h"
+#include "core/ClusterRanking.h"
+#include "core/CrossSection.h"
+#include "io/LessonIO.h"
+
+using namespace conescope;
+using namespace conescope::testing;
+
+namespace {
+
+// The lesson the core makes for what the window shows: the one the dock must show.
+Lesson coreLesson(MainWindow& window) {
+    const EyeMeasurement* measured = window.currentStatistics();
+    return makeLesson(*window.preparedMesh(), *window.clusters(), uint32_t(window.pickedCluster()), measured->eye,
+                      displayedTest(window.settings()));
+}
+
+// Every input control below `widget` (the ones a user changes).
+QList<QWidget*> controlsOf(QWidget* widget) {
+    QList<QWidget*> controls;
+    for (QWidget* child : widget->findChildren<QWidget*>())
+        if (qobject_cast<QComboBox*>(child) || qobject_cast<QAbstractSpinBox*>(child) || qobject_cast<QAbstractButton*>(child) ||
+            qobject_cast<QLineEdit*>(child))
+            // Not the parts Qt builds into a control (a line edit's clear button, a spin box's editor).
+            if (!child->objectName().startsWith(QLatin1String("qt_")) && child->parent() && !qobject_cast<QAbstractSpinBox*>(child->parent()) &&
+                !qobject_cast<QComboBox*>(child->parent()) && !qobject_cast<QLineEdit*>(child->parent()))
+                controls << child;
+    return controls;
+}
+
+}  // namespace
+
+class LessonWindowTests : public QObject, private WindowFixture {
+    Q_OBJECT
+
+private slots:
+    void initTestCase() { openWindow(); }
+    void cleanupTestCase() { window_.reset(); }
+
+    void lKeyStartsOnTheCostliestClusterAndEachStepShowsItsLayers() {
+        QVERIFY(window_->openMeshBlocking(datasetPath("elephant.off")));
+        window_->setLayerVisible(Layer::Boxes, true);
+        window_->observerView()->setFocus();
+        QCOMPARE(window_->pickedCluster(), -1);
+        QTest::keyClick(window_.get(), Qt::Key_L);
+        window_->waitUntilIdle();
+        const std::vector<uint32_t> worst = rankClusters(*window_->session().orbitStatistics(), ClusterSortKey::TestLoss, 1);
+        QCOMPARE(window_->pickedCluster(), int(worst.front()));
+        QCOMPARE(window_->session().lessonStep(), 1);
+        for (int step = 1; step <= kLessonStepCount; ++step) {
+            if (step > 1) QTest::keyClick(window_.get(), Qt::Key_PageDown);
+            QCOMPARE(window_->session().lessonStep(), step);
+            for (const auto& [layer, shown] : lessonLayers(step)) QCOMPARE(window_->layerVisible(layer), shown);
+            QCOMPARE(int(window_->session().faceColoring()), int(lessonColouring(step)));
+            const Lesson expected = coreLesson(*window_);
+            QCOMPARE(window_->lessonView()->text(), QString::fromStdString(expected.steps[size_t(step - 1)].text));
+            QVERIFY(window_->lessonView()->title().endsWith(QString::fromStdString(expected.steps[size_t(step - 1)].title)));
+            QCOMPARE(window_->scene()->lessonDrawing().step, step);
+            saveWindowPicture(QStringLiteral("lesson-step%1.png").arg(step));
+        }
+        QVERIFY(window_->crossSectionView()->isVisible());
+        QCOMPARE(window_->crossSectionView()->caption(), QString::fromStdString(crossSectionOf(coreLesson(*window_)).caption));
+        QTest::keyClick(window_.get(), Qt::Key_PageDown);  // past the last step: stays
+        QCOMPARE(window_->session().lessonStep(), kLessonStepCount);
+        QTest::keyClick(window_.get(), Qt::Key_PageUp);
+        QCOMPARE(window_->session().lessonStep(), kLessonStepCount - 1);
+        // L again ends it: the layers and colours from before come back.
+        QTest::keyClick(window_.get(), Qt::Key_L);
+        QCOMPARE(window_->session().lessonStep(), 0);
+        QVERIFY(window_->layerVisible(Layer::Boxes));
+        QVERIFY(!window_->layerVisible(Layer::Lesson) || window_->scene()->lessonDrawing().step == 0);
+        QCOMPARE(int(window_->session().faceColoring()), int(FaceColoring::CullDecision));
+        QVERIFY(!window_->showLessonStep(kLessonStepCount + 1));
+    }
+
+    void theWordsFollowTheEye() {
+        QVERIFY(window_->openMeshBlocking(datasetPath("torus.off")));
+        window_->pickCluster(3);
+        QVERIFY(window_->showLessonStep(5));
+        const QString before = window_->lessonView()->text();
+        const QString figureBefore = window_->crossSectionView()->caption();
+        window_->setEyePosition({0.3, 2.5, 0.4});
+        window_->waitUntilIdle();
+        QVERIFY(window_->lessonView()->text() != before);
+        QVERIFY(window_->lessonView()->text().contains(QStringLiteral("e = (0.300, 2.500, 0.400)")));
+        QCOMPARE(window_->lessonView()->text(), QString::fromStdString(coreLesson(*window_).steps[4].text));
+        QVERIFY(window_->crossSectionView()->caption() != figureBefore);
+        // Another test: the words are that test's.
+        Settings sphere = window_->settings();
+        sphere.tests = {CullTest::Sphere};
+        window_->setSettings(sphere);
+        window_->waitUntilIdle();
+        QVERIFY(window_->lessonView()->text().contains(QStringLiteral("asin(r/d)")));
+        QCOMPARE(window_->lessonView()->text(), QString::fromStdString(coreLesson(*window_).steps[4].text));
+        window_->showLessonStep(0);
+        window_->setSettings(Settings{});
+        window_->waitUntilIdle();
+    }
+
+    void theExplanationExportIsTheCoresLesson() {
+        QVERIFY(window_->openMeshBlocking(datasetPath("icosphere.off")));
+        const QString path = temporary_.filePath(QStringLiteral("explanation.json"));
+        QVERIFY(!window_->exportExplanation(path));  // nothing picked: refused, said why
+        QVERIFY(window_->lastError().contains(QStringLiteral("Pick a cluster")));
+        window_->pickCluster(7);
+        QVERIFY(window_->exportExplanation(path));
+        QCOMPARE(readJsonFile(path), lessonToJson(coreLesson(*window_)));
+        const QString png = temporary_.filePath(QStringLiteral("cross-section.png"));
+        QVERIFY(window_->saveCrossSection(png));
+        QCOMPARE(QImage(png).size(), QSize(640, 640));
+    }
+
+    void everyControlHasATooltipAndWhatsThis() {
+        QList<QWidget*> controls = controlsOf(window_->settingsPanel()) + controlsOf(window_->eyePanel()) +
+                                   controlsOf(window_->lessonView());
+        QVERIFY(controls.size() >= 20);
+        for (QWidget* control : controls) {
+            const QString name = control->metaObject()->className() + QStringLiteral(" ") + control->objectName() +
+                                 QStringLiteral(" ") + control->property("text").toString();
+            QVERIFY2(!control->toolTip().isEmpty(), qPrintable(name));
+            QVERIFY2(!control->whatsThis().isEmpty(), qPrintable(name));
+        }
+        // Each choice of a combo box says what it is too.
+        for (QComboBox* box : window_->settingsPanel()->findChildren<QComboBox*>())
+            for (int i = 0; i < box->count(); ++i)
+                if (box->count() > 3) QVERIFY2(!box->itemData(i, Qt::ToolTipRole).toString().isEmpty(), qPrintable(box->itemText(i)));
+        // Every layer and colouring action explains itself.
+        for (QAction* action : window_->findChildren<QAction*>())
+            if (action->text().startsWith(QStringLiteral("Show ")) || action->text().startsWith(QStringLiteral("Colour by ")))
+                QVERIFY2(!action->toolTip().isEmpty() && !action->whatsThis().isEmpty(), qPrintable(action->text()));
+    }
+
+    void everyLegendEntryAndGlossaryTermIsExplained() {
+        QVERIFY(window_->openMeshBlocking(datasetPath("torus.off")));
+        window_->pickCluster(2);
+        for (Layer layer : allLayers()) window_->setLayerVisible(layer, true);
+        for (int step : {0, 3, 4}) {
+            window_->showLessonStep(step);
+            for (FaceColoring coloring : allFaceColorings()) {
+                if (coloring == FaceColoring::Comparison) continue;
+                window_->setFaceColoring(coloring);
+                for (const LegendEntry& entry : window_->scene()->legend().entries())
+                    QVERIFY2(!explainLegendLabel(entry.label).isEmpty(), entry.label.c_str());
+            }
+        }
+        window_->showLessonStep(0);
+        for (const char* term : {"cluster", "face normal", "normal cone", "alpha", "angle b", "apex", "bounding sphere",
+                                 "bounding box", "cull fraction", "oracle fraction", "test loss", "partition loss", "efficiency"})
+            QVERIFY2(!explain(QString::fromLatin1(term)).isEmpty(), term);
+        for (CullTest test : allCullTests()) QVERIFY(!explain(test).isEmpty());
+        QVERIFY(glossaryHtml().contains(QStringLiteral("Partition loss")));
+        window_->setFaceColoring(FaceColoring::CullDecision);
+    }
+};
+
+int main(int argc, char** argv) {
+    // The GL format VTK needs, before the application object exists.
+    QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
+    QApplication application(argc, argv);
+    LessonWindowTests tests;
+    return QTest::qExec(&tests, argc, argv);
+}
+
+#include "LessonWindowTests.moc"
