@@ -9,7 +9,7 @@
 
 #include "ExpectedCull.h"  // the objective, expectedCullRate
 #include "Mesh.h"
-#include "MeshletStream.h"
+#include "meshopt/Meshopt.h"
 #include "Partition.h"
 #include "Progress.h"
 

@@ -14,7 +14,7 @@
 #include <thread>
 
 #include "TestMeshes.h"
-#include "core/MeshletStream.h"
+#include "core/meshopt/Meshopt.h"
 
 namespace conescope {
 namespace {
@@ -72,6 +72,7 @@ void expectPartsAreTheWholeMeshlets(MeshletStream& stream) {
 }
 
 TEST(MeshletStream, PartsHoldEveryFaceOnceAndWholeMeshlets) {
+    if (!reproducesLinkedMeshopt()) GTEST_SKIP() << meshoptFallbackNote();  // the library's come as one part
     const MeshletLimits limits{64, 124};
     for (size_t parts : {size_t(1), size_t(2), size_t(5), size_t(40)}) {
         MeshletStream torus(shared(testmesh::torus(1.0, 0.3, 120, 60)), limits, parts);
@@ -107,6 +108,7 @@ TEST(MeshletStream, PartsByFaceCount) {
 }
 
 TEST(MeshletStream, TheLastShareComesInHalves) {
+    if (!reproducesLinkedMeshopt()) GTEST_SKIP() << meshoptFallbackNote();  // the library's come as one part
     EXPECT_EQ(placedThroughPart(0, 5, 1000), 250u);
     EXPECT_EQ(placedThroughPart(2, 5, 1000), 750u);
     EXPECT_EQ(placedThroughPart(3, 5, 1000), 875u);
@@ -155,13 +157,19 @@ TEST(MeshletStream, LimitsMeshoptimizerRefusesComeBackFromEveryPart) {
     EXPECT_THROW(stream.whole(), std::invalid_argument);
 }
 
+// Dropped at once, and dropped after its first part: the builder stops at its next meshlet
+// (MeshoptMeshlets.StopsWhenAListenerSaysSo) and the stream lets go of everything it held, its
+// thread included, before its destructor returns.
 TEST(MeshletStream, DroppedWhileBuildingStops) {
-    // Dropped at once, and dropped after its first part: neither hangs.
-    for (int round = 0; round < 5; ++round) MeshletStream stream(shared(testmesh::torus(1.0, 0.3, 200, 100)), {64, 124}, 8);
-    auto stream = std::make_unique<MeshletStream>(shared(testmesh::torus(1.0, 0.3, 200, 100)), MeshletLimits{64, 124}, 8);
-    stream->part(0);
-    stream.reset();
-    SUCCEED();
+    for (int round = 0; round < 6; ++round) {
+        std::shared_ptr<const Mesh> mesh = shared(testmesh::torus(1.0, 0.3, 200, 100));
+        const std::weak_ptr<const Mesh> held = mesh;
+        auto stream = std::make_unique<MeshletStream>(std::move(mesh), MeshletLimits{64, 124}, 8);
+        if (round % 2) EXPECT_FALSE(stream->part(0).faces.empty());
+        EXPECT_FALSE(held.expired());
+        stream.reset();
+        EXPECT_TRUE(held.expired()) << "round " << round;
+    }
 }
 
 }  // namespace

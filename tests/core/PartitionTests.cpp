@@ -5,6 +5,7 @@
 
 #include "TestMeshes.h"
 #include "core/ClusterBounds.h"
+#include "core/meshopt/Meshopt.h"
 
 using namespace conescope;
 

@@ -15,8 +15,8 @@
 // tree) is the library's float arithmetic in the library's order; this file is compiled without
 // contracted multiply-adds so that the compiler keeps it so. A score that is not a number (from
 // coordinates near the float range) makes that step visit like the library does.
-#include "MeshoptMeshlets.h"
-#include "MeshoptKdTree.h"
+#include "Meshopt.h"
+#include "KdTree.h"
 
 #include <algorithm>
 #include <cfloat>
