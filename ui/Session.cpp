@@ -67,7 +67,7 @@ void Session::openMesh(const QString& path) {
             std::shared_ptr<ClusterSet> clusters;
             try {
                 clusters = std::make_shared<ClusterSet>(
-                    buildClusters(*prepared, chosen, nullptr, scaled(progress, 0.4, 0.9), meshlets.get()));
+                    buildClusters(*prepared, withClusterIds(chosen), nullptr, scaled(progress, 0.4, 0.9), meshlets.get()));
             } catch (const std::exception& error) {
                 if (chosen.builder != Builder::File) throw;
                 // A mesh that cannot be read by the file builder can still be looked at.
@@ -115,7 +115,7 @@ void Session::requestClusters(bool reprepare) {
                 result.prepared = std::make_shared<PreparedMesh>(std::move(again));
             }
             auto clusters = std::make_shared<ClusterSet>(
-                buildClusters(*result.prepared, settings, previous.get(), scaled(progress, reprepare ? 0.3 : 0.0, 0.9)));
+                buildClusters(*result.prepared, withClusterIds(settings), previous.get(), scaled(progress, reprepare ? 0.3 : 0.0, 0.9)));
             progress(0.9, "scene");
             result.scene = makeScene(*result.prepared, *clusters);
             result.clusters = clusters;

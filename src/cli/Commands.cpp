@@ -11,6 +11,7 @@
 #include "core/ClusterRanking.h"
 #include "core/MeshChecks.h"
 #include "core/Pipeline.h"
+#include "io/ClusterIdFile.h"
 #include "io/MeshReader.h"
 #include "io/MeshWriter.h"
 #include "io/StatisticsText.h"
@@ -45,7 +46,7 @@ nlohmann::json meshSummary(const std::string& path, const Mesh& mesh) {
 }  // namespace
 
 void runStats(const StatsOptions& options) {
-    const Settings settings = options.run.toSettings();
+    const Settings settings = withClusterIds(options.run.toSettings());
     const Mesh mesh = readMeshNoting(options.mesh, options.quiet);
     const RunStatistics run = runStatistics(mesh, settings, fileName(options.mesh), stderrProgress(options.quiet));
     warnAboutWinding(run, options.quiet);
@@ -70,7 +71,7 @@ void runStats(const StatsOptions& options) {
 }
 
 void runClusters(const ClustersOptions& options) {
-    Settings settings = options.run.toSettings();
+    Settings settings = withClusterIds(options.run.toSettings());
     // The table is about one (cone, test): the displayed ones.
     settings.cones.resize(1);
     settings.tests.resize(1);
@@ -120,7 +121,7 @@ void runCheck(const CheckOptions& options) {
 }
 
 void runPartition(const PartitionOptions& options) {
-    const Settings settings = options.run.toSettings();
+    const Settings settings = withClusterIds(options.run.toSettings());
     const Mesh mesh = readMeshNoting(options.mesh, options.quiet);
     note(options.quiet, "building clusters (" + toString(settings.builder) + ")");
     const Partition partition = buildPartition(mesh, computeFaceGeometry(mesh), settings, stderrProgress(options.quiet));

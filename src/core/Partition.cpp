@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <fstream>
 #include <future>
 #include <limits>
 #include <random>
@@ -226,29 +225,6 @@ Partition partitionFromIds(const std::vector<double>& ids, size_t faceCount, con
         clusterOfFace[f] = uint32_t(id);
     }
     return renumberClusters(std::move(clusterOfFace));
-}
-
-std::vector<double> readClusterIdFile(const std::string& path) {
-    std::ifstream in(path);
-    if (!in) throw std::runtime_error(path + ": cannot open cluster id file");
-    std::vector<double> ids;
-    std::string line;
-    size_t lineNumber = 0;
-    while (std::getline(in, line)) {
-        ++lineNumber;
-        const size_t hash = line.find('#');
-        if (hash != std::string::npos) line.resize(hash);
-        std::istringstream words(line);
-        std::string word;
-        while (words >> word) {
-            char* end = nullptr;
-            const double value = std::strtod(word.c_str(), &end);
-            if (end == word.c_str() || *end != '\0')
-                throw std::runtime_error(path + ":" + std::to_string(lineNumber) + ": '" + word + "' is not a number");
-            ids.push_back(value);
-        }
-    }
-    return ids;
 }
 
 ClusterFaces facesByCluster(const Partition& partition) {

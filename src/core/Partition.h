@@ -33,8 +33,12 @@ Partition buildKMeans(const Mesh& mesh, const FaceGeometry& faces, size_t cluste
 // Throws std::runtime_error if the count does not match or an id is negative / not an integer.
 Partition partitionFromIds(const std::vector<double>& ids, size_t faceCount, const std::string& source);
 
-// One id per face, whitespace separated; '#' starts a comment.
-std::vector<double> readClusterIdFile(const std::string& path);
+// A cluster id file as io read it (io/ClusterIdFile.h): its ids, or why there are none.
+struct ClusterIdFile {
+    std::string path;
+    std::vector<double> ids;
+    std::string error;  // the reader's message when it could not be read
+};
 
 // Cluster ids renumbered densely (0..K-1) in order of first use; ids no face has are dropped.
 Partition renumberClusters(std::vector<uint32_t> clusterOfFace);

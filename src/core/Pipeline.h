@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "BuildPartition.h"
 #include "Culling.h"
 #include "MeshChecks.h"
 #include "Settings.h"

@@ -88,19 +88,6 @@ struct RunStatistics {
     std::vector<TestStatistics> results;
 };
 
-// Builds the partition the settings ask for. The optimized builder reports its progress through
-// `progress` (stage "clusters") and can be cancelled there; the others report nothing.
-// `meshlets`: meshoptimizer's meshlets when startsFromMeshoptMeshlets(settings), if already started.
-// `partDone`: the optimized builder's parts as they are made (ClusterOptimizer.h); the other
-// builders do not call it.
-Partition buildPartition(const Mesh& mesh, const FaceGeometry& faces, const Settings& settings,
-                         const ProgressCallback& progress = {}, MeshletStream* meshlets = nullptr,
-                         const PartClusters& partDone = {});
-
-// Whether the settings' builder starts from meshoptimizer's meshlets at cone weight 1 (the optimized
-// builder at its fast levels): those can be built before the face geometry.
-bool startsFromMeshoptMeshlets(const Settings& settings);
-
 // Triangles culled / back-facing triangles; 1 when nothing faces away (nothing to cull, nothing lost).
 double cullEfficiency(size_t trianglesCulled, size_t backFacingTriangles);
 
