@@ -8,8 +8,6 @@
 #include <stdexcept>
 #include <vector>
 
-#include "Settings.h"
-
 #if defined(__x86_64__) || defined(__i386__)
 #define CONESCOPE_BATCH_X86 1
 // GCC warns that the baseline-compiled templates pass __m256 values; they never do at run time,

@@ -41,7 +41,6 @@ struct Settings {
 
 std::string toString(Builder);
 std::string toString(ConeMethod);
-std::string toString(CullTest);
 std::string toString(SphereMethod);
 std::string toString(Effort);
 // Throw std::invalid_argument listing the accepted names.
