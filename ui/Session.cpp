@@ -147,12 +147,12 @@ void Session::requestOrbit() {
     const std::shared_ptr<const PreparedMesh> prepared = prepared_;
     const std::shared_ptr<const ClusterSet> clusters = clusters_;
     const Settings settings = settings_;
-    runner_.run<TestStatistics>(
+    runner_.run<CullTestStatistics>(
         taskgroups::orbit, tr("Orbit statistics"),
         [prepared, clusters, settings](const ProgressCallback& progress) {
             return measureOrbit(*prepared, *clusters, settings, progress);
         },
-        [this, clusters](TestStatistics& orbit) {
+        [this, clusters](CullTestStatistics& orbit) {
             if (clusters != clusters_) return;  // the clusters changed meanwhile; their own orbit follows
             orbit_ = std::move(orbit);
             emit orbitChanged();

@@ -80,7 +80,7 @@ void runClusters(const ClustersOptions& options) {
     const RunStatistics run = runStatistics(mesh, settings, fileName(options.mesh), stderrProgress(options.quiet));
     warnAboutWinding(run, options.quiet);
     warnAboutBudget(run);
-    const TestStatistics& result = run.results.front();
+    const CullTestStatistics& result = run.results.front();
     const std::vector<uint32_t> order = rankClusters(result, key, options.top);
     std::ostringstream text;
     const std::string format = outputFormat(options.format, options.output, "text");

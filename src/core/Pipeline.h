@@ -95,7 +95,7 @@ std::vector<Eye> orbitOf(const Settings& settings, const Aabb& worldBox);
 struct EyeMeasurement {
     Eye eye;
     std::vector<uint8_t> culled;      // 1 = culled, per cluster
-    TestStatistics statistics;        // statistics.views[0] is this eye
+    CullTestStatistics statistics;        // statistics.views[0] is this eye
     const ViewStatistics& view() const { return statistics.views.front(); }
 };
 EyeMeasurement measureEye(const PreparedMesh& prepared, const ClusterSet& clusters, const Eye& eye, CullTest test);
@@ -111,7 +111,7 @@ glm::dvec3 startingEyePosition(const Aabb& worldBox, const Settings& settings);
 // The displayed test over the standard orbit (measureCulling over orbitOf) with the cull map of the
 // clusters: the efficiency plot's rows (views) and the worst-cluster table (clusters). Cancellable
 // between views.
-TestStatistics measureOrbit(const PreparedMesh& prepared, const ClusterSet& clusters, const Settings& settings,
+CullTestStatistics measureOrbit(const PreparedMesh& prepared, const ClusterSet& clusters, const Settings& settings,
                             const ProgressCallback& progress = {});
 
 // The first orbit view from which the displayed test draws `cluster` although every face faces away

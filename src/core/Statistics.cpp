@@ -38,11 +38,11 @@ double cullEfficiency(size_t trianglesCulled, size_t backFacingTriangles) {
     return backFacingTriangles == 0 ? 1.0 : double(trianglesCulled) / double(backFacingTriangles);
 }
 
-TestStatistics measureCulling(const CullingInput& input, const std::vector<Eye>& views, CullTest test,
+CullTestStatistics measureCulling(const CullingInput& input, const std::vector<Eye>& views, CullTest test,
                               const ProgressCallback& progress) {
     const ClusterBounds& bounds = input.bounds;
     const size_t clusterCount = bounds.count();
-    TestStatistics result;
+    CullTestStatistics result;
     result.cone = bounds.coneMethod;
     result.test = test;
     result.clusters.resize(clusterCount);
@@ -127,7 +127,7 @@ TestStatistics measureCulling(const CullingInput& input, const std::vector<Eye>&
     return result;
 }
 
-void addCullMap(TestStatistics& statistics, const CullMap& map) {
+void addCullMap(CullTestStatistics& statistics, const CullMap& map) {
     double cull = 0.0, oracle = 0.0, triangles = 0.0;
     for (ClusterStatistics& cluster : statistics.clusters) {
         cluster.cullFraction = cullFraction(map, cluster.cluster, statistics.test);

@@ -49,7 +49,7 @@ TEST(Statistics, EveryTestIsConservativeAndTheOracleIsTheCeiling) {
     const RunStatistics run = runStatistics(mesh, settings, "torus");
     EXPECT_EQ(run.results.size(), settings.cones.size() * settings.tests.size());
     EXPECT_EQ(run.faces, mesh.faceCount());
-    for (const TestStatistics& result : run.results) {
+    for (const CullTestStatistics& result : run.results) {
         EXPECT_EQ(result.falseCulls, 0u) << toString(result.cone) << "/" << toString(result.test);
         EXPECT_EQ(result.views.size(), 32u);
         EXPECT_GE(result.efficiency, 0.0);
