@@ -16,15 +16,9 @@ namespace {
 
 // Below this many faces the meshlets come whole; above, in two parts at least, of about
 // kFacesPerPart faces. Smaller parts let the second core start sooner and leave less to do once
-// the builder is done, but refine within more borders. Measured over every CGAL demo mesh at the
-// balanced effort (culled back faces / meshoptimizer's) and on armadillo (buildClusters, both
-// cores): parts of 8,192 faces 1.346x and 26 ms, 4,096 1.345x and 23 ms, 2,048 1.343x and
-// 21 ms, 1,024 1.342x and 21 ms. On meshes of 2k to 20k triangles the tail decides: preparation
-// over meshoptimizer's, in fresh processes (geometric mean over 15 CGAL meshes, three runs), was
-// 1.06-1.10x with parts of 2,048 faces, 0.99-1.02x with 1,024, 0.94-1.01x with 640, for culling
-// 1.343x, 1.342x and 1.339x (768: 1.340x; 576: 1.336x, no faster). The last share comes in two
-// halves: the part that only begins once the builder is done is then half as long (CGAL's hand,
-// 2,390 faces in four parts, had one core idle for 0.3 ms of its 1.3 ms), for the same culling.
+// the builder is done, but refine within more borders; the last share comes in two halves, so the
+// part that only begins once the builder is done is short. The sizes tried are in
+// docs/benchmarks.md ("Why the constants are what they are").
 constexpr size_t kPartsFromFaces = size_t(1) << 11;
 constexpr size_t kFacesPerPart = 640;
 constexpr size_t kMostShares = 64;

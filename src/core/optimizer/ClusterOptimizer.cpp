@@ -30,15 +30,10 @@ constexpr double kDefaultFill = 0.68;
 constexpr double kGrowthCap = 1.25;
 // How one effort level searches: where it starts, and its annealing. Sweeps go over all faces; a
 // level gets at most maxSweeps, and no more face visits than sweepFaceVisits (each visit costs well
-// under a microsecond). From a growth start fewer than minSweeps cool too fast to pay: measured on
-// armadillo subdivided to 0.8M and 3.3M triangles, 6 and 4 sweeps added 0.7% and 0.4% to the
-// objective for 1.4 s and 2.9 s, half the whole preparation; such meshes get none at the best
-// level. From meshoptimizer's meshlets the first sweeps pay most: over every CGAL demo mesh (octagon
-// test, against meshoptimizer) no sweep gives 1.287x, one 1.330x, two 1.353x, eight 1.395x, thirty
-// 1.436x. The second sweep pays only on meshes of one part (below 2,048 faces: 1.455x to 1.508x
-// over 43 meshes); on meshes in parts it adds nothing (2k-5k triangles 1.260x either way, 5k-20k
-// 1.230x and 1.231x, above 1.114x both) and cost 5% of the whole run of a 2k-5k mesh, so the
-// balanced level takes two sweeps on a mesh of one part and one on each part (annealingSweepsFor).
+// under a microsecond). From a growth start fewer than minSweeps cool too fast to pay. From
+// meshoptimizer's meshlets the first sweeps pay most, and the second only on a mesh of one part, so
+// the balanced level takes two there and one on each part of a larger mesh (annealingSweepsFor).
+// docs/benchmarks.md ("Why the constants are what they are") has the figures.
 struct SearchPlan {
     bool growthStart;  // false: start from meshoptimizer's meshlets where they are within the limits
     size_t maxSweeps, minSweeps;
