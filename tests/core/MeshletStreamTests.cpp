@@ -82,18 +82,8 @@ TEST(MeshletStream, PartsHoldEveryFaceOnceAndWholeMeshlets) {
         expectPartsAreTheWholeMeshlets(grid);
     }
     // Many small pieces: meshlets that jump between pieces through the k-d tree.
-    Mesh pieces;
     std::mt19937_64 random(9);
-    std::uniform_real_distribution<float> place(-10.f, 10.f);
-    for (int p = 0; p < 60; ++p) {
-        const Mesh piece = testmesh::icosphere(1 + p % 2);
-        const glm::vec3 offset(place(random), place(random), place(random));
-        const uint32_t first = uint32_t(pieces.positions.size());
-        for (const glm::vec3& q : piece.positions) pieces.positions.push_back(offset + 0.3f * q);
-        for (size_t f = 0; f < piece.faceCount(); ++f)
-            pieces.addFace({first + piece.faceBegin(f)[0], first + piece.faceBegin(f)[1], first + piece.faceBegin(f)[2]});
-    }
-    MeshletStream scattered(shared(std::move(pieces)), limits, 6);
+    MeshletStream scattered(shared(testmesh::scatteredSpheres(random, 60)), limits, 6);
     expectPartsAreTheWholeMeshlets(scattered);
 }
 

@@ -79,19 +79,7 @@ void expectSameAsLibraryAtSeveralLimits(const Case& c) {
 }
 
 // Many pieces far apart (each its own sphere, some tiny), so meshlets end and start through the tree.
-Case scatteredPieces(std::mt19937_64& random, int pieces) {
-    Case c;
-    std::uniform_real_distribution<float> place(-20.f, 20.f), size(0.05f, 2.f);
-    for (int p = 0; p < pieces; ++p) {
-        const Case piece = fromMesh(testmesh::icosphere(p % 3));
-        const glm::vec3 centre(place(random), place(random), place(random));
-        const float scale = size(random);
-        const uint32_t first = uint32_t(c.positions.size());
-        for (const glm::vec3& q : piece.positions) c.positions.push_back(centre + scale * q);
-        for (uint32_t i : piece.indices) c.indices.push_back(first + i);
-    }
-    return c;
-}
+Case scatteredPieces(std::mt19937_64& random, int pieces) { return fromMesh(testmesh::scatteredSpheres(random, pieces)); }
 
 TEST(MeshoptMeshlets, SameAsTheLibraryOnSmoothClosedMeshes) {
     if (!reproducesLinkedMeshopt()) GTEST_SKIP() << meshoptFallbackNote();
