@@ -3,7 +3,7 @@
 
   - <meshoptimizer.h> is included only under src/core/meshopt/;
   - no two classes or structs share a name across src/ and ui/ (nested ones count as Outer::Inner,
-    ones local to a function by that function's file and line);
+    ones local to a function by their own name);
   - no comment block in src/ or ui/ runs over 15 lines (figures and diaries go to docs/);
   - the files of src/core include each other without loops (a header and its .cpp count as one);
   - no source file runs over 600 lines.
@@ -44,8 +44,8 @@ CLASS = re.compile(r"^(\s*)(?:template\s*<[^>]*>\s*)?(?:class|struct)\s+(?:\[\[[
 
 def class_definitions(path, lines):
     """(qualified name, line) of every class or struct defined in a file. Namespaces are not indented
-    here, so a definition at column 0 is at namespace scope; an indented one is nested in the nearest
-    enclosing class defined above it at a smaller indent, or local to a function."""
+    here, so a definition at column 0 is at namespace scope; an indented one is nested in the
+    enclosing class still open above it, or local to a function."""
     enclosing = []  # (indent, name) of the classes open above
     for number, line in enumerate(lines, 1):
         stripped = line.strip()
@@ -64,7 +64,7 @@ def class_definitions(path, lines):
         elif enclosing:
             qualified = enclosing[-1][1] + "::" + name
         else:
-            qualified = f"{name} (local, {path}:{number})"
+            qualified = name  # local to a function: still one class per name
         if not stripped.endswith("};"):
             enclosing.append((indent, qualified))
         yield qualified, number
