@@ -5,8 +5,9 @@
 //   The reproduction meshoptimizer 0.18's builder made again, on the library's own arguments
 //   In parts         the meshlets handed over as they are made, on a thread of their own (MeshletStream)
 //   Bounds           meshopt_computeClusterBounds for one cluster of faces
-// Only Library.cpp includes <meshoptimizer.h>; the reproduction (Reproduction.cpp, KdTree.h) and
-// the stream (MeshletStream.cpp, CoreAffinity.h) are ConeScope's own code.
+// Only Library.cpp includes <meshoptimizer.h>, and a new call into the library goes there too,
+// declared here in its section; the reproduction (Reproduction.cpp, KdTree.h) and the stream
+// (MeshletStream.cpp, CoreAffinity.h) are ConeScope's own code. docs/architecture.md has the why.
 #pragma once
 
 #include <cstddef>
