@@ -13,6 +13,7 @@
 #include <vtkRenderWindow.h>
 #include <vtkWindowToImageFilter.h>
 
+#include "io/ClusterIdFile.h"
 #include "io/MeshWriter.h"
 #include "io/StatisticsIO.h"
 
@@ -26,7 +27,8 @@ StatisticsFormat statisticsFormatOf(const std::string& path) {
 
 RunStatistics exportStatistics(const PreparedMesh& prepared, const ClusterSet& clusters, const Settings& settings,
                                const std::string& path, StatisticsFormat format, const ProgressCallback& progress) {
-    RunStatistics run = measureRun(prepared, clusters, settings, progress);
+    // A run whose settings make the clusters stale builds them again, reading a cluster file anew.
+    RunStatistics run = measureRun(prepared, clusters, withClusterIds(settings), progress);
     const auto write = [](const std::string& file, const std::function<void(std::ostream&)>& content) {
         std::ofstream out(file, std::ios::binary);
         if (!out) throw std::runtime_error(file + ": cannot open for writing");
