@@ -7,14 +7,14 @@
 
 #include "scene/BordersLayer.h"
 #include "scene/EyeLayer.h"
-#include "scene/EyeView.h"
+#include "scene/EyeViewActors.h"
 #include "scene/FacesLayer.h"
 #include "scene/GlyphLayer.h"
 #include "scene/HighlightLayer.h"
 #include "scene/NormalsLayer.h"
 #include "scene/SceneData.h"
 #include "scene/SceneLegend.h"
-#include "scene/TestLayer.h"
+#include "scene/CullTestLayer.h"
 
 namespace conescope {
 
@@ -33,9 +33,9 @@ struct ClusterScene::Impl {
     GlyphLayer boxes, spheres;
     EyeLayer eye;
     HighlightLayer highlight;
-    TestLayer test;
+    CullTestLayer test;
     SceneLegend legend;
-    EyeView eyeView;
+    EyeViewActors eyeView;
     FaceColoring coloring = FaceColoring::Cluster;
 
     // nullptr for Legend, which is no SceneLayer.
@@ -159,12 +159,12 @@ void ClusterScene::setClusterFractions(const std::vector<double>& cullFraction, 
     impl_->updateLegend();
 }
 
-void ClusterScene::setTestDrawing(const TestDrawing& drawing) {
+void ClusterScene::setTestDrawing(const CullTestDrawing& drawing) {
     impl_->test.setDrawing(drawing);
     impl_->updateLegend();
 }
 
-const TestDrawing& ClusterScene::testDrawing() const { return impl_->test.drawing(); }
+const CullTestDrawing& ClusterScene::testDrawing() const { return impl_->test.drawing(); }
 
 void ClusterScene::setEye(const Eye& eye, const glm::dvec3& lookAt) {
     impl_->eye.setEye(eye, lookAt);

@@ -32,7 +32,7 @@
 #include "scene/ClusterPalette.h"
 #include "scene/SceneLegend.h"
 #include "scene/SceneTypes.h"
-#include "scene/TestLayer.h"
+#include "scene/CullTestLayer.h"
 
 class vtkActor;
 class vtkCamera;
@@ -91,8 +91,8 @@ public:
 
     // The picked cluster's test in 3D (Layer::Test; makeTestDrawing); a drawing with cluster -1 clears it.
     // Throws std::out_of_range for a cluster outside [-1, K).
-    void setTestDrawing(const TestDrawing& drawing);
-    const TestDrawing& testDrawing() const;
+    void setTestDrawing(const CullTestDrawing& drawing);
+    const CullTestDrawing& testDrawing() const;
 
     // Places the eye marker: for a perspective eye a sphere at the position with a cone pointing at
     // lookAt; for an orthographic eye an arrow along eye.direction outside the mesh bounds, aimed at
