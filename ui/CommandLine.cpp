@@ -225,7 +225,7 @@ int runHeadlessScreenshot(const AppOptions& options) {
     try {
         const QString meshPath = options.mesh.isEmpty() ? defaultMeshPath() : options.mesh;
         if (meshPath.isEmpty()) throw std::runtime_error("no mesh given and no bundled mesh found");
-        const Settings& settings = options.settings;
+        const Settings settings = withClusterIds(options.settings);
         const PreparedMesh prepared = loadMesh(meshPath.toStdString(), settings);
         const ClusterSet clusters = buildClusters(prepared, settings);
         ClusterScene scene(prepared.mesh(), prepared.world, prepared.faces, clusters.partition, clusters.bounds);
@@ -247,7 +247,7 @@ int runHeadlessScreenshot(const AppOptions& options) {
         showEyeColouring(scene, prepared, clusters, measurement, options.coloring);
         if (options.compare) {
             // A: the options changed by --compare; B: the clusters shown. The diff of this eye per face.
-            const Settings settingsA = parseConfiguration(*options.compare, settings);
+            const Settings settingsA = withClusterIds(parseConfiguration(*options.compare, settings));
             const ClusterSet a = buildClusters(prepared, settingsA);
             const std::string warning =
                 clusterCountWarning(showComparison(scene, prepared, {a, settingsA}, {clusters, settings}, measurement));

@@ -13,6 +13,7 @@
 #include <vtkRenderWindow.h>
 #include <vtkWindowToImageFilter.h>
 
+#include "io/ClusterIdFile.h"
 #include "io/ComparisonIO.h"
 #include "io/MeshWriter.h"
 #include "io/StatisticsIO.h"
@@ -39,7 +40,8 @@ void writeFile(const std::string& file, const std::function<void(std::ostream&)>
 
 RunStatistics exportStatistics(const PreparedMesh& prepared, const ClusterSet& clusters, const Settings& settings,
                                const std::string& path, StatisticsFormat format, const ProgressCallback& progress) {
-    RunStatistics run = measureRun(prepared, clusters, settings, progress);
+    // A run whose settings make the clusters stale builds them again, reading a cluster file anew.
+    RunStatistics run = measureRun(prepared, clusters, withClusterIds(settings), progress);
     if (format == StatisticsFormat::Csv) {
         for (const auto& [table, file] : csvTableFiles(path))
             writeFile(file, [&run, table = table](std::ostream& out) { writeStatisticsCsv(run, out, table); });

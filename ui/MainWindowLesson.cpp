@@ -19,7 +19,7 @@ bool MainWindow::showLessonStep(int step) {
 void MainWindow::toggleLesson() { showLessonStep(session_.lessonStep() > 0 ? 0 : 1); }
 
 int MainWindow::chooseWorstCluster(ClusterSortKey key) {
-    const TestStatistics* orbit = session_.orbitStatistics();
+    const CullTestStatistics* orbit = session_.orbitStatistics();
     if (!orbit) return -1;
     const std::vector<uint32_t> worst = rankClusters(*orbit, key, 1);
     if (worst.empty()) return -1;

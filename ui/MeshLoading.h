@@ -1,5 +1,6 @@
 // A mesh file to the pipeline's first stage: read (src/io), then prepared (core/Pipeline.h), with
-// what the user should be told about it.
+// what the user should be told about it; and the file builder's cluster id files, read through io
+// before clusters are built (withClusterIds).
 #pragma once
 
 #include <memory>
@@ -7,6 +8,7 @@
 #include <vector>
 
 #include "core/Pipeline.h"
+#include "io/ClusterIdFile.h"
 
 namespace conescope {
 

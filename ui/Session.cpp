@@ -63,7 +63,7 @@ void Session::openMesh(const QString& path) {
             std::shared_ptr<ClusterSet> clusters;
             try {
                 clusters = std::make_shared<ClusterSet>(
-                    buildClusters(*prepared, chosen, nullptr, scaled(progress, 0.4, 0.9), meshlets.get()));
+                    buildClusters(*prepared, withClusterIds(chosen), nullptr, scaled(progress, 0.4, 0.9), meshlets.get()));
             } catch (const std::exception& error) {
                 if (chosen.builder != Builder::File) throw;
                 // A mesh that cannot be read by the file builder can still be looked at.
@@ -158,7 +158,7 @@ void Session::requestClusters() {
                 prepared = std::make_shared<PreparedMesh>(std::move(again));
             }
             auto clusters = std::make_shared<ClusterSet>(
-                buildClusters(*prepared, settings, reprepare ? nullptr : from.clusters.get(), scaled(progress, reprepare ? 0.3 : 0.0, 0.9)));
+                buildClusters(*prepared, withClusterIds(settings), reprepare ? nullptr : from.clusters.get(), scaled(progress, reprepare ? 0.3 : 0.0, 0.9)));
             progress(0.9, "scene");
             SceneResult result;
             result.scene = makeScene(*prepared, *clusters);
@@ -211,12 +211,12 @@ void Session::requestOrbit() {
     if (!shown_.clusters) return;
     runner_.cancel(taskgroups::orbit);
     const Snapshot snapshot = shown_;
-    runner_.run<TestStatistics>(
+    runner_.run<CullTestStatistics>(
         taskgroups::orbit, tr("Orbit statistics"),
         [snapshot](const ProgressCallback& progress) {
             return measureOrbit(*snapshot.prepared, *snapshot.clusters, snapshot.settings, progress);
         },
-        [this, snapshot](TestStatistics& orbit) {
+        [this, snapshot](CullTestStatistics& orbit) {
             // Made for other clusters meanwhile: their own orbit follows. (A change of test, views or
             // projection asks for a new orbit, which cancels this one.)
             if (snapshot.clusters != shown_.clusters) return;

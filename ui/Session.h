@@ -105,7 +105,7 @@ public:
     double eyeSeconds() const { return eyeSeconds_; }
     const std::vector<ViewStatistics>& orbitRows() const;
     // The displayed test over the orbit with every cluster's counts and fractions; null until measured.
-    const TestStatistics* orbitStatistics() const { return orbit_ ? &*orbit_ : nullptr; }
+    const CullTestStatistics* orbitStatistics() const { return orbit_ ? &*orbit_ : nullptr; }
 
     // --- The cull eye -----------------------------------------------------------------------------
     glm::dvec3 eyePosition() const { return eyePosition_; }
@@ -221,7 +221,7 @@ private:
     std::optional<EyeMeasurement> measurement_;
     QString eyeError_;
     double eyeSeconds_ = 0.0;
-    std::optional<TestStatistics> orbit_;
+    std::optional<CullTestStatistics> orbit_;
     glm::dvec3 eyePosition_{0.0, 0.0, 3.0};
     bool eyeGiven_ = false;  // the next mesh keeps eyePosition_ instead of the starting position
     long orbitStep_ = -1;

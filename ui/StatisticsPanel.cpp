@@ -93,7 +93,7 @@ void StatisticsPanel::showClusters(const PreparedMesh& prepared, const ClusterSe
                                        .arg(seconds(clusters.partitionSeconds), seconds(clusters.boundsSeconds)));
 }
 
-void StatisticsPanel::showOrbit(const TestStatistics* orbit) {
+void StatisticsPanel::showOrbit(const CullTestStatistics* orbit) {
     const char* rows[] = {"orbit efficiency", "lost over the orbit", "expected efficiency", "cull / oracle fraction",
                           "cluster fill", "sphere radius"};
     if (!orbit) {

@@ -37,11 +37,6 @@ static bool vectorSeesBack(const ConeOfNormals& cone, const glm::dvec3& view, do
     return length > 0.0 && glm::dot(view, cone.axis) > (cone.sinHalfAngle + kCullMargin) * length + slack;
 }
 
-double apexRoundingSlack(const glm::dvec3& apex, const glm::dvec3& eyePosition) {
-    const glm::dvec3 largest = glm::max(glm::abs(apex), glm::abs(eyePosition));
-    return kApexRoundingSlack * std::max({largest.x, largest.y, largest.z});
-}
-
 bool pointSeesBackUnnormalised(const ConeOfNormals& cone, const glm::dvec3& point, const glm::dvec3& eye) {
     const glm::dvec3 view = point - eye;
     const double along = glm::dot(view, cone.axis);

@@ -5,56 +5,14 @@
 // and the explanation export all say what the test computed.
 #pragma once
 
-#include <cstddef>
-#include <cstdint>
 #include <string>
-#include <vector>
 
-#include <glm/glm.hpp>
-
-#include "Culling.h"
+#include "LessonData.h"
 #include "Pipeline.h"
 
 namespace conescope {
 
-constexpr int kLessonStepCount = 6;
-
-// What happened to the cluster from the eye, in the statistics' terms.
-enum class LessonOutcome {
-    Culled,           // culled, and every face faces away
-    LostToTest,       // every face faces away, yet the test drew it
-    LostToPartition,  // drawn: it holds back faces and a face that faces the eye
-    Visible,          // drawn: no face turns away
-    FalseCull,        // culled although a face faces the eye (never, if the tests are right)
-};
 std::string toString(LessonOutcome outcome);  // "culled", "lost to the test", "lost to the partition", ...
-
-struct LessonStep {
-    std::string title;
-    std::string text;
-};
-
-struct Lesson {
-    uint32_t cluster = 0;
-    CullTest test = CullTest::Octagon;
-    ConeMethod coneMethod = ConeMethod::Minimal;
-    Eye eye;
-    CullExplanation why;                 // explainCull: every number the test compared
-    size_t faces = 0, triangles = 0, vertices = 0;
-    size_t backTriangles = 0;            // triangles of the faces that face away (the oracle's)
-    std::vector<glm::dvec3> normals;     // unit normals of the non-degenerate faces
-    std::vector<glm::dvec3> centroids;   // where those faces are (the same order)
-    Sphere sphere;                       // the cluster's bounding sphere
-    ConeOfNormals averageCone;           // seed 000's cone (V1 = the mean normal)
-    ConeOfNormals minimalCone;           // the narrowest cone that holds the normals
-    double cullFraction = 0.0;           // share of far view directions the test culls from (CullMap)
-    double oracleFraction = 0.0;         // share from which every face faces away
-    LessonOutcome outcome = LessonOutcome::Visible;
-    std::vector<LessonStep> steps;       // kLessonStepCount of them
-
-    double alphaDegrees() const { return why.halfAngleDegrees; }
-    std::string verdict() const { return why.culled ? "culled" : "drawn"; }
-};
 
 // The lesson on `cluster` of `clusters` from `eye` with `test` (the cone is the clusters' own).
 Lesson makeLesson(const PreparedMesh& prepared, const ClusterSet& clusters, uint32_t cluster, const Eye& eye, CullTest test);

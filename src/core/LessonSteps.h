@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "Lesson.h"
+#include "LessonData.h"
 
 namespace conescope {
 

@@ -190,10 +190,10 @@ glm::dvec3 startingEyePosition(const Aabb& worldBox, const Settings& settings) {
     return glm::dvec3(worldBox.center()) + std::min(settings.distance, 2.0) * radius * direction;
 }
 
-TestStatistics measureOrbit(const PreparedMesh& prepared, const ClusterSet& clusters, const Settings& settings,
+CullTestStatistics measureOrbit(const PreparedMesh& prepared, const ClusterSet& clusters, const Settings& settings,
                             const ProgressCallback& progress) {
     const CullingInput input = cullingInput(prepared, clusters);
-    TestStatistics statistics = measureCulling(input, orbitOf(settings, prepared.box), displayedTest(settings),
+    CullTestStatistics statistics = measureCulling(input, orbitOf(settings, prepared.box), displayedTest(settings),
                                                progressWithin(progress, 0.0, 1.0, "orbit statistics"));
     addCullMap(statistics, clusters.cullMap);
     return statistics;

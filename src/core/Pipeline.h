@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "BuildPartition.h"
 #include "Culling.h"
 #include "MeshChecks.h"
 #include "Settings.h"
@@ -102,7 +103,7 @@ size_t nearestOrbitView(const Settings& settings, const Aabb& worldBox, const gl
 struct EyeMeasurement {
     Eye eye;
     std::vector<uint8_t> culled;      // 1 = culled, per cluster
-    TestStatistics statistics;        // statistics.views[0] is this eye
+    CullTestStatistics statistics;        // statistics.views[0] is this eye
     const ViewStatistics& view() const { return statistics.views.front(); }
 };
 EyeMeasurement measureEye(const PreparedMesh& prepared, const ClusterSet& clusters, const Eye& eye, CullTest test);
@@ -118,7 +119,7 @@ glm::dvec3 startingEyePosition(const Aabb& worldBox, const Settings& settings);
 // The displayed test over the standard orbit (measureCulling over orbitOf) with the cull map of the
 // clusters: the efficiency plot's rows (views) and the worst-cluster table (clusters). Cancellable
 // between views.
-TestStatistics measureOrbit(const PreparedMesh& prepared, const ClusterSet& clusters, const Settings& settings,
+CullTestStatistics measureOrbit(const PreparedMesh& prepared, const ClusterSet& clusters, const Settings& settings,
                             const ProgressCallback& progress = {});
 
 // The first orbit view from which the displayed test draws `cluster` although every face faces away

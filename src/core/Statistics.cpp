@@ -6,39 +6,9 @@
 #include <stdexcept>
 
 #include "BatchCulling.h"
-#include "ClusterOptimizer.h"
 #include "ExpectedCull.h"
 
 namespace conescope {
-
-bool startsFromMeshoptMeshlets(const Settings& settings) {
-    return settings.builder == Builder::Optimized && startsFromMeshoptMeshlets(settings.limits, settings.effort);
-}
-
-Partition buildPartition(const Mesh& mesh, const FaceGeometry& faces, const Settings& settings,
-                         const ProgressCallback& progress, MeshletStream* meshlets, const PartClusters& partDone) {
-    switch (settings.builder) {
-        case Builder::Meshlet: return buildMeshlets(mesh, faces, settings.limits, settings.normalWeight);
-        case Builder::KMeans: {
-            const size_t target = settings.clusterCount > 0
-                                      ? settings.clusterCount
-                                      : (triangleCount(mesh) + settings.limits.maxTriangles - 1) / settings.limits.maxTriangles;
-            return buildKMeans(mesh, faces, target, settings.normalWeight);
-        }
-        case Builder::Meshopt: return buildMeshoptMeshlets(mesh, settings.limits, settings.meshoptConeWeight);
-        case Builder::Optimized: return buildOptimizedClusters(mesh, faces, settings.limits, settings.clusterCount, progress, settings.effort,
-                                                                 meshlets, partDone);
-        case Builder::File: {
-            if (!settings.clusterFile.empty())
-                return partitionFromIds(readClusterIdFile(settings.clusterFile), mesh.faceCount(), settings.clusterFile);
-            auto ids = mesh.faceArrays.find("cluster_id");
-            if (ids == mesh.faceArrays.end())
-                throw std::runtime_error("the file builder needs a per-face 'cluster_id' array in the mesh or a cluster file");
-            return partitionFromIds(ids->second, mesh.faceCount(), "cluster_id array");
-        }
-    }
-    throw std::invalid_argument("unknown builder");
-}
 
 namespace {
 
@@ -68,11 +38,11 @@ double cullEfficiency(size_t trianglesCulled, size_t backFacingTriangles) {
     return backFacingTriangles == 0 ? 1.0 : double(trianglesCulled) / double(backFacingTriangles);
 }
 
-TestStatistics measureCulling(const CullingInput& input, const std::vector<Eye>& views, CullTest test,
+CullTestStatistics measureCulling(const CullingInput& input, const std::vector<Eye>& views, CullTest test,
                               const ProgressCallback& progress) {
     const ClusterBounds& bounds = input.bounds;
     const size_t clusterCount = bounds.count();
-    TestStatistics result;
+    CullTestStatistics result;
     result.cone = bounds.coneMethod;
     result.test = test;
     result.clusters.resize(clusterCount);
@@ -157,7 +127,7 @@ TestStatistics measureCulling(const CullingInput& input, const std::vector<Eye>&
     return result;
 }
 
-void addCullMap(TestStatistics& statistics, const CullMap& map) {
+void addCullMap(CullTestStatistics& statistics, const CullMap& map) {
     double cull = 0.0, oracle = 0.0, triangles = 0.0;
     for (ClusterStatistics& cluster : statistics.clusters) {
         cluster.cullFraction = cullFraction(map, cluster.cluster, statistics.test);

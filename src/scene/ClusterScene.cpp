@@ -7,7 +7,7 @@
 
 #include "scene/BordersLayer.h"
 #include "scene/EyeLayer.h"
-#include "scene/EyeView.h"
+#include "scene/EyeViewActors.h"
 #include "scene/FacesLayer.h"
 #include "scene/GlyphLayer.h"
 #include "scene/HighlightLayer.h"
@@ -15,7 +15,7 @@
 #include "scene/NormalsLayer.h"
 #include "scene/SceneData.h"
 #include "scene/SceneLegend.h"
-#include "scene/TestLayer.h"
+#include "scene/CullTestLayer.h"
 
 namespace conescope {
 
@@ -34,10 +34,10 @@ struct ClusterScene::Impl {
     GlyphLayer boxes, spheres;
     EyeLayer eye;
     HighlightLayer highlight;
-    TestLayer test;
+    CullTestLayer test;
     LessonLayer lesson;
     SceneLegend legend;
-    EyeView eyeView;
+    EyeViewActors eyeView;
     FaceColoring coloring = FaceColoring::Cluster;
 
     // nullptr for Legend, which is no SceneLayer.
@@ -162,12 +162,12 @@ void ClusterScene::setClusterFractions(const std::vector<double>& cullFraction, 
     impl_->updateLegend();
 }
 
-void ClusterScene::setTestDrawing(const TestDrawing& drawing) {
+void ClusterScene::setTestDrawing(const CullTestDrawing& drawing) {
     impl_->test.setDrawing(drawing);
     impl_->updateLegend();
 }
 
-const TestDrawing& ClusterScene::testDrawing() const { return impl_->test.drawing(); }
+const CullTestDrawing& ClusterScene::testDrawing() const { return impl_->test.drawing(); }
 
 void ClusterScene::setLessonDrawing(const LessonDrawing& drawing) {
     impl_->lesson.setDrawing(drawing);

@@ -33,7 +33,7 @@
 #include "scene/LessonLayer.h"
 #include "scene/SceneLegend.h"
 #include "scene/SceneTypes.h"
-#include "scene/TestLayer.h"
+#include "scene/CullTestLayer.h"
 
 class vtkActor;
 class vtkCamera;
@@ -92,8 +92,8 @@ public:
 
     // The picked cluster's test in 3D (Layer::Test; makeTestDrawing); a drawing with cluster -1 clears it.
     // Throws std::out_of_range for a cluster outside [-1, K).
-    void setTestDrawing(const TestDrawing& drawing);
-    const TestDrawing& testDrawing() const;
+    void setTestDrawing(const CullTestDrawing& drawing);
+    const CullTestDrawing& testDrawing() const;
 
     // A lesson step's picture of its cluster (Layer::Lesson); step 0 clears it. Throws
     // std::out_of_range for a cluster outside [0, K).

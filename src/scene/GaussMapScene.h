@@ -12,7 +12,7 @@
 #include <vtkSmartPointer.h>
 
 #include "core/ClusterBounds.h"
-#include "core/TestGeometry.h"
+#include "core/CullTestGeometry.h"
 #include "scene/SceneLegend.h"
 #include "scene/SceneTypes.h"
 

@@ -50,8 +50,8 @@ Settings withBuilder(Builder builder, size_t maxTriangles = 48) {
 // only A + both is A's triangles_culled, only B + both is B's, view by view and in total.
 void expectIdentities(const PreparedMesh& prepared, const ClusterSet& a, const ClusterSet& b, const std::vector<Eye>& views) {
     const Comparison comparison = compareClusterSets(prepared, {a, a.builtWith}, {b, b.builtWith}, views);
-    const TestStatistics statsA = measureCulling(cullingInput(prepared, a), views, displayedTest(a.builtWith));
-    const TestStatistics statsB = measureCulling(cullingInput(prepared, b), views, displayedTest(b.builtWith));
+    const CullTestStatistics statsA = measureCulling(cullingInput(prepared, a), views, displayedTest(a.builtWith));
+    const CullTestStatistics statsB = measureCulling(cullingInput(prepared, b), views, displayedTest(b.builtWith));
     ASSERT_EQ(comparison.views.size(), views.size());
     for (size_t v = 0; v < views.size(); ++v) {
         const ViewComparison& view = comparison.views[v];

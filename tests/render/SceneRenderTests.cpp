@@ -13,7 +13,7 @@
 #include "core/Culling.h"
 #include "core/Comparison.h"
 #include "core/Pipeline.h"
-#include "core/TestGeometry.h"
+#include "core/CullTestGeometry.h"
 #include "scene/ClusterScene.h"
 #include "scene/GaussMapScene.h"
 #include "scene/SceneRendering.h"

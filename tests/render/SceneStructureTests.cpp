@@ -461,7 +461,7 @@ TEST_F(SceneStructure, TestDrawingShowsOnlyForAPickedClusterAndIsNotPicked) {
     auto* region = vtkPolyData::SafeDownCast(scene.actor(Layer::Test)->GetMapper()->GetInputAsDataSet());
     ASSERT_NE(region, nullptr);
     EXPECT_GT(region->GetNumberOfCells(), 0);
-    TestDrawing outside;
+    CullTestDrawing outside;
     outside.cluster = int(scene.clusterCount());
     EXPECT_THROW(scene.setTestDrawing(outside), std::out_of_range);
     scene.setTestDrawing({});

@@ -250,8 +250,8 @@ private slots:
         const PreparedMesh prepared = loadMesh(datasetPath("elephant.off").toStdString(), settingsB);
         const std::vector<Eye> views = orbitOf(settingsB, prepared.box);
         const ClusterSet a = buildClusters(prepared, settingsA), b = buildClusters(prepared, settingsB);
-        const TestStatistics expectedA = measureCulling(cullingInput(prepared, a), views, CullTest::Apex);
-        const TestStatistics expectedB = measureCulling(cullingInput(prepared, b), views, CullTest::Octagon);
+        const CullTestStatistics expectedA = measureCulling(cullingInput(prepared, a), views, CullTest::Apex);
+        const CullTestStatistics expectedB = measureCulling(cullingInput(prepared, b), views, CullTest::Octagon);
         const Comparison& orbit = *window_->session().orbitComparison();
         QCOMPARE(orbit.efficiencyA, expectedA.efficiency);
         QCOMPARE(orbit.efficiencyB, expectedB.efficiency);

@@ -219,6 +219,20 @@ private slots:
         window_->waitUntilIdle();
         QCOMPARE(errors.count(), 1);
         QCOMPARE(window_->clusters()->builtWith.limits.maxTriangles, size_t(64));
+        // A good id file: read through io (core reads no file), its clusters shown.
+        const QString good = temporary_.filePath(QStringLiteral("ids.txt"));
+        QFile goodFile(good);
+        QVERIFY(goodFile.open(QIODevice::WriteOnly));
+        for (size_t f = 0; f < window_->clusters()->partition.clusterOfFace.size(); ++f) goodFile.write(QByteArray::number(int(f % 5)) + "\n");
+        goodFile.close();
+        settings = window_->settings();
+        settings.builder = Builder::File;
+        settings.clusterFile = good.toStdString();
+        window_->setSettings(settings);
+        window_->waitUntilIdle();
+        QCOMPARE(errors.count(), 1);
+        QVERIFY(window_->clusters()->builtWith.builder == Builder::File);
+        QCOMPARE(window_->clusters()->partition.clusterCount, 5u);
         window_->setSettings(Settings{});
         window_->waitUntilIdle();
     }

@@ -286,7 +286,7 @@ private slots:
         QVERIFY(window_->openMeshBlocking(datasetPath("fandisk.off")));
         window_->waitUntilIdle();
         WorstClustersView* table = window_->worstClustersView();
-        const TestStatistics* orbit = window_->session().orbitStatistics();
+        const CullTestStatistics* orbit = window_->session().orbitStatistics();
         QVERIFY(orbit);
         QCOMPARE(size_t(table->rowCount()), window_->clusters()->partition.clusterCount);
         // The partition's summary over the orbit, in the statistics panel.

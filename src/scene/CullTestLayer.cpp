@@ -1,4 +1,4 @@
-#include "scene/TestLayer.h"
+#include "scene/CullTestLayer.h"
 
 #include <algorithm>
 #include <cmath>
@@ -119,13 +119,13 @@ vtkSmartPointer<vtkActor> pointActor(double size) {
 
 }  // namespace
 
-glm::dvec3 testViewTarget(const TestDrawing& drawing, const Sphere& sphere) {
+glm::dvec3 testViewTarget(const CullTestDrawing& drawing, const Sphere& sphere) {
     const bool apexTest = drawing.test == CullTest::Apex || drawing.test == CullTest::Octagon;
     return apexTest && !drawing.eye.orthographic ? drawing.why.apex : sphere.center;
 }
 
-TestDrawing makeTestDrawing(const CullingInput& input, uint32_t cluster, const Eye& eye, CullTest test) {
-    TestDrawing drawing;
+CullTestDrawing makeTestDrawing(const CullingInput& input, uint32_t cluster, const Eye& eye, CullTest test) {
+    CullTestDrawing drawing;
     drawing.cluster = int(cluster);
     drawing.test = test;
     drawing.eye = eye;
@@ -140,7 +140,7 @@ TestDrawing makeTestDrawing(const CullingInput& input, uint32_t cluster, const E
     return drawing;
 }
 
-TestLayer::TestLayer(const SceneData& data)
+CullTestLayer::CullTestLayer(const SceneData& data)
     : SceneLayer(data), region_(actorFor(plainMapper(emptyPolyData()))), regionOutline_(lineActor(plainMapper(emptyPolyData()), 1.5)),
       axis_(lineActor(plainMapper(emptyPolyData()), 3.0)),
       view_(lineActor(plainMapper(emptyPolyData()), 2.5)), target_(pointActor(12.0)), points_(pointActor(9.0)),
@@ -165,10 +165,10 @@ TestLayer::TestLayer(const SceneData& data)
     applyVisibility();
 }
 
-std::vector<vtkActor*> TestLayer::actors() const { return {region_, regionOutline_, axis_, view_, target_, points_}; }
-std::vector<vtkProp*> TestLayer::overlays() const { return {labels_}; }
+std::vector<vtkActor*> CullTestLayer::actors() const { return {region_, regionOutline_, axis_, view_, target_, points_}; }
+std::vector<vtkProp*> CullTestLayer::overlays() const { return {labels_}; }
 
-void TestLayer::addLegendEntries(FaceColoring, std::vector<LegendEntry>& entries) const {
+void CullTestLayer::addLegendEntries(FaceColoring, std::vector<LegendEntry>& entries) const {
     const std::string test = toString(drawing_.test);
     if (!drawing_.region.empty()) entries.push_back({"eyes " + test + " culls from", {regionColour}});
     entries.push_back({"view vector v", {SceneColours::viewVector}});
@@ -177,7 +177,7 @@ void TestLayer::addLegendEntries(FaceColoring, std::vector<LegendEntry>& entries
         entries.push_back({"point sees back / may face", {pointBack, pointFront}});
 }
 
-void TestLayer::setDrawing(const TestDrawing& drawing) {
+void CullTestLayer::setDrawing(const CullTestDrawing& drawing) {
     const size_t clusterCount = data_.palette.size();
     if (drawing.cluster < -1 || drawing.cluster >= int(clusterCount))
         throw std::out_of_range("setTestDrawing: cluster " + std::to_string(drawing.cluster) + " of " + std::to_string(clusterCount));

@@ -1,0 +1,47 @@
+#include "BuildPartition.h"
+
+#include <stdexcept>
+
+namespace conescope {
+
+namespace {
+
+Partition fromClusterFile(const Mesh& mesh, const Settings& settings) {
+    const ClusterIdFile* file = settings.clusterIds.get();
+    if (!file || file->path != settings.clusterFile)
+        throw std::logic_error(settings.clusterFile + ": cluster id file not read (io/ClusterIdFile.h: withClusterIds)");
+    if (!file->error.empty()) throw std::runtime_error(file->error);
+    return partitionFromIds(file->ids, mesh.faceCount(), settings.clusterFile);
+}
+
+}  // namespace
+
+bool startsFromMeshoptMeshlets(const Settings& settings) {
+    return settings.builder == Builder::Optimized && startsFromMeshoptMeshlets(settings.limits, settings.effort);
+}
+
+Partition buildPartition(const Mesh& mesh, const FaceGeometry& faces, const Settings& settings,
+                         const ProgressCallback& progress, MeshletStream* meshlets, const PartClusters& partDone) {
+    switch (settings.builder) {
+        case Builder::Meshlet: return buildMeshlets(mesh, faces, settings.limits, settings.normalWeight);
+        case Builder::KMeans: {
+            const size_t target = settings.clusterCount > 0
+                                      ? settings.clusterCount
+                                      : (triangleCount(mesh) + settings.limits.maxTriangles - 1) / settings.limits.maxTriangles;
+            return buildKMeans(mesh, faces, target, settings.normalWeight);
+        }
+        case Builder::Meshopt: return buildMeshoptMeshlets(mesh, settings.limits, settings.meshoptConeWeight);
+        case Builder::Optimized: return buildOptimizedClusters(mesh, faces, settings.limits, settings.clusterCount, progress, settings.effort,
+                                                                 meshlets, partDone);
+        case Builder::File: {
+            if (!settings.clusterFile.empty()) return fromClusterFile(mesh, settings);
+            auto ids = mesh.faceArrays.find("cluster_id");
+            if (ids == mesh.faceArrays.end())
+                throw std::runtime_error("the file builder needs a per-face 'cluster_id' array in the mesh or a cluster file");
+            return partitionFromIds(ids->second, mesh.faceCount(), "cluster_id array");
+        }
+    }
+    throw std::invalid_argument("unknown builder");
+}
+
+}  // namespace conescope
