@@ -163,6 +163,44 @@ def hexagonal_prism(radius, half_height):
     return positions, [bottom, top] + sides
 
 
+def cylinder(segments, rings, radius, height):
+    """Capped cylinder around z from 0 to height: side quads split, each cap a fan around its centre."""
+    positions = []
+    for r in range(rings + 1):
+        z = height * r / rings
+        for k in range(segments):
+            angle = 2.0 * math.pi * k / segments
+            positions.append((radius * math.cos(angle), radius * math.sin(angle), z))
+
+    def index(r, k):
+        return r * segments + k % segments
+
+    quads = [(index(r, k), index(r, k + 1), index(r + 1, k + 1), index(r + 1, k))
+             for r in range(rings) for k in range(segments)]
+    bottom_centre, top_centre = len(positions), len(positions) + 1
+    positions += [(0.0, 0.0, 0.0), (0.0, 0.0, height)]
+    caps = [(bottom_centre, index(0, k + 1), index(0, k)) for k in range(segments)]
+    caps += [(top_centre, index(rings, k), index(rings, k + 1)) for k in range(segments)]
+    return positions, split_quads(quads) + caps
+
+
+def bumpy_plane(cells, size, bump):
+    """Open height field over [-size/2, size/2]^2, faces up (+z): z = bump * sin(2 pi x / size * 2) * cos(...)."""
+    positions = []
+    for j in range(cells + 1):
+        for i in range(cells + 1):
+            x = size * (i / cells - 0.5)
+            y = size * (j / cells - 0.5)
+            positions.append((x, y, bump * math.sin(4.0 * math.pi * x / size) * math.cos(4.0 * math.pi * y / size)))
+
+    def index(i, j):
+        return j * (cells + 1) + i
+
+    quads = [(index(i, j), index(i + 1, j), index(i + 1, j + 1), index(i, j + 1))
+             for j in range(cells) for i in range(cells)]
+    return positions, split_quads(quads)
+
+
 def format_number(value):
     text = f"{value:.9g}"
     return "0" if text == "-0" else text
@@ -248,6 +286,20 @@ def main():
     check_outward("prism", prism_positions, prism_faces, lambda face: origin)
     write_off(os.path.join(out_dir, "hexagonal-prism.off"), prism_positions, prism_faces,
               "hexagonal prism: 2 hexagon caps and 6 quad sides")
+
+    # Teaching meshes (File > Examples): a capped cylinder and a bumpy plane beside the sphere and torus.
+    cylinder_positions, cylinder_faces = cylinder(32, 8, 0.5, 1.5)
+    check_outward("cylinder", cylinder_positions, cylinder_faces,
+                  lambda face: (0.0, 0.0, face_centroid(cylinder_positions, face)[2] if
+                                0.0 < face_centroid(cylinder_positions, face)[2] < 1.5 else 0.75))
+    write_off(os.path.join(out_dir, "cylinder.off"), cylinder_positions, cylinder_faces,
+              "capped cylinder around z, radius 0.5, height 1.5, 32 x 8 side quads split and two 32-triangle fans")
+
+    plane_positions, plane_faces = bumpy_plane(32, 2.0, 0.12)
+    if any(newell_normal(plane_positions, face)[2] <= 0.0 for face in plane_faces):
+        raise SystemExit("bumpy plane: a face does not face up")
+    write_off(os.path.join(out_dir, "bumpy-plane.off"), plane_positions, plane_faces,
+              "open 2 x 2 height field facing +z, 32 x 32 quads split, bumps of height 0.12")
 
     clustered_positions, clustered_faces, clustered_base_face = icosphere(2)
     write_vtp_with_cluster_ids(os.path.join(out_dir, "icosphere-clusters.vtp"), clustered_positions,

@@ -21,12 +21,36 @@ QStringList datasetFolderCandidates() {
     return folders;
 }
 
+QString findDataset(const QString& name) {
+    for (const QString& folder : datasetFolderCandidates()) {
+        const QFileInfo file(QDir(folder).filePath(name));
+        if (file.isFile()) return file.absoluteFilePath();
+    }
+    return {};
+}
+
 QString defaultMeshPath() {
     for (const QString& name : {QStringLiteral("torus.off"), QStringLiteral("icosphere.off")})
-        for (const QString& folder : datasetFolderCandidates()) {
-            const QFileInfo file(QDir(folder).filePath(name));
-            if (file.isFile()) return file.absoluteFilePath();
-        }
+        if (QString path = findDataset(name); !path.isEmpty()) return path;
+    return {};
+}
+
+std::vector<std::pair<QString, QString>> exampleMeshes() {
+    return {{QCoreApplication::translate("Datasets", "&Cylinder"), QStringLiteral("cylinder.off")},
+            {QCoreApplication::translate("Datasets", "&Sphere"), QStringLiteral("icosphere.off")},
+            {QCoreApplication::translate("Datasets", "&Bumpy plane"), QStringLiteral("bumpy-plane.off")},
+            {QCoreApplication::translate("Datasets", "&Torus"), QStringLiteral("torus.off")}};
+}
+
+QStringList lessonFiles() {
+    for (const QString& folder : datasetFolderCandidates()) {
+        const QDir lessons(QDir(folder).filePath(QStringLiteral("lessons")));
+        const QStringList names = lessons.entryList({QStringLiteral("*.json")}, QDir::Files, QDir::Name);
+        if (names.isEmpty()) continue;
+        QStringList paths;
+        for (const QString& name : names) paths << lessons.absoluteFilePath(name);
+        return paths;
+    }
     return {};
 }
 

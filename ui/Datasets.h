@@ -2,6 +2,9 @@
 // run in place) or a datasets/ folder found relative to the executable (an installed or copied build).
 #pragma once
 
+#include <utility>
+#include <vector>
+
 #include <QString>
 #include <QStringList>
 
@@ -13,5 +16,14 @@ QStringList datasetFolderCandidates();
 // The mesh the window starts on when none is given: torus.off, else icosphere.off, from the first
 // folder that has one. Empty when none is found.
 QString defaultMeshPath();
+
+// `name` in the first folder that has it, as an absolute path; empty when none has.
+QString findDataset(const QString& name);
+
+// File > Examples: the teaching meshes, each a menu label and a file name.
+std::vector<std::pair<QString, QString>> exampleMeshes();
+
+// The ready-made lessons (replay files in lessons/ beside the bundled meshes), sorted by name.
+QStringList lessonFiles();
 
 }  // namespace conescope

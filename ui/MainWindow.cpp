@@ -1,6 +1,7 @@
 #include "MainWindow.h"
 
 #include <algorithm>
+#include <chrono>
 
 #include <QAction>
 #include <QApplication>
@@ -223,6 +224,12 @@ void MainWindow::showScene(const ClusterScene* previous, bool newMesh) {
 }
 
 void MainWindow::showEyeMeasurement() {
+    // Only what an eye move changes is redone and drawn: the plots are the orbit's (showOrbit).
+    using Clock = std::chrono::steady_clock;
+    const auto seconds = [](Clock::time_point from) { return std::chrono::duration<double>(Clock::now() - from).count(); };
+    EyeStepTimes times;
+    times.cullAndScene = session_.eyeSeconds();
+    auto start = Clock::now();
     const EyeMeasurement* measurement = session_.measurement();
     statisticsPanel_->showComparison(session_.pinnedSettings(), session_.eyeComparison(), session_.orbitComparison());
     if (measurement) {
@@ -233,8 +240,18 @@ void MainWindow::showEyeMeasurement() {
         statisticsPanel_->showEyeError(session_.eyeError());
     }
     clusterView_->showPick(session_);
+    times.panels = seconds(start);
+    start = Clock::now();
     gaussMap_->showPick(session_, false);
-    render();
+    times.gaussMap = seconds(start);
+    start = Clock::now();
+    view_->render();
+    times.observerView = seconds(start);
+    start = Clock::now();
+    eyeView_->render();
+    times.eyeView = seconds(start);
+    eyeStepTimes_ = times;
+    statusLine_->showEyeStepTimes(times);
     if (measurement) emit eyeMeasured();
 }
 
@@ -270,6 +287,10 @@ void MainWindow::showError(const QString& title, const QString& message) {
 }
 
 bool MainWindow::progressShown() const { return statusLine_->progressShown(); }
+
+void MainWindow::setFrameTimesShown(bool shown) { statusLine_->setEyeStepTimesShown(shown); }
+
+QString MainWindow::frameTimesText() const { return statusLine_->eyeStepTimesText(); }
 
 void MainWindow::render() {
     view_->render();

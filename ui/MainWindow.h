@@ -16,6 +16,7 @@
 #include <QMainWindow>
 #include <QPoint>
 
+#include "EyeStepTimes.h"
 #include "Exports.h"
 #include "Session.h"
 #include "core/ClusterRanking.h"
@@ -92,6 +93,11 @@ public:
     // errorShown when there is no picked cluster or the file cannot be written.
     bool saveCrossSection(const QString& path);
     bool exportExplanation(const QString& path);
+    // The six lesson steps as numbered slides in `folder` (slide-01.png ...): the 3D view as the step
+    // stages it, its title and words below; the step shown before comes back. False and errorShown on failure.
+    bool exportLessonSlides(const QString& folder);
+    // Plays a replay file (a ready-made lesson of File > Examples) in this window; false when it cannot be read.
+    bool playReplayFile(const QString& path);
 
     // Errors always emit errorShown(); with dialogs off no QMessageBox is opened (tests).
     void setErrorDialogsEnabled(bool enabled) { errorDialogs_ = enabled; }
@@ -146,6 +152,10 @@ public:
     GaussMapView* gaussMapView() const { return gaussMap_; }
     PlotsView* plotsView() const { return plots_; }
     bool progressShown() const;
+    // The last eye step's times and their readout in the status bar (View > Show frame times).
+    const EyeStepTimes& eyeStepTimes() const { return eyeStepTimes_; }
+    void setFrameTimesShown(bool shown);
+    QString frameTimesText() const;
 
 signals:
     void errorShown(const QString& message);
@@ -201,6 +211,7 @@ private:
     WindowActions* actions_ = nullptr;
     bool errorDialogs_ = true;
     QString lastError_;
+    EyeStepTimes eyeStepTimes_;
 };
 
 }  // namespace conescope

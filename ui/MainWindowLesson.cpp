@@ -1,11 +1,16 @@
 // The window's lesson: what each step shows (scene/LessonLayer.h says which layers, colours and
 // camera), the docks it raises, and the layers and colours put back when it ends.
+#include <QApplication>
+#include <QDir>
 #include <QDockWidget>
+#include <QStatusBar>
 
 #include "CrossSectionView.h"
 #include "LessonView.h"
 #include "MainWindow.h"
 #include "ObserverView.h"
+#include "ReplayPlayer.h"
+#include "Slides.h"
 
 namespace conescope {
 
@@ -70,6 +75,55 @@ void MainWindow::stageLessonStep(int step) {
         showCaption(tr("Lesson %1/%2: %3").arg(step).arg(kLessonStepCount).arg(QString::fromStdString(lesson->steps[size_t(step - 1)].title)));
     }
     render();
+}
+
+bool MainWindow::exportLessonSlides(const QString& folder) {
+    const QString title = tr("Cannot export the lesson slides");
+    if (!QDir().mkpath(folder)) {
+        showError(title, tr("%1: cannot make the folder").arg(folder));
+        return false;
+    }
+    const int before = session_.lessonStep();
+    bool written = true;
+    for (int step = 1; step <= kLessonStepCount && written; ++step) {
+        const Lesson* lesson = showLessonStep(step) ? session_.lesson() : nullptr;
+        if (!lesson) {
+            showError(title, tr("Pick a cluster first (or open a mesh): a lesson is about one cluster."));
+            return false;
+        }
+        // The band below says the title: the view's own caption would say it twice.
+        showCaption({});
+        QApplication::processEvents();
+        const LessonStep& words = lesson->steps[size_t(step - 1)];
+        const QImage slide = captionedSlide(view_->grabFramebuffer(),
+                                            tr("%1/%2  %3").arg(step).arg(kLessonStepCount).arg(QString::fromStdString(words.title)),
+                                            QString::fromStdString(words.text));
+        const QString path = QDir(folder).filePath(slideFileName(step));
+        written = slide.save(path, "PNG");
+        if (!written) showError(title, tr("%1: cannot write the PNG").arg(path));
+    }
+    showLessonStep(before);
+    stageLessonStep(session_.lessonStep());
+    if (written) statusBar()->showMessage(tr("Wrote %1 slides to %2").arg(kLessonStepCount).arg(folder), 6000);
+    return written;
+}
+
+bool MainWindow::playReplayFile(const QString& path) {
+    std::vector<ReplayStep> steps;
+    try {
+        steps = readReplayFile(path);
+    } catch (const ReplayError& error) {
+        showError(tr("Cannot play the lesson"), QString::fromStdString(error.what()));
+        return false;
+    }
+    auto* player = new ReplayPlayer(*this, this);
+    connect(player, &ReplayPlayer::finished, player, &QObject::deleteLater);
+    connect(player, &ReplayPlayer::failed, this, [this, player](const QString& message) {
+        showError(tr("Cannot play the lesson"), message);
+        player->deleteLater();
+    });
+    player->play(std::move(steps));
+    return true;
 }
 
 }  // namespace conescope

@@ -237,6 +237,7 @@ const std::vector<StepKind>& stepKinds() {
         {"window-screenshot", writeStep(&MainWindow::saveWindowScreenshot)},
         {"cross-section", writeStep(&MainWindow::saveCrossSection)},
         {"export-explanation", writeStep(&MainWindow::exportExplanation)},
+        {"slides", writeStep(&MainWindow::exportLessonSlides)},
         {"export", exportStep(true)},
         {"export-eye", exportStep(false)},
         {"caption",

@@ -29,6 +29,10 @@ StatusLine::StatusLine(QStatusBar* bar, Session* session) : QObject(bar) {
     connect(cancel_, &QPushButton::clicked, session, &Session::cancel);
     // A normal widget: messages replace it for a few seconds.
     bar->addWidget(summary_, 1);
+    frameTimes_ = new QLabel(bar);
+    frameTimes_->setToolTip(tr("Where the last eye step's time went on the GUI thread (View > Show frame times)"));
+    frameTimes_->hide();
+    bar->addPermanentWidget(frameTimes_);
     bar->addPermanentWidget(progress_);
     bar->addPermanentWidget(cancel_);
 
@@ -58,6 +62,12 @@ void StatusLine::showStage(const QString& stage) {
 }
 
 bool StatusLine::progressShown() const { return progress_->isVisible(); }
+
+void StatusLine::showEyeStepTimes(const EyeStepTimes& times) { frameTimes_->setText(describe(times)); }
+
+void StatusLine::setEyeStepTimesShown(bool shown) { frameTimes_->setVisible(shown); }
+
+QString StatusLine::eyeStepTimesText() const { return frameTimes_->isVisible() ? frameTimes_->text() : QString(); }
 
 void StatusLine::showSummary(const Session& session) {
     const PreparedMesh* prepared = session.preparedMesh();

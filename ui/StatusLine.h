@@ -5,6 +5,8 @@
 
 #include <QObject>
 
+#include "EyeStepTimes.h"
+
 class QLabel;
 class QProgressBar;
 class QPushButton;
@@ -22,11 +24,16 @@ public:
 
     void showSummary(const Session& session);
     bool progressShown() const;
+    // The readout of the last eye step's times (View > Show frame times), hidden until asked for.
+    void showEyeStepTimes(const EyeStepTimes& times);
+    void setEyeStepTimesShown(bool shown);
+    QString eyeStepTimesText() const;
 
 private:
     void showStage(const QString& stage);
 
     QLabel* summary_ = nullptr;
+    QLabel* frameTimes_ = nullptr;
     QProgressBar* progress_ = nullptr;
     QPushButton* cancel_ = nullptr;
 };

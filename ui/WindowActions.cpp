@@ -13,6 +13,7 @@
 #include <QToolBar>
 #include <QWhatsThis>
 
+#include "Datasets.h"
 #include "Glossary.h"
 #include "HelpDialog.h"
 #include "MainWindow.h"
@@ -104,6 +105,7 @@ void WindowActions::createFileMenu() {
                 tr("Open a mesh (OFF, PLY, OBJ, STL, glTF, GLB, VTP, VTK)"));
     recentMenu_ = file->addMenu(tr("Open &recent"));
     rebuildRecentMenu();
+    createExamplesMenu(file->addMenu(tr("&Examples")));
     file->addSeparator();
     exportEye_ = add(file, tr("Export &statistics for the current eye..."), QKeySequence(tr("Ctrl+S")),
                      [this]() { exportStatisticsWithDialog(false); });
@@ -113,6 +115,20 @@ void WindowActions::createFileMenu() {
     screenshot_ = add(file, tr("Save screens&hot..."), QKeySequence(tr("Ctrl+Shift+S")), [this]() { screenshotWithDialog(); });
     file->addSeparator();
     add(file, tr("&Quit"), QKeySequence(tr("Ctrl+Q")), [this]() { window_->close(); });
+}
+
+void WindowActions::createExamplesMenu(QMenu* examples) {
+    // Small meshes whose clusters a class reads at a glance, then ready-made lessons on them.
+    for (const auto& [label, file] : exampleMeshes()) {
+        const QString path = findDataset(file);
+        QAction* action = add(examples, label, {}, [this, path]() { window_->openMesh(path); },
+                              tr("Open %1, a small teaching mesh").arg(file));
+        action->setEnabled(!path.isEmpty());
+    }
+    examples->addSeparator();
+    for (const QString& path : lessonFiles())
+        add(examples, tr("Lesson: %1").arg(QFileInfo(path).completeBaseName().replace(QLatin1Char('-'), QLatin1Char(' '))), {},
+            [this, path]() { window_->playReplayFile(path); }, tr("Plays %1: a mesh, an eye and a cluster, the lesson at its first step").arg(path));
 }
 
 void WindowActions::createViewMenu(QDockWidget* eyeViewDock, QDockWidget* plotsDock, QDockWidget* gaussMapDock) {
@@ -152,6 +168,10 @@ void WindowActions::createViewMenu(QDockWidget* eyeViewDock, QDockWidget* plotsD
     view->addAction(eyeViewToggle_);
     shortcutActions_ << eyeViewToggle_;
     view->addAction(plotsDock->toggleViewAction());
+    QAction* frameTimes = add(view, tr("Show &frame times"), {}, {},
+                              tr("Where each eye step's time goes: the cull and scene update, the panels, each view drawn"));
+    frameTimes->setCheckable(true);
+    connect(frameTimes, &QAction::toggled, window_, &MainWindow::setFrameTimesShown);
     // Beside the picked cluster's numbers: its normals and cones on the unit sphere.
     add(view, tr("Show the &Gauss map"), QKeySequence(tr("G")), [gaussMapDock]() {
         gaussMapDock->show();
@@ -211,6 +231,10 @@ void WindowActions::createLessonMenu() {
     add(lesson, tr("Save the &cross-section..."), {}, [this]() { writeWithDialog(tr("Save the cross-section"), QStringLiteral("cross-section.png"),
                                                                                 tr("PNG (*.png)"), &MainWindow::saveCrossSection); },
         tr("Seed 000's figure of the picked cluster as a picture"));
+    add(lesson, tr("Export the lesson as &slides..."), {}, [this]() {
+        const QString folder = QFileDialog::getExistingDirectory(window_, tr("Folder for the lesson slides"));
+        if (!folder.isEmpty()) window_->exportLessonSlides(folder);
+    }, tr("The six steps as numbered pictures with their words below (slide-01.png ...)"));
 }
 
 void WindowActions::writeWithDialog(const QString& title, const QString& name, const QString& filter,

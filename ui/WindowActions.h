@@ -52,6 +52,7 @@ private:
                  const QString& tip = {});
     void changeSettings(Settings (*change)(Settings));
     void createFileMenu();
+    void createExamplesMenu(QMenu* examples);
     void createViewMenu(QDockWidget* eyeViewDock, QDockWidget* plotsDock, QDockWidget* gaussMapDock);
     void createEyeMenu();
     void createCullingMenu();

@@ -34,6 +34,9 @@ struct LegendEntry {
     std::string label;
     std::vector<Rgb> colours;
     std::optional<std::array<double, 2>> scale;
+    bool operator==(const LegendEntry& other) const {
+        return label == other.label && colours == other.colours && scale == other.scale;
+    }
 };
 
 class SceneLayer {

@@ -134,6 +134,14 @@ void SceneLegend::addColours(const std::vector<Rgb>& colours, const Rectangle& w
 }
 
 void SceneLegend::show(const std::vector<LegendEntry>& entries) {
+    // An eye step sets several layers; each asks again for the same legend. Laying out measures
+    // every text with FreeType: done only when something in it changed.
+    if (laidOut_ && entries == entries_) return;
+    layOut(entries);
+}
+
+void SceneLegend::layOut(const std::vector<LegendEntry>& entries) {
+    laidOut_ = true;
     entries_ = entries;
     for (const auto& actor : textActors_) assembly_->RemovePart(actor);
     textActors_.clear();
@@ -178,7 +186,7 @@ void SceneLegend::show(const std::vector<LegendEntry>& entries) {
 void SceneLegend::setScale(double scale) {
     if (scale == scale_ || !(scale > 0.0)) return;
     scale_ = scale;
-    show(std::vector<LegendEntry>(entries_));
+    layOut(std::vector<LegendEntry>(entries_));
 }
 
 void SceneLegend::setVisible(bool visible) {

@@ -53,6 +53,8 @@ public:
     const std::vector<Rectangle>& swatches() const { return swatches_; }
 
 private:
+    void layOut(const std::vector<LegendEntry>& entries);
+    bool laidOut_ = false;
     void addText(const std::string& text, double x, double centreY, double fontSize);
     void addColours(const std::vector<Rgb>& colours, const Rectangle& where);
 

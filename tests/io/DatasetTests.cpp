@@ -75,6 +75,8 @@ INSTANTIATE_TEST_SUITE_P(
                       Dataset{"cube-quads.off", 8, 6, true, 1.0},
                       Dataset{"torus.off", 1152, 2304, true, 2.0 * pi * pi * 1.0 * 0.35 * 0.35},
                       Dataset{"hexagonal-prism.off", 12, 8, true, 1.5 * std::sqrt(3.0) * 1.0},
+                      Dataset{"cylinder.off", 290, 576, true, pi * 0.5 * 0.5 * 1.5},
+                      Dataset{"bumpy-plane.off", 1089, 2048, false, 0.0},
                       Dataset{"icosphere-clusters.vtp", 162, 320, true, 4.0 / 3.0 * pi},
                       Dataset{"elephant.off", 2775, 5558, true, 0.0462},
                       Dataset{"fandisk.off", 6475, 12946, true, 0.1404}),

@@ -16,10 +16,15 @@
 #include <QVTKOpenGLNativeWidget.h>
 
 #include "CrossSectionView.h"
+#include "Datasets.h"
+#include "EyeStepTimes.h"
 #include "EyePanel.h"
 #include "Glossary.h"
 #include "LessonView.h"
 #include "MainWindow.h"
+#include "ObserverView.h"
+#include "ReplayPlayer.h"
+#include "Slides.h"
 #include "SettingsPanel.h"
 #include "UiTestSupport.h"
 #include "WindowTestSupport.h"
@@ -37,6 +42,13 @@ Lesson coreLesson(MainWindow& window) {
     const EyeMeasurement* measured = window.currentStatistics();
     return makeLesson(*window.preparedMesh(), *window.clusters(), uint32_t(window.pickedCluster()), measured->eye,
                       displayedTest(window.settings()));
+}
+
+// The window's action whose menu text is `text`; nullptr when there is none.
+QAction* actionNamed(QWidget* window, const QString& text) {
+    for (QAction* action : window->findChildren<QAction*>())
+        if (action->text() == text) return action;
+    return nullptr;
 }
 
 // Every input control below `widget` (the ones a user changes).
@@ -174,6 +186,82 @@ private slots:
         for (CullTest test : allCullTests()) QVERIFY(!explain(test).isEmpty());
         QVERIFY(glossaryHtml().contains(QStringLiteral("Partition loss")));
         window_->setFaceColoring(FaceColoring::CullDecision);
+    }
+
+    // View > Show frame times: the readout is the last eye step's parts, the first of them the session's own time.
+    void frameTimesReadoutSplitsAnEyeStep() {
+        QVERIFY(window_->openMeshBlocking(datasetPath("torus.off")));
+        QVERIFY(window_->frameTimesText().isEmpty());
+        QAction* show = actionNamed(window_.get(), QStringLiteral("Show &frame times"));
+        QVERIFY(show);
+        show->trigger();
+        window_->setEyePosition({0.4, 2.8, 0.6});
+        window_->waitUntilIdle();
+        const EyeStepTimes& times = window_->eyeStepTimes();
+        QCOMPARE(times.cullAndScene, window_->session().eyeSeconds());
+        QVERIFY(times.cullAndScene > 0.0 && times.observerView > 0.0);
+        QCOMPARE(window_->frameTimesText(), describe(times));
+        QVERIFY(window_->frameTimesText().startsWith(QStringLiteral("Eye step ")));
+        show->trigger();
+        QVERIFY(window_->frameTimesText().isEmpty());
+    }
+
+    // File > Examples: the four teaching meshes open, and every ready-made lesson plays to its first step
+    // on the cluster its ranking names, with the core's words.
+    void examplesOpenAndTheReadyMadeLessonsPlay() {
+        for (const auto& [label, file] : exampleMeshes()) {
+            QAction* open = actionNamed(window_.get(), label);
+            QVERIFY2(open && open->isEnabled(), qPrintable(file));
+            open->trigger();
+            window_->waitUntilIdle();
+            QCOMPARE(QString::fromStdString(window_->preparedMesh()->name), file);
+        }
+        const QStringList lessons = lessonFiles();
+        QVERIFY(lessons.size() >= 4);
+        for (const QString& path : lessons) {
+            QVERIFY2(actionNamed(window_.get(), QStringLiteral("Lesson: ") + QFileInfo(path).completeBaseName().replace('-', ' ')),
+                     qPrintable(path));
+            window_->showLessonStep(0);
+            window_->pickCluster(-1);
+            ReplayPlayer player(*window_);
+            QCOMPARE(player.playBlocking(readReplayFile(path)), QString());
+            QCOMPARE(window_->session().lessonStep(), 1);
+            QVERIFY(window_->pickedCluster() >= 0);
+            QCOMPARE(window_->lessonView()->text(), QString::fromStdString(coreLesson(*window_).steps[0].text));
+        }
+        window_->showLessonStep(0);
+        window_->setSettings(Settings{});
+        window_->waitUntilIdle();
+    }
+
+    // Lesson > Export the lesson as slides: six numbered pictures, each the view with its words below, all
+    // different; the step shown before comes back.
+    void theLessonExportsAsSlides() {
+        QVERIFY(window_->openMeshBlocking(datasetPath("torus.off")));
+        window_->pickCluster(5);
+        QVERIFY(window_->showLessonStep(3));
+        const QString folder = temporary_.filePath(QStringLiteral("slides"));
+        QVERIFY(window_->exportLessonSlides(folder));
+        QCOMPARE(window_->session().lessonStep(), 3);
+        QVERIFY(dynamic_cast<ObserverView*>(window_->observerView())->caption().startsWith(QStringLiteral("Lesson 3/6")));
+        std::vector<QImage> slides;
+        for (int step = 1; step <= kLessonStepCount; ++step) {
+            slides.emplace_back(QDir(folder).filePath(slideFileName(step)));
+            QVERIFY(!slides.back().isNull());
+            QVERIFY(slides.back().height() > window_->observerView()->height() + 40);
+            QCOMPARE(slides.back().width(), window_->observerView()->grabFramebuffer().width());
+        }
+        for (size_t a = 0; a < slides.size(); ++a)
+            for (size_t b = a + 1; b < slides.size(); ++b) QVERIFY(slides[a] != slides[b]);
+        QCOMPARE(QDir(folder).entryList({QStringLiteral("*.png")}, QDir::Files).size(), kLessonStepCount);
+        // The band below the picture holds the words: dark text on white.
+        const int pictureHeight = window_->observerView()->grabFramebuffer().height();
+        int ink = 0;
+        for (int y = pictureHeight; y < slides[4].height(); ++y)
+            for (int x = 0; x < slides[4].width(); ++x) ink += qGray(slides[4].pixel(x, y)) < 100;
+        QVERIFY2(ink > 500, qPrintable(QString::number(ink)));
+        window_->showLessonStep(0);
+        QVERIFY(!window_->exportLessonSlides(QStringLiteral("/proc/no/such/folder")));
     }
 };
 

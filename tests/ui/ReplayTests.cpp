@@ -97,7 +97,7 @@ private slots:
                 {"eye": [1, 2, 3.5]}, {"orbit-view": 3}, {"pick": -1}, {"pin": "A"}, {"swap": true}, {"drop-pin": true},
                 {"cancel-next-build": true}, {"screenshot": "a.png"}, {"window-screenshot": "b.png"}, {"export": "c.json"},
                 {"export-eye": "d.csv"}, {"caption": "text"}, {"choose": 3}, {"choose": "test-loss"}, {"lesson-step": 2},
-                {"cross-section": "e.png"}, {"export-explanation": "f.json"}])",
+                {"cross-section": "e.png"}, {"export-explanation": "f.json"}, {"slides": "g"}])",
             QDir::tempPath());
         QCOMPARE(steps.size(), replayStepNames().size() + 1);
     }
