@@ -3,7 +3,7 @@
 // (Session::moveEyeSoon, then the event loop) and reports per step the median of: the cull and scene
 // update (CPU, Session::eyeSeconds), the window's parts (MainWindow::eyeStepTimes) and the whole step
 // until the event loop is idle again. Run under xvfb-run; --samples sets the views' multisampling
-// (VTK's default 8 is what the application asks for; llvmpipe pays for it on every pixel).
+// (by default what the application chooses: none on a software renderer, ui/Multisampling.h).
 //   xvfb-run -a -s "-screen 0 1280x1024x24" conescope-bench-eye --mesh M.off [--subdivide N] [--steps N]
 #include <CLI/CLI.hpp>
 
@@ -22,6 +22,7 @@
 
 #include "BenchSupport.h"
 #include "MainWindow.h"
+#include "Multisampling.h"
 #include "core/Pipeline.h"
 #include "io/MeshReader.h"
 #include "io/MeshWriter.h"
@@ -48,19 +49,21 @@ int main(int argc, char** argv) {
     std::string meshPath;
     size_t subdivide = 0;
     int steps = 24;
-    int samples = 8;
+    int samples = -1;
     int width = 1280, height = 720;
     app.add_option("--mesh", meshPath, "mesh file")->required();
     app.add_option("--subdivide", subdivide, "subdivide 1->4 until at least this many triangles (0: as it is)");
     app.add_option("--steps", steps, "eye steps measured (3 degrees each)")->capture_default_str();
-    app.add_option("--samples", samples, "multisamples of the views (VTK's default is 8)")->capture_default_str();
+    app.add_option("--samples", samples, "multisamples of the views (-1: as the application chooses, Multisampling.h)")
+        ->capture_default_str();
     app.add_option("--width", width, "window width")->capture_default_str();
     app.add_option("--height", height, "window height")->capture_default_str();
     CLI11_PARSE(app, argc, argv);
 
-    vtkOpenGLRenderWindow::SetGlobalMaximumNumberOfMultiSamples(samples);
     QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
     QApplication application(argc, argv);
+    if (samples < 0) samples = viewMultisamples();
+    vtkOpenGLRenderWindow::SetGlobalMaximumNumberOfMultiSamples(samples);
     std::string opened = meshPath;
     const std::filesystem::path scratch = std::filesystem::temp_directory_path() / "conescope-bench-eye.off";
     if (subdivide > 0) {

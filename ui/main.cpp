@@ -13,6 +13,7 @@
 #include "CommandLine.h"
 #include "Datasets.h"
 #include "MainWindow.h"
+#include "Multisampling.h"
 #include "ReplayPlayer.h"
 
 namespace {
@@ -66,6 +67,7 @@ int main(int argc, char** argv) {
     QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
     QApplication application(argc, argv);
     setApplicationNames();
+    applyViewMultisamples();
     MainWindow window;
     window.setSettings(options.settings);
     window.setFaceColoring(options.coloring);

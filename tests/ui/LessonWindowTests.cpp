@@ -22,6 +22,7 @@
 #include "Glossary.h"
 #include "LessonView.h"
 #include "MainWindow.h"
+#include "Multisampling.h"
 #include "ObserverView.h"
 #include "ReplayPlayer.h"
 #include "Slides.h"
@@ -204,6 +205,15 @@ private slots:
         QVERIFY(window_->frameTimesText().startsWith(QStringLiteral("Eye step ")));
         show->trigger();
         QVERIFY(window_->frameTimesText().isEmpty());
+    }
+
+    // Mesa's llvmpipe (what Xvfb gives the tests) pays for every sample: the views ask for none; the
+    // variable overrides.
+    void aSoftwareRendererGetsNoMultisampling() {
+        QCOMPARE(viewMultisamples(), 0);
+        qputenv("CONESCOPE_SAMPLES", "4");
+        QCOMPARE(viewMultisamples(), 4);
+        qunsetenv("CONESCOPE_SAMPLES");
     }
 
     // File > Examples: the four teaching meshes open, and every ready-made lesson plays to its first step
