@@ -14,6 +14,9 @@
 #include <QtTest>
 
 #include <QVTKOpenGLNativeWidget.h>
+#include <vtkCallbackCommand.h>
+#include <vtkGenericOpenGLRenderWindow.h>
+#include <vtkNew.h>
 
 #include "CrossSectionView.h"
 #include "Datasets.h"
@@ -22,6 +25,7 @@
 #include "Glossary.h"
 #include "LessonView.h"
 #include "MainWindow.h"
+#include "PlotsView.h"
 #include "Multisampling.h"
 #include "ObserverView.h"
 #include "ReplayPlayer.h"
@@ -205,6 +209,40 @@ private slots:
         QVERIFY(window_->frameTimesText().startsWith(QStringLiteral("Eye step ")));
         show->trigger();
         QVERIFY(window_->frameTimesText().isEmpty());
+    }
+
+    // A dragged eye redraws the views that show it, not the orbit's plots, and keeps the scene and
+    // clusters it had: no pipeline runs again.
+    void anEyeMoveRedrawsOnlyWhatItChanges() {
+        QVERIFY(window_->openMeshBlocking(datasetPath("torus.off")));
+        window_->plotsView()->parentWidget()->show();
+        QApplication::processEvents();
+        int plotDraws = 0, viewDraws = 0;
+        vtkNew<vtkCallbackCommand> countPlot, countView;
+        countPlot->SetClientData(&plotDraws);
+        countView->SetClientData(&viewDraws);
+        for (vtkCallbackCommand* count : {countPlot.Get(), countView.Get()})
+            count->SetCallback([](vtkObject*, unsigned long, void* counter, void*) { ++*static_cast<int*>(counter); });
+        window_->plotsView()->efficiencyWidget()->renderWindow()->AddObserver(vtkCommand::EndEvent, countPlot);
+        window_->observerView()->renderWindow()->AddObserver(vtkCommand::EndEvent, countView);
+        const ClusterScene* scene = window_->scene();
+        const ClusterSet* clusters = window_->clusters();
+        for (double x : {2.5, -2.5}) {
+            window_->session().moveEyeSoon({x, 0.3, 0.4});
+            QApplication::processEvents();
+        }
+        window_->waitUntilIdle();
+        QVERIFY(viewDraws >= 2);
+        QCOMPARE(plotDraws, 0);
+        QCOMPARE(window_->scene(), scene);
+        QCOMPARE(window_->clusters(), clusters);
+        QCOMPARE(window_->session().eyePosition(), glm::dvec3(-2.5, 0.3, 0.4));
+        // The counter sees the plots drawn when the window draws everything.
+        QVERIFY(window_->plotsView()->efficiencyWidget()->isVisible());
+        window_->render();
+        QVERIFY(plotDraws > 0);
+        window_->plotsView()->efficiencyWidget()->renderWindow()->RemoveObserver(countPlot);
+        window_->observerView()->renderWindow()->RemoveObserver(countView);
     }
 
     // Mesa's llvmpipe (what Xvfb gives the tests) pays for every sample: the views ask for none; the
