@@ -71,7 +71,7 @@ void MainWindow::stageLessonStep(int step) {
     figure->show();
     figure->raise();
     if (const Lesson* lesson = session_.lesson()) {
-        view_->placeCamera(lessonCamera(*lesson, step, view_->viewAngle()));
+        view_->placeCamera(lessonCamera(*lesson, step, view_->fittingViewAngle()));
         showCaption(tr("Lesson %1/%2: %3").arg(step).arg(kLessonStepCount).arg(QString::fromStdString(lesson->steps[size_t(step - 1)].title)));
     }
     render();

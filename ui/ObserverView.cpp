@@ -171,6 +171,14 @@ void ObserverView::placeCamera(const CameraPlacement& placement) {
 
 double ObserverView::viewAngle() const { return renderer_->GetActiveCamera()->GetViewAngle(); }
 
+double ObserverView::fittingViewAngle() const {
+    // VTK's view angle is the vertical one; a view narrower than tall sees less across.
+    const double vertical = viewAngle();
+    if (width() <= 0 || height() <= 0 || width() >= height()) return vertical;
+    const double halfTangent = std::tan(0.5 * vertical * M_PI / 180.0) * double(width()) / double(height());
+    return 2.0 * std::atan(halfTangent) * 180.0 / M_PI;
+}
+
 QPoint ObserverView::displayPointOf(const QPoint& viewPosition) const {
     // As QVTKInteractorAdapter converts mouse events.
     const double ratio = devicePixelRatioF();

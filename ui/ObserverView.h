@@ -53,6 +53,8 @@ public:
     // Puts the camera there (a lesson step's framing); the view angle stays.
     void placeCamera(const CameraPlacement& placement);
     double viewAngle() const;
+    // The angle a picture must fit in both ways: the vertical one, or the horizontal one when narrower.
+    double fittingViewAngle() const;
 
     // Qt's widget coordinates (top-left origin, logical pixels) to VTK's display coordinates and back.
     QPoint displayPointOf(const QPoint& viewPosition) const;
