@@ -96,6 +96,9 @@ public:
     // The six lesson steps as numbered slides in `folder` (slide-01.png ...): the 3D view as the step
     // stages it, its title and words below; the step shown before comes back. False and errorShown on failure.
     bool exportLessonSlides(const QString& folder);
+    // Up to eight orbit views, evenly spaced, as numbered slides: the 3D view (framed to take in the
+    // orbit) with the eye there and its statistics in words (viewInWords) below; the eye comes back. False and errorShown on failure.
+    bool exportOrbitSlides(const QString& folder);
     // Plays a replay file (a ready-made lesson of File > Examples) in this window; false when it cannot be read.
     bool playReplayFile(const QString& path);
 

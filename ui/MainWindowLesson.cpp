@@ -1,5 +1,7 @@
 // The window's lesson: what each step shows (scene/LessonLayer.h says which layers, colours and
 // camera), the docks it raises, and the layers and colours put back when it ends.
+#include <algorithm>
+
 #include <QApplication>
 #include <QDir>
 #include <QDockWidget>
@@ -105,6 +107,48 @@ bool MainWindow::exportLessonSlides(const QString& folder) {
     showLessonStep(before);
     stageLessonStep(session_.lessonStep());
     if (written) statusBar()->showMessage(tr("Wrote %1 slides to %2").arg(kLessonStepCount).arg(folder), 6000);
+    return written;
+}
+
+bool MainWindow::exportOrbitSlides(const QString& folder) {
+    const QString title = tr("Cannot export the orbit slides");
+    if (!session_.clusters() || !session_.preparedMesh()) {
+        showError(title, tr("Open a mesh first."));
+        return false;
+    }
+    if (!QDir().mkpath(folder)) {
+        showError(title, tr("%1: cannot make the folder").arg(folder));
+        return false;
+    }
+    const glm::dvec3 eyeBefore = session_.eyePosition();
+    const long stepBefore = session_.orbitStep();
+    const long views = long(session_.settings().views);
+    const long slides = std::min(views, 8L);
+    const Aabb meshBox = session_.preparedMesh()->box;
+    bool written = true;
+    for (long i = 0; i < slides && written; ++i) {
+        const long view = i * views / slides;
+        session_.moveEyeToOrbitView(view);
+        waitUntilIdle();
+        const EyeMeasurement* measured = session_.measurement();
+        if (!measured) {
+            showError(title, session_.eyeError());
+            written = false;
+            break;
+        }
+        // The camera takes in the mesh and this eye, so the eye shows on its slide.
+        if (!measured->eye.orthographic)
+            view_->frameBox(computeAabb({meshBox.min, meshBox.max, glm::vec3(measured->eye.position)}), view_->cameraPosition());
+        view_->render();
+        QApplication::processEvents();
+        const QImage slide = captionedSlide(view_->grabFramebuffer(), tr("Orbit view %1 of %2").arg(view + 1).arg(views),
+                                            QString::fromStdString(viewInWords(measured->statistics, session_.clusters()->bounds.count())));
+        const QString path = QDir(folder).filePath(slideFileName(int(i + 1)));
+        written = slide.save(path, "PNG");
+        if (!written) showError(title, tr("%1: cannot write the PNG").arg(path));
+    }
+    session_.moveEye(eyeBefore, stepBefore);
+    if (written) statusBar()->showMessage(tr("Wrote %1 slides to %2").arg(slides).arg(folder), 6000);
     return written;
 }
 

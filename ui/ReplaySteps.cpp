@@ -238,6 +238,7 @@ const std::vector<StepKind>& stepKinds() {
         {"cross-section", writeStep(&MainWindow::saveCrossSection)},
         {"export-explanation", writeStep(&MainWindow::exportExplanation)},
         {"slides", writeStep(&MainWindow::exportLessonSlides)},
+        {"orbit-slides", writeStep(&MainWindow::exportOrbitSlides)},
         {"export", exportStep(true)},
         {"export-eye", exportStep(false)},
         {"caption",

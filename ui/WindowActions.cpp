@@ -235,6 +235,10 @@ void WindowActions::createLessonMenu() {
         const QString folder = QFileDialog::getExistingDirectory(window_, tr("Folder for the lesson slides"));
         if (!folder.isEmpty()) window_->exportLessonSlides(folder);
     }, tr("The six steps as numbered pictures with their words below (slide-01.png ...)"));
+    add(lesson, tr("Export the &orbit as slides..."), {}, [this]() {
+        const QString folder = QFileDialog::getExistingDirectory(window_, tr("Folder for the orbit slides"));
+        if (!folder.isEmpty()) window_->exportOrbitSlides(folder);
+    }, tr("Eight orbit views as numbered pictures, each with that eye's statistics in words below"));
 }
 
 void WindowActions::writeWithDialog(const QString& title, const QString& name, const QString& filter,

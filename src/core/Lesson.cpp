@@ -1,5 +1,6 @@
 #include "Lesson.h"
 
+#include <cctype>
 #include <cmath>
 
 #include "LessonSteps.h"
@@ -32,6 +33,16 @@ std::string testInWords(CullTest test) {
         case CullTest::Octagon: return "the octagon test";
     }
     return "the test";
+}
+
+std::string viewInWords(const CullTestStatistics& view, size_t clusterCount) {
+    std::string text = testInWords(view.test) + " culls " + std::to_string(view.clustersCulled) + " of " +
+                       count(clusterCount, "cluster", "clusters") + ": " + std::to_string(view.trianglesCulled) + " of the " +
+                       count(view.backFacingTriangles, "back-facing triangle", "back-facing triangles") + ", an efficiency of " +
+                       percent(view.efficiency) + ". ";
+    text[0] = char(std::toupper(static_cast<unsigned char>(text[0])));
+    return text + std::to_string(view.testLossTriangles) + " are lost to the test (their whole cluster faces away) and " +
+           std::to_string(view.partitionLossTriangles) + " to the partition (their cluster also holds a face turned to the eye).";
 }
 
 namespace {

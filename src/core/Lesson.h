@@ -20,4 +20,8 @@ Lesson makeLesson(const PreparedMesh& prepared, const ClusterSet& clusters, uint
 // The test's name in words: "the apex test", "the bounding-sphere test", ...
 std::string testInWords(CullTest test);
 
+// One view's statistics (a single eye's) in two sentences for an orbit slide: how many clusters and
+// back-facing triangles the test culls, its efficiency, and what is lost to the test and the partition.
+std::string viewInWords(const CullTestStatistics& view, size_t clusterCount);
+
 }  // namespace conescope

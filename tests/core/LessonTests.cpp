@@ -171,3 +171,21 @@ TEST(CrossSection, NormalsInsideTheConeAndTheViewInTheWedgeExactlyWhenCulled) {
         EXPECT_GT(drawn, 20u);
     }
 }
+
+// An orbit slide's words are one eye's statistics: the same counts, the efficiency as a percentage.
+TEST(Lesson, ViewInWordsSaysTheEyesCountsAndEfficiency) {
+    const Prepared p(ConeMethod::Minimal);
+    const EyeMeasurement measured = measureEye(p.mesh, p.clusters, Eye::perspective({0.3, 2.5, 0.4}), CullTest::Octagon);
+    const CullTestStatistics& view = measured.statistics;
+    ASSERT_GT(view.clustersCulled, 0u);
+    const std::string text = viewInWords(view, p.clusters.bounds.count());
+    EXPECT_EQ(text.rfind("The octagon test culls " + std::to_string(view.clustersCulled) + " of " +
+                             std::to_string(p.clusters.bounds.count()) + " clusters: " + std::to_string(view.trianglesCulled) +
+                             " of the " + std::to_string(view.backFacingTriangles) + " back-facing triangles, an efficiency of " +
+                             lessontext::percent(view.efficiency) + ".",
+                         0),
+              0u)
+        << text;
+    EXPECT_TRUE(contains(text, std::to_string(view.testLossTriangles) + " are lost to the test")) << text;
+    EXPECT_TRUE(contains(text, std::to_string(view.partitionLossTriangles) + " to the partition")) << text;
+}

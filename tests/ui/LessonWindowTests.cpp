@@ -311,6 +311,21 @@ private slots:
         window_->showLessonStep(0);
         QVERIFY(!window_->exportLessonSlides(QStringLiteral("/proc/no/such/folder")));
     }
+
+    // Lesson > Export the orbit as slides: eight views, the eye moving round, each with its words; the
+    // eye comes back.
+    void theOrbitExportsAsSlides() {
+        QVERIFY(window_->openMeshBlocking(datasetPath("torus.off")));
+        window_->setEyePosition({0.3, 2.5, 0.4});
+        window_->waitUntilIdle();
+        const QString folder = temporary_.filePath(QStringLiteral("orbit"));
+        QVERIFY(window_->exportOrbitSlides(folder));
+        QCOMPARE(window_->session().eyePosition(), glm::dvec3(0.3, 2.5, 0.4));
+        QCOMPARE(QDir(folder).entryList({QStringLiteral("*.png")}, QDir::Files).size(), 8);
+        const QImage first(QDir(folder).filePath(slideFileName(1))), last(QDir(folder).filePath(slideFileName(8)));
+        QVERIFY(!first.isNull() && first.height() > window_->observerView()->height() + 40);
+        QVERIFY(first != last);
+    }
 };
 
 int main(int argc, char** argv) {

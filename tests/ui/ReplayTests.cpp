@@ -97,7 +97,8 @@ private slots:
                 {"eye": [1, 2, 3.5]}, {"orbit-view": 3}, {"pick": -1}, {"pin": "A"}, {"swap": true}, {"drop-pin": true},
                 {"cancel-next-build": true}, {"screenshot": "a.png"}, {"window-screenshot": "b.png"}, {"export": "c.json"},
                 {"export-eye": "d.csv"}, {"caption": "text"}, {"choose": 3}, {"choose": "test-loss"}, {"lesson-step": 2},
-                {"cross-section": "e.png"}, {"export-explanation": "f.json"}, {"slides": "g"}])",
+                {"cross-section": "e.png"}, {"export-explanation": "f.json"}, {"slides": "g"},
+                {"orbit-slides": "h"}])",
             QDir::tempPath());
         QCOMPARE(steps.size(), replayStepNames().size() + 1);
     }
