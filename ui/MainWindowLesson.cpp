@@ -56,9 +56,6 @@ void MainWindow::stageLessonStep(int step) {
                 docksHiddenByLesson_.push_back(dock);
                 dock->hide();
             }
-        // The right column shares its height between the words and the figure beside them.
-        const int column = lessonDock_->height() + sideDocks_[3]->height();
-        resizeDocks({lessonDock_, sideDocks_[3]}, {column / 2, column / 2}, Qt::Vertical);
         layersBeforeLesson_.emplace();
         for (Layer layer : allLayers()) (*layersBeforeLesson_)[layer] = layerVisible(layer);
         coloringBeforeLesson_ = session_.faceColoring();
@@ -72,6 +69,11 @@ void MainWindow::stageLessonStep(int step) {
     QDockWidget* figure = step == 2 || step == 3 ? gaussMapDock_ : step >= 5 ? crossSectionDock_ : sideDocks_[3];
     figure->show();
     figure->raise();
+    // The right column shares its height between the words and the figure: the cone's steps have the
+    // most words, the cross-section's figure the most labels.
+    const int column = lessonDock_->height() + sideDocks_[3]->height();
+    const int words = figure == crossSectionDock_ ? column * 9 / 20 : column * 11 / 20;
+    resizeDocks({lessonDock_, sideDocks_[3]}, {words, column - words}, Qt::Vertical);
     if (const Lesson* lesson = session_.lesson()) {
         view_->placeCamera(lessonCamera(*lesson, step, view_->fittingViewAngle()));
         showCaption(tr("Lesson %1/%2: %3").arg(step).arg(kLessonStepCount).arg(QString::fromStdString(lesson->steps[size_t(step - 1)].title)));
