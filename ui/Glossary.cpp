@@ -34,7 +34,7 @@ const std::vector<GlossaryEntry>& glossary() {
          tr("How far the cone opens: no normal is more than \u03b1 from V1 (cos \u03b1 = the smallest n\u00b7V1). A narrower "
             "cone (smaller \u03b1) can be culled from more places.")},
         {"angle b", tr("Angle B"),
-         tr("Seed 000's angle, 90\u00b0 \u2212 \u03b1: the cluster faces away from every view vector v within B of V1, "
+         tr("The article's angle, 90\u00b0 \u2212 \u03b1: the cluster faces away from every view vector v within B of V1, "
             "that is when v\u00b7V1 > cos B = sin \u03b1.")},
         {"view vector", tr("View vector v"),
          tr("The unit vector from the eye towards the cluster (to the apex, the sphere's centre or a corner, as the test "
@@ -86,17 +86,17 @@ const std::vector<GlossaryEntry>& glossary() {
         {"test oracle", tr("Test: oracle"), tr("Checks every face exactly (n\u00b7(e \u2212 q) < 0 at every corner). The ceiling, not a real test.")},
         {"test vertices", tr("Test: vertices"),
          tr("The cone seen from behind along the view vector to every vertex of the cluster. Exact for the cone, but one check per vertex.")},
-        {"test aabb", tr("Test: aabb"), tr("Seed 000's box test: the cone seen from behind along the view vector to each of the 8 box corners.")},
-        {"test aabb-fast", tr("Test: aabb-fast"), tr("The box test in the seed's optimised form: squares instead of a square root per corner.")},
+        {"test aabb", tr("Test: aabb"), tr("The article's box test: the cone seen from behind along the view vector to each of the 8 box corners.")},
+        {"test aabb-fast", tr("Test: aabb-fast"), tr("The box test in the article's optimised form: squares instead of a square root per corner.")},
         {"test sphere", tr("Test: sphere"),
-         tr("Seed 000's sphere test: v\u00b7V1 > cos(B \u2212 asin(r/d)) with v towards the sphere's centre. Never culls with the eye inside the sphere.")},
+         tr("The article's sphere test: v\u00b7V1 > cos(B \u2212 asin(r/d)) with v towards the sphere's centre. Never culls with the eye inside the sphere.")},
         {"test apex", tr("Test: apex"), tr("meshoptimizer's test: v\u00b7V1 > sin \u03b1 with v from the eye to the apex.")},
         {"test meshopt-sphere", tr("Test: meshopt-sphere"), tr("meshoptimizer's sphere test: (c \u2212 e)\u00b7V1 > sin \u03b1 |c \u2212 e| + r.")},
         {"test octagon", tr("Test: octagon"),
          tr("The apex test with an eight-sided cone of normals: tighter where the normals spread more one way than the "
             "other. Culls when g\u00b7v > 0 for each of its eight edges g.")},
-        {"cone average", tr("Cone: average"), tr("Seed 000's cone: V1 is the mean normal, \u03b1 the angle to the farthest normal.")},
-        {"cone seed-sphere", tr("Cone: seed-sphere"), tr("Seed 000's note: V1 towards the centre of the smallest sphere around the normals' tips.")},
+        {"cone average", tr("Cone: average"), tr("The article's cone: V1 is the mean normal, \u03b1 the angle to the farthest normal.")},
+        {"cone seed-sphere", tr("Cone: seed-sphere"), tr("The article's note: V1 towards the centre of the smallest sphere around the normals' tips.")},
         {"cone minimal", tr("Cone: minimal"), tr("The narrowest cone that holds every normal (the smallest cap on the Gauss sphere).")},
         {"cone meshopt", tr("Cone: meshopt"), tr("meshoptimizer's cone (meshopt_computeClusterBounds).")},
     };
@@ -190,7 +190,7 @@ QString aboutHtml() {
               "clusters of nearby faces; each gets a cone that holds its face normals and a bound; from the cull eye a "
               "cheap test decides whether the whole cluster faces away and can be skipped.</p>"
               "<p>The algorithm follows Jordan Isaak's article <i>Efficiently Culling Groups of Back-Facing Triangles</i> "
-              "(seed 000: the cone V1 and B, the bounding-box and bounding-sphere tests) and meshoptimizer's cluster "
+              "(the cone V1 and B, the bounding-box and bounding-sphere tests; called \"the article\" here) and meshoptimizer's cluster "
               "bounds (the apex test), compared with the exact per-face answer.</p>"
               "<p>Start a lesson with <b>L</b>; Help &gt; Glossary explains every term; Shift+F1 and a click on a "
               "control says what it does.</p>")

@@ -98,18 +98,18 @@ std::string coneStep(const Lesson& lesson) {
     std::string text = "A cone holds the normals when none is more than its half-angle \u03b1 away from its axis V1. The " +
                        shown + " cone the test uses has V1 = " + vector3(why.axis) + " and \u03b1 = " +
                        degrees(why.halfAngleDegrees) + ": the normal farthest from V1 has n\u00b7V1 = cos \u03b1 = " +
-                       dot(why.cosHalfAngle) + ". Seed 000 calls 90\u00b0 \u2212 \u03b1 = " + degrees(why.angleBDegrees) +
+                       dot(why.cosHalfAngle) + ". The classic article calls 90\u00b0 \u2212 \u03b1 = " + degrees(why.angleBDegrees) +
                        " the angle B. ";
     const double average = glm::degrees(lesson.averageCone.halfAngle());
     const double minimal = glm::degrees(lesson.minimalCone.halfAngle());
     const std::string averageText = lesson.averageCone.cullable ? degrees(average) : "more than 90\u00b0";
     if (lesson.coneMethod == ConeMethod::Minimal)
-        text += "It is the narrowest cone that holds them; the seed's average cone (V1 = the mean normal) needs \u03b1 = " +
+        text += "It is the narrowest cone that holds them; the article's average cone (V1 = the mean normal) needs \u03b1 = " +
                 averageText + ". ";
     else if (lesson.coneMethod == ConeMethod::Average)
-        text += "V1 is the mean normal, as in the seed; the narrowest cone (minimal) needs only \u03b1 = " + degrees(minimal) + ". ";
+        text += "V1 is the mean normal, as in the article; the narrowest cone (minimal) needs only \u03b1 = " + degrees(minimal) + ". ";
     else
-        text += "The seed's average cone needs \u03b1 = " + averageText + ", the narrowest (minimal) " + degrees(minimal) + ". ";
+        text += "The article's average cone needs \u03b1 = " + averageText + ", the narrowest (minimal) " + degrees(minimal) + ". ";
     return text + "A narrower cone culls from more places: seen from far away this one culls from (1 \u2212 sin \u03b1)/2 = " +
            percent((1.0 - std::sin(glm::radians(why.halfAngleDegrees))) / 2.0) + " of all directions.";
 }

@@ -122,7 +122,7 @@ std::string boundStep(const Lesson& lesson) {
                    ", and checks the view vector to each of its 8 corners. The view vectors that see the cone from behind "
                    "form a cone of their own; when all 8 corners lie in it, so does every point of the box." +
                    (lesson.test == CullTest::AabbFast ? " This form compares squares instead of normalising each view "
-                                                        "vector, as the seed's optimised version does."
+                                                        "vector, as the article's optimised version does."
                                                       : "");
         case CullTest::Vertices:
             return manyDirections + "This test checks the view vector to each of the cluster's " +
