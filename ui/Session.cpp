@@ -109,11 +109,7 @@ void Session::requestClusters(bool reprepare) {
         [prepared, previous, settings, reprepare](const ProgressCallback& progress) {
             SceneResult result;
             result.prepared = prepared;
-            if (reprepare) {
-                PreparedMesh again = prepareMesh(prepared->original, prepared->path, settings.fixWinding, scaled(progress, 0.0, 0.3));
-                again.readerNotes = prepared->readerNotes;
-                result.prepared = std::make_shared<PreparedMesh>(std::move(again));
-            }
+            if (reprepare) result.prepared = std::make_shared<PreparedMesh>(reprepareMesh(*prepared, settings, scaled(progress, 0.0, 0.3)));
             auto clusters = std::make_shared<ClusterSet>(
                 buildClusters(*result.prepared, settings, previous.get(), scaled(progress, reprepare ? 0.3 : 0.0, 0.9)));
             progress(0.9, "scene");
@@ -187,8 +183,9 @@ void Session::showSceneResult(SceneResult& result, bool newMesh) {
     emit eyeMoved();
     emit eyeMeasured();
     // The settings may have moved on while this was computed.
-    if (prepared_->fixWindingAsked != settings_.fixWinding || boundsChanged(clusters_->settings, settings_))
-        requestClusters(prepared_->fixWindingAsked != settings_.fixWinding);
+    const bool reprepare = prepared_->fixWindingAsked != settings_.fixWinding || needsClusterFile(*prepared_, settings_);
+    if (reprepare || boundsChanged(clusters_->settings, settings_))
+        requestClusters(reprepare);
     else
         requestOrbit();
 }
@@ -197,7 +194,7 @@ void Session::applySettings(const Settings& settings) {
     const Settings before = settings_;
     settings_ = settings;
     if (!prepared_ || !clusters_) return;
-    const bool reprepare = prepared_->fixWindingAsked != settings.fixWinding;
+    const bool reprepare = prepared_->fixWindingAsked != settings.fixWinding || needsClusterFile(*prepared_, settings);
     if (reprepare || boundsChanged(clusters_->settings, settings)) {
         requestClusters(reprepare);
         return;

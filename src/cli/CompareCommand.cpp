@@ -14,7 +14,7 @@ void runCompare(const CompareOptions& options) {
     const Settings settingsA = parseConfiguration(options.a, base);
     const Settings settingsB = parseConfiguration(options.b, base);
     const std::string format = outputFormat(options.format, options.output, "json");
-    const Mesh mesh = readMeshNoting(options.mesh, options.quiet);
+    const Mesh mesh = readMeshNoting(options.mesh, options.quiet, {settingsA, settingsB});
     const ProgressCallback progress = stderrProgress(options.quiet);
     const PreparedMesh prepared = prepareMesh(std::make_shared<Mesh>(mesh), options.mesh, base.fixWinding, progress);
     note(options.quiet, "building A's clusters (" + toString(settingsA.builder) + ")");

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "BatchCulling.h"
+#include "FileBuilder.h"
 #include "SettingsSchema.h"
 
 namespace conescope {
@@ -217,14 +218,16 @@ Settings exportSettings(const Settings& settings, const std::optional<glm::dvec3
 Settings builderForMesh(const Settings& settings, const Mesh& mesh, std::string& why) {
     Settings result = settings;
     const bool hasIds = mesh.faceArrays.count("cluster_id") > 0;
+    const bool hasClusters = settings.clusterFile.empty() ? meshHasOwnClusters(mesh) : mesh.fileClusters.count(settings.clusterFile) > 0;
     if (settings.builder != Builder::File && hasIds) {
         result.builder = Builder::File;
         result.clusterFile.clear();
         why = "the mesh carries a cluster_id array: showing its own partition (the file builder); choose another builder to compare";
-    } else if (settings.builder == Builder::File && settings.clusterFile.empty() && !hasIds) {
+    } else if (settings.builder == Builder::File && !hasClusters) {
         result.builder = Settings{}.builder;
-        why = "the mesh has no cluster_id array and no cluster file is given: clusters from the " + toString(result.builder) +
-              " builder instead of the file builder";
+        why = (settings.clusterFile.empty() ? std::string("the mesh has no cluster_id array or groups and no cluster file is given")
+                                            : settings.clusterFile + " was not read with the mesh") +
+              ": clusters from the " + toString(result.builder) + " builder instead of the file builder";
     }
     return result;
 }

@@ -8,6 +8,7 @@
 #include "BatchCulling.h"
 #include "ClusterOptimizer.h"
 #include "ExpectedCull.h"
+#include "FileBuilder.h"
 
 namespace conescope {
 
@@ -28,14 +29,7 @@ Partition buildPartition(const Mesh& mesh, const FaceGeometry& faces, const Sett
         case Builder::Meshopt: return buildMeshoptMeshlets(mesh, settings.limits, settings.meshoptConeWeight);
         case Builder::Optimized: return buildOptimizedClusters(mesh, faces, settings.limits, settings.clusterCount, progress, settings.effort,
                                                                  meshlets, partDone);
-        case Builder::File: {
-            if (!settings.clusterFile.empty())
-                return partitionFromIds(readClusterIdFile(settings.clusterFile), mesh.faceCount(), settings.clusterFile);
-            auto ids = mesh.faceArrays.find("cluster_id");
-            if (ids == mesh.faceArrays.end())
-                throw std::runtime_error("the file builder needs a per-face 'cluster_id' array in the mesh or a cluster file");
-            return partitionFromIds(ids->second, mesh.faceCount(), "cluster_id array");
-        }
+        case Builder::File: return filePartition(mesh, settings.clusterFile);
     }
     throw std::invalid_argument("unknown builder");
 }

@@ -1,0 +1,248 @@
+#include "MeshletArrays.h"
+
+#include <algorithm>
+#include <limits>
+#include <map>
+#include <unordered_map>
+
+#include "Adjacency.h"
+
+namespace conescope {
+
+namespace {
+
+constexpr uint32_t kNone = std::numeric_limits<uint32_t>::max();
+
+std::string meshletName(size_t m) { return "meshlet " + std::to_string(m); }
+
+std::string triangleName(size_t m, size_t t) { return meshletName(m) + ", triangle " + std::to_string(t); }
+
+// Offsets, counts, vertex indices and local indices in range, before anything is looked up.
+void checkRanges(const MeshletArrays& arrays, size_t fileVertexCount) {
+    if (!arrays.bounds.empty() && arrays.bounds.size() != arrays.meshlets.size())
+        throw MeshletError("bounds has " + std::to_string(arrays.bounds.size()) + " entries for " + std::to_string(arrays.meshlets.size()) +
+                           " meshlets");
+    if (arrays.meshlets.empty()) throw MeshletError("no meshlets");
+    for (size_t m = 0; m < arrays.meshlets.size(); ++m) {
+        const auto [vertexOffset, triangleOffset, vertexCount, triangleCount] = arrays.meshlets[m];
+        if (triangleCount == 0) throw MeshletError(meshletName(m) + " has no triangles");
+        if (uint64_t(vertexOffset) + vertexCount > arrays.vertices.size())
+            throw MeshletError(meshletName(m) + ": vertex_offset " + std::to_string(vertexOffset) + " + vertex_count " +
+                               std::to_string(vertexCount) + " runs past meshlet_vertices (" + std::to_string(arrays.vertices.size()) +
+                               " entries)");
+        if (uint64_t(triangleOffset) + 3 * uint64_t(triangleCount) > arrays.triangles.size())
+            throw MeshletError(meshletName(m) + ": triangle_offset " + std::to_string(triangleOffset) + " + 3 x triangle_count " +
+                               std::to_string(triangleCount) + " runs past meshlet_triangles (" + std::to_string(arrays.triangles.size()) +
+                               " bytes)");
+        for (uint32_t i = vertexOffset; i < vertexOffset + vertexCount; ++i)
+            if (arrays.vertices[i] >= fileVertexCount)
+                throw MeshletError(meshletName(m) + ": meshlet_vertices[" + std::to_string(i) + "] = " + std::to_string(arrays.vertices[i]) +
+                                   " is past the mesh file's " + std::to_string(fileVertexCount) + " vertices");
+        for (uint32_t t = 0; t < triangleCount; ++t)
+            for (int k = 0; k < 3; ++k) {
+                const uint8_t local = arrays.triangles[triangleOffset + 3 * t + k];
+                if (local >= vertexCount)
+                    throw MeshletError(triangleName(m, t) + ": local vertex " + std::to_string(local) + " is past the meshlet's " +
+                                       std::to_string(vertexCount) + " vertices");
+            }
+    }
+}
+
+// One triangle of a meshlet that lies in a polygon: its corners and where it came from.
+struct Piece {
+    std::array<uint32_t, 3> corners;  // sorted mesh vertices
+    uint32_t meshlet;
+};
+
+// Where a corner sits on a face (its first occurrence), or the face size when it is not one.
+size_t cornerPosition(const Mesh& mesh, uint32_t face, uint32_t vertex) {
+    const uint32_t* corners = mesh.faceBegin(face);
+    return size_t(std::find(corners, corners + mesh.faceSize(face), vertex) - corners);
+}
+
+// Whether the pieces cut the polygon into triangles: n - 2 of them, each side of the polygon in
+// exactly one, each other pair of corners they use in exactly two (a fan, a strip, any triangulation).
+bool piecesTile(const Mesh& mesh, uint32_t face, const std::vector<Piece>& pieces) {
+    const size_t n = mesh.faceSize(face);
+    if (pieces.size() != n - 2) return false;
+    std::map<std::pair<size_t, size_t>, int> uses;
+    for (const Piece& piece : pieces) {
+        std::array<size_t, 3> at{};
+        for (int k = 0; k < 3; ++k) at[k] = cornerPosition(mesh, face, piece.corners[k]);
+        std::sort(at.begin(), at.end());
+        if (at[0] == at[1] || at[1] == at[2]) return false;
+        for (auto [i, j] : {std::pair(at[0], at[1]), std::pair(at[1], at[2]), std::pair(at[0], at[2])}) ++uses[{i, j}];
+    }
+    for (const auto& [edge, count] : uses) {
+        const bool side = edge.second == edge.first + 1 || (edge.first == 0 && edge.second == n - 1);
+        if (count != (side ? 1 : 2)) return false;
+    }
+    return uses.size() == 2 * n - 3;  // n sides and n - 3 diagonals
+}
+
+std::string firstFew(const std::vector<uint32_t>& faces) {
+    std::string text;
+    for (size_t i = 0; i < std::min<size_t>(faces.size(), 5); ++i) text += (i ? ", " : "") + std::to_string(faces[i]);
+    if (faces.size() > 5) text += " and " + std::to_string(faces.size() - 5) + " more";
+    return text;
+}
+
+// The face a triangle of mesh vertices a, b, c lands on: an unmatched triangle face with these
+// corners, else a polygon holding all three. kNone with `taken` set when only a matched triangle
+// face has them.
+uint32_t faceOfTriangle(const Mesh& mesh, const Rows& around, const std::vector<uint32_t>& meshletOfFace,
+                        const std::array<uint32_t, 3>& key, uint32_t& taken) {
+    uint32_t polygon = kNone;
+    taken = kNone;
+    for (const uint32_t* f = around.begin(key[0]); f != around.end(key[0]); ++f) {
+        const uint32_t* corners = mesh.faceBegin(*f);
+        if (mesh.faceSize(*f) == 3) {
+            if (sortedCorners(corners[0], corners[1], corners[2]) != key) continue;
+            if (meshletOfFace[*f] == kNone) return *f;
+            if (taken == kNone) taken = *f;
+        } else if (polygon == kNone && cornerPosition(mesh, *f, key[1]) < mesh.faceSize(*f) &&
+                   cornerPosition(mesh, *f, key[2]) < mesh.faceSize(*f)) {
+            polygon = *f;
+        }
+    }
+    return taken == kNone ? polygon : kNone;
+}
+
+// The mesh with the listed polygons replaced by their pieces (in the polygon's winding), each
+// piece carrying its polygon's face-array values and file-partition ids; returns each new face's
+// meshlet.
+std::vector<uint32_t> cutPolygons(Mesh& mesh, const std::vector<uint32_t>& meshletOfFace,
+                                  const std::unordered_map<uint32_t, std::vector<Piece>>& cuts) {
+    Mesh cut;
+    cut.positions = std::move(mesh.positions);
+    cut.model = mesh.model;
+    cut.fileVertices = std::move(mesh.fileVertices);
+    std::vector<uint32_t> meshletOfNewFace, sourceFace;
+    for (uint32_t f = 0; f < mesh.faceCount(); ++f) {
+        const auto pieces = cuts.find(f);
+        if (pieces == cuts.end()) {
+            cut.addFace(mesh.faceBegin(f), mesh.faceSize(f));
+            meshletOfNewFace.push_back(meshletOfFace[f]);
+            sourceFace.push_back(f);
+            continue;
+        }
+        for (const Piece& piece : pieces->second) {
+            std::array<uint32_t, 3> at{};
+            for (int k = 0; k < 3; ++k) at[k] = uint32_t(cornerPosition(mesh, f, piece.corners[k]));
+            std::sort(at.begin(), at.end());  // corners in the polygon's order keep its winding
+            const uint32_t* corners = mesh.faceBegin(f);
+            cut.addFace({corners[at[0]], corners[at[1]], corners[at[2]]});
+            meshletOfNewFace.push_back(piece.meshlet);
+            sourceFace.push_back(f);
+        }
+    }
+    for (const auto& [name, values] : mesh.faceArrays) {
+        std::vector<double>& copied = cut.faceArrays[name];
+        for (uint32_t f : sourceFace) copied.push_back(values[f]);
+    }
+    for (const auto& [path, clusters] : mesh.fileClusters) {
+        FileClusters& copied = cut.fileClusters[path] = clusters;
+        copied.clusterOfFace.clear();
+        for (uint32_t f : sourceFace) copied.clusterOfFace.push_back(clusters.clusterOfFace[f]);
+    }
+    mesh = std::move(cut);
+    return meshletOfNewFace;
+}
+
+}  // namespace
+
+AppliedMeshlets applyMeshlets(Mesh& mesh, const MeshletArrays& arrays) {
+    const size_t fileVertexCount = mesh.fileVertices.empty() ? mesh.positions.size() : mesh.fileVertices.size();
+    checkRanges(arrays, fileVertexCount);
+    auto meshVertex = [&](uint32_t fileVertex) { return mesh.fileVertices.empty() ? fileVertex : mesh.fileVertices[fileVertex]; };
+    const Rows around = facesAroundVertices(mesh);
+    std::vector<uint32_t> meshletOfFace(mesh.faceCount(), kNone);
+    std::unordered_map<uint32_t, std::vector<Piece>> pieces;  // polygons' triangles
+    for (uint32_t m = 0; m < arrays.meshlets.size(); ++m) {
+        const auto [vertexOffset, triangleOffset, vertexCount, triangleCount] = arrays.meshlets[m];
+        for (uint32_t t = 0; t < triangleCount; ++t) {
+            const uint8_t* local = &arrays.triangles[triangleOffset + 3 * t];
+            std::array<uint32_t, 3> corners{};
+            for (int k = 0; k < 3; ++k) corners[k] = meshVertex(arrays.vertices[vertexOffset + local[k]]);
+            const std::array<uint32_t, 3> key = sortedCorners(corners[0], corners[1], corners[2]);
+            uint32_t taken = kNone;
+            const uint32_t f = faceOfTriangle(mesh, around, meshletOfFace, key, taken);
+            const std::string where = triangleName(m, t) + " (vertices " + std::to_string(key[0]) + ", " + std::to_string(key[1]) + ", " +
+                                      std::to_string(key[2]) + " of the mesh)";
+            if (taken != kNone)
+                throw MeshletError(where + ": its face " + std::to_string(taken) + " is already in " + meshletName(meshletOfFace[taken]));
+            if (f == kNone) throw MeshletError(where + ": no face of the mesh has these three corners");
+            if (mesh.faceSize(f) == 3) {
+                meshletOfFace[f] = m;
+                continue;
+            }
+            std::vector<Piece>& held = pieces[f];
+            for (const Piece& piece : held)
+                if (piece.corners == key)
+                    throw MeshletError(where + ": this triangle of face " + std::to_string(f) + " is already in " + meshletName(piece.meshlet));
+            held.push_back({key, m});
+        }
+    }
+    // Polygons: whole in one meshlet, or cut where meshlets split them.
+    std::unordered_map<uint32_t, std::vector<Piece>> cuts;
+    for (auto& [f, held] : pieces) {
+        if (!piecesTile(mesh, f, held)) {
+            std::string meshlets;
+            for (const Piece& piece : held) meshlets += (meshlets.empty() ? "" : ", ") + std::to_string(piece.meshlet);
+            throw MeshletError("face " + std::to_string(f) + " (a polygon of " + std::to_string(mesh.faceSize(f)) + " corners): the " +
+                               std::to_string(held.size()) + " triangles of meshlets " + meshlets +
+                               " do not cut it into triangles (it needs " + std::to_string(mesh.faceSize(f) - 2) +
+                               " that tile it; the rest of it is in no meshlet)");
+        }
+        const bool split = std::any_of(held.begin(), held.end(), [&](const Piece& piece) { return piece.meshlet != held[0].meshlet; });
+        if (!split) {
+            meshletOfFace[f] = held[0].meshlet;
+            continue;
+        }
+        std::sort(held.begin(), held.end(), [](const Piece& a, const Piece& b) { return a.corners < b.corners; });
+        cuts.emplace(f, held);
+    }
+    std::vector<uint32_t> missing;
+    for (uint32_t f = 0; f < mesh.faceCount(); ++f)
+        if (meshletOfFace[f] == kNone && !cuts.count(f)) missing.push_back(f);
+    if (!missing.empty())
+        throw MeshletError(std::to_string(missing.size()) + (missing.size() == 1 ? " face is" : " faces are") + " in no meshlet: face" +
+                           (missing.size() == 1 ? " " : "s ") + firstFew(missing));
+    AppliedMeshlets applied;
+    applied.cutPolygons = cuts.size();
+    applied.clusters.clusterCount = uint32_t(arrays.meshlets.size());
+    applied.clusters.bounds = arrays.bounds;
+    applied.clusters.clusterOfFace = cuts.empty() ? std::move(meshletOfFace) : cutPolygons(mesh, meshletOfFace, cuts);
+    return applied;
+}
+
+MeshletArrays meshletsOfPartition(const Mesh& mesh, const Partition& partition) {
+    const ClusterFaces rows = facesByCluster(partition);
+    MeshletArrays arrays;
+    std::vector<uint32_t> localOf(mesh.positions.size(), kNone);
+    for (uint32_t c = 0; c < partition.clusterCount; ++c) {
+        const uint32_t vertexOffset = uint32_t(arrays.vertices.size()), triangleOffset = uint32_t(arrays.triangles.size());
+        auto local = [&](uint32_t v) {
+            if (localOf[v] == kNone) localOf[v] = uint32_t(arrays.vertices.size()) - vertexOffset, arrays.vertices.push_back(v);
+            return localOf[v];
+        };
+        uint32_t triangleCount = 0;
+        for (uint32_t i = rows.starts[c]; i < rows.starts[c + 1]; ++i) {
+            const uint32_t* corners = mesh.faceBegin(rows.faces[i]);
+            for (size_t k = 0; k < mesh.faceSize(rows.faces[i]); ++k) local(corners[k]);
+            for (size_t k = 1; k + 1 < mesh.faceSize(rows.faces[i]); ++k, ++triangleCount)
+                for (uint32_t v : {corners[0], corners[k], corners[k + 1]}) arrays.triangles.push_back(uint8_t(localOf[v]));
+        }
+        const uint32_t vertexCount = uint32_t(arrays.vertices.size()) - vertexOffset;
+        if (vertexCount > 256)
+            throw std::invalid_argument("cluster " + std::to_string(c) + " uses " + std::to_string(vertexCount) +
+                                        " vertices: a meshlet's triangles address at most 256 (one byte a local index)");
+        for (uint32_t i = vertexOffset; i < arrays.vertices.size(); ++i) localOf[arrays.vertices[i]] = kNone;
+        // Each meshlet's triangles start on a multiple of 4 bytes, as meshopt_buildMeshlets lays them out.
+        arrays.triangles.resize((arrays.triangles.size() + 3) & ~size_t(3), 0);
+        arrays.meshlets.push_back({vertexOffset, triangleOffset, vertexCount, triangleCount});
+    }
+    return arrays;
+}
+
+}  // namespace conescope
