@@ -12,7 +12,10 @@
 
 namespace conescope {
 
-enum class CullTest { Oracle, Vertices, Aabb, AabbFast, Sphere, Apex, MeshoptSphere, Octagon };
+// The last four read records of their own (RecordTests.h): meshoptimizer's meshopt_Bounds tested as
+// shaders test it, cadscene's packed box and cone, and the octagon in 16 bytes.
+enum class CullTest { Oracle, Vertices, Aabb, AabbFast, Sphere, Apex, MeshoptSphere, Octagon, MeshoptApexF32, MeshoptSphereS8, CadsceneBoxS8,
+                      OctagonCompact };
 
 // Margin added to every threshold a cluster test compares against: it absorbs the rounding of the
 // double-precision dot products so that a face exactly edge-on is never culled.

@@ -8,6 +8,7 @@
 
 #include "BatchCulling.h"
 #include "FileBuilder.h"
+#include "RecordTests.h"
 #include "SettingsSchema.h"
 
 namespace conescope {
@@ -124,6 +125,7 @@ ClusterSet buildClusters(const PreparedMesh& prepared, const Settings& settings,
         clusters.bounds = computeClusterBounds(prepared.mesh(), prepared.world, prepared.faces, clusters.partition, cone, settings.sphere);
         clusters.boundsSeconds = secondsSince(start);
     }
+    useStoredMeshletBounds(clusters.bounds, prepared.mesh(), settings);
     report(progress, 0.9, "cull map (" + toString(cone) + ")");
     clusters.cullMap = computeCullMap(clusters.bounds);
     report(progress, 1.0, "clusters ready");
@@ -202,6 +204,7 @@ long viewMissingCluster(const PreparedMesh& prepared, const ClusterSet& clusters
         const CullTest test = displayedTest(settings);
         const bool culled = culledInBatch(views[v], test) ? cullClusters(input, views[v], test)[cluster] != 0
                                                           : cullCluster(input, cluster, views[v], test);
+        if (culled && front > 0) return long(v);  // a false cull (an engine's record): the worst there is
         if (back == 0 || culled) continue;
         if (front == 0) return long(v);
         if (partitionLoss < 0) partitionLoss = long(v);
@@ -269,9 +272,9 @@ RunStatistics measureRun(const PreparedMesh& prepared, const ClusterSet& cluster
         // The displayed cone's bounds are built already; the other cones get theirs for the same partition.
         const bool built = cone == displayedCone(clusters.settings) && settings.sphere == clusters.settings.sphere;
         if (!built) report(progress, double(step) / double(steps), "bounds (" + toString(cone) + ")");
-        const ClusterBounds bounds = built ? ClusterBounds()
-                                           : computeClusterBounds(prepared.mesh(), prepared.world, prepared.faces,
-                                                                  clusters.partition, cone, settings.sphere);
+        ClusterBounds bounds = built ? ClusterBounds()
+                                     : computeClusterBounds(prepared.mesh(), prepared.world, prepared.faces, clusters.partition, cone, settings.sphere);
+        if (!built) useStoredMeshletBounds(bounds, prepared.mesh(), settings);
         const CullingInput input{prepared.mesh(), prepared.world, prepared.faces, built ? clusters.bounds : bounds};
         if (!built) report(progress, double(step) / double(steps), "cull map (" + toString(cone) + ")");
         const CullMap computed = built ? CullMap() : computeCullMap(input.bounds);
@@ -321,7 +324,8 @@ std::map<std::string, std::vector<double>> partitionFaceArrays(const PreparedMes
     }
     spread("sphere_radius", [&](uint32_t c) { return bounds.spheres[c].radius; });
     const CullMap& map = clusters.cullMap;
-    spread("cull_fraction", [&](uint32_t c) { return cullFraction(map, c, displayedTest(clusters.settings)); });
+    const CullingInput input = cullingInput(prepared, clusters);
+    spread("cull_fraction", [&](uint32_t c) { return testCullFraction(map, input, c, displayedTest(clusters.settings)); });
     spread("oracle_fraction", [&](uint32_t c) { return map.oracleFraction[c]; });
     return arrays;
 }

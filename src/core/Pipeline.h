@@ -113,9 +113,11 @@ glm::dvec3 startingEyePosition(const Aabb& worldBox, const Settings& settings);
 TestStatistics measureOrbit(const PreparedMesh& prepared, const ClusterSet& clusters, const Settings& settings,
                             const ProgressCallback& progress = {});
 
-// The first orbit view from which the displayed test draws `cluster` although every face faces away
-// (a miss: the test's loss); else the first from which it is drawn holding back faces and a visible
-// one (the partition's loss); -1 when it is never lost. Where to put the eye to see why it costs.
+// The first orbit view from which the displayed test culls `cluster` holding a visible face (a
+// false cull, only an engine's record makes one) or draws it although every face faces away (a
+// miss: the test's loss), whichever comes first; else the first from which it is drawn holding back
+// faces and a visible one (the partition's loss); -1 when it is never lost. Where to put the eye to
+// see why it costs.
 long viewMissingCluster(const PreparedMesh& prepared, const ClusterSet& clusters, const Settings& settings, uint32_t cluster);
 
 // The settings for a statistics export: the current settings with the eye set (current eye) or

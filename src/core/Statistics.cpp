@@ -9,6 +9,7 @@
 #include "ClusterOptimizer.h"
 #include "ExpectedCull.h"
 #include "FileBuilder.h"
+#include "RecordTests.h"
 
 namespace conescope {
 
@@ -69,6 +70,8 @@ TestStatistics measureCulling(const CullingInput& input, const std::vector<Eye>&
     TestStatistics result;
     result.cone = bounds.coneMethod;
     result.test = test;
+    result.bytesPerCluster = recordBytes(test);
+    result.engineRecord = reproducesEngineRecord(test);
     result.clusters.resize(clusterCount);
     for (uint32_t c = 0; c < clusterCount; ++c) {
         ClusterStatistics& cluster = result.clusters[c];
@@ -93,7 +96,9 @@ TestStatistics measureCulling(const CullingInput& input, const std::vector<Eye>&
     }
 
     // The batched kernel reads the bounds as float arrays: made once for all the views.
-    const bool anyBatched = std::any_of(views.begin(), views.end(), [&](const Eye& eye) { return culledInBatch(eye, test); });
+    // The compact octagon's float original is the batched octagon test.
+    const CullTest batchedTest = test == CullTest::OctagonCompact ? CullTest::Octagon : test;
+    const bool anyBatched = std::any_of(views.begin(), views.end(), [&](const Eye& eye) { return culledInBatch(eye, batchedTest); });
     const ClusterBatch batch = anyBatched ? makeClusterBatch(bounds) : ClusterBatch();
     const CullingInput batched{input.mesh, input.world, input.faces, input.bounds, anyBatched ? &batch : input.batch};
     double totalNanoseconds = 0.0;
@@ -106,6 +111,7 @@ TestStatistics measureCulling(const CullingInput& input, const std::vector<Eye>&
         const std::vector<uint8_t> culled = cullClusters(batched, eye, test);
         const double nanoseconds = std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start).count();
         totalNanoseconds += nanoseconds;
+        const std::vector<uint8_t> floatCulled = floatOriginalDecisions(batched, eye, test);
 
         ViewStatistics view;
         view.view = v;
@@ -129,6 +135,10 @@ TestStatistics measureCulling(const CullingInput& input, const std::vector<Eye>&
                 cluster.timesMissed += backFacing;
                 view.testLossTriangles += truth.backTriangles[c];
                 cluster.testLossTriangles += truth.backTriangles[c];
+                if (!floatCulled.empty() && floatCulled[c]) {
+                    view.quantisationLossTriangles += truth.backTriangles[c];
+                    cluster.quantisationLossTriangles += truth.backTriangles[c];
+                }
             } else {
                 view.partitionLossTriangles += truth.backTriangles[c];
                 cluster.partitionLossTriangles += truth.backTriangles[c];
@@ -138,6 +148,7 @@ TestStatistics measureCulling(const CullingInput& input, const std::vector<Eye>&
         result.meanViewEfficiency += view.efficiency / double(views.size());
         result.testLossTriangles += view.testLossTriangles;
         result.partitionLossTriangles += view.partitionLossTriangles;
+        result.quantisationLossTriangles += view.quantisationLossTriangles;
         result.clustersCulled += view.clustersCulled;
         result.trianglesCulled += view.trianglesCulled;
         result.backFacingTriangles += view.backFacingTriangles;
@@ -146,6 +157,9 @@ TestStatistics measureCulling(const CullingInput& input, const std::vector<Eye>&
         result.views.push_back(view);
     }
     result.efficiency = cullEfficiency(result.trianglesCulled, result.backFacingTriangles);
+    // Own records' shares come from the records; addCullMap fills the others' from the cull map.
+    if (readsOwnRecord(test))
+        for (ClusterStatistics& cluster : result.clusters) cluster.cullFraction = ownRecordCullShare(input, cluster.cluster, test);
     result.nanosecondsPerCluster =
         clusterCount && !views.empty() ? totalNanoseconds / double(clusterCount * views.size()) : 0.0;
     return result;
@@ -154,7 +168,7 @@ TestStatistics measureCulling(const CullingInput& input, const std::vector<Eye>&
 void addCullMap(TestStatistics& statistics, const CullMap& map) {
     double cull = 0.0, oracle = 0.0, triangles = 0.0;
     for (ClusterStatistics& cluster : statistics.clusters) {
-        cluster.cullFraction = cullFraction(map, cluster.cluster, statistics.test);
+        if (!readsOwnRecord(statistics.test)) cluster.cullFraction = cullFraction(map, cluster.cluster, statistics.test);
         cluster.oracleFraction = map.oracleFraction[cluster.cluster];
         cull += double(cluster.triangles) * cluster.cullFraction;
         oracle += double(cluster.triangles) * cluster.oracleFraction;

@@ -7,7 +7,7 @@
 #include <fstream>
 
 #include "core/MeshletArrays.h"
-#include "core/MeshoptBounds.h"
+#include "core/MeshoptRecords.h"
 #include "io/FileChecks.h"
 #include "io/MeshWriter.h"
 #include "io/MeshletFiles.h"

@@ -53,6 +53,10 @@ std::vector<std::string> splitLines(const std::string& text) {
 
 // fork + exec rather than system(): the arguments reach the program exactly as given.
 CliRun runCli(const std::vector<std::string>& arguments, const std::vector<std::string>& environment) {
+    return runProgram(CONESCOPE_CLI_PATH, arguments, environment);
+}
+
+CliRun runProgram(const std::string& path, const std::vector<std::string>& arguments, const std::vector<std::string>& environment) {
     ScratchDirectory capture;
     const std::string outPath = capture.file("stdout"), errPath = capture.file("stderr");
     const pid_t child = ::fork();
@@ -68,7 +72,7 @@ CliRun runCli(const std::vector<std::string>& arguments, const std::vector<std::
             ::setenv(variable.substr(0, equals).c_str(), variable.substr(equals + 1).c_str(), 1);
         }
         std::vector<char*> argv;
-        std::string program = CONESCOPE_CLI_PATH;
+        std::string program = path;
         argv.push_back(program.data());
         std::vector<std::string> copies = arguments;
         for (std::string& argument : copies) argv.push_back(argument.data());

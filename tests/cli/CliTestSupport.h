@@ -38,6 +38,8 @@ struct CliRun {
 // Runs conescope-cli with these arguments (each passed as one word, no shell expansion), and these
 // environment variables ("NAME=value") set besides the test's own.
 CliRun runCli(const std::vector<std::string>& arguments, const std::vector<std::string>& environment = {});
+// The same for another program of the build.
+CliRun runProgram(const std::string& path, const std::vector<std::string>& arguments, const std::vector<std::string>& environment = {});
 
 std::string readTextFile(const std::string& path);
 
