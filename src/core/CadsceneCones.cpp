@@ -85,6 +85,12 @@ float smallestDot(const std::vector<glm::vec3>& normals, const glm::vec3& axis) 
     return smallest;
 }
 
+// float to int as the sample's x86 compilers convert (cvttss2si): truncated, and INT_MIN for NaN or
+// out of range, where C++ leaves the conversion undefined.
+int32_t truncated(float value) {
+    return value >= -2147483648.0f && value < 2147483648.0f ? int32_t(value) : std::numeric_limits<int32_t>::min();
+}
+
 // A flat object has no extent on some axis: its grid there is the whole 0..255.
 float onGrid(float value, float low, float extent, float fallback) { return extent > 0.0f ? (value - low) / extent : fallback; }
 
@@ -111,8 +117,8 @@ CadsceneRecord cadsceneRecord(const std::vector<uint32_t>& triangles, const std:
     const int gridLast = 255;
     for (int k = 0; k < 3; ++k) {
         const float low = onGrid(t.box.min[k], object.min[k], extent[k], 0.0f), high = onGrid(t.box.max[k], object.min[k], extent[k], 1.0f);
-        record.boxMin[k] = uint8_t(std::max(0, std::min(int(std::trunc(low * float(gridLast))), gridLast - 1)));
-        record.boxMax[k] = uint8_t(std::max(0, std::min(int(std::ceil(high * float(gridLast))), gridLast)));
+        record.boxMin[k] = uint8_t(std::max(0, std::min(truncated(std::trunc(low * float(gridLast))), gridLast - 1)));
+        record.boxMax[k] = uint8_t(std::max(0, std::min(truncated(std::ceil(high * float(gridLast))), gridLast)));
     }
     const glm::vec3 average = averageAxis(t.sum);
     if (average == glm::vec3(0.0f)) {
@@ -122,13 +128,13 @@ CadsceneRecord cadsceneRecord(const std::vector<uint32_t>& triangles, const std:
         return record;
     }
     const glm::vec3 packed = toOctPrecise(average);
-    record.coneOctX = int8_t(std::min(127, std::max(-127, int32_t(packed.x * 127.0f))));
-    record.coneOctY = int8_t(std::min(127, std::max(-127, int32_t(packed.y * 127.0f))));
+    record.coneOctX = int8_t(std::min(127, std::max(-127, truncated(packed.x * 127.0f))));
+    record.coneOctY = int8_t(std::min(127, std::max(-127, truncated(packed.y * 127.0f))));
     const glm::vec3 axis = fromOct(glm::vec3(float(record.coneOctX) / 127.0f, float(record.coneOctY) / 127.0f, 0.0f));
     // The sample's safety delta for the quantised axis, then -sin(angle) when the cone is narrower than a hemisphere.
     const float mindot = std::max(-1.0f, smallestDot(t.normals, axis) - 1.0f / 127.0f);
     record.coneAngle = 127;
-    if (mindot > 0.0f) record.coneAngle = int8_t(std::max(-127, std::min(127, int32_t(-std::sin(std::acos(mindot)) * 127.0f))));
+    if (mindot > 0.0f) record.coneAngle = int8_t(std::max(-127, std::min(127, truncated(-std::sin(std::acos(mindot)) * 127.0f))));
     return record;
 }
 

@@ -41,7 +41,9 @@ struct ReadBits {
 double signNotZero(double value) { return value >= 0.0 ? 1.0 : -1.0; }
 
 std::array<int, 2> encodeAxis(const glm::dvec3& axis) {
-    glm::dvec2 p = glm::dvec2(axis.x, axis.y) / (std::abs(axis.x) + std::abs(axis.y) + std::abs(axis.z));
+    const double sum = std::abs(axis.x) + std::abs(axis.y) + std::abs(axis.z);
+    if (!(sum > 0.0) || !std::isfinite(sum)) return {0, 0};
+    glm::dvec2 p = glm::dvec2(axis.x, axis.y) / sum;
     if (axis.z <= 0.0) p = glm::dvec2((1.0 - std::abs(p.y)) * signNotZero(p.x), (1.0 - std::abs(p.x)) * signNotZero(p.y));
     return {int(std::lround(std::clamp(p.x, -1.0, 1.0) * kAxisLast)), int(std::lround(std::clamp(p.y, -1.0, 1.0) * kAxisLast))};
 }
@@ -57,6 +59,7 @@ double stripValue(int code) { return std::tan(double(code) / kStripLast * M_PI -
 
 // The code whose value is at least (up) or at most (down) `value`, as near as the steps allow.
 int stripCode(double value, bool up) {
+    if (std::isnan(value)) return up ? kStripLast : 0;  // open: never culls
     const double exact = (std::atan(value) + M_PI / 2.0) / M_PI * kStripLast;
     int code = int(std::clamp(up ? std::ceil(exact) : std::floor(exact), 0.0, double(kStripLast)));
     while (up && code < kStripLast && stripValue(code) < value) ++code;

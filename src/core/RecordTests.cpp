@@ -39,7 +39,7 @@ bool reproducesEngineRecord(CullTest test) { return readsOwnRecord(test) && test
 size_t recordBytes(CullTest test) {
     switch (test) {
         case CullTest::Oracle: return 0;
-        case CullTest::Vertices: return 16;          // axis (3 floats), sin alpha; plus the cluster's vertices, which the mesh holds
+        case CullTest::Vertices: return 16;          // axis (3 floats), sin alpha; statistics add 12 per vertex it reads
         case CullTest::Aabb:
         case CullTest::AabbFast: return 40;          // axis, sin alpha, box (6 floats)
         case CullTest::Sphere: return 36;            // axis, sin and cos alpha, centre, radius

@@ -157,6 +157,8 @@ TestStatistics measureCulling(const CullingInput& input, const std::vector<Eye>&
         result.views.push_back(view);
     }
     result.efficiency = cullEfficiency(result.trianglesCulled, result.backFacingTriangles);
+    // The vertices test reads the cluster's vertices besides its cone: 12 bytes each, on average.
+    if (test == CullTest::Vertices) result.bytesPerCluster += size_t(std::lround(12.0 * result.meanClusterVertices));
     // Own records' shares come from the records; addCullMap fills the others' from the cull map.
     if (readsOwnRecord(test))
         for (ClusterStatistics& cluster : result.clusters) cluster.cullFraction = ownRecordCullShare(input, cluster.cluster, test);
