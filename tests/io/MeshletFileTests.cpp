@@ -88,6 +88,11 @@ TEST(MeshletFiles, JsonAndBinaryReadBackWhatWasWritten) {
     EXPECT_EQ(meshletBinary(arrays).size(), 32u + 2 * 16 + 12 * 4 + 24 + 2 * 48);
 }
 
+TEST(MeshletFiles, TheFuzzersSeedsHoldTheGridsMeshlets) {
+    const std::string folder = std::string(CONESCOPE_TESTDATA_DIR) + "/meshlets/";
+    for (const char* name : {"grid.json", "grid.meshlets"}) expectSameArrays(readMeshletFile(folder + name), gridMeshlets());
+}
+
 TEST(MeshletFiles, ApplyGivesEachFaceItsMeshlet) {
     Mesh mesh = grid();
     const AppliedMeshlets applied = applyMeshlets(mesh, gridMeshlets());
