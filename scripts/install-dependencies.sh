@@ -9,8 +9,15 @@ packages=(
   # assimp decodes glTF for the reader (src/io) and counts triangles independently in the tests;
   # assimp-testmodels are files nobody here wrote (tests/io/AssimpModelsTests.cpp).
   libassimp-dev assimp-testmodels
+  # content hashes of meshes, so a batch run again skips what it has done (src/cli/BatchInputs.cpp)
+  libxxhash-dev
   xvfb xauth clang libclang-rt-14-dev
   time python3
+  # The Python module (python/): pybind11 builds it against Debian's Python; numpy and pandas are
+  # its arrays and tables, dask and distributed run batches on many machines, pytest tests it.
+  pybind11-dev python3-dev python3-numpy python3-pandas python3-dask python3-distributed python3-pytest
+  # The batch report's page test opens report.html in headless chromium.
+  chromium
 )
 
 missing=()

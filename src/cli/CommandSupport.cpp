@@ -6,6 +6,7 @@
 
 #include <unistd.h>
 
+#include "cli/MeshRuns.h"
 #include "cli/OutputFiles.h"
 #include "io/ClusterFiles.h"
 #include "io/MeshReader.h"
@@ -54,7 +55,7 @@ void warnAboutWinding(const RunStatistics& run, bool quiet) {
     if (run.settings.fixWinding)
         note(quiet, "--fix-winding flipped " + std::to_string(run.windingFixedFaces) + " faces (" + warning + ")");
     else
-        warn(warning + "; repair with --fix-winding");
+        warn(runWarnings(run).front());
 }
 
 // A count other than the one asked for makes every comparison at that count unfair.

@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include "cli/CommandSupport.h"
+#include "cli/MeshRuns.h"
 #include "cli/OutputFiles.h"
 #include "core/ClusterRanking.h"
 #include "core/MeshChecks.h"
@@ -71,36 +72,23 @@ void runStats(const StatsOptions& options) {
 }
 
 void runClusters(const ClustersOptions& options) {
-    Settings settings = options.run.toSettings();
-    // The table is about one (cone, test): the displayed ones.
-    settings.cones.resize(1);
-    settings.tests.resize(1);
+    const Settings settings = clusterTableSettings(options.run.toSettings());
     const ClusterSortKey key = parseClusterSortKey(options.sort);
     const Mesh mesh = readMeshNoting(options.mesh, options.quiet, {settings});
     const RunStatistics run = runStatistics(mesh, settings, fileName(options.mesh), stderrProgress(options.quiet));
     warnAboutWinding(run, options.quiet);
     warnAboutBudget(run);
     const TestStatistics& result = run.results.front();
-    const std::vector<uint32_t> order = rankClusters(result, key, options.top);
     std::ostringstream text;
     const std::string format = outputFormat(options.format, options.output, "text");
     if (format == "csv") {
-        writeClusterRowsCsv(result, order, text);
+        writeClusterRowsCsv(result, rankClusters(result, key, options.top), text);
     } else if (format == "json") {
-        text << nlohmann::json{{"mesh", meshSummary(options.mesh, mesh)},
-                               {"settings", settingsToJson(settings)},
-                               {"clusters", run.clusters},
-                               {"view_count", run.viewCount},
-                               {"cone", toString(result.cone)},
-                               {"test", toString(result.test)},
-                               {"sort", toString(key)},
-                               {"rows", clusterRowsToJson(result, order)}}
-                    .dump(2)
-             << '\n';
+        text << clusterTableJson(run, key, options.top).dump(2) << '\n';
     } else {
         writeStatisticsText(run, text, 0);
         text << "\nclusters by " << toString(key) << " (alpha* = never cullable):\n";
-        writeClusterTableText(result, order, text);
+        writeClusterTableText(result, rankClusters(result, key, options.top), text);
     }
     writeText(options.output, text.str());
     if (!options.output.empty()) note(options.quiet, "wrote " + options.output);

@@ -3,6 +3,7 @@
 
 #include "cli/CommandSupport.h"
 #include "cli/Commands.h"
+#include "cli/MeshRuns.h"
 #include "core/Comparison.h"
 #include "io/ComparisonIO.h"
 
@@ -16,31 +17,24 @@ void runCompare(const CompareOptions& options) {
     const std::string format = outputFormat(options.format, options.output, "json");
     const Mesh mesh = readMeshNoting(options.mesh, options.quiet, {settingsA, settingsB});
     const ProgressCallback progress = stderrProgress(options.quiet);
-    const PreparedMesh prepared = prepareMesh(std::make_shared<Mesh>(mesh), options.mesh, base.fixWinding, progress);
-    note(options.quiet, "building A's clusters (" + toString(settingsA.builder) + ")");
-    const ClusterSet a = buildClusters(prepared, settingsA, nullptr, progress);
-    note(options.quiet, "building B's clusters (" + toString(settingsB.builder) + ")");
-    const ClusterSet b = buildClusters(prepared, settingsB, nullptr, progress);
-    // Each side exactly as `stats` with its options would write it.
-    RunStatistics runA = measureRun(prepared, a, settingsA, progress);
-    RunStatistics runB = measureRun(prepared, b, settingsB, progress);
-    runA.meshName = runB.meshName = fileName(options.mesh);
-    warnAboutWinding(runA, options.quiet);
-    warnAboutBudget(runA, "A: ");
-    warnAboutBudget(runB, "B: ");
-    note(options.quiet, "comparing A and B");
-    const Comparison comparison = compareClusterSets(prepared, a, b, viewsFor(base, prepared.box), progress);
+    const ComparedRuns runs = compareMesh(mesh, options.mesh, settingsA, settingsB, base, progress, [&](char side) {
+        const Settings& settings = side == 'A' ? settingsA : settingsB;
+        note(options.quiet, std::string("building ") + side + "'s clusters (" + toString(settings.builder) + ")");
+    });
+    warnAboutWinding(runs.a, options.quiet);
+    warnAboutBudget(runs.a, "A: ");
+    warnAboutBudget(runs.b, "B: ");
     // Unequal counts make the comparison unfair: said even with --quiet.
-    const std::string warning = clusterCountWarning(comparison);
+    const std::string warning = clusterCountWarning(runs.comparison);
     if (!warning.empty()) warn(warning);
 
     std::ostringstream text;
     if (format == "csv")
-        writeComparisonCsv(comparison, text);
+        writeComparisonCsv(runs.comparison, text);
     else if (format == "text")
-        writeComparisonText(runA, runB, comparison, base, text);
+        writeComparisonText(runs.a, runs.b, runs.comparison, base, text);
     else
-        writeComparisonJson(runA, runB, comparison, options.detail, text);
+        writeComparisonJson(runs.a, runs.b, runs.comparison, options.detail, text);
     writeText(options.output, text.str());
     if (!options.output.empty()) note(options.quiet, "wrote " + options.output);
 }

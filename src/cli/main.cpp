@@ -5,6 +5,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "cli/Batch.h"
 #include "cli/Commands.h"
 #include "cli/OutputFiles.h"
 #include "core/ClusterRanking.h"
@@ -133,6 +134,10 @@ int main(int argc, char** argv) {
         ->check(meshOutputValidator({".json", ".meshlets", ".obj", ".gltf", ".txt", ".vtp", ".vtk"}));
     partitionCommand->add_flag("-q,--quiet", partition.quiet, "No progress messages on stderr");
 
+    BatchOptions batch;
+    BatchWorkerOptions batchWorker;
+    const BatchCommands batchCommands = addBatchCommands(app, batch, batchWorker);
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& error) {
@@ -146,6 +151,8 @@ int main(int argc, char** argv) {
         if (compareCommand->parsed()) runCompare(compare);
         if (checkCommand->parsed()) runCheck(check);
         if (partitionCommand->parsed()) runPartition(partition);
+        if (batchCommands.batch->parsed()) return runBatch(batch);
+        if (batchCommands.worker->parsed()) return runBatchWorker(batchWorker);
     } catch (const std::invalid_argument& error) {
         // Settings the core refused (e.g. meshoptimizer's limits): still a usage problem.
         printError(error.what());

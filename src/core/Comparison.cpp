@@ -171,4 +171,15 @@ Comparison compareAtEye(const PreparedMesh& prepared, const ClusterSet& a, const
     return comparison;
 }
 
+ComparedRuns runComparison(const PreparedMesh& prepared, const Settings& a, const Settings& b, const Settings& shared,
+                           const ProgressCallback& progress, const std::function<void(char side)>& building) {
+    if (building) building('A');
+    const ClusterSet clustersA = buildClusters(prepared, a, nullptr, progress);
+    if (building) building('B');
+    const ClusterSet clustersB = buildClusters(prepared, b, nullptr, progress);
+    ComparedRuns runs{measureRun(prepared, clustersA, a, progress), measureRun(prepared, clustersB, b, progress), {}};
+    runs.comparison = compareClusterSets(prepared, clustersA, clustersB, viewsFor(shared, prepared.box), progress);
+    return runs;
+}
+
 }  // namespace conescope

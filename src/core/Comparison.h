@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -72,5 +73,16 @@ Comparison compareClusterSets(const PreparedMesh& prepared, const ClusterSet& a,
 // headless screenshot once, without culling either side again.
 Comparison compareAtEye(const PreparedMesh& prepared, const ClusterSet& a, const std::vector<uint8_t>& culledA,
                         const ClusterSet& b, const std::vector<uint8_t>& culledB, const Eye& eye, std::vector<FaceDiff>& diff);
+
+// A whole comparison from a prepared mesh: each side's clusters and statistics exactly as `stats` with
+// its settings makes them (measureRun), and what only each culls over the views of `shared` (the
+// options both sides share). What `conescope-cli compare`, its batch columns and the Python module give.
+struct ComparedRuns {
+    RunStatistics a, b;
+    Comparison comparison;
+};
+// `building` hears 'A' or 'B' before that side's clusters are built (for the user: the slow part).
+ComparedRuns runComparison(const PreparedMesh& prepared, const Settings& a, const Settings& b, const Settings& shared,
+                           const ProgressCallback& progress = {}, const std::function<void(char side)>& building = {});
 
 }  // namespace conescope

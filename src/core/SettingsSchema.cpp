@@ -295,6 +295,17 @@ void parseSetting(const SettingField& field, const std::string& text, Settings& 
     }
 }
 
+std::vector<std::string> settingArguments(const Settings& settings) {
+    std::vector<std::string> arguments;
+    for (const SettingField& field : settingFields()) {
+        const std::string text = settingText(field, settings);
+        if (text == settingText(field, Settings{})) continue;
+        arguments.push_back("--" + field.flag);
+        if (field.kind != SettingKind::Flag) arguments.push_back(text);
+    }
+    return arguments;
+}
+
 std::string settingHelp(const SettingField& field) {
     std::string help = field.help;
     if (field.kind == SettingKind::Name) help += ": " + joined(field.names(), ", ");

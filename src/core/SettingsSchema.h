@@ -70,6 +70,10 @@ std::string settingText(const SettingField& field, const Settings& settings);
 // Parses `text` as the field's kind and domain and stores it in `settings`. Throws
 // std::invalid_argument with a message naming the flag and what is accepted.
 void parseSetting(const SettingField& field, const std::string& text, Settings& settings);
+// The command-line arguments that give these settings: "--flag" "text" for every field whose text
+// differs from the default's (a flag alone when on), in the schema's order. parseSetting reads each
+// text back to the same value, so a program started with them (a batch's workers) runs the same.
+std::vector<std::string> settingArguments(const Settings& settings);
 // The help line with the accepted names (for name fields); the default is settingText(field, Settings{}).
 std::string settingHelp(const SettingField& field);
 

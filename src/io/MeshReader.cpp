@@ -47,6 +47,25 @@ Mesh readByExtension(const std::string& path, const std::string& extension, Read
     return vtkFormats().read(path, extension);
 }
 
+// What every mesh goes through after its reader: at least one face, validateMesh, and vertices at equal
+// positions merged. `cornersPerFace`: the format stores a corner per face, so merging is no news.
+void finishMesh(MeshFile& file, const std::string& path, bool cornersPerFace) {
+    Mesh& mesh = file.mesh;
+    if (mesh.faceCount() == 0) throw MeshReadError(path + ": no faces");
+    try {
+        validateMesh(mesh);
+    } catch (const std::runtime_error& error) {
+        throw MeshReadError(path + ": " + error.what());
+    }
+    // Clusters never cross components, so vertices a file splits at one position (at normal or
+    // texture seams, or a corner per face as STL and glTF store them) would cut the surface apart
+    // and make every builder look perfect. Vertices are positions, as OBJ's `v` entries are.
+    const size_t merged = mergeEqualPositions(mesh);
+    if (merged > 0 && !cornersPerFace)
+        file.notes.push_back("merged " + std::to_string(merged) + " vertices into others at the same position (the file splits "
+                             "them, e.g. at normal or texture seams), so faces meeting there are neighbours");
+}
+
 }  // namespace
 
 Mesh readMesh(const std::string& path) { return readMeshFile(path).mesh; }
@@ -72,20 +91,13 @@ MeshFile readMeshFile(const std::string& path, const ProgressCallback& progress)
     } catch (const std::exception& error) {
         throw MeshReadError(path + ": " + error.what());
     }
-    if (mesh.faceCount() == 0) throw MeshReadError(path + ": no faces");
-    try {
-        validateMesh(mesh);
-    } catch (const std::runtime_error& error) {
-        throw MeshReadError(path + ": " + error.what());
-    }
-    // Clusters never cross components, so vertices a file splits at one position (at normal or
-    // texture seams, or a corner per face as STL and glTF store them) would cut the surface apart
-    // and make every builder look perfect. Vertices are positions, as OBJ's `v` entries are.
-    const size_t merged = mergeEqualPositions(mesh);
-    const bool cornersPerFace = extension == ".stl" || extension == ".gltf" || extension == ".glb";
-    if (merged > 0 && !cornersPerFace)
-        file.notes.push_back("merged " + std::to_string(merged) + " vertices into others at the same position (the file splits "
-                             "them, e.g. at normal or texture seams), so faces meeting there are neighbours");
+    finishMesh(file, path, extension == ".stl" || extension == ".gltf" || extension == ".glb");
+    return file;
+}
+
+MeshFile meshFromArrays(Mesh mesh, const std::string& name) {
+    MeshFile file{std::move(mesh), {}};
+    finishMesh(file, name, false);
     return file;
 }
 

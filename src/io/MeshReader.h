@@ -38,6 +38,11 @@ struct MeshFile {
 // `progress`; when it returns false the read stops with OperationCancelled (core/Progress.h).
 MeshFile readMeshFile(const std::string& path, const ProgressCallback& progress = {});
 
+// A mesh made in memory (the Python module's arrays) checked and merged as readMeshFile does a file's
+// mesh after its reader, so the same faces give the same numbers. `name` starts the messages.
+// Throws MeshReadError.
+MeshFile meshFromArrays(Mesh mesh, const std::string& name);
+
 // Lower-case extensions readMesh accepts, with the dot: {".off", ".ply", ...}.
 std::vector<std::string> supportedMeshExtensions();
 

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cerrno>
 #include <fstream>
 #include <random>
 #include <sstream>
@@ -52,13 +53,13 @@ std::vector<std::string> splitLines(const std::string& text) {
 }
 
 // fork + exec rather than system(): the arguments reach the program exactly as given.
-CliRun runCli(const std::vector<std::string>& arguments, const std::vector<std::string>& environment) {
-    return runProgram(CONESCOPE_CLI_PATH, arguments, environment);
+pid_t startCli(const std::vector<std::string>& arguments, const std::vector<std::string>& environment,
+               const std::string& outPath, const std::string& errPath) {
+    return startProgram(CONESCOPE_CLI_PATH, arguments, environment, outPath, errPath);
 }
 
-CliRun runProgram(const std::string& path, const std::vector<std::string>& arguments, const std::vector<std::string>& environment) {
-    ScratchDirectory capture;
-    const std::string outPath = capture.file("stdout"), errPath = capture.file("stderr");
+pid_t startProgram(const std::string& path, const std::vector<std::string>& arguments, const std::vector<std::string>& environment,
+                   const std::string& outPath, const std::string& errPath) {
     const pid_t child = ::fork();
     if (child < 0) throw std::runtime_error("fork failed");
     if (child == 0) {
@@ -80,10 +81,25 @@ CliRun runProgram(const std::string& path, const std::vector<std::string>& argum
         ::execv(program.c_str(), argv.data());
         ::_exit(127);
     }
+    return child;
+}
+
+int waitCli(pid_t pid) {
     int status = 0;
-    ::waitpid(child, &status, 0);
+    while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+    }
+    return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
+CliRun runCli(const std::vector<std::string>& arguments, const std::vector<std::string>& environment) {
+    return runProgram(CONESCOPE_CLI_PATH, arguments, environment);
+}
+
+CliRun runProgram(const std::string& path, const std::vector<std::string>& arguments, const std::vector<std::string>& environment) {
+    ScratchDirectory capture;
+    const std::string outPath = capture.file("stdout"), errPath = capture.file("stderr");
     CliRun run;
-    run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    run.exitCode = waitCli(startProgram(path, arguments, environment, outPath, errPath));
     run.out = readTextFile(outPath);
     run.err = readTextFile(errPath);
     return run;

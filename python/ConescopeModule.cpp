@@ -1,0 +1,256 @@
+// conescope._conescope: the C++ side of the Python module. Every function here calls what the CLI's
+// commands call (cli/MeshRuns.h, cli/BatchJob.h) and returns the CLI's own text (its JSON, read by
+// json.loads in conescope/__init__.py) or its own cells, so a notebook gets the CLI's numbers. Settings
+// arrive as (name, text) pairs and are read by the settings schema, as the command line's are.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <memory>
+#include <set>
+#include <sstream>
+
+#include "cli/BatchInputs.h"
+#include "cli/BatchJob.h"
+#include "cli/MeshRuns.h"
+#include "cli/OutputFiles.h"
+#include "core/SettingsSchema.h"
+#include "io/BatchReport.h"
+#include "io/BatchTable.h"
+#include "io/ComparisonIO.h"
+#include "io/ClusterFiles.h"
+#include "io/MeshReader.h"
+#include "io/StatisticsIO.h"
+
+namespace py = pybind11;
+using namespace conescope;
+
+namespace {
+
+using SettingPairs = std::vector<std::pair<std::string, std::string>>;
+
+// A keyword as the schema names it: the JSON key or the flag, with underscores for dashes.
+const SettingField& fieldNamed(const std::string& name) {
+    std::string dashed = name;
+    std::replace(dashed.begin(), dashed.end(), '_', '-');
+    for (const SettingField& field : settingFields())
+        if (field.key == name || field.flag == name || field.flag == dashed) return field;
+    std::string names;
+    for (const SettingField& field : settingFields()) {
+        std::string flag = field.flag;
+        std::replace(flag.begin(), flag.end(), '-', '_');
+        names += (names.empty() ? "" : ", ") + flag;
+    }
+    throw std::invalid_argument("unknown setting '" + name + "' (expected one of: " + names + ")");
+}
+
+// The settings of keyword arguments, checked as the command line checks its options: the schema's
+// domain and message, each setting once, and the options that exclude each other.
+Settings settingsFrom(const SettingPairs& pairs) {
+    Settings settings;
+    std::set<std::string> given;
+    for (const auto& [name, text] : pairs) {
+        const SettingField& field = fieldNamed(name);
+        if (!given.insert(field.flag).second) throw std::invalid_argument("--" + field.flag + " is given twice");
+        parseSetting(field, text, settings);
+    }
+    for (const std::string& flag : given)
+        for (const std::string& excluded : settingField(flag).excludes)
+            if (given.count(excluded)) throw std::invalid_argument("--" + flag + " excludes --" + excluded);
+    return settings;
+}
+
+// Ctrl-C in Python stops a long run at its next progress report (on the main thread).
+bool keepGoing(double, const std::string&) {
+    py::gil_scoped_acquire gil;
+    return PyErr_CheckSignals() == 0;
+}
+
+// Runs `work` without the GIL, so other Python threads (a Dask worker's) go on meanwhile; a Ctrl-C
+// that cancelled it is raised as KeyboardInterrupt.
+template <typename Work>
+auto withoutGil(Work&& work) {
+    try {
+        py::gil_scoped_release release;
+        return work();
+    } catch (const OperationCancelled&) {
+        if (PyErr_Occurred()) throw py::error_already_set();
+        throw std::runtime_error("cancelled");
+    }
+}
+
+// A mesh from arrays: n x 3 positions, faces as an m x k integer array or a sequence of sequences,
+// optional per-face cluster ids; then the checks and merging every file's mesh gets.
+Mesh meshFromPython(py::array_t<float, py::array::c_style | py::array::forcecast> vertices, const py::object& faces,
+                    const py::object& clusterIds, const std::string& name) {
+    if (vertices.ndim() != 2 || vertices.shape(1) != 3) throw std::invalid_argument("vertices must be an n x 3 array");
+    Mesh mesh;
+    const auto v = vertices.unchecked<2>();
+    for (py::ssize_t k = 0; k < v.shape(0); ++k) mesh.positions.emplace_back(v(k, 0), v(k, 1), v(k, 2));
+    std::vector<uint32_t> corners;
+    size_t index = 0;
+    for (const py::handle face : faces) {
+        corners.clear();
+        for (const py::handle corner : face) {
+            const long long value = corner.cast<long long>();
+            if (value < 0 || value > static_cast<long long>(UINT32_MAX))
+                throw std::invalid_argument("faces[" + std::to_string(index) + "] has the vertex index " + std::to_string(value) +
+                                            ", outside [0, " + std::to_string(mesh.positions.size()) + ")");
+            corners.push_back(uint32_t(value));
+        }
+        mesh.addFace(corners.data(), corners.size());
+        ++index;
+    }
+    if (!clusterIds.is_none()) {
+        const auto ids = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(clusterIds);
+        if (!ids || ids.ndim() != 1 || size_t(ids.shape(0)) != mesh.faceCount())
+            throw std::invalid_argument("cluster_ids must hold one id per face (" + std::to_string(mesh.faceCount()) + ")");
+        mesh.faceArrays["cluster_id"].assign(ids.data(), ids.data() + ids.shape(0));
+    }
+    return meshFromArrays(std::move(mesh), name).mesh;
+}
+
+// A mesh read as the CLI reads it, with the file builder's cluster files of `settings`; the reader's
+// notes go to `notes`.
+Mesh readMeshForPython(const std::string& path, std::vector<std::string>& notes, const std::vector<Settings>& settings) {
+    MeshFile file = withoutGil([&] {
+        MeshFile read = readMeshFile(path, keepGoing);
+        for (const Settings& each : settings) readClusterFileOf(read.mesh, each, read.notes);
+        return read;
+    });
+    notes.insert(notes.end(), file.notes.begin(), file.notes.end());
+    return std::move(file.mesh);
+}
+
+// The CLI's text and what it would have said on stderr.
+using Document = std::pair<std::string, std::vector<std::string>>;
+
+Document statsDocument(const Mesh& mesh, const std::string& name, const SettingPairs& pairs, bool perView, bool perCluster,
+                       std::vector<std::string> notes) {
+    const Settings settings = settingsFrom(pairs);
+    const RunStatistics run = withoutGil([&] { return runStatistics(mesh, settings, name, keepGoing); });
+    for (const std::string& warning : cli::runWarnings(run)) notes.push_back(warning);
+    return {statisticsJsonText(run, {perView, perCluster}), notes};
+}
+
+Document clustersDocument(const Mesh& mesh, const std::string& name, const SettingPairs& pairs, const std::string& sort,
+                          size_t top, std::vector<std::string> notes) {
+    const Settings settings = cli::clusterTableSettings(settingsFrom(pairs));
+    const ClusterSortKey key = parseClusterSortKey(sort);
+    const RunStatistics run = withoutGil([&] { return runStatistics(mesh, settings, name, keepGoing); });
+    for (const std::string& warning : cli::runWarnings(run)) notes.push_back(warning);
+    return {cli::clusterTableJson(run, key, top).dump(2) + "\n", notes};
+}
+
+Document compareDocument(const Mesh& mesh, const std::string& name, const std::string& a, const std::string& b,
+                         const SettingPairs& pairs, bool perView, bool perCluster, std::vector<std::string> notes) {
+    const Settings base = settingsFrom(pairs);
+    const Settings settingsA = parseConfiguration(a, base), settingsB = parseConfiguration(b, base);
+    const ComparedRuns runs =
+        withoutGil([&] { return cli::compareMesh(mesh, name, settingsA, settingsB, base, keepGoing); });
+    for (const std::string& warning : cli::runWarnings(runs.a, "A: ")) notes.push_back(warning);
+    for (const std::string& warning : cli::runWarnings(runs.b, "B: ")) notes.push_back(warning);
+    const std::string countWarning = clusterCountWarning(runs.comparison);
+    if (!countWarning.empty()) notes.push_back(countWarning);
+    std::ostringstream text;
+    writeComparisonJson(runs.a, runs.b, runs.comparison, {perView, perCluster}, text);
+    return {text.str(), notes};
+}
+
+cli::BatchConfig batchConfigFrom(const SettingPairs& pairs, const std::string& compare, bool perView, bool perCluster) {
+    return cli::batchConfig(settingsFrom(pairs), compare, {perView, perCluster});
+}
+
+// One row of results.csv for a mesh, computed here (a Dask worker): the cells `conescope-cli batch`
+// gives it, its JSON files written into `folder` when one is given.
+BatchRow batchRow(const std::string& path, const std::string& folder, const SettingPairs& pairs, const std::string& compare,
+                       bool perView, bool perCluster) {
+    const cli::BatchConfig config = batchConfigFrom(pairs, compare, perView, perCluster);
+    const cli::BatchMesh mesh = cli::findBatchMeshes({path}).front();
+    BatchRow row = cli::batchRowStart(mesh, config);
+    cli::BatchJob job{path, "", ""};
+    if (!folder.empty()) {
+        job.json = (std::filesystem::path(folder) / row["json"]).string();
+        if (!compare.empty()) job.compareJson = (std::filesystem::path(folder) / row["compare_json"]).string();
+    }
+    const BatchRow cells = withoutGil([&] { return cli::runBatchJob(config, job); });
+    for (const auto& [key, value] : cells) row[key] = value;
+    return row;
+}
+
+BatchRow errorRow(const std::string& path, const std::string& kind, const std::string& message, const SettingPairs& pairs,
+                  const std::string& compare, bool perView, bool perCluster) {
+    const cli::BatchConfig config = batchConfigFrom(pairs, compare, perView, perCluster);
+    BatchRow row = cli::batchRowStart(cli::findBatchMeshes({path}).front(), config);
+    for (const auto& [key, value] : cli::errorCells(kind, message)) row[key] = value;
+    return row;
+}
+
+// results.csv and report.html of rows made elsewhere (on Dask), written whole as the batch writes them.
+void writeResults(const std::string& folder, const std::vector<BatchRow>& rows, const std::string& compare) {
+    const std::filesystem::path path(folder);
+    cli::writeTextFileAtomically((path / "results.csv").string(), batchCsvText(rows));
+    const BatchReportInfo info{std::filesystem::absolute(path).lexically_normal().filename().string(), rows.size(), compare};
+    cli::writeTextFileAtomically((path / "report.html").string(), batchReportHtml(rows, info));
+}
+
+std::vector<std::string> findMeshes(const std::vector<std::string>& paths, const std::string& shard) {
+    std::vector<cli::BatchMesh> meshes = cli::findBatchMeshes(paths);
+    if (!shard.empty()) meshes = cli::meshesOfShard(meshes, cli::parseShard(shard));
+    std::vector<std::string> found;
+    for (const cli::BatchMesh& mesh : meshes) found.push_back(mesh.path);
+    return found;
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_conescope, m) {
+    m.doc() = "ConeScope's core for Python: see the conescope package";
+    py::register_exception<MeshReadError>(m, "MeshReadError", PyExc_OSError);
+    m.attr("__version__") = conescopeVersion();
+    m.attr("cli_path") = CONESCOPE_CLI_BUILT;
+    m.def("extensions", &supportedMeshExtensions);
+    m.def("check_settings", [](const SettingPairs& pairs) { settingsFrom(pairs); });
+    m.def("setting_arguments", [](const SettingPairs& pairs) { return settingArguments(settingsFrom(pairs)); });
+    m.def("check_compare", [](const std::string& text, const SettingPairs& pairs) { parseConfiguration(text, settingsFrom(pairs)); });
+    m.def("stats", [](const std::string& path, const SettingPairs& pairs, bool perView, bool perCluster) {
+        std::vector<std::string> notes;
+        const Mesh mesh = readMeshForPython(path, notes, {settingsFrom(pairs)});
+        return statsDocument(mesh, std::filesystem::path(path).filename().string(), pairs, perView, perCluster, notes);
+    });
+    m.def("stats_arrays", [](py::array_t<float, py::array::c_style | py::array::forcecast> vertices, const py::object& faces,
+                             const py::object& clusterIds, const std::string& name, const SettingPairs& pairs, bool perView,
+                             bool perCluster) {
+        return statsDocument(meshFromPython(vertices, faces, clusterIds, name), name, pairs, perView, perCluster, {});
+    });
+    m.def("clusters", [](const std::string& path, const SettingPairs& pairs, const std::string& sort, size_t top) {
+        std::vector<std::string> notes;
+        const Mesh mesh = readMeshForPython(path, notes, {settingsFrom(pairs)});
+        return clustersDocument(mesh, std::filesystem::path(path).filename().string(), pairs, sort, top, notes);
+    });
+    m.def("clusters_arrays", [](py::array_t<float, py::array::c_style | py::array::forcecast> vertices, const py::object& faces,
+                                const py::object& clusterIds, const std::string& name, const SettingPairs& pairs,
+                                const std::string& sort, size_t top) {
+        return clustersDocument(meshFromPython(vertices, faces, clusterIds, name), name, pairs, sort, top, {});
+    });
+    m.def("compare", [](const std::string& path, const std::string& a, const std::string& b, const SettingPairs& pairs,
+                        bool perView, bool perCluster) {
+        std::vector<std::string> notes;
+        const Settings base = settingsFrom(pairs);
+        const Mesh mesh = readMeshForPython(path, notes, {parseConfiguration(a, base), parseConfiguration(b, base)});
+        return compareDocument(mesh, path, a, b, pairs, perView, perCluster, notes);
+    });
+    m.def("compare_arrays", [](py::array_t<float, py::array::c_style | py::array::forcecast> vertices, const py::object& faces,
+                               const py::object& clusterIds, const std::string& name, const std::string& a, const std::string& b,
+                               const SettingPairs& pairs, bool perView, bool perCluster) {
+        return compareDocument(meshFromPython(vertices, faces, clusterIds, name), name, a, b, pairs, perView, perCluster, {});
+    });
+    m.def("find_meshes", &findMeshes);
+    m.def("batch_columns", &batchColumns);
+    m.def("batch_row", &batchRow);
+    m.def("error_row", &errorRow);
+    m.def("results_csv", &batchCsvText);
+    m.def("write_results", &writeResults);
+}

@@ -1,0 +1,109 @@
+"""conescope.batch: results.csv of many meshes as a pandas DataFrame, on this machine (the command
+line's batch: worker processes, crash isolation, resuming) or on a Dask cluster."""
+
+import io
+import os
+import signal
+import subprocess
+import tempfile
+
+from . import _conescope
+from . import _configuration_text, _setting_pairs
+
+MESHOPT_PIPELINE = "builder=meshopt,cone=meshopt,test=apex"
+
+
+def _cli():
+    """The conescope-cli the module was built with, unless CONESCOPE_CLI names another."""
+    return os.environ.get("CONESCOPE_CLI", _conescope.cli_path)
+
+
+def _read_results(text_or_path):
+    import pandas as pd
+    # round_trip: the shortest texts the CSV holds read back to the very numbers written (pandas's
+    # default parser may be one unit in the last place off).
+    return pd.read_csv(text_or_path, float_precision="round_trip")
+
+
+def _local_batch(paths, output_dir, pairs, compare, per_view, per_cluster, jobs, shard, timeout, memory_limit):
+    command = [_cli(), "batch", *paths, "-o", output_dir, "--quiet"]
+    command += _conescope.setting_arguments(pairs)
+    if compare:
+        command += ["--compare", compare]
+    if not per_view:
+        command.append("--no-per-view")
+    if not per_cluster:
+        command.append("--no-per-cluster")
+    for flag, value in (("--jobs", jobs), ("--shard", shard), ("--timeout", timeout), ("--memory-limit", memory_limit)):
+        if value is not None:
+            command += [flag, str(value)]
+    process = subprocess.Popen(command, stderr=subprocess.PIPE, text=True)
+    try:
+        _, errors = process.communicate()
+    except KeyboardInterrupt:
+        # The batch stops as on its own Ctrl-C (a notebook's interrupt reaches this process only): it
+        # writes the rows it has, the folder stays consistent, and the same call resumes.
+        process.send_signal(signal.SIGINT)
+        process.wait()
+        raise
+    # 0: every mesh ok; 3: finished with error rows, which the table holds.
+    if process.returncode not in (0, 3):
+        raise RuntimeError(errors.strip() or f"conescope-cli batch ended with exit code {process.returncode}")
+    return _read_results(os.path.join(output_dir, "results.csv"))
+
+
+def _row_on_worker(path, folder, pairs, compare, per_view, per_cluster):
+    """What a Dask worker runs for one mesh: its results.csv row, as the command line makes it."""
+    from conescope import _conescope as worker_module
+    return worker_module.batch_row(path, folder, pairs, compare, per_view, per_cluster)
+
+
+def _dask_batch(client, paths, output_dir, pairs, compare, per_view, per_cluster, shard):
+    meshes = _conescope.find_meshes([os.fspath(path) for path in paths], shard or "")
+    folder = ""
+    if output_dir is not None:
+        folder = os.path.abspath(output_dir)  # the workers write here: shared storage on a real cluster
+        os.makedirs(os.path.join(folder, "meshes"), exist_ok=True)
+    futures = client.map(_row_on_worker, meshes, folder=folder, pairs=pairs, compare=compare, per_view=per_view,
+                         per_cluster=per_cluster, pure=False)
+    rows = []
+    for mesh, future in zip(meshes, futures):
+        try:
+            rows.append(future.result())
+        except Exception as error:  # the worker died on it (KilledWorker) or Dask failed it
+            message = f"{mesh}: the Dask task running it failed ({type(error).__name__}: {error})"
+            rows.append(_conescope.error_row(mesh, "crash", message, pairs, compare, per_view, per_cluster))
+    if folder:
+        _conescope.write_results(folder, rows, compare)
+    return _read_results(io.StringIO(_conescope.results_csv(rows)))
+
+
+def batch(paths, client=None, output_dir=None, compare=None, compare_meshopt=False, per_view=True, per_cluster=True,
+          jobs=None, shard=None, timeout=None, memory_limit=None, **settings):
+    """results.csv of every mesh in `paths` (files and folders) as a pandas DataFrame: a row per mesh,
+    the columns docs/statistics-schema.md lists.
+
+    Without `client`, `conescope-cli batch` runs here (jobs workers, per-mesh timeout and memory
+    limit, crash isolation); given `output_dir` it also leaves its files there (meshes/*.json,
+    results.csv, report.html) and skips meshes done before. With a dask.distributed Client, each
+    mesh's row is computed on a Dask worker with this module; `output_dir` (shared by the workers) then
+    gets the JSON files, results.csv and report.html. compare: A's options as "K=V,..." or a dict;
+    compare_meshopt: meshoptimizer's pipeline as A. Without output_dir the json columns are empty.
+    """
+    if isinstance(paths, (str, os.PathLike)):
+        paths = [paths]
+    paths = [os.fspath(path) for path in paths]
+    pairs = _setting_pairs(settings)
+    compare = MESHOPT_PIPELINE if compare_meshopt else _configuration_text(compare)
+    _conescope.check_compare(compare, pairs)
+    if client is not None:
+        frame = _dask_batch(client, paths, output_dir, pairs, compare, per_view, per_cluster, shard)
+    elif output_dir is not None:
+        frame = _local_batch(paths, os.fspath(output_dir), pairs, compare, per_view, per_cluster, jobs, shard, timeout,
+                             memory_limit)
+    else:
+        with tempfile.TemporaryDirectory(prefix="conescope-batch-") as folder:
+            frame = _local_batch(paths, folder, pairs, compare, per_view, per_cluster, jobs, shard, timeout, memory_limit)
+    if output_dir is None:
+        frame[["json", "compare_json"]] = float("nan")
+    return frame

@@ -1,0 +1,44 @@
+"""conescope.batch on a Dask cluster: each mesh's row computed on a worker with the module, the same
+rows and columns as the command line's batch."""
+
+import json
+
+import pandas as pd
+import pytest
+from dask.distributed import Client, LocalCluster
+
+import conescope
+from conftest import cli_json, without_timings
+
+TIMINGS = ["seconds", "ns_per_cluster", "a_ns_per_cluster"]
+
+
+@pytest.fixture(scope="module")
+def client():
+    cluster = LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=":0")
+    with Client(cluster) as client:
+        yield client
+    cluster.close()
+
+
+def test_dask_rows_are_the_command_lines(library, client, tmp_path):
+    out = tmp_path / "out"
+    frame = conescope.batch([library], client=client, output_dir=out, views=16, compare_meshopt=True)
+    local = conescope.batch([library], views=16, compare_meshopt=True)
+    assert list(frame.columns) == list(local.columns) == conescope._conescope.batch_columns()
+    assert len(frame) == 7
+    assert frame.drop(columns=TIMINGS + ["json", "compare_json"]).equals(local.drop(columns=TIMINGS + ["json", "compare_json"]))
+    for row in frame[frame.status == "ok"].itertuples():
+        document = cli_json("stats", "-q", row.file, "--views", "16")
+        assert row.efficiency == document["results"][0]["efficiency"]
+        assert row.clusters == document["clusters"]
+        assert without_timings(json.load(open(out / row.json))) == without_timings(document)
+    assert pd.read_csv(out / "results.csv", float_precision="round_trip").drop(columns=TIMINGS).equals(frame.drop(columns=TIMINGS))
+    report = (out / "report.html").read_text()
+    assert all(file in report for file in frame.file)
+
+
+def test_a_broken_mesh_on_dask_is_an_error_row(library, client):
+    frame = conescope.batch([library / "broken.off", library / "torus.off"], client=client, views=4)
+    assert list(frame.status) == ["error", "ok"]
+    assert frame.error[0].endswith("header declares 3 vertices but only 12 bytes follow (truncated file or wrong count)")

@@ -1,0 +1,119 @@
+"""conescope.stats, stats_arrays, clusters and compare give the documents `conescope-cli` writes."""
+
+import re
+
+import numpy as np
+import pytest
+
+import conescope
+from conftest import (BROKEN_OFF, DATASETS, cli_error, cli_json, quad_sphere, read_off, without_timings,
+                      write_obj)
+
+
+@pytest.mark.parametrize("name", ["fandisk.off", "icosphere-clusters.vtp", "cube-quads.off"])
+def test_stats_is_the_cli_document(name):
+    document = conescope.stats(DATASETS / name, views=16)
+    assert without_timings(document) == without_timings(cli_json("stats", "-q", DATASETS / name, "--views", "16"))
+
+
+def test_settings_are_the_cli_options_with_underscores_or_dashes():
+    mesh = DATASETS / "elephant.off"
+    document = conescope.stats(mesh, views=8, max_tris=64, **{"max-verts": 48}, cone=["minimal", "average"],
+                               test="octagon,apex", eye=None, fix_winding=False)
+    expected = cli_json("stats", "-q", mesh, "--views", "8", "--max-tris", "64", "--max-verts", "48",
+                        "--cone", "minimal,average", "--test", "octagon,apex")
+    assert without_timings(document) == without_timings(expected)
+    assert len(document["results"]) == 4
+    one_eye = conescope.stats(mesh, eye=(0.5, 2, 3), per_cluster=False)
+    assert without_timings(one_eye) == without_timings(
+        cli_json("stats", "-q", mesh, "--eye", "0.5,2,3", "--no-per-cluster"))
+
+
+def test_bad_settings_raise_the_schema_messages():
+    mesh = DATASETS / "cube.off"
+    with pytest.raises(ValueError, match=re.escape("--views: '0' is not a whole number in [1, ")):
+        conescope.stats(mesh, views=0)
+    with pytest.raises(ValueError, match=re.escape("--builder: unknown name 'best' (expected one of: ")):
+        conescope.stats(mesh, builder="best")
+    with pytest.raises(ValueError, match="unknown setting 'colour' \\(expected one of: builder, max_verts"):
+        conescope.stats(mesh, colour="red")
+    with pytest.raises(ValueError, match="--eye excludes --views"):
+        conescope.stats(mesh, eye=(0, 0, 5), views=4)
+    with pytest.raises(ValueError, match="--max-tris is given twice"):
+        conescope.stats(mesh, max_tris=64, max_triangles=32)
+
+
+def test_a_file_that_cannot_be_read_raises_the_cli_message(tmp_path):
+    broken = tmp_path / "broken.off"
+    broken.write_text(BROKEN_OFF)
+    with pytest.raises(conescope.MeshReadError) as error:
+        conescope.stats(broken)
+    assert str(error.value) == cli_error("stats", "-q", broken)
+    assert isinstance(error.value, OSError)
+    with pytest.raises(conescope.MeshReadError, match="file does not exist"):
+        conescope.stats(tmp_path / "missing.off")
+
+
+def test_arrays_of_polygons_give_the_numbers_of_the_same_mesh_as_a_file(tmp_path):
+    vertices, faces = quad_sphere()
+    write_obj(tmp_path / "sphere.obj", vertices, faces)
+    expected = cli_json("stats", "-q", tmp_path / "sphere.obj", "--views", "16")
+    document = conescope.stats_arrays(vertices, faces, name="sphere.obj", views=16)
+    assert without_timings(document) == without_timings(expected)
+    assert document["mesh"]["faces"] < document["mesh"]["triangles"]
+
+
+def test_triangle_arrays_give_the_numbers_of_the_file_they_came_from():
+    vertices, faces = read_off(DATASETS / "icosphere.off")
+    document = conescope.stats_arrays(vertices.astype(np.float64), np.asarray(faces, dtype=np.int64),
+                                      name="icosphere.off", views=16)
+    assert without_timings(document) == without_timings(cli_json("stats", "-q", DATASETS / "icosphere.off", "--views", "16"))
+
+
+def test_cluster_ids_are_the_file_builders_partition(tmp_path):
+    vertices, faces = read_off(DATASETS / "icosphere.off")
+    ids = np.arange(len(faces)) // 40
+    (tmp_path / "ids.txt").write_text("".join(f"{i}\n" for i in ids))
+    expected = cli_json("stats", "-q", DATASETS / "icosphere.off", "--views", "16", "--builder", "file",
+                        "--cluster-file", tmp_path / "ids.txt")
+    document = conescope.stats_arrays(vertices, faces, cluster_ids=ids, name="icosphere.off", views=16)
+    assert document["clusters"] == 32
+    expected["settings"]["cluster_file"] = None  # the ids came as an array, not a file
+    assert without_timings(document) == without_timings(expected)
+
+
+def test_bad_arrays_raise():
+    vertices, faces = quad_sphere()
+    with pytest.raises(ValueError, match="vertices must be an n x 3 array"):
+        conescope.stats_arrays(vertices[:, :2], faces)
+    with pytest.raises(ValueError, match=re.escape("faces[1] has the vertex index -1")):
+        conescope.stats_arrays(vertices, [faces[0], [0, 1, -1]])
+    with pytest.raises(conescope.MeshReadError, match="arrays: face 0 uses vertex 9999"):
+        conescope.stats_arrays(vertices, [[0, 1, 9999]])
+    with pytest.raises(ValueError, match="cluster_ids must hold one id per face"):
+        conescope.stats_arrays(vertices, faces, cluster_ids=[0, 1])
+
+
+def test_clusters_and_compare_are_the_cli_documents():
+    mesh = DATASETS / "elephant.off"
+    table = conescope.clusters(mesh, sort="lost", top=5, views=16)
+    assert without_timings(table) == without_timings(
+        cli_json("clusters", "-q", mesh, "--sort", "lost", "--top", "5", "--views", "16", "--format", "json"))
+    assert len(table["rows"]) == 5
+    pipeline = "builder=meshopt,cone=meshopt,test=apex"
+    expected = cli_json("compare", "-q", mesh, "--a", pipeline, "--views", "16", "--format", "json")
+    assert without_timings(conescope.compare(mesh, a=pipeline, views=16)) == without_timings(expected)
+    as_dict = conescope.compare(mesh, a={"builder": "meshopt", "cone": "meshopt", "test": "apex"}, views=16)
+    assert without_timings(as_dict) == without_timings(expected)
+    vertices, faces = read_off(mesh)
+    arrays = conescope.compare_arrays(vertices, faces, a=pipeline, name="elephant.off", views=16)
+    assert without_timings(arrays) == without_timings(expected)
+    with pytest.raises(ValueError, match="unknown option 'colour' in a configuration"):
+        conescope.compare(mesh, a="colour=red")
+
+
+def test_what_the_cli_warns_of_is_a_python_warning(tmp_path):
+    vertices, faces = quad_sphere()
+    faces[5] = list(reversed(faces[5]))  # one face wound the other way
+    with pytest.warns(UserWarning, match="repair with --fix-winding"):
+        conescope.stats_arrays(vertices, faces, views=4)

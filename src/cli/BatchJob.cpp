@@ -1,0 +1,106 @@
+#include "cli/BatchJob.h"
+
+#include <chrono>
+#include <new>
+#include <sstream>
+
+#include "cli/MeshRuns.h"
+#include "cli/OutputFiles.h"
+#include "core/Comparison.h"
+#include "io/ComparisonIO.h"
+#include "io/ClusterFiles.h"
+#include "io/MeshReader.h"
+#include "io/StatisticsIO.h"
+
+namespace conescope::cli {
+
+namespace {
+
+std::string fileNameOf(const std::string& path) { return std::filesystem::path(path).filename().string(); }
+
+void writeStatisticsFile(const std::string& path, const RunStatistics& run, const StatisticsDetail& detail) {
+    if (!path.empty()) writeTextFileAtomically(path, statisticsJsonText(run, detail));
+}
+
+// The mesh as `stats` runs it: its totals, its warnings and its JSON.
+void runStatsJob(const BatchConfig& config, const BatchJob& job, const Mesh& mesh, BatchRow& row) {
+    const RunStatistics run = runStatistics(mesh, config.settings, fileNameOf(job.path));
+    writeStatisticsFile(job.json, run, config.detail);
+    addRunCells(row, run, runWarnings(run));
+}
+
+// The mesh as `compare --a COMPARE` runs it: B is the batch's settings, so its side is the row's
+// totals and its JSON what `stats` writes.
+void runCompareJob(const BatchConfig& config, const BatchJob& job, const Mesh& mesh, BatchRow& row) {
+    const Settings a = parseConfiguration(config.compare, config.settings);
+    const ComparedRuns runs = compareMesh(mesh, job.path, a, config.settings, config.settings);
+    writeStatisticsFile(job.json, runs.b, config.detail);
+    if (!job.compareJson.empty()) {
+        std::ostringstream text;
+        writeComparisonJson(runs.a, runs.b, runs.comparison, config.detail, text);
+        writeTextFileAtomically(job.compareJson, text.str());
+    }
+    std::vector<std::string> warnings = runWarnings(runs.b);
+    const std::string budgetA = budgetMissed(runs.a.settings, runs.a.clusters);
+    if (!budgetA.empty()) warnings.push_back("A: " + budgetA);
+    addRunCells(row, runs.b, warnings);
+    addComparisonCells(row, runs);
+}
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+BatchConfig batchConfig(const Settings& settings, const std::string& compare, const StatisticsDetail& detail) {
+    parseConfiguration(compare, settings);
+    return {settings, compare, detail};
+}
+
+BatchRow runBatchJob(const BatchConfig& config, const BatchJob& job, const std::function<void()>& testFault) {
+    const auto start = std::chrono::steady_clock::now();
+    BatchRow row;
+    try {
+        MeshFile file = readMeshFile(job.path);
+        // The file builder's cluster files, on this mesh (a meshlet file may cut its polygons).
+        readClusterFileOf(file.mesh, config.settings, file.notes);
+        if (!config.compare.empty()) readClusterFileOf(file.mesh, parseConfiguration(config.compare, config.settings), file.notes);
+        if (testFault) testFault();
+        if (config.compare.empty())
+            runStatsJob(config, job, file.mesh, row);
+        else
+            runCompareJob(config, job, file.mesh, row);
+        row["status"] = "ok";
+    } catch (const MeshReadError& error) {
+        // The reader says "out of memory" when a file's counts ask for more than there is.
+        const bool memory = std::string(error.what()).find("out of memory") != std::string::npos;
+        row = errorCells(memory ? "memory" : "read", error.what());
+    } catch (const std::bad_alloc&) {
+        row = errorCells("memory", job.path + ": out of memory");
+    } catch (const std::invalid_argument& error) {
+        row = errorCells("settings", job.path + ": " + error.what());
+    } catch (const std::exception& error) {
+        row = errorCells("run", job.path + ": " + error.what());
+    }
+    row["seconds"] = csvNumber(secondsSince(start));
+    return row;
+}
+
+BatchRow batchRowStart(const BatchMesh& mesh, const BatchConfig& config) {
+    BatchRow row;
+    row["file"] = mesh.path;
+    row["json"] = mesh.json;
+    if (!config.compare.empty()) row["compare_json"] = batchJsonName(mesh.canonical, ".compare");
+    row["content_hash"] = contentHash(mesh.path);
+    row["settings_hash"] = settingsHash(config.settings, config.compare, config.detail);
+    addSettingCells(row, config.settings);
+    row["a_options"] = config.compare;
+    return row;
+}
+
+BatchRow errorCells(const std::string& kind, const std::string& message) {
+    return {{"status", "error"}, {"error_kind", kind}, {"error", message}};
+}
+
+}  // namespace conescope::cli

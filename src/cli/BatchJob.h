@@ -1,0 +1,45 @@
+// One mesh of a batch, computed where it is called: in a batch worker process (BatchWorker.cpp) or in
+// a Dask worker through the Python module. The mesh is read and run as `stats` runs it (and, when
+// asked, compared as `compare` does); its JSON files are written whole; any failure becomes an error
+// row, so one bad mesh never stops the others.
+#pragma once
+
+#include <functional>
+#include <string>
+
+#include "cli/BatchInputs.h"
+#include "io/BatchTable.h"
+
+namespace conescope::cli {
+
+struct BatchConfig {
+    Settings settings;          // each row's own totals: what `stats` with the batch's options computes
+    std::string compare;        // "K=V,...": A of a comparison against the settings (B), or empty
+    StatisticsDetail detail;    // the tables the statistics JSON keeps
+};
+
+// The configuration the option text makes: parseConfiguration checks `compare` before any mesh is
+// read. Throws std::invalid_argument.
+BatchConfig batchConfig(const Settings& settings, const std::string& compare, const StatisticsDetail& detail);
+
+// Where a mesh's files go: absolute paths, empty = not written.
+struct BatchJob {
+    std::string path;
+    std::string json;           // what `stats` writes
+    std::string compareJson;    // what `compare --a COMPARE` writes (with a comparison only)
+};
+
+// The cells a worker computes: status, error and error_kind (`read`, `settings`, `memory` or `run`),
+// seconds, and for an ok row the run's, the comparison's and the warnings. `testFault` (the worker's
+// test hook, BatchWorker.cpp) runs after the mesh is read, where the run would, so what it does takes
+// the run's way out.
+BatchRow runBatchJob(const BatchConfig& config, const BatchJob& job, const std::function<void()>& testFault = {});
+
+// The cells that say which mesh and settings a row is about: file, json, compare_json, content_hash,
+// settings_hash, setting_KEY and a_options (the comparison asked for). The content hash is taken now.
+BatchRow batchRowStart(const BatchMesh& mesh, const BatchConfig& config);
+
+// An error row's own cells.
+BatchRow errorCells(const std::string& kind, const std::string& message);
+
+}  // namespace conescope::cli
