@@ -52,6 +52,8 @@ void checkRanges(const MeshletArrays& arrays, size_t fileVertexCount) {
 struct Piece {
     std::array<uint32_t, 3> corners;  // sorted mesh vertices
     uint32_t meshlet;
+    std::array<uint32_t, 3> oriented{};  // the corners in the polygon's winding, once it is known to tile
+    size_t order = 0;                    // its place among the polygon's pieces: the fan's order for a fan
 };
 
 // Where a corner sits on a face (its first occurrence), or the face size when it is not one.
@@ -80,6 +82,57 @@ bool piecesTile(const Mesh& mesh, uint32_t face, const std::vector<Piece>& piece
     return uses.size() == 2 * n - 3;  // n sides and n - 3 diagonals
 }
 
+// The polygon's fan triangles as sorted corners, each with its corners in the polygon's winding and
+// its place in the fan; sorted by corners.
+struct FanTriangle {
+    std::array<uint32_t, 3> key, corners;
+    size_t order;
+    bool operator<(const FanTriangle& other) const { return key < other.key || (key == other.key && order < other.order); }
+};
+std::vector<FanTriangle> fanOf(const Mesh& mesh, uint32_t face) {
+    const uint32_t* c = mesh.faceBegin(face);
+    std::vector<FanTriangle> fan;
+    for (size_t k = 1; k + 1 < mesh.faceSize(face); ++k) fan.push_back({sortedCorners(c[0], c[k], c[k + 1]), {c[0], c[k], c[k + 1]}, k});
+    std::sort(fan.begin(), fan.end());
+    return fan;
+}
+
+// Whether the pieces cut the polygon into triangles, and if so their corners in its winding: its own
+// fan triangles (a polygon that repeats a vertex has the same triangle more than once), or another
+// triangulation of its corners (piecesTile). Pieces come sorted by corners.
+bool orientPieces(const Mesh& mesh, uint32_t face, std::vector<Piece>& pieces) {
+    const auto fan = fanOf(mesh, face);
+    bool isFan = fan.size() == pieces.size();
+    for (size_t i = 0; isFan && i < fan.size(); ++i) isFan = fan[i].key == pieces[i].corners;
+    if (isFan) {
+        for (size_t i = 0; i < fan.size(); ++i) pieces[i].oriented = fan[i].corners, pieces[i].order = fan[i].order;
+        std::sort(pieces.begin(), pieces.end(), [](const Piece& a, const Piece& b) { return a.order < b.order; });
+        return true;
+    }
+    if (!piecesTile(mesh, face, pieces)) return false;
+    for (Piece& piece : pieces) {
+        std::array<uint32_t, 3> at{};
+        for (int k = 0; k < 3; ++k) at[k] = uint32_t(cornerPosition(mesh, face, piece.corners[k]));
+        std::sort(at.begin(), at.end());  // corners in the polygon's order keep its winding
+        const uint32_t* corners = mesh.faceBegin(face);
+        piece.oriented = {corners[at[0]], corners[at[1]], corners[at[2]]};
+    }
+    return true;
+}
+
+// A triangle a polygon holds more often than its fan does: in two meshlets (or twice in one).
+const Piece* repeatedPiece(const Mesh& mesh, uint32_t face, const std::vector<Piece>& pieces) {
+    const auto fan = fanOf(mesh, face);
+    for (size_t i = 1; i < pieces.size(); ++i) {
+        if (pieces[i].corners != pieces[i - 1].corners) continue;
+        const auto key = pieces[i].corners;
+        const size_t held = size_t(std::count_if(pieces.begin(), pieces.end(), [&](const Piece& p) { return p.corners == key; }));
+        const size_t inFan = size_t(std::count_if(fan.begin(), fan.end(), [&](const FanTriangle& t) { return t.key == key; }));
+        if (held > inFan) return &pieces[i];
+    }
+    return nullptr;
+}
+
 std::string firstFew(const std::vector<uint32_t>& faces) {
     std::string text;
     for (size_t i = 0; i < std::min<size_t>(faces.size(), 5); ++i) text += (i ? ", " : "") + std::to_string(faces[i]);
@@ -87,25 +140,40 @@ std::string firstFew(const std::vector<uint32_t>& faces) {
     return text;
 }
 
+// Whether the polygon's fan has a triangle with these sorted corners.
+bool inFan(const Mesh& mesh, uint32_t face, const std::array<uint32_t, 3>& key) {
+    const uint32_t* c = mesh.faceBegin(face);
+    for (size_t k = 1; k + 1 < mesh.faceSize(face); ++k)
+        if (sortedCorners(c[0], c[k], c[k + 1]) == key) return true;
+    return false;
+}
+
 // The face a triangle of mesh vertices a, b, c lands on: an unmatched triangle face with these
-// corners, else a polygon holding all three. kNone with `taken` set when only a matched triangle
-// face has them.
+// corners, else a polygon holding all three (one whose fan has the triangle first: a triangle
+// whose corners merged into one vertex lies on any polygon around it). kNone with `taken` set when
+// only a matched triangle face has them.
 uint32_t faceOfTriangle(const Mesh& mesh, const Rows& around, const std::vector<uint32_t>& meshletOfFace,
                         const std::array<uint32_t, 3>& key, uint32_t& taken) {
     uint32_t polygon = kNone;
+    bool polygonFans = false;
     taken = kNone;
     for (const uint32_t* f = around.begin(key[0]); f != around.end(key[0]); ++f) {
         const uint32_t* corners = mesh.faceBegin(*f);
         if (mesh.faceSize(*f) == 3) {
             if (sortedCorners(corners[0], corners[1], corners[2]) != key) continue;
-            if (meshletOfFace[*f] == kNone) return *f;
+            if (meshletOfFace[*f] == kNone) {
+                taken = kNone;  // a duplicate face takes the copy its twin's meshlet did not
+                return *f;
+            }
             if (taken == kNone) taken = *f;
-        } else if (polygon == kNone && cornerPosition(mesh, *f, key[1]) < mesh.faceSize(*f) &&
+        } else if (!polygonFans && cornerPosition(mesh, *f, key[1]) < mesh.faceSize(*f) &&
                    cornerPosition(mesh, *f, key[2]) < mesh.faceSize(*f)) {
-            polygon = *f;
+            const bool fans = inFan(mesh, *f, key);
+            if (polygon == kNone || fans) polygon = *f, polygonFans = fans;
         }
     }
-    return taken == kNone ? polygon : kNone;
+    if (polygon != kNone) taken = kNone;
+    return polygon;
 }
 
 // The mesh with the listed polygons replaced by their pieces (in the polygon's winding), each
@@ -127,11 +195,7 @@ std::vector<uint32_t> cutPolygons(Mesh& mesh, const std::vector<uint32_t>& meshl
             continue;
         }
         for (const Piece& piece : pieces->second) {
-            std::array<uint32_t, 3> at{};
-            for (int k = 0; k < 3; ++k) at[k] = uint32_t(cornerPosition(mesh, f, piece.corners[k]));
-            std::sort(at.begin(), at.end());  // corners in the polygon's order keep its winding
-            const uint32_t* corners = mesh.faceBegin(f);
-            cut.addFace({corners[at[0]], corners[at[1]], corners[at[2]]});
+            cut.addFace(piece.oriented.data(), 3);
             meshletOfNewFace.push_back(piece.meshlet);
             sourceFace.push_back(f);
         }
@@ -176,17 +240,23 @@ AppliedMeshlets applyMeshlets(Mesh& mesh, const MeshletArrays& arrays) {
                 meshletOfFace[f] = m;
                 continue;
             }
-            std::vector<Piece>& held = pieces[f];
-            for (const Piece& piece : held)
-                if (piece.corners == key)
-                    throw MeshletError(where + ": this triangle of face " + std::to_string(f) + " is already in " + meshletName(piece.meshlet));
-            held.push_back({key, m});
+            pieces[f].push_back({key, m});
         }
     }
     // Polygons: whole in one meshlet, or cut where meshlets split them.
     std::unordered_map<uint32_t, std::vector<Piece>> cuts;
     for (auto& [f, held] : pieces) {
-        if (!piecesTile(mesh, f, held)) {
+        // By corners, then meshlet: a repeated triangle's copies side by side, first its first meshlet's.
+        std::sort(held.begin(), held.end(), [](const Piece& a, const Piece& b) {
+            return a.corners < b.corners || (a.corners == b.corners && a.meshlet < b.meshlet);
+        });
+        if (const Piece* repeated = repeatedPiece(mesh, f, held)) {
+            const Piece& first = *(repeated - 1);
+            throw MeshletError(meshletName(repeated->meshlet) + ": its triangle (vertices " + std::to_string(first.corners[0]) + ", " +
+                               std::to_string(first.corners[1]) + ", " + std::to_string(first.corners[2]) + " of the mesh) of face " +
+                               std::to_string(f) + " is already in " + meshletName(first.meshlet));
+        }
+        if (!orientPieces(mesh, f, held)) {
             std::string meshlets;
             for (const Piece& piece : held) meshlets += (meshlets.empty() ? "" : ", ") + std::to_string(piece.meshlet);
             throw MeshletError("face " + std::to_string(f) + " (a polygon of " + std::to_string(mesh.faceSize(f)) + " corners): the " +
@@ -199,7 +269,6 @@ AppliedMeshlets applyMeshlets(Mesh& mesh, const MeshletArrays& arrays) {
             meshletOfFace[f] = held[0].meshlet;
             continue;
         }
-        std::sort(held.begin(), held.end(), [](const Piece& a, const Piece& b) { return a.corners < b.corners; });
         cuts.emplace(f, held);
     }
     std::vector<uint32_t> missing;

@@ -225,9 +225,10 @@ MeshletArrays parseMeshletBinary(const std::string& bytes, const std::string& so
         arrays.bounds.resize(meshletCount);
         for (size_t m = 0; m < meshletCount; ++m, at += kBoundsBytes) {
             MeshletBounds& b = arrays.bounds[m];
-            float fields[12];
-            for (int k = 0; k < 12; ++k) fields[k] = f32At(bytes, at + 4 * k);
-            for (int k = 0; k < 12; ++k)
+            // 11 floats (centre, radius, apex, axis, cutoff), then the four signed bytes.
+            float fields[11];
+            for (int k = 0; k < 11; ++k) fields[k] = f32At(bytes, at + 4 * k);
+            for (int k = 0; k < 11; ++k)
                 if (!std::isfinite(fields[k]))
                     throw MeshletFileError(source + ": byte " + std::to_string(at + 4 * k) + ": bounds of meshlet " + std::to_string(m) +
                                            " hold a number that is not finite");

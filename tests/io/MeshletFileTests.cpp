@@ -84,6 +84,11 @@ TEST(MeshletFiles, JsonAndBinaryReadBackWhatWasWritten) {
         expectSameArrays(parseMeshletJson(meshletJson(arrays), "a.json"), arrays);
         expectSameArrays(parseMeshletBinary(meshletBinary(arrays), "a.meshlets"), arrays);
     }
+    // The four signed bytes after the floats are bytes, not a float: these form a NaN's bits (as
+    // meshoptimizer's wide cones with a negative z do; found on assimp's Wuson model).
+    arrays.bounds[1].coneAxisS8 = {-108, -64, -17};
+    arrays.bounds[1].coneCutoffS8 = 127;
+    expectSameArrays(parseMeshletBinary(meshletBinary(arrays), "a.meshlets"), arrays);
     // The binary layout is the documented one: 32-byte header, 16 per meshlet, 4 per vertex, padded triangles, 48 per bounds.
     EXPECT_EQ(meshletBinary(arrays).size(), 32u + 2 * 16 + 12 * 4 + 24 + 2 * 48);
 }
@@ -100,6 +105,34 @@ TEST(MeshletFiles, ApplyGivesEachFaceItsMeshlet) {
     EXPECT_EQ(applied.clusters.clusterOfFace, (std::vector<uint32_t>{0, 0, 1, 1, 0, 0, 1, 1}));
     EXPECT_EQ(applied.cutPolygons, 0u);
     EXPECT_EQ(mesh.faceCount(), 8u);
+}
+
+TEST(MeshletFiles, DuplicateFacesAndPolygonsThatRepeatAVertexMatch) {
+    // Faces 0 and 8 have the same corners (an STL's collapsed triangles come like that): each
+    // meshlet's copy takes one of them, whichever meshlet comes first.
+    Mesh mesh = grid();
+    mesh.addFace({0, 1, 4});
+    MeshletArrays arrays = gridMeshlets();
+    arrays.vertices.insert(arrays.vertices.end(), {0, 1, 4});
+    arrays.triangles.insert(arrays.triangles.end(), {0, 1, 2, 0});
+    arrays.meshlets.push_back({12, 24, 3, 1});
+    AppliedMeshlets applied = applyMeshlets(mesh, arrays);
+    EXPECT_EQ(applied.clusters.clusterOfFace[0], 0u);
+    EXPECT_EQ(applied.clusters.clusterOfFace[8], 2u);
+    // A pentagon that visits vertex 4 twice: its fan holds the triangle (0, 4, 4)... twice over two
+    // corners; its fan triangles in two meshlets cut it, in its own winding.
+    Mesh polygon;
+    polygon.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+    polygon.addFace({0, 1, 2, 0, 3});  // fan: (0,1,2) (0,2,0) (0,0,3)
+    MeshletArrays fans;
+    fans.vertices = {0, 1, 2, 0, 3};
+    fans.triangles = {0, 1, 2, 0, 0, 2, 0, 0, 3, 0, 0, 0};  // meshlet 0: (0,1,2) (0,2,0); meshlet 1: (0,0,3)
+    fans.meshlets = {{0, 0, 3, 2}, {3, 8, 2, 1}};
+    fans.triangles[8] = 0, fans.triangles[9] = 0, fans.triangles[10] = 1;
+    const AppliedMeshlets cut = applyMeshlets(polygon, fans);
+    EXPECT_EQ(cut.cutPolygons, 1u);
+    EXPECT_EQ(polygon.faceCount(), 3u);
+    EXPECT_EQ(cut.clusters.clusterOfFace, (std::vector<uint32_t>{0, 0, 1}));
 }
 
 TEST(MeshletFiles, RefusesOffsetsAndCountsOutOfRange) {
@@ -137,6 +170,20 @@ TEST(MeshletFiles, RefusesAFaceInTwoMeshlets) {
     // Meshlet 1's first triangle becomes face 0 (vertices 0, 1, 4), which meshlet 0 holds.
     arrays.vertices[6] = 0, arrays.vertices[7] = 1, arrays.vertices[8] = 4;
     EXPECT_HAS(applyError(arrays), "meshlet 1, triangle 0 (vertices 0, 1, 4 of the mesh): its face 0 is already in meshlet 0");
+}
+
+TEST(MeshletFiles, RefusesAPolygonsTriangleInTwoMeshlets) {
+    Mesh square;
+    square.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+    square.addFace({0, 1, 2, 3});
+    MeshletArrays arrays;
+    arrays.vertices = {0, 1, 2, 3, 0, 1, 2};
+    arrays.triangles = {0, 1, 2, 0, 2, 3, 0, 0, 0, 1, 2, 0};
+    arrays.meshlets = {{0, 0, 4, 2}, {4, 8, 3, 1}};
+    EXPECT_HAS(applyError(arrays, square), "meshlet 1: its triangle (vertices 0, 1, 2 of the mesh) of face 0 is already in meshlet 0");
+    arrays.meshlets = {{0, 0, 4, 1}};  // half the square
+    arrays.triangles.resize(4);
+    EXPECT_HAS(applyError(arrays, square), "face 0 (a polygon of 4 corners): the 1 triangles of meshlets 0 do not cut it into triangles");
 }
 
 TEST(MeshletFiles, ReportsFacesInNoMeshlet) {
