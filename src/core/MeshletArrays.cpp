@@ -120,17 +120,18 @@ bool orientPieces(const Mesh& mesh, uint32_t face, std::vector<Piece>& pieces) {
     return true;
 }
 
-// A triangle a polygon holds more often than its fan does: in two meshlets (or twice in one).
-const Piece* repeatedPiece(const Mesh& mesh, uint32_t face, const std::vector<Piece>& pieces) {
+// A triangle a polygon holds more often than its fan does (in two meshlets, or twice in one): the
+// first copy too many, with the first copy before it; null when there is none. Pieces come sorted
+// by corners, then meshlet.
+std::pair<const Piece*, const Piece*> repeatedPiece(const Mesh& mesh, uint32_t face, const std::vector<Piece>& pieces) {
     const auto fan = fanOf(mesh, face);
-    for (size_t i = 1; i < pieces.size(); ++i) {
-        if (pieces[i].corners != pieces[i - 1].corners) continue;
-        const auto key = pieces[i].corners;
-        const size_t held = size_t(std::count_if(pieces.begin(), pieces.end(), [&](const Piece& p) { return p.corners == key; }));
+    for (size_t run = 0, end = 0; run < pieces.size(); run = end) {
+        while (end < pieces.size() && pieces[end].corners == pieces[run].corners) ++end;
+        const auto key = pieces[run].corners;
         const size_t inFan = size_t(std::count_if(fan.begin(), fan.end(), [&](const FanTriangle& t) { return t.key == key; }));
-        if (held > inFan) return &pieces[i];
+        if (end - run > std::max<size_t>(inFan, 1)) return {&pieces[run + std::max<size_t>(inFan, 1)], &pieces[run]};
     }
-    return nullptr;
+    return {nullptr, nullptr};
 }
 
 std::string firstFew(const std::vector<uint32_t>& faces) {
@@ -245,13 +246,15 @@ AppliedMeshlets applyMeshlets(Mesh& mesh, const MeshletArrays& arrays) {
     }
     // Polygons: whole in one meshlet, or cut where meshlets split them.
     std::unordered_map<uint32_t, std::vector<Piece>> cuts;
-    for (auto& [f, held] : pieces) {
+    for (auto& entry : pieces) {
+        const uint32_t f = entry.first;
+        std::vector<Piece>& held = entry.second;
         // By corners, then meshlet: a repeated triangle's copies side by side, first its first meshlet's.
         std::sort(held.begin(), held.end(), [](const Piece& a, const Piece& b) {
             return a.corners < b.corners || (a.corners == b.corners && a.meshlet < b.meshlet);
         });
-        if (const Piece* repeated = repeatedPiece(mesh, f, held)) {
-            const Piece& first = *(repeated - 1);
+        if (const auto [repeated, firstCopy] = repeatedPiece(mesh, f, held); repeated) {
+            const Piece& first = *firstCopy;
             throw MeshletError(meshletName(repeated->meshlet) + ": its triangle (vertices " + std::to_string(first.corners[0]) + ", " +
                                std::to_string(first.corners[1]) + ", " + std::to_string(first.corners[2]) + " of the mesh) of face " +
                                std::to_string(f) + " is already in " + meshletName(first.meshlet));
