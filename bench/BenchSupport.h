@@ -12,6 +12,7 @@
 
 #include "core/Mesh.h"
 #include "core/Partition.h"
+#include "core/meshopt/Meshopt.h"
 
 namespace conescope::bench {
 

@@ -24,7 +24,7 @@ namespace {
 struct Measured {
     std::string mesh, partition;
     size_t clusters = 0;
-    TestStatistics result;  // views and clusters dropped
+    CullTestStatistics result;  // views and clusters dropped
 };
 
 std::vector<Measured> measureMesh(const std::string& path, size_t views, double distance) {
@@ -37,7 +37,7 @@ std::vector<Measured> measureMesh(const std::string& path, size_t views, double 
         settings.views = views;
         settings.distance = distance;
         RunStatistics run = runStatistics(mesh, settings, bench::meshName(path));
-        for (TestStatistics& result : run.results) {
+        for (CullTestStatistics& result : run.results) {
             result.views.clear();
             result.clusters.clear();
             rows.push_back({run.meshName, toString(builder), run.clusters, std::move(result)});
@@ -46,7 +46,7 @@ std::vector<Measured> measureMesh(const std::string& path, size_t views, double 
     return rows;
 }
 
-double perByte(const TestStatistics& r) { return r.bytesPerCluster ? r.efficiency / double(r.bytesPerCluster) : 0.0; }
+double perByte(const CullTestStatistics& r) { return r.bytesPerCluster ? r.efficiency / double(r.bytesPerCluster) : 0.0; }
 
 double share(size_t part, size_t whole) { return whole ? double(part) / double(whole) : 0.0; }
 

@@ -116,7 +116,7 @@ void measureConeScope(const MeshData& data, const MeshletLimits& limits, size_t 
                 // The oracle reads faces only: the same for every cone, so it is measured once.
                 if (test == CullTest::Oracle && oracleDone) continue;
                 for (const auto& [distance, views] : data.views) {
-                    const TestStatistics statistics = measureCulling(input, views, test);
+                    const CullTestStatistics statistics = measureCulling(input, views, test);
                     Row row = base;
                     row.cone = test == CullTest::Oracle ? "-" : toString(cone);
                     row.test = toString(test);

@@ -19,6 +19,7 @@
 #include "core/SettingsSchema.h"
 #include "io/BatchReport.h"
 #include "io/BatchTable.h"
+#include "io/ClusterIdFile.h"
 #include "io/ComparisonIO.h"
 #include "io/ClusterFiles.h"
 #include "io/MeshReader.h"
@@ -129,7 +130,7 @@ using Document = std::pair<std::string, std::vector<std::string>>;
 
 Document statsDocument(const Mesh& mesh, const std::string& name, const SettingPairs& pairs, bool perView, bool perCluster,
                        std::vector<std::string> notes) {
-    const Settings settings = settingsFrom(pairs);
+    const Settings settings = withClusterIds(settingsFrom(pairs));
     const RunStatistics run = withoutGil([&] { return runStatistics(mesh, settings, name, keepGoing); });
     for (const std::string& warning : cli::runWarnings(run)) notes.push_back(warning);
     return {statisticsJsonText(run, {perView, perCluster}), notes};
@@ -137,7 +138,7 @@ Document statsDocument(const Mesh& mesh, const std::string& name, const SettingP
 
 Document clustersDocument(const Mesh& mesh, const std::string& name, const SettingPairs& pairs, const std::string& sort,
                           size_t top, std::vector<std::string> notes) {
-    const Settings settings = cli::clusterTableSettings(settingsFrom(pairs));
+    const Settings settings = cli::clusterTableSettings(withClusterIds(settingsFrom(pairs)));
     const ClusterSortKey key = parseClusterSortKey(sort);
     const RunStatistics run = withoutGil([&] { return runStatistics(mesh, settings, name, keepGoing); });
     for (const std::string& warning : cli::runWarnings(run)) notes.push_back(warning);
@@ -147,7 +148,7 @@ Document clustersDocument(const Mesh& mesh, const std::string& name, const Setti
 Document compareDocument(const Mesh& mesh, const std::string& name, const std::string& a, const std::string& b,
                          const SettingPairs& pairs, bool perView, bool perCluster, std::vector<std::string> notes) {
     const Settings base = settingsFrom(pairs);
-    const Settings settingsA = parseConfiguration(a, base), settingsB = parseConfiguration(b, base);
+    const Settings settingsA = withClusterIds(parseConfiguration(a, base)), settingsB = withClusterIds(parseConfiguration(b, base));
     const ComparedRuns runs =
         withoutGil([&] { return cli::compareMesh(mesh, name, settingsA, settingsB, base, keepGoing); });
     for (const std::string& warning : cli::runWarnings(runs.a, "A: ")) notes.push_back(warning);

@@ -129,7 +129,14 @@ CommandLineResult parseCommandLine(const QStringList& arguments) {
                                                     "K=V[,K=V...] (as conescope-cli compare --a), B the options given; faces "
                                                     "coloured by what only A, only B or both cull."),
                                      QStringLiteral("K=V"));
-    parser.addOptions({screenshot, size, fromEye, coloring, layers, pick, gaussMap, compare});
+    const QCommandLineOption replay(QStringLiteral("replay"),
+                                    QStringLiteral("Play the steps of a replay file in the window (open, set, eye, pin, "
+                                                   "export, screenshot, ...; see the README), each once the window is "
+                                                   "idle, and exit: 0 after the last, 1 with the step at fault. Without "
+                                                   "MESH the window starts empty."),
+                                    QStringLiteral("FILE.json"));
+    const QCommandLineOption stay(QStringLiteral("stay"), QStringLiteral("With --replay: keep the window open afterwards."));
+    parser.addOptions({screenshot, size, fromEye, coloring, layers, pick, gaussMap, compare, replay, stay});
     for (const auto& [field, option] : settingOptions) parser.addOption(option);
     QStringList extensions;
     for (const std::string& extension : supportedMeshExtensions()) extensions << QString::fromStdString(extension);
@@ -201,6 +208,12 @@ CommandLineResult parseCommandLine(const QStringList& arguments) {
         }
         if (parser.isSet(gaussMap) && (!options.pick || options.gaussMap.isEmpty()))
             throw std::invalid_argument("--gauss-map needs a file name and --pick");
+        options.replay = parser.value(replay);
+        options.stay = parser.isSet(stay);
+        if (parser.isSet(replay) && options.replay.isEmpty()) throw std::invalid_argument("--replay needs a file name");
+        if (!options.replay.isEmpty() && !options.screenshot.isEmpty())
+            throw std::invalid_argument("--replay plays in the window: use its screenshot steps instead of --screenshot");
+        if (options.stay && options.replay.isEmpty()) throw std::invalid_argument("--stay only applies to --replay");
     } catch (const std::exception& error) {
         result.action = CommandLineResult::Action::ExitFailure;
         result.message = QString::fromStdString(error.what());
@@ -212,7 +225,7 @@ int runHeadlessScreenshot(const AppOptions& options) {
     try {
         const QString meshPath = options.mesh.isEmpty() ? defaultMeshPath() : options.mesh;
         if (meshPath.isEmpty()) throw std::runtime_error("no mesh given and no bundled mesh found");
-        const Settings& settings = options.settings;
+        const Settings settings = withClusterIds(options.settings);
         PreparedMesh prepared = loadMesh(meshPath.toStdString(), settings);
         // A cluster file that could not be used is an error here, not a reason to show other clusters.
         if (needsClusterFile(prepared, settings)) prepared = reprepareMesh(prepared, settings);
@@ -236,8 +249,10 @@ int runHeadlessScreenshot(const AppOptions& options) {
         showEyeColouring(scene, prepared, clusters, measurement, options.coloring);
         if (options.compare) {
             // A: the options changed by --compare; B: the clusters shown. The diff of this eye per face.
-            const ClusterSet a = buildClusters(prepared, parseConfiguration(*options.compare, settings));
-            const std::string warning = clusterCountWarning(showComparison(scene, prepared, a, clusters, measurement));
+            const Settings settingsA = withClusterIds(parseConfiguration(*options.compare, settings));
+            const ClusterSet a = buildClusters(prepared, settingsA);
+            const std::string warning =
+                clusterCountWarning(showComparison(scene, prepared, {a, settingsA}, {clusters, settings}, measurement));
             if (!warning.empty()) std::cerr << "conescope: warning: " << warning << '\n';
         }
         for (const auto& [layer, visible] : firstLookLayers()) scene.setLayerVisible(layer, visible);

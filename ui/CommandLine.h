@@ -1,5 +1,6 @@
-// The application's command line (QCommandLineParser): a mesh to open, the run settings, and the
-// headless `--screenshot OUT.png` mode that renders one frame and exits without a window.
+// The application's command line (QCommandLineParser): a mesh to open, the run settings, the
+// headless `--screenshot OUT.png` mode that renders one frame and exits without a window, and
+// `--replay FILE.json`, which plays a replay's steps in the window (ReplaySteps.h).
 #pragma once
 
 #include <algorithm>
@@ -29,6 +30,8 @@ struct AppOptions {
     std::optional<size_t> pick;       // --pick: the cluster highlighted in the screenshot, its test drawn
     QString gaussMap;                 // --gauss-map: also write the picked cluster's Gauss map to this PNG
     std::optional<std::string> compare;  // --compare K=V,...: A for an A/B screenshot (B: the options given)
+    QString replay;                   // --replay FILE.json: play its steps in the window, then exit
+    bool stay = false;                // --stay: keep the window open after the replay
 };
 
 // The scene's names (toString(Layer)). Throws std::invalid_argument.

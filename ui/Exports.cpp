@@ -13,6 +13,8 @@
 #include <vtkRenderWindow.h>
 #include <vtkWindowToImageFilter.h>
 
+#include "io/ClusterIdFile.h"
+#include "io/ComparisonIO.h"
 #include "io/MeshWriter.h"
 #include "io/StatisticsIO.h"
 
@@ -24,28 +26,50 @@ StatisticsFormat statisticsFormatOf(const std::string& path) {
     return extension == ".csv" ? StatisticsFormat::Csv : StatisticsFormat::Json;
 }
 
+namespace {
+
+void writeFile(const std::string& file, const std::function<void(std::ostream&)>& content) {
+    std::ofstream out(file, std::ios::binary);
+    if (!out) throw std::runtime_error(file + ": cannot open for writing");
+    content(out);
+    out.close();
+    if (!out) throw std::runtime_error(file + ": write failed");
+}
+
+}  // namespace
+
 RunStatistics exportStatistics(const PreparedMesh& prepared, const ClusterSet& clusters, const Settings& settings,
                                const std::string& path, StatisticsFormat format, const ProgressCallback& progress) {
-    RunStatistics run = measureRun(prepared, clusters, settings, progress);
-    const auto write = [](const std::string& file, const std::function<void(std::ostream&)>& content) {
-        std::ofstream out(file, std::ios::binary);
-        if (!out) throw std::runtime_error(file + ": cannot open for writing");
-        content(out);
-        out.close();
-        if (!out) throw std::runtime_error(file + ": write failed");
-    };
+    // A run whose settings make the clusters stale builds them again, reading a cluster file anew.
+    RunStatistics run = measureRun(prepared, clusters, withClusterIds(settings), progress);
     if (format == StatisticsFormat::Csv) {
         for (const auto& [table, file] : csvTableFiles(path))
-            write(file, [&run, table = table](std::ostream& out) { writeStatisticsCsv(run, out, table); });
+            writeFile(file, [&run, table = table](std::ostream& out) { writeStatisticsCsv(run, out, table); });
     } else {
-        write(path, [&run](std::ostream& out) { writeStatisticsJson(run, out); });
+        writeFile(path, [&run](std::ostream& out) { writeStatisticsJson(run, out); });
     }
     return run;
 }
 
-void exportPartition(const PreparedMesh& prepared, const ClusterSet& clusters, const EyeMeasurement* eye,
+Comparison exportComparison(const PreparedMesh& prepared, const ClusterConfiguration& a, const ClusterConfiguration& b,
+                            const std::string& path, StatisticsFormat format, const ProgressCallback& progress) {
+    // Each side as `stats` with its settings would write it, then the diff: what runCompare writes.
+    const RunStatistics runA = measureRun(prepared, a.clusters, a.settings, progressWithin(progress, 0.0, 0.4));
+    const RunStatistics runB = measureRun(prepared, b.clusters, b.settings, progressWithin(progress, 0.4, 0.8));
+    const Comparison comparison =
+        compareClusterSets(prepared, a, b, viewsFor(b.settings, prepared.box), progressWithin(progress, 0.8, 1.0));
+    writeFile(path, [&](std::ostream& out) {
+        if (format == StatisticsFormat::Csv)
+            writeComparisonCsv(comparison, out);
+        else
+            writeComparisonJson(runA, runB, comparison, StatisticsDetail{}, out);
+    });
+    return comparison;
+}
+
+void exportPartition(const PreparedMesh& prepared, const ClusterSet& clusters, CullTest test, const EyeMeasurement* eye,
                      const std::string& path) {
-    std::map<std::string, std::vector<double>> arrays = partitionFaceArrays(prepared, clusters);
+    std::map<std::string, std::vector<double>> arrays = partitionFaceArrays(prepared, clusters, test);
     if (eye) arrays.merge(eyeFaceArrays(prepared, clusters, *eye));
     writePolyData(prepared.mesh(), path, arrays);
 }

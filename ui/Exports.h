@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "core/Comparison.h"
 #include "core/Pipeline.h"
 
 class vtkRenderWindow;
@@ -24,12 +25,18 @@ StatisticsFormat statisticsFormatOf(const std::string& path);
 RunStatistics exportStatistics(const PreparedMesh& prepared, const ClusterSet& clusters, const Settings& settings,
                                const std::string& path, StatisticsFormat format, const ProgressCallback& progress = {});
 
+// A (pinned) against B as `conescope-cli compare` writes it: JSON with `a` and `b` as measureRun
+// gives each (`a.settings` with B's views) and the `diff` of compareClusterSets over B's views; CSV
+// its per-view table. Returns the comparison. Throws as exportStatistics.
+Comparison exportComparison(const PreparedMesh& prepared, const ClusterConfiguration& a, const ClusterConfiguration& b,
+                            const std::string& path, StatisticsFormat format, const ProgressCallback& progress = {});
+
 // The culled mesh with cluster_id and the per-cluster cone and bound arrays per face
-// (partitionFaceArrays), through writePolyData: .vtp or .vtk keep the arrays, and the `file`
-// builder reads cluster_id back. Throws MeshWriteError.
+// (partitionFaceArrays, cull_fraction for `test`), through writePolyData: .vtp or .vtk keep the
+// arrays, and the `file` builder reads cluster_id back. Throws MeshWriteError.
 // With an eye's measurement, also what happened to each face from that eye (eyeFaceArrays: culled,
 // back_facing, loss), for ParaView and the like.
-void exportPartition(const PreparedMesh& prepared, const ClusterSet& clusters, const EyeMeasurement* eye,
+void exportPartition(const PreparedMesh& prepared, const ClusterSet& clusters, CullTest test, const EyeMeasurement* eye,
                      const std::string& path);
 
 // The window's current picture as PNG (vtkWindowToImageFilter, back buffer re-rendered).

@@ -28,7 +28,11 @@ QString HelpDialog::shortcutsHtml(const QList<QAction*>& actions) {
         "<tr><td>Left click (no drag)</td><td>pick a cluster: its cone, bounds and the test's numbers</td></tr>"
         "<tr><td>Drag the eye handle</td><td>move the cull eye</td></tr></table>"
         "<h3>Colours</h3><p>Cull decision colouring: grey = culled, blue = drawn (a face may be seen), orange = missed "
-        "cull (every face faces away, the test was not sure), red = false cull (must never appear).</p>");
+        "cull (every face faces away, the test was not sure), red = false cull (must never appear).</p>"
+        "<p>Loss colouring: grey = culled, orange = lost to the test, violet = lost to the partition, blue = visible. "
+        "A/B colouring: orange = culled by A only, light blue = by B only, grey = by both, slate = by neither.</p>"
+        "<p>Magenta is the cull eye, turquoise the view vector v, yellow the picked cluster; the legend in the view "
+        "lists what is shown.</p>");
     return html;
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include <QAction>
+#include <QApplication>
 #include <QDockWidget>
 #include <QDragEnterEvent>
 #include <QDropEvent>
@@ -37,7 +38,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     view_ = new ObserverView(this);
     setCentralWidget(view_);
     createDocks();
-    actions_ = new WindowActions(this, &session_, eyeViewDock_, plotsDock_);
+    actions_ = new WindowActions(this, &session_, eyeViewDock_, plotsDock_, gaussMapDock_);
     statusLine_ = new StatusLine(statusBar(), &session_);
     settingsPanel_->setSettings(session_.settings());
     connectSession();
@@ -81,17 +82,10 @@ void MainWindow::createDocks() {
                   dock(tr("Statistics"), "statisticsDock", scrolled(statisticsPanel_), Qt::RightDockWidgetArea),
                   dock(tr("Picked cluster"), "clusterDock", clusterView_, Qt::RightDockWidgetArea)};
     // Beside the picked cluster's numbers: its normals and cones on the unit sphere (G raises it).
-    QDockWidget* gaussDock = dock(tr("Gauss map"), "gaussMapDock", gaussMap_, Qt::RightDockWidgetArea);
-    tabifyDockWidget(sideDocks_[3], gaussDock);
+    gaussMapDock_ = dock(tr("Gauss map"), "gaussMapDock", gaussMap_, Qt::RightDockWidgetArea);
+    tabifyDockWidget(sideDocks_[3], gaussMapDock_);
     sideDocks_[3]->raise();
-    showGaussMap_ = new QAction(tr("Show the Gauss map"), this);
-    showGaussMap_->setShortcut(QKeySequence(tr("G")));
-    connect(showGaussMap_, &QAction::triggered, gaussDock, [gaussDock]() {
-        gaussDock->show();
-        gaussDock->raise();
-    });
-    addAction(showGaussMap_);
-    connect(gaussDock, &QDockWidget::visibilityChanged, this, [this](bool visible) {
+    connect(gaussMapDock_, &QDockWidget::visibilityChanged, this, [this](bool visible) {
         if (visible) gaussMap_->render();
     });
 
@@ -129,7 +123,11 @@ void MainWindow::connectSession() {
         render();
     });
     connect(&session_, &Session::meshShown, this, &MainWindow::showMesh);
-    connect(&session_, &Session::settingsAdjusted, settingsPanel_, &SettingsPanel::setSettings);
+    connect(&session_, &Session::settingsChanged, settingsPanel_, &SettingsPanel::setSettings);
+    connect(&session_, &Session::faceColoringChanged, this, [this](FaceColoring coloring) {
+        actions_->coloringAction(coloring)->setChecked(true);
+        if (session_.scene()) render();
+    });
     connect(&session_, &Session::errorOccurred, this, &MainWindow::showError);
     connect(&session_, &Session::notice, statusBar(), &QStatusBar::showMessage);
 }
@@ -146,11 +144,7 @@ void MainWindow::connectControls() {
     connect(eyePanel_, &EyePanel::animateToggled, this, &MainWindow::setAnimating);
     connect(view_, &ObserverView::clicked, this, &MainWindow::pickDisplay);
     connect(worstClusters_, &WorstClustersView::clusterChosen, this, &MainWindow::chooseCluster);
-    connect(plots_, &PlotsView::viewClicked, this, [this](long view) {
-        if (!session_.preparedMesh()) return;
-        const std::vector<Eye> views = orbitOf(session_.settings(), session_.preparedMesh()->box);
-        if (view >= 0 && size_t(view) < views.size()) session_.moveEye(views[size_t(view)].position, view);
-    });
+    connect(plots_, &PlotsView::viewClicked, &session_, &Session::moveEyeToOrbitView);
     connect(view_, &ObserverView::cameraMoved, &session_, &Session::followCamera);
     connect(view_, &ObserverView::eyeHandleMoved, &session_, &Session::moveEyeSoon);
 }
@@ -165,7 +159,7 @@ void MainWindow::showScene(const ClusterScene* previous, bool newMesh) {
         eyePanel_->setScale(2.0 * double(session_.preparedMesh()->box.halfDiagonal()));
         view_->placeEyeHandle(session_.eyePosition(), true);
     }
-    statisticsPanel_->showClusters(*session_.preparedMesh(), *session_.clusters());
+    statisticsPanel_->showClusters(*session_.preparedMesh(), *session_.clusters(), session_.settings());
     const EyeMeasurement* measurement = session_.measurement();
     plots_->showHalfAngles(measurement ? measurement->statistics.clusters : std::vector<ClusterStatistics>{});
     showOrbit();
@@ -202,7 +196,9 @@ void MainWindow::showOrbit() {
 void MainWindow::showMesh(const QString& path, const QString& loadMessage) {
     // A new mesh is looked at from the side of its eye, once the eye is measured and drawn.
     resetCamera();
-    if (!loadMessage.isEmpty()) statusBar()->showMessage(loadMessage, 30000);
+    // The previous mesh's message goes with it, so it is never read as this one's.
+    if (loadMessage.isEmpty()) statusBar()->clearMessage();
+    else statusBar()->showMessage(loadMessage, 30000);
     actions_->addRecentFile(QFileInfo(path).absoluteFilePath());
     setWindowTitle(tr("ConeScope - %1").arg(QFileInfo(path).fileName()));
     emit meshShown(path);
@@ -239,10 +235,7 @@ bool MainWindow::openMeshBlocking(const QString& path) {
 
 void MainWindow::waitUntilIdle() { session_.waitUntilIdle(); }
 
-void MainWindow::setSettings(const Settings& settings) {
-    settingsPanel_->setSettings(settings);
-    session_.applySettings(settingsPanel_->settings());
-}
+void MainWindow::setSettings(const Settings& settings) { session_.applySettings(settings); }
 
 void MainWindow::setEyePosition(const glm::dvec3& position) { session_.moveEye(position, -1); }
 
@@ -263,16 +256,9 @@ QString MainWindow::clusterReportHtml() const { return clusterView_->toHtml(); }
 
 QPoint MainWindow::viewPositionOf(const glm::dvec3& world) const { return view_->viewPositionOf(world); }
 
-void MainWindow::pinAsA() {
-    if (!session_.clusters()) return;
-    session_.pinAsA();
-    setFaceColoring(FaceColoring::Comparison);
-}
+void MainWindow::pinAsA() { session_.pinAsA(); }
 
-void MainWindow::clearPin() {
-    session_.clearPin();
-    if (session_.faceColoring() == FaceColoring::Comparison) setFaceColoring(FaceColoring::CullDecision);
-}
+void MainWindow::clearPin() { session_.clearPin(); }
 
 void MainWindow::chooseCluster(int cluster) {
     session_.showClusterWhereItIsLost(cluster);
@@ -297,6 +283,21 @@ bool MainWindow::exportStatistics(const QString& path, StatisticsFormat format, 
 
 bool MainWindow::exportPartition(const QString& path) { return session_.exportPartition(path); }
 
+bool MainWindow::saveWindowScreenshot(const QString& path) {
+    QApplication::processEvents();
+    if (!grab().save(path, "PNG")) {
+        showError(tr("Cannot save the screenshot"), tr("%1: cannot write the PNG").arg(path));
+        return false;
+    }
+    statusBar()->showMessage(tr("Wrote %1").arg(path), 6000);
+    return true;
+}
+
+void MainWindow::showCaption(const QString& text) {
+    view_->setCaption(text);
+    view_->render();
+}
+
 bool MainWindow::saveScreenshot(const QString& path) {
     try {
         view_->render();
@@ -313,15 +314,11 @@ void MainWindow::setLayerVisible(Layer layer, bool visible) { actions_->layerAct
 
 bool MainWindow::layerVisible(Layer layer) const { return actions_->layerAction(layer)->isChecked(); }
 
-void MainWindow::setFaceColoring(FaceColoring coloring) {
-    actions_->coloringAction(coloring)->setChecked(true);
-    session_.setFaceColoring(coloring);
-    if (session_.scene()) render();
-}
+void MainWindow::setFaceColoring(FaceColoring coloring) { session_.setFaceColoring(coloring); }
 
 QVTKOpenGLNativeWidget* MainWindow::observerView() const { return view_; }
 QVTKOpenGLNativeWidget* MainWindow::eyeView() const { return eyeView_; }
-QList<QAction*> MainWindow::shortcutActions() const { return actions_->shortcutActions() << showGaussMap_; }
+QList<QAction*> MainWindow::shortcutActions() const { return actions_->shortcutActions(); }
 QAction* MainWindow::animateAction() const { return actions_->animateAction(); }
 QAction* MainWindow::followAction() const { return actions_->followAction(); }
 QStringList MainWindow::recentFiles() const { return WindowActions::recentFiles(); }

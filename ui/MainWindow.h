@@ -74,10 +74,14 @@ public:
     QPoint viewPositionOf(const glm::dvec3& world) const;
     void resetCamera();
 
-    // Blocking exports; false (and errorShown) on failure.
+    // Blocking exports; false (and errorShown) on failure. saveScreenshot: the 3D view;
+    // saveWindowScreenshot: the whole window, docks and status bar included.
     bool exportStatistics(const QString& path, StatisticsFormat format, bool orbit);
     bool exportPartition(const QString& path);
     bool saveScreenshot(const QString& path);
+    bool saveWindowScreenshot(const QString& path);
+    // A line of text over the 3D view (a replay's caption); empty removes it.
+    void showCaption(const QString& text);
 
     // Errors always emit errorShown(); with dialogs off no QMessageBox is opened (tests).
     void setErrorDialogsEnabled(bool enabled) { errorDialogs_ = enabled; }
@@ -98,6 +102,8 @@ public:
     QAction* followAction() const;
     QStringList recentFiles() const;
     const Session& session() const { return session_; }
+    // The actions a click and a replayed step share.
+    Session& session() { return session_; }
 
     // --- What the menus and the eye panel ask for ---------------------------------------------------
     // Puts the cull eye at the observer's camera.
@@ -149,7 +155,7 @@ private:
     PlotsView* plots_ = nullptr;
     PickedClusterView* clusterView_ = nullptr;
     GaussMapView* gaussMap_ = nullptr;
-    QAction* showGaussMap_ = nullptr;
+    QDockWidget* gaussMapDock_ = nullptr;
     WorstClustersView* worstClusters_ = nullptr;
     SettingsPanel* settingsPanel_ = nullptr;
     EyePanel* eyePanel_ = nullptr;

@@ -1,10 +1,12 @@
 #include "MeshLoading.h"
 
+#include <cctype>
 #include <chrono>
 #include <filesystem>
 
 #include "io/ClusterFiles.h"
 #include "io/MeshReader.h"
+#include "io/MeshletFiles.h"
 
 namespace conescope {
 
@@ -30,7 +32,9 @@ PreparedMesh loadMesh(const std::string& path, const Settings& settings, const P
 }
 
 bool needsClusterFile(const PreparedMesh& prepared, const Settings& settings) {
-    return settings.builder == Builder::File && !settings.clusterFile.empty() && !prepared.original->fileClusters.count(settings.clusterFile);
+    // Id files travel in the settings (withClusterIds); only a meshlet file is read onto the mesh.
+    return settings.builder == Builder::File && !settings.clusterFile.empty() && !prepared.original->fileClusters.count(settings.clusterFile) &&
+           isMeshletFile(settings.clusterFile);
 }
 
 PreparedMesh reprepareMesh(const PreparedMesh& prepared, const Settings& settings, const ProgressCallback& progress) {
@@ -47,14 +51,25 @@ PreparedMesh reprepareMesh(const PreparedMesh& prepared, const Settings& setting
 }
 
 std::string loadMessage(const PreparedMesh& prepared) {
-    std::string message;
-    for (const std::string& note : prepared.readerNotes) message += (message.empty() ? "" : "; ") + note;
+    std::vector<std::string> pieces = prepared.readerNotes;
     const std::string warning = windingWarning(prepared.report);
     if (!warning.empty())
-        message += (message.empty() ? "Warning: " : "; warning: ") + warning +
-                   (prepared.windingFixedFaces > 0 ? " (repaired: " + std::to_string(prepared.windingFixedFaces) + " faces flipped)"
-                                                   : "; tick 'Fix winding' in Settings to repair");
-    return message;
+        pieces.push_back("Warning: " + warning +
+                         (prepared.windingFixedFaces > 0 ? " (repaired: " + std::to_string(prepared.windingFixedFaces) + " faces flipped)"
+                                                         : "; tick 'Fix winding' in Settings to repair"));
+    return joinSentences(pieces);
+}
+
+std::string joinSentences(const std::vector<std::string>& pieces) {
+    std::string text;
+    for (std::string piece : pieces) {
+        while (!piece.empty() && std::isspace(static_cast<unsigned char>(piece.back()))) piece.pop_back();
+        if (piece.empty()) continue;
+        piece[0] = char(std::toupper(static_cast<unsigned char>(piece[0])));
+        if (piece.back() != '.' && piece.back() != '!' && piece.back() != '?') piece += '.';
+        text += (text.empty() ? "" : " ") + piece;
+    }
+    return text;
 }
 
 }  // namespace conescope

@@ -1,11 +1,14 @@
 // A mesh file to the pipeline's first stage: read (src/io), then prepared (core/Pipeline.h), with
-// what the user should be told about it.
+// what the user should be told about it; and the file builder's cluster id files, read through io
+// before clusters are built (withClusterIds).
 #pragma once
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "core/Pipeline.h"
+#include "io/ClusterIdFile.h"
 
 namespace conescope {
 
@@ -17,7 +20,7 @@ namespace conescope {
 PreparedMesh loadMesh(const std::string& path, const Settings& settings, const ProgressCallback& progress = {},
                       std::shared_ptr<MeshletStream>* meshlets = nullptr);
 
-// Whether `settings` use a cluster file the prepared mesh was not read with.
+// Whether `settings` use a meshlet file the prepared mesh was not read with.
 bool needsClusterFile(const PreparedMesh& prepared, const Settings& settings);
 
 // The mesh prepared again for `settings`: the winding repair asked for, and a cluster file it was
@@ -25,7 +28,12 @@ bool needsClusterFile(const PreparedMesh& prepared, const Settings& settings);
 PreparedMesh reprepareMesh(const PreparedMesh& prepared, const Settings& settings, const ProgressCallback& progress = {});
 
 // What the user should know about a loaded mesh, in one line for the status bar: the reader's notes
-// and the winding warning (with how to repair it, or what was repaired). Empty when nothing.
+// and the winding warning (with how to repair it, or what was repaired), as sentences. Empty when
+// nothing.
 std::string loadMessage(const PreparedMesh& prepared);
+
+// Pieces of text as sentences on one line: each capitalised and ended with a full stop (unless it
+// ends with one already, or ! or ?), separated by spaces; empty pieces left out.
+std::string joinSentences(const std::vector<std::string>& pieces);
 
 }  // namespace conescope

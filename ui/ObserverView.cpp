@@ -11,6 +11,8 @@
 #include <vtkRenderWindow.h>
 #include <vtkRenderWindowInteractor.h>
 #include <vtkRenderer.h>
+#include <vtkTextActor.h>
+#include <vtkTextProperty.h>
 
 #include "ObserverStyle.h"
 #include "scene/ClusterScene.h"
@@ -66,6 +68,23 @@ ObserverView::ObserverView(QWidget* parent) : QVTKOpenGLNativeWidget(parent) {
     interactor()->AddObserver(vtkCommand::LeftButtonPressEvent, clickObserver_);
     interactor()->AddObserver(vtkCommand::LeftButtonReleaseEvent, clickObserver_);
     cameraObserver_ = renderer_->GetActiveCamera()->AddObserver(vtkCommand::ModifiedEvent, this, &ObserverView::onCameraModified);
+
+    // A caption (a replay's): centred at the top, on a dark band so it reads over any mesh.
+    caption_ = vtkSmartPointer<vtkTextActor>::New();
+    vtkTextProperty* text = caption_->GetTextProperty();
+    text->SetFontSize(20);
+    text->SetFontFamilyToArial();
+    text->SetJustificationToCentered();
+    text->SetVerticalJustificationToTop();
+    text->SetColor(1.0, 1.0, 1.0);
+    text->SetBackgroundColor(0.0, 0.0, 0.0);
+    text->SetBackgroundOpacity(0.6);
+    text->SetFrame(false);
+    caption_->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+    caption_->GetPositionCoordinate()->SetValue(0.5, 0.97);
+    caption_->SetVisibility(false);
+    caption_->PickableOff();
+    renderer_->AddViewProp(caption_);
 
     eyeHandleRepresentation_ = eyeHandleRepresentation();
     eyeHandle_ = vtkSmartPointer<vtkHandleWidget>::New();
@@ -160,6 +179,13 @@ int ObserverView::clusterAt(const ClusterScene& scene, const QPoint& display) {
 }
 
 void ObserverView::render() { renderWindow()->Render(); }
+
+void ObserverView::setCaption(const QString& text) {
+    caption_->SetInput(text.toUtf8().constData());
+    caption_->SetVisibility(!text.isEmpty());
+}
+
+QString ObserverView::caption() const { return caption_->GetVisibility() ? QString::fromUtf8(caption_->GetInput()) : QString(); }
 
 void ObserverView::onLeftButtonPress() { interactor()->GetEventPosition(pressPosition_); }
 

@@ -18,6 +18,7 @@ class vtkHandleWidget;
 class vtkObject;
 class vtkPointHandleRepresentation3D;
 class vtkRenderer;
+class vtkTextActor;
 
 namespace conescope {
 
@@ -54,6 +55,9 @@ public:
     int clusterAt(const ClusterScene& scene, const QPoint& display);
 
     void render();
+    // A line of text centred over the top of the view; empty hides it.
+    void setCaption(const QString& text);
+    QString caption() const;
 
 signals:
     void clicked(const QPoint& display);
@@ -74,6 +78,7 @@ private:
     bool following_ = false;
     bool handleShown_ = false;  // placeEyeHandle has shown it (a mesh is there)
     vtkSmartPointer<vtkHandleWidget> eyeHandle_;
+    vtkSmartPointer<vtkTextActor> caption_;
     vtkSmartPointer<vtkPointHandleRepresentation3D> eyeHandleRepresentation_;
 };
 

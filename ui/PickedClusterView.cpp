@@ -1,5 +1,8 @@
 #include "PickedClusterView.h"
 
+#include <QAbstractTextDocumentLayout>
+#include <QScrollBar>
+
 #include "ClusterReport.h"
 #include "Session.h"
 
@@ -15,7 +18,7 @@ void PickedClusterView::showPick(const Session& session) {
     const int picked = session.pickedCluster();
     const EyeMeasurement* measurement = session.measurement();
     if (picked < 0 || !session.clusters() || !measurement) {
-        setHtml(picked < 0 ? emptyClusterReportHtml() : tr("<p>Cluster %1: no valid eye to explain.</p>").arg(picked));
+        showPage(-1, picked < 0 ? emptyClusterReportHtml() : tr("<p>Cluster %1: no valid eye to explain.</p>").arg(picked));
         return;
     }
     ClusterReportInput input;
@@ -36,7 +39,20 @@ void PickedClusterView::showPick(const Session& session) {
         a.explanation = explainCull(cullingInput(*session.preparedMesh(), *session.pinnedClusters()), a.cluster, a.eye, a.test);
         underA = pinnedClusterHtml(a);
     }
-    setHtml(clusterReportHtml(input, underA));
+    showPage(picked, clusterReportHtml(input, underA));
+}
+
+void PickedClusterView::showPage(int cluster, const QString& html) {
+    // The same cluster from another eye: the reader keeps their place (the margin while the eye is
+    // dragged); another cluster starts at the top.
+    const bool samePage = cluster >= 0 && cluster == shownCluster_;
+    const int vertical = verticalScrollBar()->value(), horizontal = horizontalScrollBar()->value();
+    setHtml(html);
+    shownCluster_ = cluster;
+    if (!samePage) return;
+    document()->documentLayout()->documentSize();  // lays the page out, so the scroll bars have their range
+    verticalScrollBar()->setValue(vertical);
+    horizontalScrollBar()->setValue(horizontal);
 }
 
 }  // namespace conescope

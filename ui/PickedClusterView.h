@@ -13,8 +13,14 @@ class PickedClusterView : public QTextBrowser {
 public:
     explicit PickedClusterView(QWidget* parent = nullptr);
 
-    // The session's picked cluster explained for its current eye and displayed test.
+    // The session's picked cluster explained for its current eye and displayed test; the page keeps
+    // its scroll position while the same cluster is shown.
     void showPick(const Session& session);
+
+private:
+    void showPage(int cluster, const QString& html);
+
+    int shownCluster_ = -1;
 };
 
 }  // namespace conescope

@@ -42,9 +42,9 @@ void showEyeColouring(ClusterScene& scene, const PreparedMesh& prepared, const C
     else scene.setFaceLoss(faceLosses(clusters, measurement, facing));
 }
 
-Comparison showComparison(ClusterScene& scene, const PreparedMesh& prepared, const ClusterSet& a, const ClusterSet& b,
-                          const EyeMeasurement& measurement) {
-    const std::vector<uint8_t> culledA = cullClusters(cullingInput(prepared, a), measurement.eye, displayedTest(a.settings));
+Comparison showComparison(ClusterScene& scene, const PreparedMesh& prepared, const ClusterConfiguration& a,
+                          const ClusterConfiguration& b, const EyeMeasurement& measurement) {
+    const std::vector<uint8_t> culledA = cullClusters(cullingInput(prepared, a.clusters), measurement.eye, displayedTest(a.settings));
     std::vector<FaceDiff> diff;
     Comparison comparison = compareAtEye(prepared, a, culledA, b, measurement.culled, measurement.eye, diff);
     scene.setFaceComparison(diff, clusterCountWarning(comparison));

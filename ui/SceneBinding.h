@@ -28,11 +28,11 @@ void showMeasurement(ClusterScene& scene, const PreparedMesh& prepared, const Cl
 void showEyeColouring(ClusterScene& scene, const PreparedMesh& prepared, const ClusterSet& clusters,
                       const EyeMeasurement& measurement, FaceColoring coloring);
 
-// A (`a`, pinned or from --compare) against B (the scene's clusters, measured from the eye): A's
-// decisions from that eye, the per-face diff and the cluster-count warning into the scene. Returns
-// the eye's comparison, for the statistics.
-Comparison showComparison(ClusterScene& scene, const PreparedMesh& prepared, const ClusterSet& a, const ClusterSet& b,
-                          const EyeMeasurement& measurement);
+// A (`a`, pinned or from --compare) against B (the scene's clusters, measured from the eye with the
+// test of b.settings): A's decisions from that eye with the test of a.settings, the per-face diff and
+// the cluster-count warning into the scene. Returns the eye's comparison, for the statistics.
+Comparison showComparison(ClusterScene& scene, const PreparedMesh& prepared, const ClusterConfiguration& a,
+                          const ClusterConfiguration& b, const EyeMeasurement& measurement);
 
 // The picked cluster's test from the measured eye (Layer::Test); cluster -1 clears it.
 void showTestDrawing(ClusterScene& scene, const PreparedMesh& prepared, const ClusterSet& clusters, int cluster,

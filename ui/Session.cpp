@@ -8,6 +8,7 @@
 #include "MeshLoading.h"
 #include "SceneBinding.h"
 #include "TaskGroups.h"
+#include "core/SettingsSchema.h"
 
 namespace conescope {
 
@@ -15,17 +16,12 @@ namespace {
 
 constexpr int animationIntervalMs = 150;
 
-
 // Maps a stage's progress into [from, to] of the whole task.
 ProgressCallback scaled(const ProgressCallback& progress, double from, double to) {
     return [progress, from, to](double fraction, const std::string& stage) {
         return progress(from + (to - from) * fraction, stage);
     };
 }
-
-}  // namespace
-
-namespace {
 
 // The settings with the default builder instead of a file builder whose ids could not be used, so
 // a bad id file does not stick and raise its error again at every change.
@@ -50,13 +46,13 @@ Session::~Session() {
     runner_.cancelAll();
 }
 
-// --- Loading and recomputing ---------------------------------------------------------------------
+// --- Loading and building ------------------------------------------------------------------------
 
 void Session::openMesh(const QString& path) {
     // A new mesh replaces whatever was being computed for the old one.
     runner_.cancelAll();
     const std::string file = path.toStdString();
-    const Settings settings = settings_;
+    const Settings settings = asked_;
     runner_.run<SceneResult>(
         taskgroups::load, tr("Loading %1").arg(QFileInfo(path).fileName()),
         [file, settings](const ProgressCallback& progress) {
@@ -67,89 +63,160 @@ void Session::openMesh(const QString& path) {
             std::shared_ptr<ClusterSet> clusters;
             try {
                 clusters = std::make_shared<ClusterSet>(
-                    buildClusters(*prepared, chosen, nullptr, scaled(progress, 0.4, 0.9), meshlets.get()));
+                    buildClusters(*prepared, withClusterIds(chosen), nullptr, scaled(progress, 0.4, 0.9), meshlets.get()));
             } catch (const std::exception& error) {
                 if (chosen.builder != Builder::File) throw;
                 // A mesh that cannot be read by the file builder can still be looked at.
                 result.builderNote = std::string(error.what()) + ": clusters from the " + toString(Settings{}.builder) + " builder instead";
-                clusters = std::make_shared<ClusterSet>(
-                    buildClusters(*prepared, withoutClusterFile(chosen), nullptr, scaled(progress, 0.4, 0.9)));
+                chosen = withoutClusterFile(chosen);
+                clusters = std::make_shared<ClusterSet>(buildClusters(*prepared, chosen, nullptr, scaled(progress, 0.4, 0.9)));
             }
             progress(0.9, "scene");
             result.scene = makeScene(*prepared, *clusters);
-            result.prepared = prepared;
-            result.clusters = clusters;
+            result.snapshot = Snapshot{chosen, prepared, clusters};
             return result;
         },
         [this, path](SceneResult& result) {
             const std::string builderNote = result.builderNote;
-            adoptBuilderOf(*result.clusters);
+            // The builder the mesh is shown with is asked for from now on; whatever else was asked
+            // meanwhile stays asked.
+            const Settings& chosen = result.snapshot.settings;
+            if (chosen.builder != asked_.builder || chosen.clusterFile != asked_.clusterFile) {
+                asked_.builder = chosen.builder;
+                asked_.clusterFile = chosen.clusterFile;
+                emit settingsChanged(asked_);
+            }
             showSceneResult(result, true);
-            std::string message = loadMessage(*prepared_);
-            for (const std::string& note : {builderNote, budgetMissed(clusters_->settings, clusters_->partition.clusterCount)})
-                if (!note.empty()) message += (message.empty() ? "" : "; ") + note;
+            const std::string message = joinSentences(
+                {loadMessage(*shown_.prepared), builderNote, budgetMissed(shown_.settings, shown_.clusters->partition.clusterCount)});
             emit meshShown(path, QString::fromStdString(message));
         },
         [this, path](const QString& error) {
             emit errorOccurred(tr("Cannot open %1").arg(QFileInfo(path).fileName()),
-                               prepared_ ? error + tr("\n\nThe mesh shown before stays loaded.") : error);
+                               shown_.prepared ? error + tr("\n\nThe mesh shown before stays loaded.") : error);
+            // What was asked while it loaded goes to the mesh still shown.
+            if (shown_.prepared) reconcile();
         });
+    buildStarted();
 }
 
-void Session::requestClusters(bool reprepare) {
-    // A mesh still loading picks the current settings up when it arrives.
-    if (!prepared_ || runner_.busy(taskgroups::load)) return;
+bool Session::needsBuild() const {
+    return shown_.clusters && (shown_.prepared->fixWindingAsked != asked_.fixWinding || needsClusterFile(*shown_.prepared, asked_) ||
+                               boundsChanged(shown_.clusters->builtWith, asked_));
+}
+
+void Session::applySettings(const Settings& settings) {
+    asked_ = settings;
+    emit settingsChanged(asked_);
+    if (!shown_.prepared) {
+        shown_.settings = settings;  // no mesh: the next one is loaded with them
+        return;
+    }
+    // A mesh still loading picks them up when it arrives.
+    if (!runner_.busy(taskgroups::load)) reconcile();
+}
+
+void Session::reconcile() {
+    if (needsBuild()) {
+        requestClusters();
+        return;
+    }
+    // Back to what is built, or nothing to build: a queued build is not needed any more.
+    runner_.cancel(taskgroups::clusters);
+    const Settings before = shown_.settings;
+    setShownSettings(asked_);
+    const bool eyeChanged = displayedTest(before) != displayedTest(asked_) || before.orthographic != asked_.orthographic;
+    const bool orbitChanged = eyeChanged || before.views != asked_.views || before.distance != asked_.distance;
+    if (eyeChanged) updateEye();
+    // A build asked for and given up may have cancelled the snapshot's orbit: measured again.
+    if (orbitChanged || (!orbit_ && !runner_.busy(taskgroups::orbit))) {
+        clearOrbit();
+        requestOrbit();
+    }
+}
+
+void Session::setShownSettings(const Settings& settings) {
+    shown_.settings = settings;
+    // A is seen from the same eyes as B.
+    if (pin_) pin_->settings = withSharedOptions(pin_->settings, settings);
+}
+
+void Session::requestClusters() {
+    if (!shown_.prepared || runner_.busy(taskgroups::load)) return;
     runner_.cancel(taskgroups::clusters);
     runner_.cancel(taskgroups::orbit);
-    const std::shared_ptr<const PreparedMesh> prepared = prepared_;
-    const std::shared_ptr<const ClusterSet> previous = reprepare ? nullptr : clusters_;
-    const Settings settings = settings_;
+    const Snapshot from = shown_;
+    const Settings settings = asked_;
+    // Another winding repair, or a meshlet file the mesh was not read with (it may cut polygons).
+    const bool reprepare = from.prepared->fixWindingAsked != settings.fixWinding || needsClusterFile(*from.prepared, settings);
     runner_.run<SceneResult>(
         taskgroups::clusters, tr("Building clusters"),
-        [prepared, previous, settings, reprepare](const ProgressCallback& progress) {
-            SceneResult result;
-            result.prepared = prepared;
-            if (reprepare) result.prepared = std::make_shared<PreparedMesh>(reprepareMesh(*prepared, settings, scaled(progress, 0.0, 0.3)));
+        [from, settings, reprepare](const ProgressCallback& progress) {
+            std::shared_ptr<const PreparedMesh> prepared = from.prepared;
+            if (reprepare) prepared = std::make_shared<PreparedMesh>(reprepareMesh(*prepared, settings, scaled(progress, 0.0, 0.3)));
             auto clusters = std::make_shared<ClusterSet>(
-                buildClusters(*result.prepared, settings, previous.get(), scaled(progress, reprepare ? 0.3 : 0.0, 0.9)));
+                buildClusters(*prepared, withClusterIds(settings), reprepare ? nullptr : from.clusters.get(), scaled(progress, reprepare ? 0.3 : 0.0, 0.9)));
             progress(0.9, "scene");
-            result.scene = makeScene(*result.prepared, *clusters);
-            result.clusters = clusters;
+            SceneResult result;
+            result.scene = makeScene(*prepared, *clusters);
+            result.snapshot = Snapshot{settings, prepared, clusters};
             return result;
         },
         [this](SceneResult& result) {
             showSceneResult(result, false);
-            const std::string missed = budgetMissed(clusters_->settings, clusters_->partition.clusterCount);
+            const std::string missed = budgetMissed(shown_.settings, shown_.clusters->partition.clusterCount);
             if (!missed.empty()) emit notice(QString::fromStdString(missed), 8000);
         },
-        [this](const QString& error) {
-            if (settings_.builder == Builder::File) {
+        [this, settings](const QString& error) {
+            if (settings.builder == Builder::File) {
                 // Back to the default builder: the id file's error is said once, not at every change.
                 emit errorOccurred(tr("Cannot use the cluster ids"),
                                    error + tr("\n\nThe clusters come from the %1 builder instead.")
                                                .arg(QString::fromStdString(toString(Settings{}.builder))));
-                settings_ = withoutClusterFile(settings_);
-                emit settingsAdjusted(settings_);
-                requestClusters(false);
+                applySettings(withoutClusterFile(asked_));
                 return;
             }
-            emit errorOccurred(tr("Cannot build the clusters"), error);
+            buildFailed(error);
         });
+    buildStarted();
+}
+
+void Session::buildStarted() {
+    if (!cancelNextBuild_) return;
+    cancelNextBuild_ = false;
+    cancel();
+}
+
+void Session::buildFailed(const QString& error) {
+    emit errorOccurred(tr("Cannot build the clusters"), error + tr("\n\nThe clusters and settings shown before stay."));
+    revertToSnapshot();
+}
+
+void Session::cancel() {
+    runner_.cancelAll();
+    revertToSnapshot();
+    emit notice(tr("Cancelled: the mesh, clusters and settings shown before stay"), 5000);
+}
+
+void Session::revertToSnapshot() {
+    if (!shown_.prepared || sameSettings(asked_, shown_.settings)) return;
+    asked_ = shown_.settings;
+    emit settingsChanged(asked_);
 }
 
 void Session::requestOrbit() {
-    if (!prepared_ || !clusters_) return;
+    if (!shown_.clusters) return;
     runner_.cancel(taskgroups::orbit);
-    const std::shared_ptr<const PreparedMesh> prepared = prepared_;
-    const std::shared_ptr<const ClusterSet> clusters = clusters_;
-    const Settings settings = settings_;
-    runner_.run<TestStatistics>(
+    const Snapshot snapshot = shown_;
+    runner_.run<CullTestStatistics>(
         taskgroups::orbit, tr("Orbit statistics"),
-        [prepared, clusters, settings](const ProgressCallback& progress) {
-            return measureOrbit(*prepared, *clusters, settings, progress);
+        [snapshot](const ProgressCallback& progress) {
+            return measureOrbit(*snapshot.prepared, *snapshot.clusters, snapshot.settings, progress);
         },
-        [this, clusters](TestStatistics& orbit) {
-            if (clusters != clusters_) return;  // the clusters changed meanwhile; their own orbit follows
+        [this, snapshot](CullTestStatistics& orbit) {
+            // Made for other clusters meanwhile: their own orbit follows. (A change of test, views or
+            // projection asks for a new orbit, which cancels this one.)
+            if (snapshot.clusters != shown_.clusters) return;
             orbit_ = std::move(orbit);
             emit orbitChanged();
         },
@@ -158,23 +225,25 @@ void Session::requestOrbit() {
 }
 
 void Session::showSceneResult(SceneResult& result, bool newMesh) {
-    const bool samePartition = !newMesh && clusters_ && result.prepared == prepared_ &&
-                               !partitionChanged(clusters_->settings, result.clusters->settings);
+    const bool samePartition = !newMesh && shown_.clusters && result.snapshot.prepared == shown_.prepared &&
+                               !partitionChanged(shown_.clusters->builtWith, result.snapshot.clusters->builtWith);
     // The views take the previous scene's actors out when they hear of the new one.
     const std::unique_ptr<ClusterScene> previous = std::move(scene_);
-    prepared_ = result.prepared;
-    clusters_ = result.clusters;
+    shown_ = result.snapshot;
     scene_ = std::move(result.scene);
     for (const auto& [layer, visible] : layers_) scene_->setLayerVisible(layer, visible);
     scene_->setFaceColoring(coloring_);
-    if (!samePartition || picked_ >= int(clusters_->partition.clusterCount)) picked_ = -1;
+    if (!samePartition || picked_ >= int(shown_.clusters->partition.clusterCount)) picked_ = -1;
     scene_->setHighlightedCluster(picked_);
     orbit_.reset();
     orbitComparison_.reset();
-    if (newMesh) clearPin();
+    if (newMesh) dropPin();
     else dropStalePin();
+    // What was asked meanwhile and needs no other stages is shown with these at once.
+    const bool stale = needsBuild();
+    setShownSettings(stale ? shown_.settings : asked_);
     if (newMesh) {
-        if (!eyeGiven_) eyePosition_ = startingEyePosition(prepared_->box, settings_);
+        if (!eyeGiven_) eyePosition_ = startingEyePosition(shown_.prepared->box, shown_.settings);
         eyeGiven_ = false;
         orbitStep_ = -1;
     }
@@ -182,32 +251,8 @@ void Session::showSceneResult(SceneResult& result, bool newMesh) {
     emit sceneReplaced(previous.get(), newMesh);
     emit eyeMoved();
     emit eyeMeasured();
-    // The settings may have moved on while this was computed.
-    const bool reprepare = prepared_->fixWindingAsked != settings_.fixWinding || needsClusterFile(*prepared_, settings_);
-    if (reprepare || boundsChanged(clusters_->settings, settings_))
-        requestClusters(reprepare);
-    else
-        requestOrbit();
-}
-
-void Session::applySettings(const Settings& settings) {
-    const Settings before = settings_;
-    settings_ = settings;
-    if (!prepared_ || !clusters_) return;
-    const bool reprepare = prepared_->fixWindingAsked != settings.fixWinding || needsClusterFile(*prepared_, settings);
-    if (reprepare || boundsChanged(clusters_->settings, settings)) {
-        requestClusters(reprepare);
-        return;
-    }
-    // Back to what is built: nothing queued is needed any more.
-    runner_.cancel(taskgroups::clusters);
-    const bool eyeChanged = displayedTest(before) != displayedTest(settings) || before.orthographic != settings.orthographic;
-    const bool orbitChanged = eyeChanged || before.views != settings.views || before.distance != settings.distance;
-    if (eyeChanged) updateEye();
-    if (orbitChanged) {
-        clearOrbit();
-        requestOrbit();
-    }
+    if (stale) requestClusters();
+    else requestOrbit();
 }
 
 void Session::clearOrbit() {
@@ -219,22 +264,26 @@ void Session::clearOrbit() {
 
 void Session::startStatisticsExport(const QString& path, StatisticsFormat format, bool orbit,
                                     const std::function<void(bool)>& finished) {
-    if (!prepared_) {
+    if (!shown_.clusters) {
         emit errorOccurred(tr("Cannot export statistics"), tr("No mesh is loaded."));
         finished(false);
         return;
     }
-    const std::shared_ptr<const PreparedMesh> prepared = prepared_;
-    const std::shared_ptr<const ClusterSet> clusters = clusters_;
-    const Settings settings = exportSettings(settings_, orbit ? std::nullopt : std::optional<glm::dvec3>(eyePosition_));
+    // The snapshot shown (and A's), not the settings a build may be making meanwhile.
+    const Snapshot b = shown_;
+    const std::optional<Snapshot> a = pin_;
+    const Settings settingsB = exportSettings(b.settings, orbit ? std::nullopt : std::optional<glm::dvec3>(eyePosition_));
     const std::string file = path.toStdString();
-    runner_.run<RunStatistics>(
+    runner_.run<size_t>(
         taskgroups::exports, tr("Exporting statistics"),
-        [prepared, clusters, settings, file, format](const ProgressCallback& progress) {
-            return conescope::exportStatistics(*prepared, *clusters, settings, file, format, progress);
+        [a, b, settingsB, file, format](const ProgressCallback& progress) -> size_t {
+            if (!a) return conescope::exportStatistics(*b.prepared, *b.clusters, settingsB, file, format, progress).viewCount;
+            const Settings settingsA = withSharedOptions(a->settings, settingsB);
+            return exportComparison(*b.prepared, {*a->clusters, settingsA}, {*b.clusters, settingsB}, file, format, progress)
+                .views.size();
         },
-        [this, path, finished](RunStatistics& run) {
-            emit notice(tr("Wrote %1 (%2 views)").arg(path).arg(run.viewCount), 6000);
+        [this, path, finished](size_t& views) {
+            emit notice(tr("Wrote %1 (%2 views)").arg(path).arg(views), 6000);
             finished(true);
         },
         [this, finished](const QString& error) {
@@ -251,145 +300,19 @@ bool Session::exportStatistics(const QString& path, StatisticsFormat format, boo
 }
 
 bool Session::exportPartition(const QString& path) {
-    if (!prepared_ || !clusters_) {
+    if (!shown_.clusters) {
         emit errorOccurred(tr("Cannot export the partition"), tr("No mesh is loaded."));
         return false;
     }
     try {
-        conescope::exportPartition(*prepared_, *clusters_, measurement(), path.toStdString());
+        conescope::exportPartition(*shown_.prepared, *shown_.clusters, displayedTest(shown_.settings), measurement(),
+                                   path.toStdString());
     } catch (const std::exception& error) {
         emit errorOccurred(tr("Cannot export the partition"), QString::fromStdString(error.what()));
         return false;
     }
     emit notice(tr("Wrote %1").arg(path), 6000);
     return true;
-}
-
-// --- The eye ---------------------------------------------------------------------------------------
-
-void Session::setInitialEye(const glm::dvec3& position) {
-    eyePosition_ = position;
-    eyeGiven_ = true;
-}
-
-void Session::moveEye(const glm::dvec3& position, long orbitStep) {
-    eyePosition_ = position;
-    orbitStep_ = orbitStep;
-    updateEye();
-    emit orbitChanged();
-}
-
-void Session::moveEyeSoon(const glm::dvec3& position) {
-    // Called from VTK's event callbacks, where no view may render: the eye is measured and shown
-    // once the event loop is free. The efficiency plot marks the last orbit view until a moveEye.
-    eyePosition_ = position;
-    orbitStep_ = -1;
-    if (eyeUpdateScheduled_) return;
-    eyeUpdateScheduled_ = true;
-    QTimer::singleShot(0, this, [this]() {
-        eyeUpdateScheduled_ = false;
-        updateEye();
-    });
-}
-
-void Session::followCamera(const glm::dvec3& position) {
-    // Rendering touches the camera too (clipping range): only a new position moves the eye.
-    if (!prepared_ || position == eyePosition_) return;
-    moveEyeSoon(position);
-}
-
-void Session::moveEyeToStart() {
-    if (prepared_) moveEye(startingEyePosition(prepared_->box, settings_), -1);
-}
-
-void Session::stepOrbit(int step) {
-    if (!prepared_) return;
-    const std::vector<Eye> views = orbitOf(settings_, prepared_->box);
-    if (views.empty()) return;
-    const long count = long(views.size());
-    const long next = orbitStep_ < 0 ? (step > 0 ? 0 : count - 1) : ((orbitStep_ + step) % count + count) % count;
-    moveEye(views[size_t(next)].position, next);
-}
-
-void Session::setAnimating(bool animate) {
-    if (animate)
-        animationTimer_.start();
-    else
-        animationTimer_.stop();
-}
-
-void Session::updateEye() {
-    emit eyeMoved();
-    if (!prepared_ || !clusters_ || !scene_) return;
-    measureCurrentEye();
-    emit eyeMeasured();
-}
-
-void Session::measureCurrentEye() {
-    const auto start = std::chrono::steady_clock::now();
-    try {
-        const Eye eye = eyeAt(settings_, eyePosition_, prepared_->box);
-        measurement_ = measureEye(*prepared_, *clusters_, eye, displayedTest(settings_));
-    } catch (const std::exception& error) {
-        // An orthographic eye at the mesh centre has no direction: say so and show no decision.
-        measurement_.reset();
-        eyeError_ = QString::fromStdString(error.what());
-        scene_->clearClusterDecisions();
-        scene_->setTestDrawing({});
-        measurePinnedEye();
-        return;
-    }
-    eyeError_.clear();
-    showMeasurement(*scene_, *prepared_, *clusters_, *measurement_);
-    showEyeColouring(*scene_, *prepared_, *clusters_, *measurement_, coloring_);
-    showTestDrawing(*scene_, *prepared_, *clusters_, picked_, *measurement_);
-    measurePinnedEye();
-    eyeSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-// --- Scene display and picking -----------------------------------------------------------------------
-
-void Session::setLayerVisible(Layer layer, bool visible) {
-    layers_[layer] = visible;
-    if (scene_) scene_->setLayerVisible(layer, visible);
-}
-
-void Session::setFaceColoring(FaceColoring coloring) {
-    coloring_ = coloring;
-    if (!scene_) return;
-    scene_->setFaceColoring(coloring);
-    if (measurement_) showEyeColouring(*scene_, *prepared_, *clusters_, *measurement_, coloring);
-}
-
-void Session::pickCluster(int cluster) {
-    if (!scene_ || cluster < -1 || cluster >= int(scene_->clusterCount())) cluster = -1;
-    picked_ = cluster;
-    if (scene_) scene_->setHighlightedCluster(cluster);
-    if (scene_ && measurement_) showTestDrawing(*scene_, *prepared_, *clusters_, cluster, *measurement_);
-    emit pickChanged(cluster);
-}
-
-const std::vector<ViewStatistics>& Session::orbitRows() const {
-    static const std::vector<ViewStatistics> none;
-    return orbit_ ? orbit_->views : none;
-}
-
-void Session::showClusterWhereItIsLost(int cluster) {
-    pickCluster(cluster);
-    if (!prepared_ || !clusters_ || picked_ < 0) return;
-    const long view = viewMissingCluster(*prepared_, *clusters_, settings_, uint32_t(picked_));
-    if (view >= 0) {
-        moveEye(orbitOf(settings_, prepared_->box)[size_t(view)].position, view);
-    } else {
-        emit notice(tr("Cluster %1 is never drawn with back faces over the orbit").arg(picked_), 6000);
-    }
-}
-
-void Session::adoptBuilderOf(const ClusterSet& clusters) {
-    if (clusters.settings.builder == settings_.builder && clusters.settings.clusterFile == settings_.clusterFile) return;
-    settings_.builder = clusters.settings.builder;
-    settings_.clusterFile = clusters.settings.clusterFile;
-    emit settingsAdjusted(settings_);
 }
 
 }  // namespace conescope

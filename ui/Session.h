@@ -1,8 +1,12 @@
-// What the window shows, without any widget: the pipeline's stages for the current mesh (prepared
-// mesh, clusters, their scene, the cull eye's measurement, the orbit's rows), the settings, the cull
-// eye and the picked cluster. The slow stages (open, clusters, orbit, statistics export) run through
-// a TaskRunner; every number comes from core/Pipeline.h. Signals say what is new, and the views
-// (ObserverView, the docks) show it.
+// What the window shows, without any widget: one snapshot of the settings and the stages built with
+// them (prepared mesh, clusters), the scene of those clusters, the cull eye's measurement, the orbit's
+// rows, the cull eye and the picked cluster. Everything the window shows or exports is made from the
+// snapshot (and from A's while one is pinned); the settings widgets show its settings. The slow stages
+// run through a TaskRunner; every number comes from core/Pipeline.h. Signals say what is new, and the
+// views (ObserverView, the docks) show it.
+//
+// The public functions under "Actions" are what a click, a key or a replayed step (ReplayPlayer) does:
+// both go through them.
 #pragma once
 
 #include <functional>
@@ -23,48 +27,73 @@
 
 namespace conescope {
 
+// Settings and the stages built with them: what is shown, or what is pinned as A.
+struct Snapshot {
+    Settings settings;
+    std::shared_ptr<const PreparedMesh> prepared;
+    std::shared_ptr<const ClusterSet> clusters;
+    ClusterConfiguration configuration() const { return {*clusters, settings}; }
+};
+
 class Session : public QObject {
     Q_OBJECT
 public:
     explicit Session(QObject* parent = nullptr);
     ~Session() override;
 
-    // --- Background stages ------------------------------------------------------------------------
+    // --- Actions -----------------------------------------------------------------------------------
     // Reads, prepares and clusters the file; meshShown() when it is shown, errorOccurred() when it
     // cannot be read (the mesh shown before stays).
     void openMesh(const QString& path);
-    void waitUntilIdle() { runner_.waitUntilIdle(); }
-    void cancelAll() { runner_.cancelAll(); }
-
-    const Settings& settings() const { return settings_; }
-    // Recomputes what the change makes stale: the clusters (partition or bounds), the eye, the orbit.
+    // Asks for these settings: what they make stale is built again in the background (the snapshot
+    // changes when it is ready), the rest (test, projection, views) at once. settingsChanged() tells
+    // the widgets; a cancelled or failed build puts the snapshot's settings back.
     void applySettings(const Settings& settings);
-
-    // Statistics in the CLI's format for the current eye or the orbit, in the background;
-    // `finished` says whether the file was written. exportStatistics waits for it.
+    // Cancels every background task, as the status bar's Cancel button: the snapshot stays, and so
+    // do its settings (settingsChanged() when the widgets showed others).
+    void cancel();
+    // The next build (a load or new clusters) is cancelled as soon as it starts, as if Cancel were
+    // pressed while it runs.
+    void cancelNextBuild() { cancelNextBuild_ = true; }
+    void moveEye(const glm::dvec3& position, long orbitStep = -1);
+    // The eye to orbit view `view` (0-based); false when the orbit has no such view.
+    bool moveEyeToOrbitView(long view);
+    // The next (step 1) or previous (-1) orbit view: from the view the eye is on, or from the one
+    // nearest to it when it was moved off the orbit.
+    void stepOrbit(int step);
+    void moveEyeToStart();
+    // A cluster index, or -1 for none (also for an index the clusters do not have).
+    void pickCluster(int cluster);
+    // Pins the snapshot as A; the settings from then on are B. The faces are coloured by the
+    // comparison (FaceColoring::Comparison) and the orbit is compared too.
+    void pinAsA();
+    // Drops A; faces coloured by the comparison go back to the cull decision.
+    void clearPin();
+    // A's snapshot becomes the shown one and the shown one A: nothing is rebuilt.
+    void swapAB();
+    // Statistics in the CLI's format for the current eye or the orbit, in the background; `finished`
+    // says whether the file was written. While A is pinned, the document `conescope-cli compare`
+    // writes for A and B (a, b, diff; CSV: its per-view table).
     void startStatisticsExport(const QString& path, StatisticsFormat format, bool orbit,
                                const std::function<void(bool)>& finished);
+    void setFaceColoring(FaceColoring coloring);
+    void setLayerVisible(Layer layer, bool visible);
+
+    // Blocking forms and helpers for the window's test interface.
     bool exportStatistics(const QString& path, StatisticsFormat format, bool orbit);
     bool exportPartition(const QString& path);
+    void waitUntilIdle() { runner_.waitUntilIdle(); }
+    bool busy() const { return runner_.busy(); }
+    void cancelAll() { runner_.cancelAll(); }
 
-    // --- The cull eye -----------------------------------------------------------------------------
-    glm::dvec3 eyePosition() const { return eyePosition_; }
-    long orbitStep() const { return orbitStep_; }  // -1 when the eye is not on an orbit view
-    // The eye the next loaded mesh starts with instead of startingEyePosition.
-    void setInitialEye(const glm::dvec3& position);
-    void moveEye(const glm::dvec3& position, long orbitStep = -1);
-    // For a stream of moves (the handle dragged, the followed camera): measured once, when the
-    // event loop is free. The eye leaves the orbit.
-    void moveEyeSoon(const glm::dvec3& position);
-    // The observer's camera moved while the eye follows it: only a new position moves the eye.
-    void followCamera(const glm::dvec3& position);
-    void moveEyeToStart();
-    void stepOrbit(int step);
-    void setAnimating(bool animate);
-
-    // --- The stages -------------------------------------------------------------------------------
-    const PreparedMesh* preparedMesh() const { return prepared_.get(); }
-    const ClusterSet* clusters() const { return clusters_.get(); }
+    // --- The snapshot ------------------------------------------------------------------------------
+    // The snapshot's settings: what everything shown was made with.
+    const Settings& settings() const { return shown_.settings; }
+    // The settings asked for last: the snapshot's, or ahead of them while a build runs.
+    const Settings& askedSettings() const { return asked_; }
+    const Snapshot& snapshot() const { return shown_; }
+    const PreparedMesh* preparedMesh() const { return shown_.prepared.get(); }
+    const ClusterSet* clusters() const { return shown_.clusters.get(); }
     const ClusterScene* scene() const { return scene_.get(); }
     // The current eye's measurement; null before a mesh is shown or for an eye that has none
     // (eyeError() then says why).
@@ -73,29 +102,32 @@ public:
     double eyeSeconds() const { return eyeSeconds_; }
     const std::vector<ViewStatistics>& orbitRows() const;
     // The displayed test over the orbit with every cluster's counts and fractions; null until measured.
-    const TestStatistics* orbitStatistics() const { return orbit_ ? &*orbit_ : nullptr; }
+    const CullTestStatistics* orbitStatistics() const { return orbit_ ? &*orbit_ : nullptr; }
+
+    // --- The cull eye -----------------------------------------------------------------------------
+    glm::dvec3 eyePosition() const { return eyePosition_; }
+    long orbitStep() const { return orbitStep_; }  // -1 when the eye is not on an orbit view
+    // The eye the next loaded mesh starts with instead of startingEyePosition.
+    void setInitialEye(const glm::dvec3& position);
+    // For a stream of moves (the handle dragged, the followed camera): measured once, when the
+    // event loop is free. The eye leaves the orbit.
+    void moveEyeSoon(const glm::dvec3& position);
+    // The observer's camera moved while the eye follows it: only a new position moves the eye.
+    void followCamera(const glm::dvec3& position);
+    void setAnimating(bool animate);
 
     // --- How the scene is drawn (kept for every new scene) ----------------------------------------
-    void setLayerVisible(Layer layer, bool visible);
     bool layerVisible(Layer layer) const { return layers_.at(layer); }
-    void setFaceColoring(FaceColoring coloring);
     FaceColoring faceColoring() const { return coloring_; }
-
-    // A cluster index, or -1 for none (also for an index the clusters do not have).
-    void pickCluster(int cluster);
     int pickedCluster() const { return picked_; }
     // Picks the cluster and moves the eye to the first orbit view that loses its back faces (a miss
     // of the test first, else the partition's loss): the view that shows why it costs.
     void showClusterWhereItIsLost(int cluster);
 
     // --- A/B comparison (SessionComparison.cpp) ----------------------------------------------------
-    // Pins the current settings and clusters as A; the settings from then on are B. The scene then
-    // has the per-face diff of the eye (FaceColoring::Comparison) and the orbit is compared too.
-    void pinAsA();
-    void clearPin();
-    // A's settings and clusters become the current ones and the current ones A: nothing is rebuilt.
-    void swapAB();
     bool hasPin() const { return pin_.has_value(); }
+    // A's snapshot; its shared options (views, distance, projection) are the shown snapshot's.
+    const Snapshot* pinned() const { return pin_ ? &*pin_ : nullptr; }
     const Settings* pinnedSettings() const { return pin_ ? &pin_->settings : nullptr; }
     const ClusterSet* pinnedClusters() const { return pin_ ? pin_->clusters.get() : nullptr; }
     // A against B from the current eye; null without a pin or a measured eye.
@@ -119,9 +151,10 @@ signals:
     // The orbit's rows changed, or moveEye put the eye on an orbit view (or off it).
     void orbitChanged();
     void pickChanged(int cluster);
-    // The session chose other settings than it was given (the builder a mesh can be shown with):
-    // the settings panel shows them.
-    void settingsAdjusted(const conescope::Settings& settings);
+    // The settings the widgets show: asked for, adopted (the builder a mesh is shown with) or put
+    // back (a cancelled or failed build).
+    void settingsChanged(const conescope::Settings& settings);
+    void faceColoringChanged(conescope::FaceColoring coloring);
     void errorOccurred(const QString& title, const QString& message);
     void notice(const QString& message, int milliseconds);
     // A slow stage: its start, progress and the end of all of them.
@@ -132,35 +165,42 @@ signals:
 private:
     // What the clusters stage delivers to the UI thread.
     struct SceneResult {
-        std::shared_ptr<const PreparedMesh> prepared;
-        std::shared_ptr<const ClusterSet> clusters;
+        Snapshot snapshot;
         std::unique_ptr<ClusterScene> scene;
         std::string builderNote;  // why the clusters came from another builder than the settings said
     };
 
-    void requestClusters(bool reprepare);
+    // Whether the asked settings need stages other than the snapshot's.
+    bool needsBuild() const;
+    // The snapshot to the asked settings: a build when they need one, else at once.
+    void reconcile();
+    void requestClusters();
+    void buildStarted();
+    void buildFailed(const QString& error);
+    // The widgets back to the snapshot's settings.
+    void revertToSnapshot();
+    void setShownSettings(const Settings& settings);
     void requestOrbit();
     void showSceneResult(SceneResult& result, bool newMesh);
     void clearOrbit();
-    // Takes the builder the clusters were made with as the current one (builderForMesh's choice).
-    void adoptBuilderOf(const ClusterSet& clusters);
     void updateEye();
     void measureCurrentEye();
     // A against B from the measured eye, its per-face diff in the scene (or none without a pin).
     void measurePinnedEye();
     void requestOrbitComparison();
-    // Drops a pin made for another prepared mesh (a new file, another winding repair).
+    // Drops A without touching the colouring: a new mesh, or A made for another prepared mesh.
+    void dropPin();
     void dropStalePin();
 
     TaskRunner runner_;
-    Settings settings_;
-    std::shared_ptr<const PreparedMesh> prepared_;
-    std::shared_ptr<const ClusterSet> clusters_;
+    Snapshot shown_;
+    Settings asked_;
+    bool cancelNextBuild_ = false;
     std::unique_ptr<ClusterScene> scene_;
     std::optional<EyeMeasurement> measurement_;
     QString eyeError_;
     double eyeSeconds_ = 0.0;
-    std::optional<TestStatistics> orbit_;
+    std::optional<CullTestStatistics> orbit_;
     glm::dvec3 eyePosition_{0.0, 0.0, 3.0};
     bool eyeGiven_ = false;  // the next mesh keeps eyePosition_ instead of the starting position
     long orbitStep_ = -1;
@@ -169,12 +209,7 @@ private:
     std::map<Layer, bool> layers_;
     FaceColoring coloring_ = FaceColoring::CullDecision;
     int picked_ = -1;
-    struct Pin {
-        Settings settings;
-        std::shared_ptr<const ClusterSet> clusters;
-        std::shared_ptr<const PreparedMesh> prepared;  // the mesh the clusters were made for
-    };
-    std::optional<Pin> pin_;
+    std::optional<Snapshot> pin_;
     std::optional<Comparison> eyeComparison_;
     std::optional<Comparison> orbitComparison_;
 };

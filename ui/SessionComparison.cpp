@@ -1,5 +1,5 @@
-// The window's A/B comparison: a pinned configuration A against the current one B on the same
-// prepared mesh and eyes, through core/Comparison.h.
+// The window's A/B comparison: a pinned snapshot A against the shown one B on the same prepared mesh
+// and eyes, through core/Comparison.h. Each side is scored with the test of its own settings.
 #include "Session.h"
 
 #include "SceneBinding.h"
@@ -8,15 +8,21 @@
 namespace conescope {
 
 void Session::pinAsA() {
-    if (!prepared_ || !clusters_) return;
-    pin_ = Pin{settings_, clusters_, prepared_};
+    if (!shown_.clusters) return;
+    pin_ = shown_;
     measurePinnedEye();
     requestOrbitComparison();
+    setFaceColoring(FaceColoring::Comparison);
     emit comparisonChanged();
     emit notice(tr("Pinned as A: change the settings to make B; X swaps them"), 6000);
 }
 
 void Session::clearPin() {
+    dropPin();
+    if (coloring_ == FaceColoring::Comparison) setFaceColoring(FaceColoring::CullDecision);
+}
+
+void Session::dropPin() {
     if (!pin_) return;
     runner_.cancel(taskgroups::comparison);
     pin_.reset();
@@ -27,54 +33,56 @@ void Session::clearPin() {
 }
 
 void Session::swapAB() {
-    if (!pin_ || !prepared_ || !clusters_ || pin_->prepared != prepared_) return;
+    if (!pin_ || !shown_.clusters || pin_->prepared != shown_.prepared) return;
     runner_.cancel(taskgroups::clusters);
-    const Pin previous{settings_, clusters_, prepared_};
-    settings_ = pin_->settings;
+    const Snapshot previous = shown_;
     SceneResult result;
-    result.prepared = prepared_;
-    result.clusters = pin_->clusters;
-    result.scene = makeScene(*prepared_, *pin_->clusters);
+    result.snapshot = *pin_;
+    result.scene = makeScene(*shown_.prepared, *pin_->clusters);
     pin_ = previous;
-    emit settingsAdjusted(settings_);
+    asked_ = result.snapshot.settings;
+    emit settingsChanged(asked_);
     showSceneResult(result, false);
 }
 
 int Session::pinnedClusterOf(int cluster) const {
-    if (!pin_ || !clusters_ || cluster < 0 || cluster >= int(clusters_->bounds.count())) return -1;
-    const ClusterFaces& rows = clusters_->bounds.faces;
+    if (!pin_ || !shown_.clusters || cluster < 0 || cluster >= int(shown_.clusters->bounds.count())) return -1;
+    const ClusterFaces& rows = shown_.clusters->bounds.faces;
     if (rows.starts[size_t(cluster)] == rows.starts[size_t(cluster) + 1]) return -1;
     return int(pin_->clusters->partition.clusterOfFace[rows.faces[rows.starts[size_t(cluster)]]]);
 }
 
 void Session::dropStalePin() {
-    if (!pin_ || pin_->prepared == prepared_) return;
-    clearPin();
+    if (!pin_ || pin_->prepared == shown_.prepared) return;
+    dropPin();
     emit notice(tr("A was pinned for another mesh or winding repair: pin again to compare"), 8000);
 }
 
 void Session::measurePinnedEye() {
     eyeComparison_.reset();
     if (!scene_) return;
-    if (!pin_ || !measurement_ || !prepared_ || !clusters_) {
+    if (!pin_ || !measurement_ || !shown_.clusters) {
         scene_->setFaceComparison({});
         return;
     }
-    eyeComparison_ = showComparison(*scene_, *prepared_, *pin_->clusters, *clusters_, *measurement_);
+    eyeComparison_ = showComparison(*scene_, *shown_.prepared, pin_->configuration(), shown_.configuration(), *measurement_);
 }
 
 void Session::requestOrbitComparison() {
     runner_.cancel(taskgroups::comparison);
     orbitComparison_.reset();
-    if (!pin_ || !prepared_ || !clusters_) return;
-    const std::shared_ptr<const PreparedMesh> prepared = prepared_;
-    const std::shared_ptr<const ClusterSet> a = pin_->clusters, b = clusters_;
-    const std::vector<Eye> views = orbitOf(settings_, prepared_->box);
+    if (!pin_ || !shown_.clusters) return;
+    const Snapshot a = *pin_, b = shown_;
+    const std::vector<Eye> views = orbitOf(b.settings, b.prepared->box);
     runner_.run<Comparison>(
         taskgroups::comparison, tr("Comparing A and B over the orbit"),
-        [prepared, a, b, views](const ProgressCallback& progress) { return compareClusterSets(*prepared, *a, *b, views, progress); },
+        [a, b, views](const ProgressCallback& progress) {
+            return compareClusterSets(*b.prepared, a.configuration(), b.configuration(), views, progress);
+        },
         [this, a, b](Comparison& comparison) {
-            if (!pin_ || pin_->clusters != a || clusters_ != b) return;  // A or B changed meanwhile
+            // Other clusters meanwhile: their own comparison follows. (Other tests or views ask for a
+            // new comparison, which cancels this one.)
+            if (!pin_ || pin_->clusters != a.clusters || shown_.clusters != b.clusters) return;
             orbitComparison_ = std::move(comparison);
             emit comparisonChanged();
         },

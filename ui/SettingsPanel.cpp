@@ -176,6 +176,11 @@ Settings SettingsPanel::settings() const {
 }
 
 void SettingsPanel::setSettings(const Settings& settings) {
+    // Shown already (the panel's own change coming back from the session): the widgets stay as typed.
+    if (sameSettings(settings, this->settings())) {
+        base_ = settings;
+        return;
+    }
     base_ = settings;
     const QSignalBlocker blockers[] = {
         QSignalBlocker(builder_),      QSignalBlocker(maxVertices_), QSignalBlocker(maxTriangles_),

@@ -71,7 +71,7 @@ void StatisticsPanel::clear() {
     for (auto& [name, label] : values_) label->setText(QStringLiteral("-"));
 }
 
-void StatisticsPanel::showClusters(const PreparedMesh& prepared, const ClusterSet& clusters) {
+void StatisticsPanel::showClusters(const PreparedMesh& prepared, const ClusterSet& clusters, const Settings& settings) {
     values_["mesh"]->setText(QString::fromStdString(prepared.name));
     values_["faces"]->setText(count(prepared.mesh().faceCount()));
     values_["triangles"]->setText(count(prepared.triangles));
@@ -86,15 +86,14 @@ void StatisticsPanel::showClusters(const PreparedMesh& prepared, const ClusterSe
     if (prepared.windingFixedFaces) problems << tr("%1 faces flipped").arg(prepared.windingFixedFaces);
     values_["mesh problems"]->setText(problems.isEmpty() ? tr("none") : problems.join(QStringLiteral(", ")));
     values_["clusters"]->setText(count(clusters.partition.clusterCount));
-    values_["builder"]->setText(QString::fromStdString(toString(clusters.settings.builder)));
-    values_["cone / test"]->setText(QStringLiteral("%1 / %2").arg(
-        QString::fromStdString(toString(displayedCone(clusters.settings))),
-        QString::fromStdString(toString(displayedTest(clusters.settings)))));
+    values_["builder"]->setText(QString::fromStdString(toString(settings.builder)));
+    values_["cone / test"]->setText(QStringLiteral("%1 / %2").arg(QString::fromStdString(toString(displayedCone(settings))),
+                                                                  QString::fromStdString(toString(displayedTest(settings)))));
     values_["build time"]->setText(tr("partition %1, bounds %2")
                                        .arg(seconds(clusters.partitionSeconds), seconds(clusters.boundsSeconds)));
 }
 
-void StatisticsPanel::showOrbit(const TestStatistics* orbit) {
+void StatisticsPanel::showOrbit(const CullTestStatistics* orbit) {
     const char* rows[] = {"orbit efficiency", "lost over the orbit", "expected efficiency", "cull / oracle fraction",
                           "cluster fill", "sphere radius"};
     if (!orbit) {

@@ -19,10 +19,11 @@ class StatisticsPanel : public QWidget {
 public:
     explicit StatisticsPanel(QWidget* parent = nullptr);
 
-    void showClusters(const PreparedMesh& prepared, const ClusterSet& clusters);
+    // The mesh and its clusters, shown with `settings` (the builder, cone and test named).
+    void showClusters(const PreparedMesh& prepared, const ClusterSet& clusters, const Settings& settings);
     void showEye(const EyeMeasurement& measurement);
     // The partition's summary over the orbit (measureOrbit); "measuring..." while there is none.
-    void showOrbit(const TestStatistics* orbit);
+    void showOrbit(const CullTestStatistics* orbit);
     void showEyeError(const QString& message);
     // A against B (the pinned configuration against the current one) for the eye and over the
     // orbit, and the cluster-count warning; `a` null hides the comparison rows.

@@ -22,15 +22,11 @@ StatusLine::StatusLine(QStatusBar* bar, Session* session) : QObject(bar) {
     summary_ = new QLabel(tr("No mesh"), bar);
     progress_ = new QProgressBar(bar);
     progress_->setRange(0, 100);
-    progress_->setMaximumWidth(320);
     progress_->setTextVisible(true);
     progress_->hide();
     cancel_ = new QPushButton(tr("Cancel"), bar);
     cancel_->hide();
-    connect(cancel_, &QPushButton::clicked, this, [bar, session]() {
-        session->cancelAll();
-        bar->showMessage(tr("Cancelled: the mesh and clusters shown before stay"), 5000);
-    });
+    connect(cancel_, &QPushButton::clicked, session, &Session::cancel);
     // A normal widget: messages replace it for a few seconds.
     bar->addWidget(summary_, 1);
     bar->addPermanentWidget(progress_);
@@ -38,18 +34,27 @@ StatusLine::StatusLine(QStatusBar* bar, Session* session) : QObject(bar) {
 
     connect(session, &Session::taskStarted, this, [this](const QString& title) {
         progress_->setValue(0);
-        progress_->setFormat(title + QStringLiteral(" %p%"));
+        showStage(title);
         progress_->show();
         cancel_->show();
     });
     connect(session, &Session::progressChanged, this, [this](double fraction, const QString& stage) {
         progress_->setValue(int(std::lround(100.0 * fraction)));
-        progress_->setFormat(stage + QStringLiteral(" %p%"));
+        showStage(stage);
     });
     connect(session, &Session::idle, this, [this]() {
         progress_->hide();
         cancel_->hide();
+        progress_->setMinimumWidth(0);
     });
+}
+
+void StatusLine::showStage(const QString& stage) {
+    progress_->setFormat(stage + QStringLiteral(" %p%"));
+    // Wide enough for the whole text at 100 %; it only grows while a task runs, so the bar does not
+    // jump about from stage to stage.
+    const int needed = progress_->fontMetrics().horizontalAdvance(stage + QStringLiteral(" 100%")) + 24;
+    if (needed > progress_->minimumWidth()) progress_->setMinimumWidth(needed);
 }
 
 bool StatusLine::progressShown() const { return progress_->isVisible(); }
@@ -65,8 +70,8 @@ void StatusLine::showSummary(const Session& session) {
                        .arg(QString::fromStdString(prepared->name))
                        .arg(QLocale().toString(qulonglong(prepared->triangles)))
                        .arg(clusters->partition.clusterCount)
-                       .arg(QString::fromStdString(toString(clusters->settings.builder)),
-                            QString::fromStdString(toString(displayedCone(clusters->settings))),
+                       .arg(QString::fromStdString(toString(session.settings().builder)),
+                            QString::fromStdString(toString(displayedCone(session.settings()))),
                             QString::fromStdString(toString(displayedTest(session.settings()))))
                        .arg(milliseconds(prepared->prepareSeconds), milliseconds(clusters->partitionSeconds),
                             milliseconds(clusters->boundsSeconds), milliseconds(session.eyeSeconds()));

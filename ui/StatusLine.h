@@ -24,6 +24,8 @@ public:
     bool progressShown() const;
 
 private:
+    void showStage(const QString& stage);
+
     QLabel* summary_ = nullptr;
     QProgressBar* progress_ = nullptr;
     QPushButton* cancel_ = nullptr;

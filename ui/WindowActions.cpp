@@ -53,10 +53,11 @@ Settings withOtherProjection(Settings settings) {
 
 }  // namespace
 
-WindowActions::WindowActions(MainWindow* window, Session* session, QDockWidget* eyeViewDock, QDockWidget* plotsDock)
+WindowActions::WindowActions(MainWindow* window, Session* session, QDockWidget* eyeViewDock, QDockWidget* plotsDock,
+                             QDockWidget* gaussMapDock)
     : QObject(window), window_(window), session_(session) {
     createFileMenu();
-    createViewMenu(eyeViewDock, plotsDock);
+    createViewMenu(eyeViewDock, plotsDock, gaussMapDock);
     createEyeMenu();
     createCullingMenu();
     QMenu* help = window_->menuBar()->addMenu(tr("&Help"));
@@ -78,7 +79,8 @@ QAction* WindowActions::add(QMenu* menu, const QString& text, const QKeySequence
     return action;
 }
 
-void WindowActions::changeSettings(Settings (*change)(Settings)) { window_->setSettings(change(session_->settings())); }
+// From what the widgets show: while a build runs, the settings asked for.
+void WindowActions::changeSettings(Settings (*change)(Settings)) { session_->applySettings(change(session_->askedSettings())); }
 
 void WindowActions::createFileMenu() {
     QMenu* file = window_->menuBar()->addMenu(tr("&File"));
@@ -97,7 +99,7 @@ void WindowActions::createFileMenu() {
     add(file, tr("&Quit"), QKeySequence(tr("Ctrl+Q")), [this]() { window_->close(); });
 }
 
-void WindowActions::createViewMenu(QDockWidget* eyeViewDock, QDockWidget* plotsDock) {
+void WindowActions::createViewMenu(QDockWidget* eyeViewDock, QDockWidget* plotsDock, QDockWidget* gaussMapDock) {
     QMenu* view = window_->menuBar()->addMenu(tr("&View"));
     reset_ = add(view, tr("&Reset camera"), QKeySequence(tr("R")), [this]() { window_->resetCamera(); });
     QMenu* layers = view->addMenu(tr("&Layers"));
@@ -122,7 +124,7 @@ void WindowActions::createViewMenu(QDockWidget* eyeViewDock, QDockWidget* plotsD
     for (FaceColoring mode : allFaceColorings()) {
         QAction* action = add(coloring, tr("Colour by %1").arg(QString::fromStdString(toString(mode))),
                               QKeySequence(tr("Ctrl+%1").arg(key++)),
-                              [this, mode = mode]() { window_->setFaceColoring(mode); });
+                              [this, mode = mode]() { session_->setFaceColoring(mode); });
         action->setCheckable(true);
         action->setChecked(mode == session_->faceColoring());
         coloringGroup->addAction(action);
@@ -134,6 +136,11 @@ void WindowActions::createViewMenu(QDockWidget* eyeViewDock, QDockWidget* plotsD
     view->addAction(eyeViewToggle_);
     shortcutActions_ << eyeViewToggle_;
     view->addAction(plotsDock->toggleViewAction());
+    // Beside the picked cluster's numbers: its normals and cones on the unit sphere.
+    add(view, tr("Show the &Gauss map"), QKeySequence(tr("G")), [gaussMapDock]() {
+        gaussMapDock->show();
+        gaussMapDock->raise();
+    });
     for (QDockWidget* dock : window_->findChildren<QDockWidget*>())
         if (dock != eyeViewDock && dock != plotsDock) view->addAction(dock->toggleViewAction());
 }
@@ -162,10 +169,10 @@ void WindowActions::createCullingMenu() {
     add(culling, tr("Clear the picked cluster"), QKeySequence(Qt::Key_Escape), [this]() { window_->pickCluster(-1); });
     culling->addSeparator();
     // A/B: pin what is shown as A, change the settings (B), compare; X swaps them.
-    add(culling, tr("&Pin as A (compare with what comes next)"), QKeySequence(tr("A")), [this]() { window_->pinAsA(); },
+    add(culling, tr("&Pin as A (compare with what comes next)"), QKeySequence(tr("A")), [this]() { session_->pinAsA(); },
         tr("Keep these clusters and settings as A; the faces show what A and B cull"));
     add(culling, tr("Swap A and B"), QKeySequence(tr("X")), [this]() { session_->swapAB(); });
-    add(culling, tr("Clear A"), QKeySequence(tr("Shift+A")), [this]() { window_->clearPin(); });
+    add(culling, tr("Clear A"), QKeySequence(tr("Shift+A")), [this]() { session_->clearPin(); });
 }
 
 void WindowActions::createToolBar() {

@@ -26,9 +26,11 @@ class Session;
 class WindowActions : public QObject {
     Q_OBJECT
 public:
-    // Adds the menus and the toolbar to `window`. `eyeViewDock` and `plotsDock` get their own
-    // entries (V for the eye's view); every other dock of the window is listed after them.
-    WindowActions(MainWindow* window, Session* session, QDockWidget* eyeViewDock, QDockWidget* plotsDock);
+    // Adds the menus and the toolbar to `window`. `eyeViewDock`, `plotsDock` and `gaussMapDock` get
+    // their own entries (V for the eye's view, G raises the Gauss map); every other dock of the window
+    // is listed after them.
+    WindowActions(MainWindow* window, Session* session, QDockWidget* eyeViewDock, QDockWidget* plotsDock,
+                  QDockWidget* gaussMapDock);
 
     // Every action with a shortcut, in menu order.
     QList<QAction*> shortcutActions() const { return shortcutActions_; }
@@ -48,7 +50,7 @@ private:
                  const QString& tip = {});
     void changeSettings(Settings (*change)(Settings));
     void createFileMenu();
-    void createViewMenu(QDockWidget* eyeViewDock, QDockWidget* plotsDock);
+    void createViewMenu(QDockWidget* eyeViewDock, QDockWidget* plotsDock, QDockWidget* gaussMapDock);
     void createEyeMenu();
     void createCullingMenu();
     void createToolBar();

@@ -72,7 +72,7 @@ WorstClustersView::WorstClustersView(QWidget* parent) : QTableWidget(parent) {
     connect(this, &QTableWidget::cellActivated, this, [this](int row, int) { emit clusterChosen(clusterAt(row)); });
 }
 
-void WorstClustersView::showOrbit(const TestStatistics* orbit) {
+void WorstClustersView::showOrbit(const CullTestStatistics* orbit) {
     // The session also says orbitChanged when the eye steps along the orbit: the rows stay.
     const void* rows = orbit ? static_cast<const void*>(orbit->clusters.data()) : nullptr;
     if (rows == shownRows_ && (!orbit || size_t(rowCount()) == orbit->clusters.size())) return;

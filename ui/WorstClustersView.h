@@ -17,7 +17,7 @@ public:
     explicit WorstClustersView(QWidget* parent = nullptr);
 
     // Shows the orbit's clusters (or an empty table while the orbit is measured), keeping the sort.
-    void showOrbit(const TestStatistics* orbit);
+    void showOrbit(const CullTestStatistics* orbit);
     // The cluster of a row as it is sorted now.
     int clusterAt(int row) const;
 

@@ -1,16 +1,19 @@
-// conescope: the viewer, or with --screenshot a headless render of one frame.
+// conescope: the viewer, with --screenshot a headless render of one frame, or with --replay a
+// replay file's steps played in the window.
 #include <cstdio>
 #include <iostream>
 
 #include <QApplication>
 #include <QFileInfo>
 #include <QSurfaceFormat>
+#include <QTimer>
 
 #include <QVTKOpenGLNativeWidget.h>
 
 #include "CommandLine.h"
 #include "Datasets.h"
 #include "MainWindow.h"
+#include "ReplayPlayer.h"
 
 namespace {
 
@@ -48,6 +51,17 @@ int main(int argc, char** argv) {
         return runHeadlessScreenshot(options);
     }
 
+    // A replay is read whole before any window opens: a bad file fails at once, naming the step.
+    std::vector<ReplayStep> replay;
+    if (!options.replay.isEmpty()) {
+        try {
+            replay = readReplayFile(options.replay);
+        } catch (const ReplayError& error) {
+            std::cerr << "conescope: " << error.what() << '\n';
+            return 1;
+        }
+    }
+
     // The GL format VTK needs, before the application creates any context.
     QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
     QApplication application(argc, argv);
@@ -58,7 +72,26 @@ int main(int argc, char** argv) {
     if (options.eye) window.setInitialEye(*options.eye);
     if (options.layers) showOnly(*options.layers, window);
     window.show();
-    const QString mesh = options.mesh.isEmpty() ? defaultMeshPath() : options.mesh;
+    // A replay starts from an empty window unless a mesh is given: its steps open what they need.
+    const QString mesh = !options.mesh.isEmpty() || !options.replay.isEmpty() ? options.mesh : defaultMeshPath();
     if (!mesh.isEmpty()) window.openMesh(mesh);
-    return application.exec();
+    if (options.replay.isEmpty()) return application.exec();
+
+    int exitCode = 0;
+    ReplayPlayer player(window);
+    // Errors go to the terminal, not into dialogs that would wait for a click.
+    window.setErrorDialogsEnabled(false);
+    QObject::connect(&player, &ReplayPlayer::finished, &application, [&]() {
+        if (!options.stay) QCoreApplication::exit(0);
+        window.setErrorDialogsEnabled(true);
+    });
+    QObject::connect(&player, &ReplayPlayer::failed, &application, [&](const QString& message) {
+        std::cerr << "conescope: " << options.replay.toStdString() << ": " << message.toStdString() << '\n';
+        exitCode = 1;
+        if (!options.stay) QCoreApplication::exit(1);
+        window.setErrorDialogsEnabled(true);
+    });
+    QTimer::singleShot(0, &player, [&]() { player.play(std::move(replay)); });
+    const int code = application.exec();
+    return exitCode != 0 ? exitCode : code;
 }

@@ -7,6 +7,7 @@
 #include "cli/MeshRuns.h"
 #include "cli/OutputFiles.h"
 #include "core/Comparison.h"
+#include "io/ClusterIdFile.h"
 #include "io/ComparisonIO.h"
 #include "io/ClusterFiles.h"
 #include "io/MeshReader.h"
@@ -24,7 +25,7 @@ void writeStatisticsFile(const std::string& path, const RunStatistics& run, cons
 
 // The mesh as `stats` runs it: its totals, its warnings and its JSON.
 void runStatsJob(const BatchConfig& config, const BatchJob& job, const Mesh& mesh, BatchRow& row) {
-    const RunStatistics run = runStatistics(mesh, config.settings, fileNameOf(job.path));
+    const RunStatistics run = runStatistics(mesh, withClusterIds(config.settings), fileNameOf(job.path));
     writeStatisticsFile(job.json, run, config.detail);
     addRunCells(row, run, runWarnings(run));
 }
@@ -32,8 +33,8 @@ void runStatsJob(const BatchConfig& config, const BatchJob& job, const Mesh& mes
 // The mesh as `compare --a COMPARE` runs it: B is the batch's settings, so its side is the row's
 // totals and its JSON what `stats` writes.
 void runCompareJob(const BatchConfig& config, const BatchJob& job, const Mesh& mesh, BatchRow& row) {
-    const Settings a = parseConfiguration(config.compare, config.settings);
-    const ComparedRuns runs = compareMesh(mesh, job.path, a, config.settings, config.settings);
+    const Settings a = withClusterIds(parseConfiguration(config.compare, config.settings));
+    const ComparedRuns runs = compareMesh(mesh, job.path, a, withClusterIds(config.settings), config.settings);
     writeStatisticsFile(job.json, runs.b, config.detail);
     if (!job.compareJson.empty()) {
         std::ostringstream text;

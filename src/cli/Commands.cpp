@@ -13,6 +13,7 @@
 #include "core/MeshChecks.h"
 #include "core/Pipeline.h"
 #include "io/ClusterFiles.h"
+#include "io/ClusterIdFile.h"
 #include "io/MeshReader.h"
 #include "io/MeshWriter.h"
 #include "io/StatisticsText.h"
@@ -47,7 +48,7 @@ nlohmann::json meshSummary(const std::string& path, const Mesh& mesh) {
 }  // namespace
 
 void runStats(const StatsOptions& options) {
-    const Settings settings = options.run.toSettings();
+    const Settings settings = withClusterIds(options.run.toSettings());
     const Mesh mesh = readMeshNoting(options.mesh, options.quiet, {settings});
     const RunStatistics run = runStatistics(mesh, settings, fileName(options.mesh), stderrProgress(options.quiet));
     warnAboutWinding(run, options.quiet);
@@ -72,13 +73,13 @@ void runStats(const StatsOptions& options) {
 }
 
 void runClusters(const ClustersOptions& options) {
-    const Settings settings = clusterTableSettings(options.run.toSettings());
+    const Settings settings = clusterTableSettings(withClusterIds(options.run.toSettings()));
     const ClusterSortKey key = parseClusterSortKey(options.sort);
     const Mesh mesh = readMeshNoting(options.mesh, options.quiet, {settings});
     const RunStatistics run = runStatistics(mesh, settings, fileName(options.mesh), stderrProgress(options.quiet));
     warnAboutWinding(run, options.quiet);
     warnAboutBudget(run);
-    const TestStatistics& result = run.results.front();
+    const CullTestStatistics& result = run.results.front();
     std::ostringstream text;
     const std::string format = outputFormat(options.format, options.output, "text");
     if (format == "csv") {
@@ -109,7 +110,7 @@ void runCheck(const CheckOptions& options) {
 }
 
 void runPartition(const PartitionOptions& options) {
-    const Settings settings = options.run.toSettings();
+    const Settings settings = withClusterIds(options.run.toSettings());
     const Mesh mesh = readMeshNoting(options.mesh, options.quiet, {settings});
     note(options.quiet, "building clusters (" + toString(settings.builder) + ")");
     const Partition partition = buildPartition(mesh, computeFaceGeometry(mesh), settings, stderrProgress(options.quiet));

@@ -5,6 +5,7 @@
 #include "cli/Commands.h"
 #include "cli/MeshRuns.h"
 #include "core/Comparison.h"
+#include "io/ClusterIdFile.h"
 #include "io/ComparisonIO.h"
 
 namespace conescope::cli {
@@ -12,8 +13,8 @@ namespace conescope::cli {
 void runCompare(const CompareOptions& options) {
     const Settings base = options.run.toSettings();
     // Both texts are checked before the mesh is read: a typo fails at once.
-    const Settings settingsA = parseConfiguration(options.a, base);
-    const Settings settingsB = parseConfiguration(options.b, base);
+    const Settings settingsA = withClusterIds(parseConfiguration(options.a, base));
+    const Settings settingsB = withClusterIds(parseConfiguration(options.b, base));
     const std::string format = outputFormat(options.format, options.output, "json");
     const Mesh mesh = readMeshNoting(options.mesh, options.quiet, {settingsA, settingsB});
     const ProgressCallback progress = stderrProgress(options.quiet);

@@ -23,7 +23,7 @@ Settings clusterTableSettings(Settings settings) {
 }
 
 nlohmann::json clusterTableJson(const RunStatistics& run, ClusterSortKey key, size_t top) {
-    const TestStatistics& result = run.results.front();
+    const CullTestStatistics& result = run.results.front();
     const nlohmann::json mesh = {
         {"name", run.meshName}, {"vertices", run.vertices}, {"faces", run.faces}, {"triangles", run.triangles}};
     return {{"mesh", mesh},

@@ -8,8 +8,6 @@
 #include <stdexcept>
 #include <vector>
 
-#include "Settings.h"
-
 #if defined(__x86_64__) || defined(__i386__)
 #define CONESCOPE_BATCH_X86 1
 // GCC warns that the baseline-compiled templates pass __m256 values; they never do at run time,
@@ -185,9 +183,9 @@ inline View<Lanes> viewTo(const ClusterBatch& batch, const std::vector<float>& p
 
 // Runs a test over all clusters, a lane group at a time: `test(view, i)` gives the mask of the
 // clusters i, i + 1, ... it culls, from the view vector to the stored point (pointX, pointY, pointZ).
-template <class Lanes, class Test>
+template <class Lanes, class Culls>
 inline void cullEachGroup(const ClusterBatch& batch, const EyeConstants& constants, const std::vector<float>& pointX,
-                          const std::vector<float>& pointY, const std::vector<float>& pointZ, uint8_t* culled, Test test) {
+                          const std::vector<float>& pointY, const std::vector<float>& pointZ, uint8_t* culled, Culls test) {
     const EyeLanes<Lanes> eye = broadcastEye<Lanes>(constants);
     for (size_t i = 0; i < batch.count; i += Lanes::width)
         storeBits<Lanes>(Lanes::bits(test(viewTo<Lanes>(batch, pointX, pointY, pointZ, eye, i), i)), culled, i, batch.count);

@@ -17,7 +17,7 @@
 #include <glm/glm.hpp>
 
 #include "ClusterBounds.h"
-#include "Culling.h"
+#include "CullTest.h"
 
 namespace conescope {
 

@@ -1,12 +1,11 @@
 #include "ClusterBounds.h"
 
-#include <meshoptimizer.h>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
 #include "Parallel.h"
+#include "meshopt/Meshopt.h"
 
 namespace conescope {
 
@@ -42,66 +41,13 @@ ConeOfNormals coneByMethod(ConeMethod method, const std::vector<glm::dvec3>& nor
     return {};
 }
 
-// meshoptimizer's bounds for one cluster (fan triangles). Its float cone is widened to the exact
-// cone around the same axis when rounding made it too narrow, and its apex is pushed behind any
-// face plane it is in front of, so the tests built on it stay conservative.
-struct MeshoptCluster {
-    ConeOfNormals cone;
-    glm::dvec3 center{0.0};
-    glm::dvec3 apex{0.0};
-    bool usable = false;
-};
-
-MeshoptCluster meshoptBounds(const Mesh& mesh, const std::vector<glm::vec3>& world, const uint32_t* clusterFaces,
-                             size_t faceCount, const std::vector<glm::dvec3>& normals) {
-    std::vector<uint32_t> indices;
-    for (size_t i = 0; i < faceCount; ++i) {
-        const uint32_t* face = mesh.faceBegin(clusterFaces[i]);
-        for (size_t k = 1; k + 1 < mesh.faceSize(clusterFaces[i]); ++k)
-            indices.insert(indices.end(), {face[0], face[k], face[k + 1]});
-    }
-    MeshoptCluster result;
-    if (indices.empty() || indices.size() / 3 > 512) return result;  // meshoptimizer's own limit
-    // meshoptimizer squares coordinates in float: at 1e19 and beyond that overflows to a NaN normal
-    // and trips its internal assertion (found by fuzzing). It gets the cluster's own vertices moved
-    // to their box centre and scaled by a power of two to unit size instead; centre and apex are
-    // mapped back. Normals and the cone do not change under this similarity.
-    std::vector<uint32_t> local(indices);
-    std::sort(local.begin(), local.end());
-    local.erase(std::unique(local.begin(), local.end()), local.end());
-    glm::dvec3 low(world[local.front()]), high(low);
-    for (uint32_t v : local) low = glm::min(low, glm::dvec3(world[v])), high = glm::max(high, glm::dvec3(world[v]));
-    const glm::dvec3 middle = 0.5 * (low + high);
-    const double extent = std::max({high.x - low.x, high.y - low.y, high.z - low.z});
-    int exponent = 0;
-    if (extent > 0.0) std::frexp(extent, &exponent);
-    const double scale = std::ldexp(1.0, -exponent);
-    std::vector<glm::vec3> scaled(local.size());
-    for (size_t i = 0; i < local.size(); ++i) scaled[i] = glm::vec3((glm::dvec3(world[local[i]]) - middle) * scale);
-    for (uint32_t& index : indices)
-        index = uint32_t(std::lower_bound(local.begin(), local.end(), index) - local.begin());
-    const meshopt_Bounds bounds =
-        meshopt_computeClusterBounds(indices.data(), indices.size(), &scaled[0].x, scaled.size(), sizeof(glm::vec3));
-    result.center = middle + glm::dvec3(bounds.center[0], bounds.center[1], bounds.center[2]) / scale;
-    result.apex = middle + glm::dvec3(bounds.cone_apex[0], bounds.cone_apex[1], bounds.cone_apex[2]) / scale;
-    if (bounds.cone_cutoff >= 1.0f) return result;  // meshoptimizer: wider than a hemisphere
-    const glm::dvec3 axis(bounds.cone_axis[0], bounds.cone_axis[1], bounds.cone_axis[2]);
-    ConeOfNormals cone = coneAroundAxis(axis, normals.data(), normals.size());
-    if (!cone.cullable) return result;
-    cone.sinHalfAngle = std::max(cone.sinHalfAngle, double(bounds.cone_cutoff));
-    cone.cosHalfAngle = std::min(cone.cosHalfAngle, std::sqrt(std::max(0.0, 1.0 - cone.sinHalfAngle * cone.sinHalfAngle)));
-    result.cone = cone;
-    result.usable = true;
-    return result;
-}
-
 }  // namespace
 
 ConeOfNormals clusterCone(const Mesh& mesh, const std::vector<glm::vec3>& world, const FaceGeometry& faces,
                           const uint32_t* clusterFaces, size_t faceCount, ConeMethod method) {
     std::vector<glm::dvec3> normals;
     for (size_t i = 0; i < faceCount; ++i) normals.push_back(faces.normals[clusterFaces[i]]);
-    if (method == ConeMethod::Meshopt) return meshoptBounds(mesh, world, clusterFaces, faceCount, normals).cone;
+    if (method == ConeMethod::Meshopt) return meshoptClusterBounds(mesh, world, clusterFaces, faceCount, normals).cone;
     return coneByMethod(method, normals);
 }
 
@@ -155,7 +101,7 @@ ClusterBounds boundsOfClusters(const Mesh& mesh, const std::vector<glm::vec3>& w
         bounds.spheres[c] = sphereMethod == SphereMethod::Minimal ? minimalSphere(points.data(), points.size())
                                                                   : ritterSphere(points.data(), points.size());
         if (coneMethod == ConeMethod::Meshopt) {
-            const MeshoptCluster meshopt = meshoptBounds(mesh, world, clusterFaces, faceCount, normals);
+            const MeshoptClusterBounds meshopt = meshoptClusterBounds(mesh, world, clusterFaces, faceCount, normals);
             bounds.cones[c] = meshopt.cone;  // not cullable unless meshoptimizer gave a cone
             if (meshopt.usable) {
                 bounds.spheres[c] = sphereAround(meshopt.center, points.data(), points.size());

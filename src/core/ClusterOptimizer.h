@@ -9,7 +9,7 @@
 
 #include "ExpectedCull.h"  // the objective, expectedCullRate
 #include "Mesh.h"
-#include "MeshletStream.h"
+#include "meshopt/Meshopt.h"
 #include "Partition.h"
 #include "Progress.h"
 
@@ -40,25 +40,12 @@ size_t defaultClusterBudget(const Mesh& mesh, const MeshletLimits& limits);
 // holding every face, with the partition returned.
 using PartClusters = std::function<void(size_t part, size_t parts, const std::vector<uint32_t>& faces, const Partition& clusters)>;
 
-// Optimises expectedCullRate under the vertex/triangle limits, from one of two starts:
-//  - meshoptimizer's meshlets as they are (a meshlet may hold triangles of separate parts, as
-//    meshoptimizer packs by distance);
-//  - growth of small clusters of like normals (cone first, a little locality and vertex economy),
-//    then reduction to the budget: clusters are dissolved face by face into neighbours with room (a
-//    full neighbour first passes one of its own faces on), three are cut into two, and clusters
-//    merge with their nearest ones across gaps when separate pieces must share clusters.
-// Then local search: border faces move to the neighbouring cluster where the objective gains,
-// greedily, then in annealing sweeps that accept a shrinking random loss, then greedily again.
-// `effort` picks the start and the number of sweeps (Effort above); a mesh too large for a few
-// slow-cooling sweeps gets none. The mesh is cut into parts that share the budget and are
-// optimised independently, on all cores: from meshoptimizer's meshlets, the parts they come in
-// (MeshletStream.h: consecutive meshlets of about 640 faces, each refined as soon as it is made, on
-// one core while the meshlets are still being built on the other, then on both); from growth,
-// halves of halves of at most 2^17 faces; a budget below meshoptimizer's count that its parts miss
-// is grown too, and the result nearer the budget kept. targetClusters = 0 uses defaultClusterBudget;
-// the result has at most targetClusters clusters whenever the limits allow meshoptimizer's count,
-// and never more than meshoptimizer's count when a smaller budget is out of reach.
-// Deterministic: the same input gives the same partition, on any number of cores.
+// Maximises expectedCullRate under the vertex/triangle limits at a budget of targetClusters (0:
+// defaultClusterBudget): from meshoptimizer's meshlets or from grown clusters reduced to the budget,
+// then local search, on parts of the mesh at once (docs/architecture.md, "The optimized builder",
+// has the steps). The result has at most targetClusters clusters whenever the limits allow
+// meshoptimizer's count, and never more than that count. The same input gives the same partition
+// on any number of cores.
 // `progress` hears (parts done / parts, "clusters") as parts finish, on the calling thread;
 // returning false stops the parts not yet started and throws OperationCancelled.
 // `meshlets`: meshoptimizer's meshlets of this mesh at these limits when startsFromMeshoptMeshlets,

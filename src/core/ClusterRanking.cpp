@@ -67,7 +67,7 @@ const std::vector<ClusterSortKey>& allClusterSortKeys() {
     return all;
 }
 
-std::vector<uint32_t> rankClusters(const TestStatistics& statistics, ClusterSortKey key, size_t top) {
+std::vector<uint32_t> rankClusters(const CullTestStatistics& statistics, ClusterSortKey key, size_t top) {
     std::vector<uint32_t> order(statistics.clusters.size());
     std::iota(order.begin(), order.end(), 0u);
     std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {

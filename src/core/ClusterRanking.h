@@ -32,6 +32,6 @@ ClusterSortKey parseClusterSortKey(const std::string& text);
 const std::vector<ClusterSortKey>& allClusterSortKeys();
 
 // Cluster ids, worst first by `key` (ties by id), at most `top` of them (0 = all).
-std::vector<uint32_t> rankClusters(const TestStatistics& statistics, ClusterSortKey key, size_t top = 0);
+std::vector<uint32_t> rankClusters(const CullTestStatistics& statistics, ClusterSortKey key, size_t top = 0);
 
 }  // namespace conescope

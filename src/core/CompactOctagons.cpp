@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-#include "Culling.h"
+#include "CullTest.h"
 
 namespace conescope {
 

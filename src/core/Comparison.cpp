@@ -56,14 +56,14 @@ std::vector<ConfigurationPair> configurationPairs(const std::string& text) {
 }
 
 // An empty comparison of A and B: what both sides are, and per-face counts at zero.
-Comparison emptyComparison(const PreparedMesh& prepared, const ClusterSet& a, const ClusterSet& b) {
+Comparison emptyComparison(const PreparedMesh& prepared, const ClusterConfiguration& a, const ClusterConfiguration& b) {
     const size_t faceCount = prepared.mesh().faceCount();
-    if (a.partition.clusterOfFace.size() != faceCount || b.partition.clusterOfFace.size() != faceCount)
+    if (a.clusters.partition.clusterOfFace.size() != faceCount || b.clusters.partition.clusterOfFace.size() != faceCount)
         throw std::invalid_argument("compareClusterSets: A and B must partition the prepared mesh");
     Comparison comparison;
     comparison.testA = displayedTest(a.settings), comparison.testB = displayedTest(b.settings);
-    comparison.coneA = a.bounds.coneMethod, comparison.coneB = b.bounds.coneMethod;
-    comparison.clustersA = a.bounds.count(), comparison.clustersB = b.bounds.count();
+    comparison.coneA = a.clusters.bounds.coneMethod, comparison.coneB = b.clusters.bounds.coneMethod;
+    comparison.clustersA = a.clusters.bounds.count(), comparison.clustersB = b.clusters.bounds.count();
     comparison.viewsCulledOnlyA.assign(faceCount, 0);
     comparison.viewsCulledOnlyB.assign(faceCount, 0);
     return comparison;
@@ -106,6 +106,12 @@ std::vector<std::string> configurationKeys() {
     return keys;
 }
 
+Settings withSharedOptions(Settings side, const Settings& shared) {
+    for (const SettingField& field : settingFields())
+        if (sharedOption(field.flag)) field.assign(side, field.value(shared));
+    return side;
+}
+
 Settings parseConfiguration(const std::string& text, const Settings& base) {
     Settings settings = base;
     if (text.empty()) return settings;
@@ -146,27 +152,28 @@ std::vector<FaceDiff> faceDiff(const ClusterSet& a, const std::vector<uint8_t>& 
     return diff;
 }
 
-Comparison compareClusterSets(const PreparedMesh& prepared, const ClusterSet& a, const ClusterSet& b,
+Comparison compareClusterSets(const PreparedMesh& prepared, const ClusterConfiguration& a, const ClusterConfiguration& b,
                               const std::vector<Eye>& views, const ProgressCallback& progress) {
     Comparison comparison = emptyComparison(prepared, a, b);
     const Mesh& mesh = prepared.mesh();
     // Each side's float batch once, as measureCulling makes it for its views.
-    const ClusterBatch batchA = makeClusterBatch(a.bounds), batchB = makeClusterBatch(b.bounds);
-    const CullingInput inputA{mesh, prepared.world, prepared.faces, a.bounds, &batchA};
-    const CullingInput inputB{mesh, prepared.world, prepared.faces, b.bounds, &batchB};
+    const ClusterBatch batchA = makeClusterBatch(a.clusters.bounds), batchB = makeClusterBatch(b.clusters.bounds);
+    const CullingInput inputA{mesh, prepared.world, prepared.faces, a.clusters.bounds, &batchA};
+    const CullingInput inputB{mesh, prepared.world, prepared.faces, b.clusters.bounds, &batchB};
     for (size_t v = 0; v < views.size(); ++v) {
         if (progress && v % 16 == 0 && !progress(double(v) / double(views.size()), "views")) throw OperationCancelled();
         const Eye& eye = views[v];
         addView(comparison, mesh, eye, classifyFaces(mesh, prepared.world, prepared.faces, eye),
-                faceDiff(a, cullClusters(inputA, eye, comparison.testA), b, cullClusters(inputB, eye, comparison.testB)));
+                faceDiff(a.clusters, cullClusters(inputA, eye, comparison.testA), b.clusters, cullClusters(inputB, eye, comparison.testB)));
     }
     return comparison;
 }
 
-Comparison compareAtEye(const PreparedMesh& prepared, const ClusterSet& a, const std::vector<uint8_t>& culledA,
-                        const ClusterSet& b, const std::vector<uint8_t>& culledB, const Eye& eye, std::vector<FaceDiff>& diff) {
+Comparison compareAtEye(const PreparedMesh& prepared, const ClusterConfiguration& a, const std::vector<uint8_t>& culledA,
+                        const ClusterConfiguration& b, const std::vector<uint8_t>& culledB, const Eye& eye,
+                        std::vector<FaceDiff>& diff) {
     Comparison comparison = emptyComparison(prepared, a, b);
-    diff = faceDiff(a, culledA, b, culledB);
+    diff = faceDiff(a.clusters, culledA, b.clusters, culledB);
     addView(comparison, prepared.mesh(), eye, classifyFaces(prepared.mesh(), prepared.world, prepared.faces, eye), diff);
     return comparison;
 }
@@ -178,7 +185,7 @@ ComparedRuns runComparison(const PreparedMesh& prepared, const Settings& a, cons
     if (building) building('B');
     const ClusterSet clustersB = buildClusters(prepared, b, nullptr, progress);
     ComparedRuns runs{measureRun(prepared, clustersA, a, progress), measureRun(prepared, clustersB, b, progress), {}};
-    runs.comparison = compareClusterSets(prepared, clustersA, clustersB, viewsFor(shared, prepared.box), progress);
+    runs.comparison = compareClusterSets(prepared, {clustersA, a}, {clustersB, b}, viewsFor(shared, prepared.box), progress);
     return runs;
 }
 

@@ -1,8 +1,8 @@
 // Two configurations (A and B) of the same prepared mesh compared over the same eyes: which
 // back-facing triangles each culls that the other does not. A and B may differ in anything that
 // makes clusters or decides a cull (builder, cluster file, limits, cluster count, cone, sphere, test,
-// cone weight); the mesh, its winding repair and the views are shared. Each side culls with its
-// displayed (first) cone and test, as the product does (measureEye).
+// cone weight); the mesh, its winding repair and the views are shared. Each side culls with the
+// displayed (first) test of its own settings, as the product does (measureEye).
 #pragma once
 
 #include <cstdint>
@@ -26,6 +26,17 @@ Settings parseConfiguration(const std::string& text, const Settings& base);
 
 // The run options a configuration text may set (every schema flag but the shared ones).
 std::vector<std::string> configurationKeys();
+
+// `side` with the options both sides share (views, distance, eye, projection, winding repair) taken
+// from `shared`: a configuration pinned earlier is compared over the views of the current one.
+Settings withSharedOptions(Settings side, const Settings& shared);
+
+// One side of a comparison: its clusters and the settings it is shown with. The settings decide the
+// test; the clusters' own builtWith does not (the test changes without new clusters).
+struct ClusterConfiguration {
+    const ClusterSet& clusters;
+    const Settings& settings;
+};
 
 struct ViewComparison {
     size_t view = 0;
@@ -62,17 +73,19 @@ std::string clusterCountWarning(const Comparison& comparison);
 std::vector<FaceDiff> faceDiff(const ClusterSet& a, const std::vector<uint8_t>& culledA, const ClusterSet& b,
                                const std::vector<uint8_t>& culledB);
 
-// A (`a`) against B (`b`), both of `prepared`, from every eye of `views`; each side with its
-// displayed test through the product's path (cullClusters), so each side's numbers are its
-// measureCulling's. The views of a run are viewsFor(settings, prepared.box). `progress` hears of every 16th view and may cancel (OperationCancelled).
-Comparison compareClusterSets(const PreparedMesh& prepared, const ClusterSet& a, const ClusterSet& b,
+// A (`a`) against B (`b`), both of `prepared`, from every eye of `views`; each side with the
+// displayed test of its settings through the product's path (cullClusters), so each side's numbers
+// are its measureCulling's. The views of a run are viewsFor(settings, prepared.box). `progress`
+// hears of every 16th view and may cancel (OperationCancelled).
+Comparison compareClusterSets(const PreparedMesh& prepared, const ClusterConfiguration& a, const ClusterConfiguration& b,
                               const std::vector<Eye>& views, const ProgressCallback& progress = {});
 
 // One eye from decisions already made (each side's cullClusters, EyeMeasurement::culled): that view's
 // comparison, and each face's FaceDiff in `diff`. What the window does at every eye move and the
 // headless screenshot once, without culling either side again.
-Comparison compareAtEye(const PreparedMesh& prepared, const ClusterSet& a, const std::vector<uint8_t>& culledA,
-                        const ClusterSet& b, const std::vector<uint8_t>& culledB, const Eye& eye, std::vector<FaceDiff>& diff);
+Comparison compareAtEye(const PreparedMesh& prepared, const ClusterConfiguration& a, const std::vector<uint8_t>& culledA,
+                        const ClusterConfiguration& b, const std::vector<uint8_t>& culledB, const Eye& eye,
+                        std::vector<FaceDiff>& diff);
 
 // A whole comparison from a prepared mesh: each side's clusters and statistics exactly as `stats` with
 // its settings makes them (measureRun), and what only each culls over the views of `shared` (the

@@ -38,11 +38,6 @@ static bool vectorSeesBack(const ConeOfNormals& cone, const glm::dvec3& view, do
     return length > 0.0 && glm::dot(view, cone.axis) > (cone.sinHalfAngle + kCullMargin) * length + slack;
 }
 
-double apexRoundingSlack(const glm::dvec3& apex, const glm::dvec3& eyePosition) {
-    const glm::dvec3 largest = glm::max(glm::abs(apex), glm::abs(eyePosition));
-    return kApexRoundingSlack * std::max({largest.x, largest.y, largest.z});
-}
-
 bool pointSeesBackUnnormalised(const ConeOfNormals& cone, const glm::dvec3& point, const glm::dvec3& eye) {
     const glm::dvec3 view = point - eye;
     const double along = glm::dot(view, cone.axis);
@@ -90,7 +85,7 @@ static bool oracleCulls(const CullingInput& input, uint32_t cluster, const Eye& 
 
 bool cullCluster(const CullingInput& input, uint32_t cluster, const Eye& eye, CullTest test) {
     if (test == CullTest::Oracle) return oracleCulls(input, cluster, eye);
-    if (readsOwnRecord(test)) return ownRecordCulls(input, cluster, eye, test);
+    if (readsOwnRecord(test)) return ownRecordCulls({input.mesh, input.world, input.faces, input.bounds}, cluster, eye, test);
     const ClusterBounds& bounds = input.bounds;
     const ConeOfNormals& cone = bounds.cones[cluster];
     if (!cone.cullable) return false;
@@ -223,7 +218,7 @@ CullExplanation explainCull(const CullingInput& input, uint32_t cluster, const E
     if (test == CullTest::Oracle || !cone.cullable || sphereNeverCulls || (test == CullTest::Octagon && !octagon.cullable))
         why.margin = std::numeric_limits<double>::quiet_NaN();
     // The records' own tests compare their own numbers, whatever the displayed cone.
-    if (readsOwnRecord(test)) why.margin = ownRecordMargin(input, cluster, eye, test);
+    if (readsOwnRecord(test)) why.margin = ownRecordMargin({input.mesh, input.world, input.faces, input.bounds}, cluster, eye, test);
     const ClusterFaces& rows = bounds.faces;
     for (uint32_t i = rows.starts[cluster]; i < rows.starts[cluster + 1]; ++i) {
         switch (classifyFace(input.mesh, input.world, input.faces, rows.faces[i], eye)) {

@@ -2,9 +2,8 @@
 
 #include <stdexcept>
 
-#include "ClusterBounds.h"
-#include "MeshoptRecords.h"
 #include "Parallel.h"
+#include "meshopt/Meshopt.h"
 
 namespace conescope {
 
@@ -20,8 +19,8 @@ void makeOnce(std::mutex& mutex, bool& made, Make make) {
 }  // namespace
 
 std::vector<std::vector<uint32_t>> clusterTriangles(const RecordSource& source) {
-    const ClusterFaces& rows = source.bounds.faces;
-    std::vector<std::vector<uint32_t>> triangles(source.bounds.count());
+    const ClusterFaces& rows = source.clusters;
+    std::vector<std::vector<uint32_t>> triangles(source.count());
     for (size_t c = 0; c < triangles.size(); ++c)
         for (uint32_t i = rows.starts[c]; i < rows.starts[c + 1]; ++i) {
             const uint32_t f = rows.faces[i];
@@ -40,16 +39,16 @@ void EngineRecords::useStoredMeshoptBounds(const std::vector<MeshletBounds>& sto
 const std::vector<MeshletBounds>& EngineRecords::meshopt(const RecordSource& source) const {
     makeOnce(mutex_, meshoptMade_, [&] {
         if (!stored_.empty()) {
-            if (stored_.size() != source.bounds.count())
+            if (stored_.size() != source.count())
                 throw std::runtime_error("the cluster file stored bounds for " + std::to_string(stored_.size()) + " clusters, the partition has " +
-                                         std::to_string(source.bounds.count()));
+                                         std::to_string(source.count()));
             meshopt_ = stored_;
             return;
         }
         const std::vector<std::vector<uint32_t>> triangles = clusterTriangles(source);
         meshopt_.assign(triangles.size(), MeshletBounds{});
         forRangesInParallel(triangles.size(), 64, [&](size_t begin, size_t end) {
-            for (size_t c = begin; c < end; ++c) meshopt_[c] = meshoptClusterBounds(triangles[c], source.world);
+            for (size_t c = begin; c < end; ++c) meshopt_[c] = meshoptEngineBounds(triangles[c], source.world);
         });
     });
     return meshopt_;
@@ -82,14 +81,14 @@ const std::vector<CadsceneFloat>& EngineRecords::cadsceneFloat(const RecordSourc
 const std::vector<CompactOctagon>& EngineRecords::compactOctagons(const RecordSource& source) const {
     const ApexGrid grid = apexGridOver(object(source));
     makeOnce(mutex_, compactMade_, [&] {
-        const ClusterBounds& bounds = source.bounds;
-        compact_.resize(bounds.count());
-        decoded_.resize(bounds.count());
-        forRangesInParallel(bounds.count(), 64, [&](size_t begin, size_t end) {
+        const ClusterFaces& rows = source.clusters;
+        compact_.resize(source.count());
+        decoded_.resize(source.count());
+        forRangesInParallel(source.count(), 64, [&](size_t begin, size_t end) {
             for (size_t c = begin; c < end; ++c) {
-                const uint32_t* faces = bounds.faces.faces.data() + bounds.faces.starts[c];
-                const size_t count = bounds.faces.starts[c + 1] - bounds.faces.starts[c];
-                compact_[c] = encodeCompactOctagon(bounds.cones[c], source.mesh, source.world, source.faces, faces, count, grid);
+                const uint32_t* faces = rows.faces.data() + rows.starts[c];
+                const size_t count = rows.starts[c + 1] - rows.starts[c];
+                compact_[c] = encodeCompactOctagon(source.cones[c], source.mesh, source.world, source.faces, faces, count, grid);
                 decoded_[c] = decodeCompactOctagon(compact_[c], grid);
             }
         });

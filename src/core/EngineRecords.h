@@ -1,5 +1,5 @@
 // The per-cluster records the engine tests and the compact octagon read (RecordTests.h), kept with
-// the bounds they belong to and made on first use: meshoptimizer's meshopt_Bounds (MeshoptRecords.h;
+// the bounds they belong to and made on first use: meshoptimizer's meshopt_Bounds (meshopt/Meshopt.h;
 // a meshlet file's own when it stored them), cadscene's packed cone and box (CadsceneCones.h) and
 // the 16-byte octagon (CompactOctagons.h). Made once per kind under a lock, so the window's threads
 // may ask together; every caller passes the same stages the bounds were made from.
@@ -13,17 +13,19 @@
 #include "CompactOctagons.h"
 #include "FileClusters.h"
 #include "Mesh.h"
+#include "Partition.h"
 
 namespace conescope {
 
-struct ClusterBounds;
-
-// What the records are made from: the stages the bounds were made from, and the bounds.
+// What the records are made from: the stages the bounds were made from, and of the bounds the
+// clusters' faces and cones (ClusterBounds holds the records, so they do not know it).
 struct RecordSource {
     const Mesh& mesh;
     const std::vector<glm::vec3>& world;
     const FaceGeometry& faces;
-    const ClusterBounds& bounds;
+    const ClusterFaces& clusters;
+    const std::vector<ConeOfNormals>& cones;
+    size_t count() const { return cones.size(); }
 };
 
 class EngineRecords {

@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "Culling.h"  // kCullMargin
+#include "CullTest.h"  // kCullMargin
 
 namespace conescope {
 

@@ -35,7 +35,7 @@ OctagonCone octagonCone(const ConeOfNormals& cone, const glm::dvec3* normals, si
 
 // Whether `view` (from the eye to the apex, or an orthographic view direction) sees every normal
 // of the octagon from behind: g.view > kCullMargin |view| + slack for each edge g (slack: the
-// apex's rounding, apexRoundingSlack in Culling.h, for a view from an eye).
+// apex's rounding, apexRoundingSlack in CullTest.h, for a view from an eye).
 bool octagonSeesBack(const OctagonCone& octagon, const glm::dvec3& view, double slack = 0.0);
 
 // The tightest edge: min over edges of g.view / |view| (unit view), what octagonSeesBack compares

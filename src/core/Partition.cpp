@@ -1,11 +1,8 @@
 #include "Partition.h"
 
-#include <meshoptimizer.h>
-
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <fstream>
 #include <future>
 #include <limits>
 #include <random>
@@ -14,16 +11,11 @@
 #include <unordered_map>
 
 #include "Adjacency.h"
-#include "MeshoptMeshlets.h"
-#include "Parallel.h"
 
 namespace conescope {
 
 namespace {
 constexpr uint32_t kUnassigned = std::numeric_limits<uint32_t>::max();
-// meshoptimizer's builder is reproduced (MeshoptMeshlets.h) for the version it was made from.
-constexpr bool kMeshoptReproduced = MESHOPTIMIZER_VERSION == kReproducedMeshoptVersion;
-
 }  // namespace
 
 Partition renumberClusters(std::vector<uint32_t> clusterOfFace) {
@@ -218,144 +210,6 @@ Partition buildKMeans(const Mesh& mesh, const FaceGeometry& faces, size_t cluste
     return renumberClusters(std::move(assignment));
 }
 
-bool meshoptTakesLimits(const MeshletLimits& limits) {
-    return limits.maxVertices >= 3 && limits.maxVertices <= 255 && limits.maxTriangles >= 1 && limits.maxTriangles <= 512 &&
-           limits.maxTriangles % 4 == 0;
-}
-
-namespace {
-
-void requireMeshoptLimits(const MeshletLimits& limits) {
-    if (!meshoptTakesLimits(limits))
-        throw std::invalid_argument("meshoptimizer needs 3 <= max vertices <= 255 and max triangles <= 512, divisible by 4 (got " +
-                                    std::to_string(limits.maxVertices) + "/" + std::to_string(limits.maxTriangles) + ")");
-}
-
-// meshoptimizer's builder leaves triangles unplaced when its k-d tree finds none nearer than the
-// float range (centres near 3e38); such a face goes with the face before it (the first with cluster 0).
-std::vector<uint32_t> giveUnplacedFacesACluster(std::vector<uint32_t> clusterOfFace) {
-    uint32_t last = 0;
-    for (uint32_t& id : clusterOfFace) {
-        if (id == kUnassigned) id = last;
-        last = id;
-    }
-    return clusterOfFace;
-}
-
-}  // namespace
-
-std::vector<uint32_t> fanTriangles(const Mesh& mesh) {
-    std::vector<uint32_t> indices;
-    indices.reserve(triangleCount(mesh) * 3);
-    for (size_t f = 0; f < mesh.faceCount(); ++f) {
-        const uint32_t* face = mesh.faceBegin(f);
-        for (size_t k = 1; k + 1 < mesh.faceSize(f); ++k) {
-            indices.push_back(face[0]);
-            indices.push_back(face[k]);
-            indices.push_back(face[k + 1]);
-        }
-    }
-    return indices;
-}
-
-Partition facesOfMeshlets(const Mesh& mesh, const MeshoptMeshlets& meshlets) {
-    std::vector<uint32_t> clusterOfFace(mesh.faceCount(), kUnassigned);
-    size_t triangle = 0;
-    for (size_t f = 0; f < mesh.faceCount(); ++f)
-        for (size_t k = 1; k + 1 < mesh.faceSize(f); ++k, ++triangle)
-            clusterOfFace[f] = std::min(clusterOfFace[f], meshlets.meshletOfTriangle[triangle]);
-    return renumberClusters(giveUnplacedFacesACluster(std::move(clusterOfFace)));
-}
-
-size_t meshoptMeshletCount(const Mesh& mesh, const MeshletLimits& limits, float coneWeight) {
-    requireMeshoptLimits(limits);
-    const std::vector<uint32_t> indices = fanTriangles(mesh);
-    if (indices.empty()) return 0;
-    if (kMeshoptReproduced)
-        return reproduceMeshoptMeshlets(indices.data(), indices.size(), &mesh.positions[0].x, mesh.positions.size(), sizeof(glm::vec3),
-                                        limits.maxVertices, limits.maxTriangles, coneWeight)
-            .count;
-    const size_t maxMeshlets = meshopt_buildMeshletsBound(indices.size(), limits.maxVertices, limits.maxTriangles);
-    std::vector<meshopt_Meshlet> meshlets(maxMeshlets);
-    std::vector<unsigned int> meshletVertices(maxMeshlets * limits.maxVertices);
-    std::vector<unsigned char> meshletTriangles(maxMeshlets * limits.maxTriangles * 3);
-    return meshopt_buildMeshlets(meshlets.data(), meshletVertices.data(), meshletTriangles.data(), indices.data(),
-                                 indices.size(), &mesh.positions[0].x, mesh.positions.size(), sizeof(glm::vec3),
-                                 limits.maxVertices, limits.maxTriangles, coneWeight);
-}
-
-Partition buildMeshoptMeshlets(const Mesh& mesh, const MeshletLimits& limits, float coneWeight) {
-    if (!kMeshoptReproduced) return meshoptLibraryMeshlets(mesh, limits, coneWeight);
-    requireMeshoptLimits(limits);
-    const std::vector<uint32_t> indices = fanTriangles(mesh);
-    if (indices.empty()) return renumberClusters(std::vector<uint32_t>(mesh.faceCount(), 0));
-    return facesOfMeshlets(mesh, reproduceMeshoptMeshlets(indices.data(), indices.size(), &mesh.positions[0].x, mesh.positions.size(),
-                                                          sizeof(glm::vec3), limits.maxVertices, limits.maxTriangles, coneWeight));
-}
-
-Partition meshoptLibraryMeshlets(const Mesh& mesh, const MeshletLimits& limits, float coneWeight) {
-    requireMeshoptLimits(limits);
-    // Fan triangulation; which face each triangle came from is found again below, among the faces
-    // around its corners, which another core lists while meshoptimizer works.
-    const std::vector<uint32_t> indices = fanTriangles(mesh);
-    std::future<Rows> around = std::async(std::launch::async, [&mesh] { return facesAroundVertices(mesh); });
-    const size_t maxMeshlets = meshopt_buildMeshletsBound(indices.size(), limits.maxVertices, limits.maxTriangles);
-    std::vector<meshopt_Meshlet> meshlets(maxMeshlets);
-    std::vector<unsigned int> meshletVertices(maxMeshlets * limits.maxVertices);
-    std::vector<unsigned char> meshletTriangles(maxMeshlets * limits.maxTriangles * 3);
-    const size_t count = meshopt_buildMeshlets(meshlets.data(), meshletVertices.data(), meshletTriangles.data(),
-                                               indices.data(), indices.size(), &mesh.positions[0].x,
-                                               mesh.positions.size(), sizeof(glm::vec3), limits.maxVertices,
-                                               limits.maxTriangles, coneWeight);
-    const Rows facesAround = around.get();
-    // meshoptimizer reorders triangles inside meshlets, so each output triangle's face is found
-    // again among the faces around its first corner: the face with a fan triangle of the same three
-    // corners not yet matched (so duplicate faces each get one). A polygon goes with its first match.
-    std::vector<uint32_t> firstTriangle(mesh.faceCount() + 1, 0), faceOfTriangle;
-    for (size_t f = 0; f < mesh.faceCount(); ++f) {
-        firstTriangle[f + 1] = firstTriangle[f] + uint32_t(mesh.faceSize(f) >= 2 ? mesh.faceSize(f) - 2 : 0);
-        faceOfTriangle.insert(faceOfTriangle.end(), firstTriangle[f + 1] - firstTriangle[f], uint32_t(f));
-    }
-    std::vector<uint8_t> matched(firstTriangle.back(), 0);
-    // The first fan triangle with the corners of an output triangle, matched or not (kUnassigned: none).
-    auto firstMatch = [&](const std::array<uint32_t, 3>& key, bool skipMatched) {
-        for (const uint32_t* f = facesAround.begin(key[0]); f != facesAround.end(key[0]); ++f) {
-            const uint32_t* face = mesh.faceBegin(*f);
-            for (size_t k = 1; k + 1 < mesh.faceSize(*f); ++k) {
-                const uint32_t triangle = firstTriangle[*f] + uint32_t(k - 1);
-                if ((!skipMatched || !matched[triangle]) && sortedCorners(face[0], face[k], face[k + 1]) == key) return triangle;
-            }
-        }
-        return kUnassigned;
-    };
-    auto keyOf = [&](const meshopt_Meshlet& meshlet, size_t t) {
-        const unsigned char* local = &meshletTriangles[meshlet.triangle_offset + 3 * t];
-        const uint32_t* vertices = &meshletVertices[meshlet.vertex_offset];
-        return sortedCorners(vertices[local[0]], vertices[local[1]], vertices[local[2]]);
-    };
-    // The search on all cores, meshlet by meshlet; then, in order, each output triangle takes its
-    // match, or the next unmatched one when a duplicate face took it: the result is the one-pass
-    // search's, whatever the number of cores.
-    std::vector<uint32_t> outputStart(count + 1, 0);
-    for (size_t m = 0; m < count; ++m) outputStart[m + 1] = outputStart[m] + meshlets[m].triangle_count;
-    std::vector<uint32_t> candidate(outputStart.back());
-    forRangesInParallel(count, 256, [&](size_t begin, size_t end) {
-        for (size_t m = begin; m < end; ++m)
-            for (size_t t = 0; t < meshlets[m].triangle_count; ++t) candidate[outputStart[m] + t] = firstMatch(keyOf(meshlets[m], t), false);
-    });
-    std::vector<uint32_t> clusterOfFace(mesh.faceCount(), kUnassigned);
-    for (size_t m = 0; m < count; ++m)
-        for (size_t t = 0; t < meshlets[m].triangle_count; ++t) {
-            uint32_t triangle = candidate[outputStart[m] + t];
-            if (triangle != kUnassigned && matched[triangle]) triangle = firstMatch(keyOf(meshlets[m], t), true);
-            if (triangle == kUnassigned) continue;
-            matched[triangle] = 1;
-            uint32_t& cluster = clusterOfFace[faceOfTriangle[triangle]];
-            if (cluster == kUnassigned) cluster = uint32_t(m);
-        }
-    return renumberClusters(giveUnplacedFacesACluster(std::move(clusterOfFace)));
-}
-
 Partition partitionFromIds(const std::vector<double>& ids, size_t faceCount, const std::string& source) {
     if (ids.size() != faceCount)
         throw std::runtime_error(source + ": " + std::to_string(ids.size()) + " cluster ids for " +
@@ -371,29 +225,6 @@ Partition partitionFromIds(const std::vector<double>& ids, size_t faceCount, con
         clusterOfFace[f] = uint32_t(id);
     }
     return renumberClusters(std::move(clusterOfFace));
-}
-
-std::vector<double> readClusterIdFile(const std::string& path) {
-    std::ifstream in(path);
-    if (!in) throw std::runtime_error(path + ": cannot open cluster id file");
-    std::vector<double> ids;
-    std::string line;
-    size_t lineNumber = 0;
-    while (std::getline(in, line)) {
-        ++lineNumber;
-        const size_t hash = line.find('#');
-        if (hash != std::string::npos) line.resize(hash);
-        std::istringstream words(line);
-        std::string word;
-        while (words >> word) {
-            char* end = nullptr;
-            const double value = std::strtod(word.c_str(), &end);
-            if (end == word.c_str() || *end != '\0')
-                throw std::runtime_error(path + ":" + std::to_string(lineNumber) + ": '" + word + "' is not a number");
-            ids.push_back(value);
-        }
-    }
-    return ids;
 }
 
 ClusterFaces facesByCluster(const Partition& partition) {

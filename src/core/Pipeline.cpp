@@ -24,6 +24,13 @@ void report(const ProgressCallback& progress, double fraction, const std::string
     if (progress && !progress(fraction, stage)) throw OperationCancelled();
 }
 
+// meshoptimizer's bounds a meshlet file stored for the file builder's cluster file: the meshopt
+// tests then test those (EngineRecords.h) instead of the library's.
+void useStoredMeshletBounds(ClusterBounds& bounds, const Mesh& mesh, const Settings& settings) {
+    if (settings.builder != Builder::File) return;
+    if (const std::vector<MeshletBounds>* stored = storedMeshletBounds(mesh, settings.clusterFile)) bounds.records->useStoredMeshoptBounds(*stored);
+}
+
 }  // namespace
 
 ConeMethod displayedCone(const Settings& settings) {
@@ -78,7 +85,7 @@ PreparedMesh prepareMesh(std::shared_ptr<const Mesh> mesh, const std::string& pa
 ClusterSet buildClusters(const PreparedMesh& prepared, const Settings& settings, const ClusterSet* previous,
                          const ProgressCallback& progress, MeshletStream* meshlets) {
     ClusterSet clusters;
-    clusters.settings = settings;
+    clusters.builtWith = settings;
     const ConeMethod cone = displayedCone(settings);
     // The optimized builder hands over its parts as they are made: their bounds are made at once,
     // on the core that made the part, while the other core still builds.
@@ -99,7 +106,7 @@ ClusterSet buildClusters(const PreparedMesh& prepared, const Settings& settings,
         parts[part] = std::move(made);
         partBoundsSeconds += secondsSince(start);
     };
-    if (previous && !partitionChanged(previous->settings, settings)) {
+    if (previous && !partitionChanged(previous->builtWith, settings)) {
         clusters.partition = previous->partition;
         clusters.partitionSeconds = previous->partitionSeconds;
     } else {
@@ -154,6 +161,21 @@ std::vector<Eye> orbitOf(const Settings& settings, const Aabb& worldBox) {
     return viewsFor(orbit, worldBox);
 }
 
+size_t nearestOrbitView(const Settings& settings, const Aabb& worldBox, const glm::dvec3& position) {
+    const glm::dvec3 center(worldBox.center());
+    const std::vector<Eye> views = orbitOf(settings, worldBox);
+    size_t nearest = 0;
+    double best = -2.0;
+    for (size_t v = 0; v < views.size(); ++v) {
+        // Cosine of the angle between the two directions from the centre (0 for a zero vector).
+        const glm::dvec3 a = position - center, b = views[v].position - center;
+        const double lengths = glm::length(a) * glm::length(b);
+        const double cosine = lengths > 0.0 ? glm::dot(a, b) / lengths : 0.0;
+        if (cosine > best) best = cosine, nearest = v;
+    }
+    return nearest;
+}
+
 EyeMeasurement measureEye(const PreparedMesh& prepared, const ClusterSet& clusters, const Eye& eye, CullTest test) {
     const CullingInput input = cullingInput(prepared, clusters);
     EyeMeasurement measurement;
@@ -177,10 +199,10 @@ glm::dvec3 startingEyePosition(const Aabb& worldBox, const Settings& settings) {
     return glm::dvec3(worldBox.center()) + settings.distance * radius * direction;
 }
 
-TestStatistics measureOrbit(const PreparedMesh& prepared, const ClusterSet& clusters, const Settings& settings,
+CullTestStatistics measureOrbit(const PreparedMesh& prepared, const ClusterSet& clusters, const Settings& settings,
                             const ProgressCallback& progress) {
     const CullingInput input = cullingInput(prepared, clusters);
-    TestStatistics statistics = measureCulling(input, orbitOf(settings, prepared.box), displayedTest(settings),
+    CullTestStatistics statistics = measureCulling(input, orbitOf(settings, prepared.box), displayedTest(settings),
                                                progressWithin(progress, 0.0, 1.0, "orbit statistics"));
     addCullMap(statistics, clusters.cullMap);
     return statistics;
@@ -252,7 +274,7 @@ RunStatistics measureRun(const PreparedMesh& prepared, const ClusterSet& cluster
         again.name = prepared.name;
         return measureRun(again, buildClusters(again, settings), settings, progress);
     }
-    if (partitionChanged(clusters.settings, settings))
+    if (partitionChanged(clusters.builtWith, settings))
         return measureRun(prepared, buildClusters(prepared, settings, &clusters), settings, progress);
     RunStatistics run;
     run.settings = settings;
@@ -270,7 +292,7 @@ RunStatistics measureRun(const PreparedMesh& prepared, const ClusterSet& cluster
     size_t step = 0;
     for (ConeMethod cone : settings.cones) {
         // The displayed cone's bounds are built already; the other cones get theirs for the same partition.
-        const bool built = cone == displayedCone(clusters.settings) && settings.sphere == clusters.settings.sphere;
+        const bool built = cone == displayedCone(clusters.builtWith) && settings.sphere == clusters.builtWith.sphere;
         if (!built) report(progress, double(step) / double(steps), "bounds (" + toString(cone) + ")");
         ClusterBounds bounds = built ? ClusterBounds()
                                      : computeClusterBounds(prepared.mesh(), prepared.world, prepared.faces, clusters.partition, cone, settings.sphere);
@@ -303,7 +325,8 @@ RunStatistics runStatistics(const Mesh& mesh, const Settings& settings, const st
     return measureRun(prepared, clusters, settings, progressWithin(progress, 0.1, 1.0));
 }
 
-std::map<std::string, std::vector<double>> partitionFaceArrays(const PreparedMesh& prepared, const ClusterSet& clusters) {
+std::map<std::string, std::vector<double>> partitionFaceArrays(const PreparedMesh& prepared, const ClusterSet& clusters,
+                                                               CullTest test) {
     const size_t faceCount = prepared.mesh().faceCount();
     std::map<std::string, std::vector<double>> arrays;
     auto spread = [&](const std::string& name, auto valueOfCluster) {
@@ -325,7 +348,7 @@ std::map<std::string, std::vector<double>> partitionFaceArrays(const PreparedMes
     spread("sphere_radius", [&](uint32_t c) { return bounds.spheres[c].radius; });
     const CullMap& map = clusters.cullMap;
     const CullingInput input = cullingInput(prepared, clusters);
-    spread("cull_fraction", [&](uint32_t c) { return testCullFraction(map, input, c, displayedTest(clusters.settings)); });
+    spread("cull_fraction", [&](uint32_t c) { return testCullFraction(map, input, c, test); });
     spread("oracle_fraction", [&](uint32_t c) { return map.oracleFraction[c]; });
     return arrays;
 }

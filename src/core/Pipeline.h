@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "BuildPartition.h"
 #include "Culling.h"
 #include "MeshChecks.h"
 #include "Settings.h"
@@ -42,7 +43,10 @@ struct PreparedMesh {
 
 // The clusters of a prepared mesh for the builder, cone and sphere of `settings`.
 struct ClusterSet {
-    Settings settings;                // the settings the partition and bounds were built with
+    // The settings the partition and bounds were built with: only what makes them (builder, limits,
+    // cone, sphere) means anything here. The test, the views and the projection can change without new
+    // clusters, so the settings a set is shown with are the caller's, never these.
+    Settings builtWith;
     Partition partition;
     ClusterBounds bounds;
     // The bounds' view-independent shares (CullMap.h), made once with them: the orbit, the
@@ -89,12 +93,17 @@ Eye eyeAt(const Settings& settings, const glm::dvec3& position, const Aabb& worl
 // The standard orbit of the settings (views, distance, projection), ignoring settings.eye.
 std::vector<Eye> orbitOf(const Settings& settings, const Aabb& worldBox);
 
+// The orbit view whose direction from the mesh centre is nearest the eye's at `position` (every
+// orbit eye lies on that ray from the centre); 0 for an eye at the centre. Where stepping through
+// the orbit goes on from when the eye was moved off it.
+size_t nearestOrbitView(const Settings& settings, const Aabb& worldBox, const glm::dvec3& position);
+
 // What the window shows for one eye: the cull decision of every cluster for `test`, and the
 // statistics of that single view (measureCulling over {eye}).
 struct EyeMeasurement {
     Eye eye;
     std::vector<uint8_t> culled;      // 1 = culled, per cluster
-    TestStatistics statistics;        // statistics.views[0] is this eye
+    CullTestStatistics statistics;        // statistics.views[0] is this eye
     const ViewStatistics& view() const { return statistics.views.front(); }
 };
 EyeMeasurement measureEye(const PreparedMesh& prepared, const ClusterSet& clusters, const Eye& eye, CullTest test);
@@ -110,7 +119,7 @@ glm::dvec3 startingEyePosition(const Aabb& worldBox, const Settings& settings);
 // The displayed test over the standard orbit (measureCulling over orbitOf) with the cull map of the
 // clusters: the efficiency plot's rows (views) and the worst-cluster table (clusters). Cancellable
 // between views.
-TestStatistics measureOrbit(const PreparedMesh& prepared, const ClusterSet& clusters, const Settings& settings,
+CullTestStatistics measureOrbit(const PreparedMesh& prepared, const ClusterSet& clusters, const Settings& settings,
                             const ProgressCallback& progress = {});
 
 // The first orbit view from which the displayed test culls `cluster` holding a visible face (a
@@ -163,7 +172,8 @@ std::map<std::string, std::vector<double>> eyeFaceArrays(const PreparedMesh& pre
 // Per-face arrays describing the partition for writePolyData: cluster_id plus each cluster's cone
 // and bounds spread to its faces (cone_half_angle_deg, cone_axis_x/y/z, cone_cullable,
 // sphere_center_x/y/z, sphere_radius, aabb_min_x/y/z, aabb_max_x/y/z, and from the cull map
-// cull_fraction for the displayed test and oracle_fraction).
-std::map<std::string, std::vector<double>> partitionFaceArrays(const PreparedMesh& prepared, const ClusterSet& clusters);
+// cull_fraction for `test` and oracle_fraction).
+std::map<std::string, std::vector<double>> partitionFaceArrays(const PreparedMesh& prepared, const ClusterSet& clusters,
+                                                               CullTest test);
 
 }  // namespace conescope

@@ -2,16 +2,17 @@
 
 #include <stdexcept>
 
-#include "FileBuilder.h"
-#include "MeshoptRecords.h"
+#include "meshopt/Meshopt.h"
 
 namespace conescope {
 
 namespace {
 
-RecordSource sourceOf(const CullingInput& input) { return {input.mesh, input.world, input.faces, input.bounds}; }
+RecordSource sourceOf(const RecordInput& input) {
+    return {input.mesh, input.world, input.faces, input.bounds.faces, input.bounds.cones};
+}
 
-const EngineRecords& recordsOf(const CullingInput& input) { return *input.bounds.records; }
+const EngineRecords& recordsOf(const RecordInput& input) { return *input.bounds.records; }
 
 }  // namespace
 
@@ -54,7 +55,7 @@ size_t recordBytes(CullTest test) {
     return 0;
 }
 
-bool ownRecordCulls(const CullingInput& input, uint32_t cluster, const Eye& eye, CullTest test) {
+bool ownRecordCulls(const RecordInput& input, uint32_t cluster, const Eye& eye, CullTest test) {
     const EngineRecords& records = recordsOf(input);
     const RecordSource source = sourceOf(input);
     switch (test) {
@@ -70,26 +71,17 @@ bool hasFloatOriginal(CullTest test) {
     return test == CullTest::MeshoptSphereS8 || test == CullTest::CadsceneBoxS8 || test == CullTest::OctagonCompact;
 }
 
-bool floatOriginalCulls(const CullingInput& input, uint32_t cluster, const Eye& eye, CullTest test) {
+bool floatOriginalCulls(const RecordInput& input, uint32_t cluster, const Eye& eye, CullTest test) {
     const EngineRecords& records = recordsOf(input);
     const RecordSource source = sourceOf(input);
     switch (test) {
         case CullTest::MeshoptSphereS8: return meshoptSphereF32Culls(records.meshopt(source)[cluster], eye);
         case CullTest::CadsceneBoxS8: return cadsceneFloatCulls(records.cadsceneFloat(source)[cluster], eye);
-        case CullTest::OctagonCompact: return cullCluster(input, cluster, eye, CullTest::Octagon);
         default: return false;
     }
 }
 
-std::vector<uint8_t> floatOriginalDecisions(const CullingInput& input, const Eye& eye, CullTest test) {
-    if (!hasFloatOriginal(test)) return {};
-    if (test == CullTest::OctagonCompact) return cullClusters(input, eye, CullTest::Octagon);
-    std::vector<uint8_t> culled(input.bounds.count());
-    for (uint32_t c = 0; c < culled.size(); ++c) culled[c] = floatOriginalCulls(input, c, eye, test);
-    return culled;
-}
-
-double ownRecordMargin(const CullingInput& input, uint32_t cluster, const Eye& eye, CullTest test) {
+double ownRecordMargin(const RecordInput& input, uint32_t cluster, const Eye& eye, CullTest test) {
     const EngineRecords& records = recordsOf(input);
     const RecordSource source = sourceOf(input);
     switch (test) {
@@ -105,7 +97,7 @@ double ownRecordMargin(const CullingInput& input, uint32_t cluster, const Eye& e
     }
 }
 
-double ownRecordCullShare(const CullingInput& input, uint32_t cluster, CullTest test) {
+double ownRecordCullShare(const RecordInput& input, uint32_t cluster, CullTest test) {
     const EngineRecords& records = recordsOf(input);
     const RecordSource source = sourceOf(input);
     switch (test) {
@@ -115,19 +107,6 @@ double ownRecordCullShare(const CullingInput& input, uint32_t cluster, CullTest 
         case CullTest::OctagonCompact: return octagonCullShare(records.decodedOctagons(source)[cluster].octagon);
         default: return 0.0;
     }
-}
-
-}  // namespace conescope
-
-namespace conescope {
-
-double testCullFraction(const CullMap& map, const CullingInput& input, uint32_t cluster, CullTest test) {
-    return readsOwnRecord(test) ? ownRecordCullShare(input, cluster, test) : cullFraction(map, cluster, test);
-}
-
-void useStoredMeshletBounds(ClusterBounds& bounds, const Mesh& mesh, const Settings& settings) {
-    if (settings.builder != Builder::File) return;
-    if (const std::vector<MeshletBounds>* stored = storedMeshletBounds(mesh, settings.clusterFile)) bounds.records->useStoredMeshoptBounds(*stored);
 }
 
 }  // namespace conescope

@@ -2,8 +2,8 @@
 //
 // Engine records, tested as the engine ships them and NOT made conservative: their culls of
 // clusters holding a visible face are counted as false_culls, an engine bug for its user to see.
-//   meshopt-apex-f32   meshopt_Bounds' apex, axis and cutoff, float apex test (MeshoptRecords.h)
-//   meshopt-sphere-s8  meshopt_Bounds' sphere and 8-bit cone, niagara's test    (MeshoptRecords.h)
+//   meshopt-apex-f32   meshopt_Bounds' apex, axis and cutoff, float apex test (meshopt/Meshopt.h)
+//   meshopt-sphere-s8  meshopt_Bounds' sphere and 8-bit cone, niagara's test    (meshopt/Meshopt.h)
 //   cadscene-box-s8    cadscene's 8-bit box and octahedral cone, its box test   (CadsceneCones.h)
 // Conservative, like every other test:
 //   octagon-compact    the octagon test on its 16-byte record                    (CompactOctagons.h)
@@ -12,12 +12,22 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <vector>
 
-#include "CullMap.h"
-#include "Culling.h"
-#include "Settings.h"
+#include "ClusterBounds.h"
+#include "CullTest.h"
+#include "Views.h"
 
 namespace conescope {
+
+// What a record's test reads: the stages the bounds were made from, and the bounds (which hold the
+// records, ClusterBounds::records). Culling.h's CullingInput carries the same.
+struct RecordInput {
+    const Mesh& mesh;
+    const std::vector<glm::vec3>& world;
+    const FaceGeometry& faces;
+    const ClusterBounds& bounds;
+};
 
 // Whether the test reads a record of its own (one of the four above).
 bool readsOwnRecord(CullTest test);
@@ -33,28 +43,21 @@ bool reproducesEngineRecord(CullTest test);
 size_t recordBytes(CullTest test);
 
 // The record's decision for one cluster (readsOwnRecord tests only).
-bool ownRecordCulls(const CullingInput& input, uint32_t cluster, const Eye& eye, CullTest test);
+bool ownRecordCulls(const RecordInput& input, uint32_t cluster, const Eye& eye, CullTest test);
 
 // Quantised records' float originals: meshopt-sphere-s8's the same test with meshopt_Bounds' float
 // axis and cutoff, cadscene-box-s8's its float box, average axis and angle without the quantisation
-// allowance, octagon-compact's the float octagon. Their culls that the quantised record drew, in
-// clusters whose every face faced away, are its quantisation loss.
+// allowance, octagon-compact's the float octagon (the octagon test itself: measureCulling asks it).
+// Their culls that the quantised record drew, in clusters whose every face faced away, are its
+// quantisation loss.
 bool hasFloatOriginal(CullTest test);
-bool floatOriginalCulls(const CullingInput& input, uint32_t cluster, const Eye& eye, CullTest test);
-// Every cluster's (1 = culled), the float octagon as the product runs it (cullClusters); empty for
-// a test without a float original.
-std::vector<uint8_t> floatOriginalDecisions(const CullingInput& input, const Eye& eye, CullTest test);
+bool floatOriginalCulls(const RecordInput& input, uint32_t cluster, const Eye& eye, CullTest test);
 
 // How far the record passes its threshold (above 0 it culls), in units of a unit view's dot product.
-double ownRecordMargin(const CullingInput& input, uint32_t cluster, const Eye& eye, CullTest test);
+double ownRecordMargin(const RecordInput& input, uint32_t cluster, const Eye& eye, CullTest test);
 
 // Share of view directions (eye at infinity) from which the record culls the cluster.
-double ownRecordCullShare(const CullingInput& input, uint32_t cluster, CullTest test);
-// Any test's share: the record's own for the tests above, the cull map's (cullFraction) for the others.
-double testCullFraction(const CullMap& map, const CullingInput& input, uint32_t cluster, CullTest test);
+double ownRecordCullShare(const RecordInput& input, uint32_t cluster, CullTest test);
 
-// meshoptimizer's bounds a meshlet file stored for the file builder's cluster file, when the
-// settings read one that has them: the meshopt tests then test those (EngineRecords.h).
-void useStoredMeshletBounds(ClusterBounds& bounds, const Mesh& mesh, const Settings& settings);
 
 }  // namespace conescope

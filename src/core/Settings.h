@@ -2,6 +2,7 @@
 // the statistics record, so a GUI export and a CLI run with the same settings give the same file.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -25,6 +26,7 @@ struct Settings {
     Effort effort = Effort::Balanced; // how long the optimized builder searches
     size_t clusterCount = 0;          // kmeans target (0 = triangles / maxTriangles); optimized budget (0 = defaultClusterBudget)
     std::string clusterFile;          // file builder: text file of ids; empty = the mesh's cluster_id array
+    std::shared_ptr<const ClusterIdFile> clusterIds;  // clusterFile as io read it (io/ClusterIdFile.h)
     double normalWeight = 1.0;        // meshlet / kmeans preference for narrow cones
     float meshoptConeWeight = 1.0f;   // meshopt builder's cone_weight
     std::vector<ConeMethod> cones{ConeMethod::Minimal};
@@ -39,7 +41,6 @@ struct Settings {
 
 std::string toString(Builder);
 std::string toString(ConeMethod);
-std::string toString(CullTest);
 std::string toString(SphereMethod);
 std::string toString(Effort);
 // Throw std::invalid_argument listing the accepted names.

@@ -313,6 +313,12 @@ std::string settingHelp(const SettingField& field) {
     return help;
 }
 
+bool sameSettings(const Settings& a, const Settings& b) {
+    for (const SettingField& field : settingFields())
+        if (field.value(a) != field.value(b)) return false;
+    return true;
+}
+
 std::optional<Stage> firstStaleStage(const Settings& before, const Settings& after) {
     std::optional<Stage> stale;
     for (const SettingField& field : settingFields()) {

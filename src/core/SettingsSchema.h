@@ -77,6 +77,9 @@ std::vector<std::string> settingArguments(const Settings& settings);
 // The help line with the accepted names (for name fields); the default is settingText(field, Settings{}).
 std::string settingHelp(const SettingField& field);
 
+// Whether every field of the schema has the same value in both.
+bool sameSettings(const Settings& a, const Settings& b);
+
 // The earliest stage that differs between `before` and `after`: a change of builder, or of a field
 // that matters to `after`. Empty when nothing that matters changed.
 std::optional<Stage> firstStaleStage(const Settings& before, const Settings& after);

@@ -6,36 +6,23 @@
 #include <stdexcept>
 
 #include "BatchCulling.h"
-#include "ClusterOptimizer.h"
 #include "ExpectedCull.h"
-#include "FileBuilder.h"
 #include "RecordTests.h"
 
 namespace conescope {
 
-bool startsFromMeshoptMeshlets(const Settings& settings) {
-    return settings.builder == Builder::Optimized && startsFromMeshoptMeshlets(settings.limits, settings.effort);
-}
-
-Partition buildPartition(const Mesh& mesh, const FaceGeometry& faces, const Settings& settings,
-                         const ProgressCallback& progress, MeshletStream* meshlets, const PartClusters& partDone) {
-    switch (settings.builder) {
-        case Builder::Meshlet: return buildMeshlets(mesh, faces, settings.limits, settings.normalWeight);
-        case Builder::KMeans: {
-            const size_t target = settings.clusterCount > 0
-                                      ? settings.clusterCount
-                                      : (triangleCount(mesh) + settings.limits.maxTriangles - 1) / settings.limits.maxTriangles;
-            return buildKMeans(mesh, faces, target, settings.normalWeight);
-        }
-        case Builder::Meshopt: return buildMeshoptMeshlets(mesh, settings.limits, settings.meshoptConeWeight);
-        case Builder::Optimized: return buildOptimizedClusters(mesh, faces, settings.limits, settings.clusterCount, progress, settings.effort,
-                                                                 meshlets, partDone);
-        case Builder::File: return filePartition(mesh, settings.clusterFile);
-    }
-    throw std::invalid_argument("unknown builder");
-}
-
 namespace {
+
+// A quantised record's float original's decisions (RecordTests.h), the float octagon as the
+// product runs it; empty for a test without one.
+std::vector<uint8_t> floatOriginalDecisions(const CullingInput& input, const Eye& eye, CullTest test) {
+    if (!hasFloatOriginal(test)) return {};
+    if (test == CullTest::OctagonCompact) return cullClusters(input, eye, CullTest::Octagon);
+    const RecordInput records{input.mesh, input.world, input.faces, input.bounds};
+    std::vector<uint8_t> culled(input.bounds.count());
+    for (uint32_t c = 0; c < culled.size(); ++c) culled[c] = floatOriginalCulls(records, c, eye, test);
+    return culled;
+}
 
 // What the oracle says about each cluster from one eye; shared by every test of that view.
 struct ClusterTruth {
@@ -63,11 +50,11 @@ double cullEfficiency(size_t trianglesCulled, size_t backFacingTriangles) {
     return backFacingTriangles == 0 ? 1.0 : double(trianglesCulled) / double(backFacingTriangles);
 }
 
-TestStatistics measureCulling(const CullingInput& input, const std::vector<Eye>& views, CullTest test,
+CullTestStatistics measureCulling(const CullingInput& input, const std::vector<Eye>& views, CullTest test,
                               const ProgressCallback& progress) {
     const ClusterBounds& bounds = input.bounds;
     const size_t clusterCount = bounds.count();
-    TestStatistics result;
+    CullTestStatistics result;
     result.cone = bounds.coneMethod;
     result.test = test;
     result.bytesPerCluster = recordBytes(test);
@@ -161,13 +148,14 @@ TestStatistics measureCulling(const CullingInput& input, const std::vector<Eye>&
     if (test == CullTest::Vertices) result.bytesPerCluster += size_t(std::lround(12.0 * result.meanClusterVertices));
     // Own records' shares come from the records; addCullMap fills the others' from the cull map.
     if (readsOwnRecord(test))
-        for (ClusterStatistics& cluster : result.clusters) cluster.cullFraction = ownRecordCullShare(input, cluster.cluster, test);
+        for (ClusterStatistics& cluster : result.clusters)
+            cluster.cullFraction = ownRecordCullShare({input.mesh, input.world, input.faces, input.bounds}, cluster.cluster, test);
     result.nanosecondsPerCluster =
         clusterCount && !views.empty() ? totalNanoseconds / double(clusterCount * views.size()) : 0.0;
     return result;
 }
 
-void addCullMap(TestStatistics& statistics, const CullMap& map) {
+void addCullMap(CullTestStatistics& statistics, const CullMap& map) {
     double cull = 0.0, oracle = 0.0, triangles = 0.0;
     for (ClusterStatistics& cluster : statistics.clusters) {
         if (!readsOwnRecord(statistics.test)) cluster.cullFraction = cullFraction(map, cluster.cluster, statistics.test);

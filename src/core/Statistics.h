@@ -53,7 +53,7 @@ struct ClusterStatistics {
     double oracleFraction = 0.0;      // share from which every face faces away
 };
 
-struct TestStatistics {
+struct CullTestStatistics {
     ConeMethod cone = ConeMethod::Minimal;
     CullTest test = CullTest::Vertices;
     size_t clustersCulled = 0;
@@ -91,33 +91,20 @@ struct RunStatistics {
     size_t windingFixedFaces = 0;     // faces flipped because settings.fixWinding was set
     size_t clusters = 0;
     size_t viewCount = 0;
-    std::vector<TestStatistics> results;
+    std::vector<CullTestStatistics> results;
 };
-
-// Builds the partition the settings ask for. The optimized builder reports its progress through
-// `progress` (stage "clusters") and can be cancelled there; the others report nothing.
-// `meshlets`: meshoptimizer's meshlets when startsFromMeshoptMeshlets(settings), if already started.
-// `partDone`: the optimized builder's parts as they are made (ClusterOptimizer.h); the other
-// builders do not call it.
-Partition buildPartition(const Mesh& mesh, const FaceGeometry& faces, const Settings& settings,
-                         const ProgressCallback& progress = {}, MeshletStream* meshlets = nullptr,
-                         const PartClusters& partDone = {});
-
-// Whether the settings' builder starts from meshoptimizer's meshlets at cone weight 1 (the optimized
-// builder at its fast levels): those can be built before the face geometry.
-bool startsFromMeshoptMeshlets(const Settings& settings);
 
 // Triangles culled / back-facing triangles; 1 when nothing faces away (nothing to cull, nothing lost).
 double cullEfficiency(size_t trianglesCulled, size_t backFacingTriangles);
 
 // Statistics for one (cone, test) over the given views from prepared bounds. `progress` hears of
 // every 16th view and may cancel there (OperationCancelled).
-TestStatistics measureCulling(const CullingInput& input, const std::vector<Eye>& views, CullTest test,
+CullTestStatistics measureCulling(const CullingInput& input, const std::vector<Eye>& views, CullTest test,
                               const ProgressCallback& progress = {});
 
 // Fills the clusters' cullFraction / oracleFraction and their triangle-weighted means from a cull
 // map of the same bounds (computeCullMap, CullMap.h): kept apart from measureCulling, which the
 // window calls at every eye move.
-void addCullMap(TestStatistics& statistics, const CullMap& map);
+void addCullMap(CullTestStatistics& statistics, const CullMap& map);
 
 }  // namespace conescope

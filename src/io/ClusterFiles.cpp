@@ -7,7 +7,7 @@
 #include <fstream>
 
 #include "core/MeshletArrays.h"
-#include "core/MeshoptRecords.h"
+#include "core/meshopt/Meshopt.h"
 #include "io/FileChecks.h"
 #include "io/MeshWriter.h"
 #include "io/MeshletFiles.h"
@@ -16,11 +16,6 @@
 namespace conescope {
 
 namespace {
-
-FileClusters idsFromText(const Mesh& mesh, const std::string& path) {
-    const Partition partition = partitionFromIds(readClusterIdFile(path), mesh.faceCount(), path);
-    return {partition.clusterOfFace, partition.clusterCount, {}};
-}
 
 // The first vertex of the file at each of the mesh's vertices: what a meshlet file written for the
 // mesh file indexes.
@@ -88,10 +83,6 @@ void writeBytes(const std::string& path, const std::string& bytes) {
 
 void readClusterFile(Mesh& mesh, const std::string& path, std::vector<std::string>& notes) {
     try {
-        if (!isMeshletFile(path)) {
-            mesh.fileClusters[path] = idsFromText(mesh, path);
-            return;
-        }
         const MeshletArrays arrays = readMeshletFile(path);
         if (!arrays.bounds.empty() && mesh.model != glm::dmat4(1.0))
             throw ClusterFileError(path + ": its bounds are in the mesh file's space, and the mesh has a model matrix: "
@@ -116,6 +107,7 @@ void readClusterFile(Mesh& mesh, const std::string& path, std::vector<std::strin
 
 void readClusterFileOf(Mesh& mesh, const Settings& settings, std::vector<std::string>& notes) {
     if (settings.builder != Builder::File || settings.clusterFile.empty() || mesh.fileClusters.count(settings.clusterFile)) return;
+    if (!isMeshletFile(settings.clusterFile)) return;  // ids per face: withClusterIds (ClusterIdFile.h) reads those
     readClusterFile(mesh, settings.clusterFile, notes);
 }
 

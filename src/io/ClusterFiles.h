@@ -1,11 +1,11 @@
 // Partitions in files of their own, read onto the mesh they partition and written from it.
 //
-// Read (the file builder's --cluster-file), told apart by content:
-//   - meshoptimizer's meshlet arrays, JSON or binary (MeshletFiles.h): each triangle is matched to a
-//     face by its corners after the readers' vertex merge; cluster m is meshlet m;
-//   - text: one cluster id per face, whitespace separated, '#' comments.
-// The file's partition is put on the mesh (Mesh::fileClusters, under the path as given), where the
-// file builder finds it; a meshlet file that splits a polygon cuts it into the meshlets' triangles.
+// Read (the file builder's --cluster-file): meshoptimizer's meshlet arrays, JSON or binary
+// (MeshletFiles.h), told apart from id files by content. Each triangle is matched to a face by its
+// corners after the readers' vertex merge; cluster m is meshlet m. The partition is put on the mesh
+// (Mesh::fileClusters, under the path as given), where the file builder finds it, because a meshlet
+// file that splits a polygon cuts it into the meshlets' triangles. Text files of one id per face
+// change no face: ClusterIdFile.h reads those into the settings.
 // A mesh's own groups need no cluster file: OBJ g/o groups and glTF primitives are the per-face
 // "group_id" array, and a "cluster_id" array comes with VTP, VTK and PLY files.
 //
@@ -31,11 +31,11 @@ public:
     using std::runtime_error::runtime_error;
 };
 
-// Reads `path` and puts its partition on `mesh` (Mesh::fileClusters[path]); `notes` hears of cut
-// polygons. The mesh is unchanged when it throws ClusterFileError.
+// Reads the meshlet file `path` and puts its partition on `mesh` (Mesh::fileClusters[path]);
+// `notes` hears of cut polygons. The mesh is unchanged when it throws ClusterFileError.
 void readClusterFile(Mesh& mesh, const std::string& path, std::vector<std::string>& notes);
 
-// The cluster file of the file builder in `settings`, if any and not read yet.
+// The cluster file of the file builder in `settings`, when it is a meshlet file not read yet.
 void readClusterFileOf(Mesh& mesh, const Settings& settings, std::vector<std::string>& notes);
 
 // Lower-case extensions writePartitionFile writes beside writePolyData's: {".json", ".meshlets", ".obj", ".gltf", ".txt"}.

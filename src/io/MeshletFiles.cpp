@@ -3,6 +3,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstring>
+#include <fstream>
 #include <limits>
 
 #include <nlohmann/json.hpp>
@@ -147,12 +148,10 @@ void appendBounds(std::string& text, const MeshletBounds& b) {
 }  // namespace
 
 bool isMeshletFile(const std::string& path) {
-    std::string start;
-    try {
-        start = readFileBytes(path).substr(0, 64);
-    } catch (const std::exception&) {
-        return false;
-    }
+    std::ifstream in(path, std::ios::binary);
+    std::string start(64, '\0');
+    in.read(start.data(), std::streamsize(start.size()));
+    start.resize(size_t(in.gcount()));
     if (start.compare(0, 8, kMagic, 8) == 0) return true;
     const size_t first = start.find_first_not_of(" \t\r\n");
     return first != std::string::npos && start[first] == '{';

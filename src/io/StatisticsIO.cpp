@@ -43,37 +43,37 @@ struct Column {
 };
 
 // Totals of one (cone, test); the run-wide cluster and view counts are columns of the CSV only.
-const std::vector<Column<TestStatistics>>& totalColumns() {
-    static const std::vector<Column<TestStatistics>> columns = {
-        {"clusters_culled", [](const TestStatistics& r) -> Cell { return r.clustersCulled; }},
-        {"triangles_culled", [](const TestStatistics& r) -> Cell { return r.trianglesCulled; }},
-        {"back_facing_triangles", [](const TestStatistics& r) -> Cell { return r.backFacingTriangles; }},
-        {"missed_clusters", [](const TestStatistics& r) -> Cell { return r.missedClusters; }},
-        {"false_culls", [](const TestStatistics& r) -> Cell { return r.falseCulls; }},
-        {"efficiency", [](const TestStatistics& r) -> Cell { return r.efficiency; }},
-        {"expected_efficiency", [](const TestStatistics& r) -> Cell { return r.expectedEfficiency; }},
-        {"uncullable_clusters", [](const TestStatistics& r) -> Cell { return r.uncullableClusters; }},
-        {"ns_per_cluster", [](const TestStatistics& r) -> Cell { return r.nanosecondsPerCluster; }},
+const std::vector<Column<CullTestStatistics>>& totalColumns() {
+    static const std::vector<Column<CullTestStatistics>> columns = {
+        {"clusters_culled", [](const CullTestStatistics& r) -> Cell { return r.clustersCulled; }},
+        {"triangles_culled", [](const CullTestStatistics& r) -> Cell { return r.trianglesCulled; }},
+        {"back_facing_triangles", [](const CullTestStatistics& r) -> Cell { return r.backFacingTriangles; }},
+        {"missed_clusters", [](const CullTestStatistics& r) -> Cell { return r.missedClusters; }},
+        {"false_culls", [](const CullTestStatistics& r) -> Cell { return r.falseCulls; }},
+        {"efficiency", [](const CullTestStatistics& r) -> Cell { return r.efficiency; }},
+        {"expected_efficiency", [](const CullTestStatistics& r) -> Cell { return r.expectedEfficiency; }},
+        {"uncullable_clusters", [](const CullTestStatistics& r) -> Cell { return r.uncullableClusters; }},
+        {"ns_per_cluster", [](const CullTestStatistics& r) -> Cell { return r.nanosecondsPerCluster; }},
     };
     return columns;
 }
 
 // Totals added later: the loss breakdown and the partition summary. The CSV writes them after the
 // mesh report, so older columns keep their positions.
-const std::vector<Column<TestStatistics>>& laterTotalColumns() {
-    static const std::vector<Column<TestStatistics>> columns = {
-        {"test_loss_triangles", [](const TestStatistics& r) -> Cell { return r.testLossTriangles; }},
-        {"partition_loss_triangles", [](const TestStatistics& r) -> Cell { return r.partitionLossTriangles; }},
-        {"mean_view_efficiency", [](const TestStatistics& r) -> Cell { return r.meanViewEfficiency; }},
-        {"mean_cluster_triangles", [](const TestStatistics& r) -> Cell { return r.meanClusterTriangles; }},
-        {"mean_cluster_vertices", [](const TestStatistics& r) -> Cell { return r.meanClusterVertices; }},
-        {"mean_sphere_radius", [](const TestStatistics& r) -> Cell { return r.meanSphereRadius; }},
-        {"max_sphere_radius", [](const TestStatistics& r) -> Cell { return r.maxSphereRadius; }},
-        {"cull_fraction", [](const TestStatistics& r) -> Cell { return r.cullFraction; }},
-        {"oracle_fraction", [](const TestStatistics& r) -> Cell { return r.oracleFraction; }},
-        {"bytes_per_cluster", [](const TestStatistics& r) -> Cell { return r.bytesPerCluster; }},
-        {"engine_record", [](const TestStatistics& r) -> Cell { return r.engineRecord; }},
-        {"quantisation_loss_triangles", [](const TestStatistics& r) -> Cell { return r.quantisationLossTriangles; }},
+const std::vector<Column<CullTestStatistics>>& laterTotalColumns() {
+    static const std::vector<Column<CullTestStatistics>> columns = {
+        {"test_loss_triangles", [](const CullTestStatistics& r) -> Cell { return r.testLossTriangles; }},
+        {"partition_loss_triangles", [](const CullTestStatistics& r) -> Cell { return r.partitionLossTriangles; }},
+        {"mean_view_efficiency", [](const CullTestStatistics& r) -> Cell { return r.meanViewEfficiency; }},
+        {"mean_cluster_triangles", [](const CullTestStatistics& r) -> Cell { return r.meanClusterTriangles; }},
+        {"mean_cluster_vertices", [](const CullTestStatistics& r) -> Cell { return r.meanClusterVertices; }},
+        {"mean_sphere_radius", [](const CullTestStatistics& r) -> Cell { return r.meanSphereRadius; }},
+        {"max_sphere_radius", [](const CullTestStatistics& r) -> Cell { return r.maxSphereRadius; }},
+        {"cull_fraction", [](const CullTestStatistics& r) -> Cell { return r.cullFraction; }},
+        {"oracle_fraction", [](const CullTestStatistics& r) -> Cell { return r.oracleFraction; }},
+        {"bytes_per_cluster", [](const CullTestStatistics& r) -> Cell { return r.bytesPerCluster; }},
+        {"engine_record", [](const CullTestStatistics& r) -> Cell { return r.engineRecord; }},
+        {"quantisation_loss_triangles", [](const CullTestStatistics& r) -> Cell { return r.quantisationLossTriangles; }},
     };
     return columns;
 }
@@ -179,7 +179,7 @@ void writeVector(JsonWriter& json, const glm::dvec3& v) {
 }
 
 // The per-cluster rows of `order` (every cluster when null), each an object of the cluster columns.
-void writeClusterRows(JsonWriter& json, const TestStatistics& result, const std::vector<uint32_t>* order) {
+void writeClusterRows(JsonWriter& json, const CullTestStatistics& result, const std::vector<uint32_t>* order) {
     const std::vector<const Column<ClusterStatistics>*> columns = inKeyOrder(clusterColumns());
     const auto writeRow = [&](const ClusterStatistics& cluster) {
         json.beginObject();
@@ -206,7 +206,7 @@ void writeView(JsonWriter& json, const ViewStatistics& view) {
     members.write(json);
 }
 
-void writeResult(JsonWriter& json, const TestStatistics& result, const StatisticsDetail& detail) {
+void writeResult(JsonWriter& json, const CullTestStatistics& result, const StatisticsDetail& detail) {
     Members members;
     members.add("cone", [&result](JsonWriter& j) { j.value(nlohmann::json(toString(result.cone))); });
     members.add("test", [&result](JsonWriter& j) { j.value(nlohmann::json(toString(result.test))); });
@@ -268,7 +268,7 @@ void writeStatistics(JsonWriter& json, const RunStatistics& run, const Statistic
     top.add("view_count", [&run](JsonWriter& j) { j.value(run.viewCount); });
     top.add("results", [&run, &detail](JsonWriter& j) {
         j.beginArray();
-        for (const TestStatistics& result : run.results) writeResult(j, result, detail);
+        for (const CullTestStatistics& result : run.results) writeResult(j, result, detail);
         j.endArray();
     });
     top.write(json);
@@ -303,11 +303,11 @@ void writeCells(std::ostream& out, const std::vector<Column<Row>>& columns, cons
 
 }  // namespace
 
-nlohmann::json clusterRowsToJson(const TestStatistics& result, const std::vector<uint32_t>& order) {
+nlohmann::json clusterRowsToJson(const CullTestStatistics& result, const std::vector<uint32_t>& order) {
     return treeOf([&](JsonWriter& json) { writeClusterRows(json, result, &order); });
 }
 
-void writeClusterRowsCsv(const TestStatistics& result, const std::vector<uint32_t>& order, std::ostream& out) {
+void writeClusterRowsCsv(const CullTestStatistics& result, const std::vector<uint32_t>& order, std::ostream& out) {
     out << "cone,test";
     writeHeader(out, clusterColumns());
     out << '\n';
@@ -335,7 +335,7 @@ nlohmann::json statisticsToJson(const RunStatistics& run, const StatisticsDetail
 // not copy it again and again: on 1.2M triangles the report holds 13,401 cluster rows.
 std::string statisticsJsonText(const RunStatistics& run, const StatisticsDetail& detail) {
     size_t rows = 0;
-    for (const TestStatistics& result : run.results)
+    for (const CullTestStatistics& result : run.results)
         rows += (detail.clusters ? result.clusters.size() : 0) + (detail.views ? result.views.size() : 0);
     std::string text;
     text.reserve(4096 + 640 * rows);
@@ -372,7 +372,7 @@ void writeStatisticsCsv(const RunStatistics& run, std::ostream& out, CsvTable ta
         out << ",winding_fixed_faces,inside_out_components";
         writeHeader(out, laterTotalColumns());
         out << '\n';
-        for (const TestStatistics& result : run.results) {
+        for (const CullTestStatistics& result : run.results) {
             out << toString(result.cone) << ',' << toString(result.test) << ',' << run.clusters << ',' << run.viewCount;
             writeCells(out, totalColumns(), result);
             writeCells(out, reportColumns(), run.meshReport);
@@ -384,7 +384,7 @@ void writeStatisticsCsv(const RunStatistics& run, std::ostream& out, CsvTable ta
         out << "cone,test,view,eye_x,eye_y,eye_z,direction_x,direction_y,direction_z";
         writeHeader(out, viewColumns());
         out << '\n';
-        for (const TestStatistics& result : run.results)
+        for (const CullTestStatistics& result : run.results)
             for (const ViewStatistics& view : result.views) {
                 out << toString(result.cone) << ',' << toString(result.test) << ',' << view.view;
                 for (int k = 0; k < 3; ++k) out << ',' << csvNumber(view.eye.position[k]);
@@ -396,7 +396,7 @@ void writeStatisticsCsv(const RunStatistics& run, std::ostream& out, CsvTable ta
         out << "cone,test";
         writeHeader(out, clusterColumns());
         out << '\n';
-        for (const TestStatistics& result : run.results)
+        for (const CullTestStatistics& result : run.results)
             for (const ClusterStatistics& cluster : result.clusters) {
                 out << toString(result.cone) << ',' << toString(result.test);
                 writeCells(out, clusterColumns(), cluster);

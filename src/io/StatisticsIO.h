@@ -70,7 +70,7 @@ std::vector<std::pair<CsvTable, std::string>> csvTableFiles(const std::string& p
 
 // A worst-cluster table: the given clusters of one result, in that order, with the keys of the
 // per-cluster statistics (an array of objects; a CSV header row and one row each).
-nlohmann::json clusterRowsToJson(const TestStatistics& result, const std::vector<uint32_t>& order);
-void writeClusterRowsCsv(const TestStatistics& result, const std::vector<uint32_t>& order, std::ostream& out);
+nlohmann::json clusterRowsToJson(const CullTestStatistics& result, const std::vector<uint32_t>& order);
+void writeClusterRowsCsv(const CullTestStatistics& result, const std::vector<uint32_t>& order, std::ostream& out);
 
 }  // namespace conescope

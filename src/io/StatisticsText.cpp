@@ -22,7 +22,7 @@ double share(size_t part, size_t whole) { return whole ? double(part) / double(w
 
 }  // namespace
 
-void writeClusterTableText(const TestStatistics& result, const std::vector<uint32_t>& order, std::ostream& out) {
+void writeClusterTableText(const CullTestStatistics& result, const std::vector<uint32_t>& order, std::ostream& out) {
     // False culls only for an engine's record (every other test has none); quantisation loss only for a quantised one.
     const bool engine = result.engineRecord, quantised = hasFloatOriginal(result.test);
     out << formatted("%8s %6s %6s %7s %10s %6s %7s %7s %7s %10s %10s", "cluster", "tris", "verts", "alpha", "radius", "cull", "oracle",
@@ -42,7 +42,7 @@ void writeStatisticsText(const RunStatistics& run, std::ostream& out, size_t wor
     out << run.meshName << ": " << run.vertices << " vertices, " << run.triangles << " triangles in " << run.clusters
         << " clusters (" << toString(run.settings.builder) << "), " << run.viewCount << (run.viewCount == 1 ? " view" : " views")
         << '\n';
-    for (const TestStatistics& r : run.results) {
+    for (const CullTestStatistics& r : run.results) {
         out << '\n' << toString(r.cone) << " cone, " << toString(r.test) << " test\n";
         out << formatted("  efficiency        %.3f of the back faces culled (mean per view %.3f), false culls %zu\n", r.efficiency,
                          r.meanViewEfficiency, r.falseCulls);

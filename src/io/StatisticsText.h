@@ -15,6 +15,6 @@ namespace conescope {
 void writeStatisticsText(const RunStatistics& run, std::ostream& out, size_t worstClusters = 5);
 
 // The given clusters of one result, in that order, as an aligned table with a header.
-void writeClusterTableText(const TestStatistics& result, const std::vector<uint32_t>& order, std::ostream& out);
+void writeClusterTableText(const CullTestStatistics& result, const std::vector<uint32_t>& order, std::ostream& out);
 
 }  // namespace conescope

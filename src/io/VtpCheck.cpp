@@ -1,25 +1,9 @@
-// prepareVtpForVtk: checks a .vtp file and works around crashes of VTK 9.1's vtkXMLPolyDataReader
-// before it reads the file. The XML is read by expat (VtpXml.cpp), the arrays' encodings are
-// decoded in VtpEncoding.cpp; this file checks the arrays against the counts of their pieces.
-//
-// Crashes found by mutating valid files:
-//  - a cell-data array that fails to read (too short, a non-number) when the piece has no
-//    <PointData> element: the error message dereferences the missing element. Adding an empty
-//    <PointData/> turns the crash into VTK's ordinary "Cannot read cell data array" error.
-//  - a <DataArray> with an unknown type in <FieldData>, and piece counts near 2^31 (NumberOfPolys):
-//    rejected here.
-//
-// Data VTK would drop or allocate from without a word, checked for arrays in every encoding (ASCII,
-// inline base64, raw or base64 appended, compressed or not):
-//  - more values than the piece counts give (VTK reads only what the counts say), and for binary
-//    arrays any other number than they give;
-//  - binary headers and block tables that run past the data in the file;
-//  - a cell section's last offset, which VTK sizes the connectivity by, against the values the
-//    connectivity array holds;
-//  - inline data that is not plain text: VTK reads it from the file's bytes, not through the XML,
-//    so a comment, CDATA section or reference in it would be read as data or end it early;
-//  - arrays read another way than they say: VTK reads any array with an offset attribute from the
-//    appended data, and appended data as base64 unless encoding="raw".
+// prepareVtpForVtk: checks a .vtp file before VTK 9.1's vtkXMLPolyDataReader reads it, because
+// that reader crashes on some damaged files and drops or allocates from others without a word (the
+// cases, found by mutating valid files, are listed in docs/architecture.md, "Readers"). The XML is
+// read by expat (VtpXml.cpp) and the arrays decoded in VtpEncoding.cpp; this file checks every
+// array, in every encoding, against the counts of its piece, and adds an empty <PointData/> where
+// its absence would crash VTK's error message.
 #include "io/HeaderChecks.h"
 
 #include <cstdint>

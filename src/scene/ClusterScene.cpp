@@ -1,21 +1,20 @@
 #include "scene/ClusterScene.h"
 
 #include <vtkActor.h>
-#include <vtkLegendBoxActor.h>
 #include <vtkLookupTable.h>
 #include <vtkPolyData.h>
 #include <vtkRenderer.h>
 
 #include "scene/BordersLayer.h"
 #include "scene/EyeLayer.h"
-#include "scene/EyeView.h"
+#include "scene/EyeViewActors.h"
 #include "scene/FacesLayer.h"
 #include "scene/GlyphLayer.h"
 #include "scene/HighlightLayer.h"
 #include "scene/NormalsLayer.h"
 #include "scene/SceneData.h"
 #include "scene/SceneLegend.h"
-#include "scene/TestLayer.h"
+#include "scene/CullTestLayer.h"
 
 namespace conescope {
 
@@ -34,9 +33,9 @@ struct ClusterScene::Impl {
     GlyphLayer boxes, spheres;
     EyeLayer eye;
     HighlightLayer highlight;
-    TestLayer test;
+    CullTestLayer test;
     SceneLegend legend;
-    EyeView eyeView;
+    EyeViewActors eyeView;
     FaceColoring coloring = FaceColoring::Cluster;
 
     // nullptr for Legend, which is no SceneLayer.
@@ -62,11 +61,18 @@ struct ClusterScene::Impl {
 
     // The legend lists the visible layers' entries in the order of allLayers().
     void updateLegend() {
+        legendStale = false;
         std::vector<LegendEntry> entries;
         for (Layer which : allLayers())
             if (SceneLayer* shown = layer(which); shown && shown->visible() && shown->hasContent())
                 shown->addLegendEntries(coloring, entries);
         legend.show(entries);
+    }
+    // Laying the legend out measures its text with VTK's FreeType tools, which are not thread-safe:
+    // a scene made on a worker thread lays it out when it is first added to a view or asked for.
+    bool legendStale = true;
+    void updateStaleLegend() {
+        if (legendStale) updateLegend();
     }
 };
 
@@ -79,7 +85,6 @@ ClusterScene::ClusterScene(const Mesh& mesh, const std::vector<glm::vec3>& world
         if (layer == Layer::Legend) impl_->legend.setVisible(shown);
         else impl_->layer(layer)->setVisible(shown);
     }
-    impl_->updateLegend();
 }
 
 ClusterScene::~ClusterScene() = default;
@@ -91,7 +96,8 @@ void ClusterScene::addTo(vtkRenderer* renderer) const {
         for (vtkActor* actor : layer->actors()) renderer->AddActor(actor);
     for (SceneLayer* layer : impl_->drawingOrder())
         for (vtkProp* overlay : layer->overlays()) renderer->AddViewProp(overlay);
-    renderer->AddViewProp(impl_->legend.actor());
+    impl_->updateStaleLegend();
+    renderer->AddViewProp(impl_->legend.prop());
 }
 
 void ClusterScene::removeFrom(vtkRenderer* renderer) const {
@@ -99,7 +105,7 @@ void ClusterScene::removeFrom(vtkRenderer* renderer) const {
         for (vtkActor* actor : layer->actors()) renderer->RemoveActor(actor);
     for (SceneLayer* layer : impl_->drawingOrder())
         for (vtkProp* overlay : layer->overlays()) renderer->RemoveViewProp(overlay);
-    renderer->RemoveViewProp(impl_->legend.actor());
+    renderer->RemoveViewProp(impl_->legend.prop());
 }
 
 void ClusterScene::setLayerVisible(Layer layer, bool visible) {
@@ -153,12 +159,12 @@ void ClusterScene::setClusterFractions(const std::vector<double>& cullFraction, 
     impl_->updateLegend();
 }
 
-void ClusterScene::setTestDrawing(const TestDrawing& drawing) {
+void ClusterScene::setTestDrawing(const CullTestDrawing& drawing) {
     impl_->test.setDrawing(drawing);
     impl_->updateLegend();
 }
 
-const TestDrawing& ClusterScene::testDrawing() const { return impl_->test.drawing(); }
+const CullTestDrawing& ClusterScene::testDrawing() const { return impl_->test.drawing(); }
 
 void ClusterScene::setEye(const Eye& eye, const glm::dvec3& lookAt) {
     impl_->eye.setEye(eye, lookAt);
@@ -202,7 +208,10 @@ vtkPolyData* ClusterScene::spherePolyData() const { return impl_->spheres.glyphs
 vtkLookupTable* ClusterScene::paletteLookupTable() const { return impl_->data.tables.palette; }
 vtkLookupTable* ClusterScene::decisionLookupTable() const { return impl_->data.tables.decision; }
 vtkLookupTable* ClusterScene::visibleClustersLookupTable() const { return impl_->data.tables.visible; }
-vtkLegendBoxActor* ClusterScene::legend() const { return impl_->legend.actor(); }
+const SceneLegend& ClusterScene::legend() const {
+    impl_->updateStaleLegend();
+    return impl_->legend;
+}
 
 vtkActor* ClusterScene::actor(Layer layer) const {
     SceneLayer* shown = impl_->layer(layer);

@@ -30,12 +30,12 @@
 #include "core/Partition.h"
 #include "core/Views.h"
 #include "scene/ClusterPalette.h"
+#include "scene/SceneLegend.h"
 #include "scene/SceneTypes.h"
-#include "scene/TestLayer.h"
+#include "scene/CullTestLayer.h"
 
 class vtkActor;
 class vtkCamera;
-class vtkLegendBoxActor;
 class vtkLookupTable;
 class vtkPolyData;
 class vtkProp;
@@ -91,8 +91,8 @@ public:
 
     // The picked cluster's test in 3D (Layer::Test; makeTestDrawing); a drawing with cluster -1 clears it.
     // Throws std::out_of_range for a cluster outside [-1, K).
-    void setTestDrawing(const TestDrawing& drawing);
-    const TestDrawing& testDrawing() const;
+    void setTestDrawing(const CullTestDrawing& drawing);
+    const CullTestDrawing& testDrawing() const;
 
     // Places the eye marker: for a perspective eye a sphere at the position with a cone pointing at
     // lookAt; for an orthographic eye an arrow along eye.direction outside the mesh bounds, aimed at
@@ -139,9 +139,8 @@ public:
     vtkLookupTable* decisionLookupTable() const;        // K entries: decision colours
     vtkLookupTable* visibleClustersLookupTable() const;  // K entries: palette, alpha 0 when culled
     vtkActor* actor(Layer layer) const;     // the layer's main actor; nullptr for Legend
-    // Entries follow the visible layers and the colouring; each symbol is a small polydata whose RGB
-    // cell scalars are the colours (several bars for "a colour per cluster"), the text is white.
-    vtkLegendBoxActor* legend() const;
+    // Entries follow the visible layers and the colouring (SceneLegend.h).
+    const SceneLegend& legend() const;
 
 private:
     struct Impl;

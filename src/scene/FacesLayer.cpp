@@ -54,7 +54,8 @@ void FacesLayer::addLegendEntries(FaceColoring coloring, std::vector<LegendEntry
             entries.push_back({"no cull map yet", {SceneColours::undecided}});
             return;
         }
-        entries.push_back({std::string(cull ? "cull" : "oracle") + " fraction 0 .. 0.5", fractionLegendColours()});
+        entries.push_back({std::string(cull ? "cull fraction: share of views the test culls from" : "oracle fraction: share of views all faces face away"),
+                           fractionBarColours(), std::array<double, 2>{0.0, maxClusterFraction}});
         if (cull) entries.push_back({"uncullable: no cone" + countLabel(data_.tables.uncullableClusters()), {SceneColours::uncullable}});
     } else if (coloring == FaceColoring::Loss) {
         if (!hasLoss_) entries.push_back({"no eye measured yet", {SceneColours::unclassified}});

@@ -9,7 +9,6 @@
 #include <vtkCamera.h>
 #include <vtkCellArray.h>
 #include <vtkImageData.h>
-#include <vtkLegendBoxActor.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
@@ -125,7 +124,7 @@ std::string degreesText(double radians) {
 
 Rgb coneMethodColour(ConeMethod method) {
     switch (method) {
-    case ConeMethod::Average: return {1.00, 0.60, 0.10};
+    case ConeMethod::Average: return {1.00, 0.50, 0.10};
     case ConeMethod::SeedSphere: return {0.25, 0.80, 0.95};
     case ConeMethod::Minimal: return {0.35, 0.90, 0.35};
     case ConeMethod::Meshopt: return {0.95, 0.35, 0.60};
@@ -140,7 +139,7 @@ struct GaussMapScene::Impl {
     vtkSmartPointer<vtkActor> cap = actorFor(plainMapper(emptyPolyData()));
     vtkSmartPointer<vtkActor> octagon = lineActor(plainMapper(emptyPolyData()), 2.5);
     vtkSmartPointer<vtkActor> view = lineActor(plainMapper(emptyPolyData()), 3.0);
-    vtkSmartPointer<vtkActor> viewTip = pointsActor(SceneColours::eye, 12.0);
+    vtkSmartPointer<vtkActor> viewTip = pointsActor(SceneColours::viewVector, 12.0);
     vtkSmartPointer<vtkActor> horizon = lineActor(plainMapper(emptyPolyData()), 2.0);
     SceneLegend legend;
     std::optional<GaussMap> map;
@@ -165,8 +164,8 @@ GaussMapScene::GaussMapScene() : impl_(std::make_unique<Impl>()) {
     impl_->sphere->GetProperty()->BackfaceCullingOn();
     impl_->cap->GetProperty()->SetOpacity(0.35);
     impl_->cap->GetProperty()->LightingOff();
-    setColour(impl_->view, SceneColours::eye);
-    setColour(impl_->horizon, SceneColours::eye);
+    setColour(impl_->view, SceneColours::viewVector);
+    setColour(impl_->horizon, SceneColours::viewVector);
     setColour(impl_->octagon, octagonColour);
     for (size_t i = 0; i < allConeMethods().size(); ++i) impl_->rims.push_back(lineActor(plainMapper(emptyPolyData()), 3.0));
     impl_->legend.setVisible(true);
@@ -221,7 +220,7 @@ void GaussMapScene::show(const std::optional<GaussMap>& map, ConeMethod displaye
     setInput(impl_->view, polyDataFrom(line, CellKind::Lines));
     setInput(impl_->viewTip, pointCloud({map->view}, 1.35));
     setInput(impl_->horizon, polyDataFrom(circleOnSphere(map->view, M_PI / 2.0, 1.002), CellKind::Lines));
-    entries.push_back({"view vector v and its horizon", {SceneColours::eye}});
+    entries.push_back({"view vector v and its horizon", {SceneColours::viewVector}});
     impl_->legend.show(entries);
 }
 
@@ -229,12 +228,12 @@ bool GaussMapScene::hasMap() const { return impl_->map.has_value(); }
 
 void GaussMapScene::addTo(vtkRenderer* renderer) const {
     for (vtkActor* actor : impl_->actors()) renderer->AddActor(actor);
-    renderer->AddViewProp(impl_->legend.actor());
+    renderer->AddViewProp(impl_->legend.prop());
 }
 
 void GaussMapScene::removeFrom(vtkRenderer* renderer) const {
     for (vtkActor* actor : impl_->actors()) renderer->RemoveActor(actor);
-    renderer->RemoveViewProp(impl_->legend.actor());
+    renderer->RemoveViewProp(impl_->legend.prop());
 }
 
 void GaussMapScene::placeCamera(vtkCamera* camera) const {
@@ -264,7 +263,7 @@ void GaussMapScene::placeCamera(vtkCamera* camera) const {
     camera->SetClippingRange(0.5, 10.0);
 }
 
-vtkLegendBoxActor* GaussMapScene::legend() const { return impl_->legend.actor(); }
+const SceneLegend& GaussMapScene::legend() const { return impl_->legend; }
 
 vtkSmartPointer<vtkImageData> renderGaussMapToImage(const GaussMapScene& scene, int width, int height) {
     requireDisplay();

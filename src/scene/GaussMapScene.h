@@ -12,13 +12,13 @@
 #include <vtkSmartPointer.h>
 
 #include "core/ClusterBounds.h"
-#include "core/TestGeometry.h"
+#include "core/CullTestGeometry.h"
+#include "scene/SceneLegend.h"
 #include "scene/SceneTypes.h"
 
 class vtkActor;
 class vtkCamera;
 class vtkImageData;
-class vtkLegendBoxActor;
 class vtkRenderer;
 
 namespace conescope {
@@ -41,7 +41,7 @@ public:
     void removeFrom(vtkRenderer* renderer) const;
     // Looks at the unit sphere from the side of the displayed cap, with v's horizon in view.
     void placeCamera(vtkCamera* camera) const;
-    vtkLegendBoxActor* legend() const;
+    const SceneLegend& legend() const;
 
 private:
     struct Impl;

@@ -94,6 +94,12 @@ std::string countLabel(size_t n) { return " (" + std::to_string(n) + ")"; }
 
 std::vector<Rgb> clusterLegendColours() { return std::vector<Rgb>(baseHues().begin(), baseHues().begin() + 4); }
 
+std::vector<Rgb> fractionBarColours() {
+    std::vector<Rgb> colours;
+    for (int i = 0; i < 64; ++i) colours.push_back(fractionRamp((i + 0.5) / 64.0));
+    return colours;
+}
+
 std::vector<Rgb> fractionLegendColours() {
     std::vector<Rgb> colours;
     for (int i = 0; i < 6; ++i) colours.push_back(fractionRamp(i / 5.0));

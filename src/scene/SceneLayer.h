@@ -4,7 +4,10 @@
 // every layer builds its actors from.
 #pragma once
 
+#include <array>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <vtkSmartPointer.h>
@@ -22,10 +25,14 @@ class vtkProp;
 
 namespace conescope {
 
-// One line of the legend: a label and its colours (more than one: "a colour per cluster").
+// One line of the legend: a label and its colours (more than one: "a colour per cluster"). With a
+// scale the colours run evenly from its first value to its second: a colour bar with both written.
 struct LegendEntry {
+    LegendEntry(std::string label, std::vector<Rgb> colours, std::optional<std::array<double, 2>> scale = std::nullopt)
+        : label(std::move(label)), colours(std::move(colours)), scale(scale) {}
     std::string label;
     std::vector<Rgb> colours;
+    std::optional<std::array<double, 2>> scale;
 };
 
 class SceneLayer {
@@ -80,7 +87,8 @@ std::string countLabel(size_t n);
 // The legend's colours for "a colour per cluster", and for the glyphs in the given face colouring.
 std::vector<Rgb> clusterLegendColours();
 std::vector<Rgb> glyphLegendColours(FaceColoring coloring);
-// The fraction ramp from 0 to maxClusterFraction in a few steps.
+// The fraction ramp from 0 to maxClusterFraction in a few steps (a swatch), and finely (a colour bar).
 std::vector<Rgb> fractionLegendColours();
+std::vector<Rgb> fractionBarColours();
 
 }  // namespace conescope

@@ -60,7 +60,7 @@ void placeObserverCamera(const ClusterScene& scene, const RenderOptions& options
 }
 
 void frameTestDrawing(const ClusterScene& scene, RenderOptions& options) {
-    const TestDrawing& drawing = scene.testDrawing();
+    const CullTestDrawing& drawing = scene.testDrawing();
     if (drawing.cluster < 0) return;
     const glm::dvec3 focus = drawing.sphere.center;
     // Across the view vector, a little from behind the eye: the funnel in profile, the faces in view.

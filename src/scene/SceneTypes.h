@@ -55,7 +55,8 @@ enum class FaceColoring {
 const std::vector<FaceColoring>& allFaceColorings();
 std::string toString(FaceColoring);
 
-// The colours the legend lists, fixed so screenshots of different runs compare.
+// The colours the legend lists, fixed so screenshots of different runs compare. Each means one
+// thing: no two of the colours one legend can list together are alike (tested).
 struct SceneColours {
     // Light enough to stand out on the dark background, neutral enough not to read as drawn.
     static constexpr Rgb culled{0.62, 0.62, 0.66};         // cluster culled by the test
@@ -65,16 +66,17 @@ struct SceneColours {
     static constexpr Rgb undecided{0.80, 0.80, 0.80};      // no decision set yet
     static constexpr Rgb front{0.35, 0.65, 1.00};
     static constexpr Rgb back{0.55, 0.15, 0.15};
-    static constexpr Rgb degenerate{1.00, 0.85, 0.10};
+    static constexpr Rgb degenerate{0.95, 0.75, 0.55};  // tan: yellow is the picked cluster
     static constexpr Rgb unclassified{0.80, 0.80, 0.80};
     static constexpr Rgb border{0.08, 0.08, 0.08};
-    static constexpr Rgb normals{0.10, 0.75, 0.30};
-    static constexpr Rgb eye{0.95, 0.10, 0.85};
+    static constexpr Rgb normals{0.55, 1.00, 0.25};     // lime: green is the test's region of eyes
+    static constexpr Rgb eye{0.95, 0.10, 0.85};         // magenta: the cull eye, and nothing else
+    static constexpr Rgb viewVector{0.00, 1.00, 0.70};  // turquoise: v, from the eye (and on the Gauss map)
     static constexpr Rgb highlight{1.00, 0.95, 0.15};
     static constexpr Rgb uncullable{0.45, 0.12, 0.40};       // no cone: never culled, whatever the eye
     // The loss classes: a back face drawn because of the test, because of the partition.
     static constexpr Rgb testLoss{1.00, 0.55, 0.05};
-    static constexpr Rgb partitionLoss{0.85, 0.20, 0.55};
+    static constexpr Rgb partitionLoss{0.55, 0.25, 0.95};  // violet
     // The A/B comparison: culled by one configuration only, by both, by neither.
     static constexpr Rgb onlyA{1.00, 0.50, 0.05};
     static constexpr Rgb onlyB{0.15, 0.75, 0.95};

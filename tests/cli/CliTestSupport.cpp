@@ -4,7 +4,6 @@
 
 #include <cerrno>
 #include <fstream>
-#include <random>
 #include <sstream>
 #include <stdexcept>
 
@@ -17,26 +16,6 @@ namespace conescope::clitest {
 std::filesystem::path datasetsDir() { return CONESCOPE_DATASETS_DIR; }
 
 std::string dataset(const std::string& name) { return (datasetsDir() / name).string(); }
-
-ScratchDirectory::ScratchDirectory() {
-    std::random_device seed;
-    path_ = std::filesystem::temp_directory_path() /
-            ("conescope-cli-test-" + std::to_string(::getpid()) + "-" + std::to_string(seed()));
-    std::filesystem::create_directories(path_);
-}
-
-ScratchDirectory::~ScratchDirectory() {
-    std::error_code ignored;
-    std::filesystem::remove_all(path_, ignored);
-}
-
-std::string ScratchDirectory::writeFile(const std::string& name, const std::string& text) const {
-    const std::string path = file(name);
-    std::ofstream out(path, std::ios::binary);
-    out << text;
-    if (!out) throw std::runtime_error("cannot write " + path);
-    return path;
-}
 
 std::string readTextFile(const std::string& path) {
     std::ifstream in(path, std::ios::binary);

@@ -10,26 +10,14 @@
 
 #include <nlohmann/json.hpp>
 
+#include "ScratchDirectory.h"
+
 namespace conescope::clitest {
 
 std::filesystem::path datasetsDir();
 std::string dataset(const std::string& name);  // full path of datasets/<name>
 
-// A fresh directory under the system temp dir, removed with everything in it on destruction.
-class ScratchDirectory {
-public:
-    ScratchDirectory();
-    ~ScratchDirectory();
-    ScratchDirectory(const ScratchDirectory&) = delete;
-    ScratchDirectory& operator=(const ScratchDirectory&) = delete;
-
-    const std::filesystem::path& path() const { return path_; }
-    std::string file(const std::string& name) const { return (path_ / name).string(); }
-    std::string writeFile(const std::string& name, const std::string& text) const;
-
-private:
-    std::filesystem::path path_;
-};
+using testing::ScratchDirectory;  // ScratchDirectory.h
 
 struct CliRun {
     int exitCode = -1;

@@ -59,7 +59,7 @@ RunStatistics smallRun() {
     run.clusters = 2;
     run.viewCount = 2;
 
-    TestStatistics result;
+    CullTestStatistics result;
     result.cone = ConeMethod::Average;
     result.test = CullTest::Sphere;
     result.clustersCulled = 1;

@@ -17,42 +17,14 @@
 #include "core/Settings.h"
 
 using namespace conescope;
+using testmesh::randomModel;
+using testmesh::randomSoup;
 using testmesh::randomUnit;
 
 namespace {
 
 const std::vector<CullTest> kBatchedTests = {CullTest::Sphere, CullTest::Apex, CullTest::MeshoptSphere, CullTest::Octagon};
 const std::vector<SimdLevel> kLevels = {SimdLevel::Scalar, SimdLevel::Sse2, SimdLevel::Avx2};
-
-// Triangles scattered around the origin whose normals spread up to spreadDegrees around one axis.
-Mesh randomSoup(std::mt19937_64& random, size_t triangles, double spreadDegrees) {
-    Mesh mesh;
-    const glm::dvec3 axis = randomUnit(random);
-    std::uniform_real_distribution<double> unit(-1.0, 1.0);
-    for (size_t t = 0; t < triangles; ++t) {
-        const glm::dvec3 n = glm::normalize(axis + std::tan(glm::radians(std::min(spreadDegrees, 89.0))) *
-                                                       unit(random) * randomUnit(random));
-        const glm::dvec3 u = glm::normalize(glm::cross(n, randomUnit(random))), v = glm::cross(n, u);
-        const glm::dvec3 center(unit(random), unit(random), unit(random));
-        const uint32_t base = uint32_t(mesh.positions.size());
-        for (int k = 0; k < 3; ++k) {
-            const double angle = 2 * M_PI * k / 3 + 0.3 * unit(random);
-            mesh.positions.emplace_back(center + 0.3 * (std::cos(angle) * u + std::sin(angle) * v));
-        }
-        mesh.addFace({base, base + 1, base + 2});
-    }
-    return mesh;
-}
-
-// Translated, rotated, stretched (mirrored half of the time) at coordinates of size `scale`.
-glm::dmat4 randomModel(std::mt19937_64& random, double scale) {
-    std::uniform_real_distribution<double> unit(-1.0, 1.0), stretch(0.3, 3.0);
-    glm::dmat4 model = glm::translate(glm::dmat4(1.0), scale * glm::dvec3(unit(random), unit(random), unit(random)));
-    model = glm::rotate(model, M_PI * unit(random), randomUnit(random));
-    glm::dvec3 s = scale * glm::dvec3(stretch(random), stretch(random), stretch(random));
-    if (unit(random) < 0.0) s.x = -s.x;
-    return glm::scale(model, s);
-}
 
 // Perspective eyes of the awkward kinds: anywhere near or far, on a face plane or a hair off it, at a vertex.
 std::vector<Eye> awkwardEyes(std::mt19937_64& random, const Mesh& mesh, const std::vector<glm::vec3>& world,

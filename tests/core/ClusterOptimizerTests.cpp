@@ -293,7 +293,7 @@ TEST(ClusterOptimizer, NoFalseCullsWithAnyConeOrTest) {
             settings.distance = distance;
             const RunStatistics run = runStatistics(mesh, settings, "mesh");
             ASSERT_EQ(run.results.size(), settings.cones.size() * settings.tests.size());
-            for (const TestStatistics& result : run.results) {
+            for (const CullTestStatistics& result : run.results) {
                 EXPECT_EQ(result.falseCulls, 0u) << toString(result.cone) << "/" << toString(result.test);
                 // The builder's own pairing (minimal cones) must actually cull.
                 if (result.cone == ConeMethod::Minimal && (result.test == CullTest::Apex || result.test == CullTest::Vertices))

@@ -49,9 +49,9 @@ Settings withBuilder(Builder builder, size_t maxTriangles = 48) {
 
 // only A + both is A's triangles_culled, only B + both is B's, view by view and in total.
 void expectIdentities(const PreparedMesh& prepared, const ClusterSet& a, const ClusterSet& b, const std::vector<Eye>& views) {
-    const Comparison comparison = compareClusterSets(prepared, a, b, views);
-    const TestStatistics statsA = measureCulling(cullingInput(prepared, a), views, displayedTest(a.settings));
-    const TestStatistics statsB = measureCulling(cullingInput(prepared, b), views, displayedTest(b.settings));
+    const Comparison comparison = compareClusterSets(prepared, {a, a.builtWith}, {b, b.builtWith}, views);
+    const CullTestStatistics statsA = measureCulling(cullingInput(prepared, a), views, displayedTest(a.builtWith));
+    const CullTestStatistics statsB = measureCulling(cullingInput(prepared, b), views, displayedTest(b.builtWith));
     ASSERT_EQ(comparison.views.size(), views.size());
     for (size_t v = 0; v < views.size(); ++v) {
         const ViewComparison& view = comparison.views[v];
@@ -80,8 +80,8 @@ void expectIdentities(const PreparedMesh& prepared, const ClusterSet& a, const C
 TEST(Comparison, SameConfigurationDiffersNowhere) {
     const PreparedMesh prepared = preparedTorus();
     const ClusterSet clusters = buildClusters(prepared, withBuilder(Builder::Optimized));
-    const std::vector<Eye> views = orbitOf(clusters.settings, prepared.box);
-    const Comparison comparison = compareClusterSets(prepared, clusters, clusters, views);
+    const std::vector<Eye> views = orbitOf(clusters.builtWith, prepared.box);
+    const Comparison comparison = compareClusterSets(prepared, {clusters, clusters.builtWith}, {clusters, clusters.builtWith}, views);
     for (const ViewComparison& view : comparison.views) {
         EXPECT_EQ(view.trianglesCulledOnlyA, 0u);
         EXPECT_EQ(view.trianglesCulledOnlyB, 0u);
@@ -115,7 +115,8 @@ TEST(Comparison, EachSideAddsUpToItsOwnStatistics) {
     // Different partitions really do cull different faces.
     const ClusterSet meshlet = buildClusters(prepared, withBuilder(Builder::Meshlet));
     expectIdentities(prepared, optimized, meshlet, orbitOf(base, prepared.box));
-    const Comparison comparison = compareClusterSets(prepared, optimized, meshlet, orbitOf(base, prepared.box));
+    const Comparison comparison =
+        compareClusterSets(prepared, {optimized, optimized.builtWith}, {meshlet, meshlet.builtWith}, orbitOf(base, prepared.box));
     EXPECT_GT(comparison.trianglesCulledOnlyA + comparison.trianglesCulledOnlyB, 0u);
 }
 
@@ -131,24 +132,61 @@ TEST(Comparison, PolygonsWeighTheirTrianglesAndDegenerateFacesNeverCount) {
     const ClusterSet meshlet = buildClusters(prepared, averageSphere);
     const std::vector<Eye> views = orbitOf(base, prepared.box);
     expectIdentities(prepared, optimized, meshlet, views);
-    const Comparison comparison = compareClusterSets(prepared, optimized, meshlet, views);
+    const Comparison comparison = compareClusterSets(prepared, {optimized, base}, {meshlet, averageSphere}, views);
     EXPECT_GT(comparison.trianglesCulledOnlyA + comparison.trianglesCulledOnlyB, 0u);
     for (size_t f = 0; f < prepared.mesh().faceCount(); ++f)
         if (prepared.faces.degenerate[f]) EXPECT_EQ(comparison.viewsCulledOnlyA[f] + comparison.viewsCulledOnlyB[f], 0u) << f;
 }
 
+// The window changes the test without new clusters: each side is scored with the test of the
+// settings it is shown with, never with the one its clusters were built under.
+TEST(Comparison, EachSideCullsWithTheTestOfItsOwnSettings) {
+    const PreparedMesh prepared = preparedTorus();
+    const ClusterSet clusters = buildClusters(prepared, withBuilder(Builder::Optimized));  // built under octagon
+    ASSERT_EQ(displayedTest(clusters.builtWith), CullTest::Octagon);
+    Settings apex = clusters.builtWith;
+    apex.tests = {CullTest::Apex};
+    const std::vector<Eye> views = orbitOf(apex, prepared.box);
+    const Comparison same = compareClusterSets(prepared, {clusters, apex}, {clusters, apex}, views);
+    EXPECT_EQ(same.testA, CullTest::Apex);
+    EXPECT_EQ(same.trianglesCulledOnlyA, 0u);
+    EXPECT_EQ(same.trianglesCulledOnlyB, 0u);
+    EXPECT_DOUBLE_EQ(same.efficiencyA, measureCulling(cullingInput(prepared, clusters), views, CullTest::Apex).efficiency);
+    const Comparison mixed = compareClusterSets(prepared, {clusters, apex}, {clusters, clusters.builtWith}, views);
+    EXPECT_EQ(mixed.testB, CullTest::Octagon);
+    EXPECT_EQ(mixed.trianglesCulledOnlyA, 0u);  // the octagon culls whatever the apex test culls here
+    EXPECT_GT(mixed.trianglesCulledOnlyB, 0u);
+}
+
+TEST(Comparison, SharedOptionsComeFromTheCurrentSide) {
+    Settings pinned = withBuilder(Builder::Meshopt);
+    pinned.views = 16, pinned.distance = 2.0, pinned.tests = {CullTest::Apex};
+    Settings current;
+    current.views = 64, current.distance = 3.5, current.orthographic = true, current.fixWinding = true;
+    current.eye = glm::dvec3(1.0, 2.0, 3.0);
+    const Settings a = withSharedOptions(pinned, current);
+    EXPECT_EQ(a.views, 64u);
+    EXPECT_EQ(a.distance, 3.5);
+    EXPECT_TRUE(a.orthographic);
+    EXPECT_TRUE(a.fixWinding);
+    EXPECT_EQ(a.eye, current.eye);
+    EXPECT_EQ(a.builder, Builder::Meshopt);
+    EXPECT_EQ(a.tests, std::vector<CullTest>{CullTest::Apex});
+}
+
 TEST(Comparison, ProgressHearsOfTheViewsAndMayCancel) {
     const PreparedMesh prepared = preparedTorus();
     const ClusterSet clusters = buildClusters(prepared, withBuilder(Builder::Optimized));
-    const std::vector<Eye> views = orbitOf(clusters.settings, prepared.box);
+    const std::vector<Eye> views = orbitOf(clusters.builtWith, prepared.box);
+    const ClusterConfiguration side{clusters, clusters.builtWith};
     size_t calls = 0;
-    compareClusterSets(prepared, clusters, clusters, views, [&calls](double fraction, const std::string&) {
+    compareClusterSets(prepared, side, side, views, [&calls](double fraction, const std::string&) {
         EXPECT_GE(fraction, 0.0);
         EXPECT_LT(fraction, 1.0);
         return ++calls > 0;
     });
     EXPECT_EQ(calls, (views.size() + 15) / 16);
-    EXPECT_THROW(compareClusterSets(prepared, clusters, clusters, views, [](double, const std::string&) { return false; }),
+    EXPECT_THROW(compareClusterSets(prepared, side, side, views, [](double, const std::string&) { return false; }),
                  OperationCancelled);
 }
 
@@ -181,9 +219,9 @@ TEST(Comparison, OneEyeFromMeasuredDecisionsIsTheFullComparison) {
     const ClusterSet b = buildClusters(prepared, sphere);
     for (const Eye& eye : {Eye::perspective({0.5, -2.0, 2.5}), Eye::perspective({-3.0, 0.2, 0.4})}) {
         std::vector<FaceDiff> diff;
-        const Comparison atEye = compareAtEye(prepared, a, measureEye(prepared, a, eye, displayedTest(a.settings)).culled, b,
-                                              measureEye(prepared, b, eye, CullTest::Sphere).culled, eye, diff);
-        const Comparison full = compareClusterSets(prepared, a, b, {eye});
+        const Comparison atEye = compareAtEye(prepared, {a, a.builtWith}, measureEye(prepared, a, eye, displayedTest(a.builtWith)).culled,
+                                              {b, sphere}, measureEye(prepared, b, eye, CullTest::Sphere).culled, eye, diff);
+        const Comparison full = compareClusterSets(prepared, {a, a.builtWith}, {b, sphere}, {eye});
         ASSERT_EQ(atEye.views.size(), 1u);
         EXPECT_EQ(atEye.trianglesCulledOnlyA, full.trianglesCulledOnlyA);
         EXPECT_EQ(atEye.trianglesCulledOnlyB, full.trianglesCulledOnlyB);
@@ -202,7 +240,8 @@ TEST(Comparison, ClusterCountsMoreThanFivePercentApartAreWarnedAbout) {
     const PreparedMesh prepared = preparedTorus();
     const ClusterSet large = buildClusters(prepared, withBuilder(Builder::Meshlet, 96));
     const ClusterSet small = buildClusters(prepared, withBuilder(Builder::Meshlet, 24));
-    const Comparison comparison = compareClusterSets(prepared, large, small, {Eye::perspective({0, 0, 4})});
+    const Comparison comparison =
+        compareClusterSets(prepared, {large, large.builtWith}, {small, small.builtWith}, {Eye::perspective({0, 0, 4})});
     EXPECT_EQ(comparison.clustersA, large.bounds.count());
     EXPECT_EQ(comparison.clustersB, small.bounds.count());
     EXPECT_TRUE(comparison.clusterCountsDiffer());

@@ -8,8 +8,8 @@
 #include <thread>
 
 #include "TestMeshes.h"
-#include "core/CoreAffinity.h"
-#include "core/MeshletStream.h"
+#include "core/meshopt/CoreAffinity.h"
+#include "core/meshopt/Meshopt.h"
 
 namespace conescope {
 namespace {

@@ -7,7 +7,7 @@
 #include "core/CadsceneCones.h"
 #include "core/CompactOctagons.h"
 #include "core/MeshletArrays.h"
-#include "core/MeshoptRecords.h"
+#include "core/meshopt/Meshopt.h"
 #include "core/Pipeline.h"
 #include "core/RecordTests.h"
 
@@ -28,14 +28,14 @@ TEST(EngineRecords, MeshoptBoundsAreTheLibrarys) {
     const std::vector<uint32_t> indices = fanTriangles(mesh);
     const std::vector<uint32_t> first(indices.begin(), indices.begin() + 30);
     const meshopt_Bounds library = meshopt_computeClusterBounds(first.data(), first.size(), &mesh.positions[0].x, mesh.positions.size(), 12);
-    const MeshletBounds ours = meshoptClusterBounds(first, mesh.positions);
+    const MeshletBounds ours = meshoptEngineBounds(first, mesh.positions);
     EXPECT_EQ(ours.coneApex, (std::array<float, 3>{library.cone_apex[0], library.cone_apex[1], library.cone_apex[2]}));
     EXPECT_EQ(ours.coneCutoff, library.cone_cutoff);
     EXPECT_EQ(ours.coneCutoffS8, library.cone_cutoff_s8);
     EXPECT_EQ(ours.radius, library.radius);
     // Beyond the library's 512 triangles: a record that never culls, not its assertion.
     const std::vector<uint32_t> many(3 * 513, 0);
-    EXPECT_EQ(meshoptClusterBounds(many, mesh.positions).coneCutoff, 1.0f);
+    EXPECT_EQ(meshoptEngineBounds(many, mesh.positions).coneCutoff, 1.0f);
 }
 
 TEST(EngineRecords, MeshoptTestsAreTheShadersFormulas) {
@@ -169,7 +169,7 @@ TEST(EngineRecords, EveryResultCarriesItsRecordsBytes) {
     settings.tests = allCullTests();
     settings.views = 8;
     const RunStatistics run = runStatistics(testmesh::icosphere(2), settings, "sphere");
-    for (const TestStatistics& result : run.results) {
+    for (const CullTestStatistics& result : run.results) {
         const size_t vertices = result.test == CullTest::Vertices ? size_t(std::lround(12.0 * result.meanClusterVertices)) : 0;
         EXPECT_EQ(result.bytesPerCluster, recordBytes(result.test) + vertices) << toString(result.test);
         EXPECT_EQ(result.engineRecord, reproducesEngineRecord(result.test)) << toString(result.test);
@@ -192,7 +192,7 @@ TEST(EngineRecords, StoredBoundsAreTestedAsTheyAreAndTheirFalseCullsCounted) {
     settings.tests = {CullTest::MeshoptApexF32, CullTest::MeshoptSphereS8};
     settings.views = 4;
     const RunStatistics run = runStatistics(mesh, settings, "sphere");
-    const TestStatistics& apex = run.results[0];
+    const CullTestStatistics& apex = run.results[0];
     EXPECT_EQ(apex.clustersCulled, 4 * run.clusters);
     EXPECT_GT(apex.falseCulls, 0u);
     EXPECT_EQ(apex.efficiency, 1.0);

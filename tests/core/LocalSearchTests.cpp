@@ -7,6 +7,7 @@
 
 #include "TestMeshes.h"
 #include "core/Partition.h"
+#include "core/meshopt/Meshopt.h"
 #include "core/optimizer/Steps.h"
 
 namespace conescope {

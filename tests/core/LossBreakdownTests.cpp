@@ -19,7 +19,7 @@ namespace {
 // triangles_culled + test loss + partition loss = back-facing triangles, per view and over the
 // views; the clusters' losses and misses add up to the result's.
 void expectLossIdentity(const RunStatistics& run) {
-    for (const TestStatistics& result : run.results) {
+    for (const CullTestStatistics& result : run.results) {
         const std::string name = toString(result.cone) + "/" + toString(result.test);
         size_t test = 0, partition = 0;
         for (const ViewStatistics& view : result.views) {
@@ -53,7 +53,7 @@ void expectLossIdentity(const RunStatistics& run) {
 void expectCullMapShares(const RunStatistics& run, const Mesh& mesh, const Settings& settings) {
     const FaceGeometry faces = computeFaceGeometry(mesh);
     const Partition partition = buildPartition(mesh, faces, settings);
-    for (const TestStatistics& result : run.results) {
+    for (const CullTestStatistics& result : run.results) {
         const ClusterBounds bounds = computeClusterBounds(mesh, worldPositions(mesh), faces, partition, result.cone, settings.sphere);
         double weighted = 0.0, triangles = 0.0;
         for (const ClusterStatistics& cluster : result.clusters) {
@@ -113,7 +113,7 @@ TEST(LossBreakdown, AddsUpOnRandomMeshesAndEyesInside) {
         const RunStatistics run = runStatistics(mesh, settings, "patch");
         expectLossIdentity(run);
         size_t partitionLoss = 0;
-        for (const TestStatistics& result : run.results) partitionLoss += result.partitionLossTriangles;
+        for (const CullTestStatistics& result : run.results) partitionLoss += result.partitionLossTriangles;
         EXPECT_GT(partitionLoss, 0u) << "clusters of a curved patch mix front and back faces from some eye";
     }
 }
@@ -211,7 +211,7 @@ TEST(LossBreakdown, PerFaceArraysAgreeWithTheViewsCounts) {
         EXPECT_EQ(triangles[size_t(FaceLoss::Test)], view.testLossTriangles);
         EXPECT_EQ(triangles[size_t(FaceLoss::Partition)], view.partitionLossTriangles);
     }
-    const auto partitionArrays = partitionFaceArrays(prepared, clusters);
+    const auto partitionArrays = partitionFaceArrays(prepared, clusters, CullTest::Octagon);
     for (size_t f = 0; f < mesh->faceCount(); f += 7)
         EXPECT_GE(partitionArrays.at("oracle_fraction")[f], partitionArrays.at("cull_fraction")[f]);
 }

@@ -4,7 +4,9 @@
 #include <set>
 
 #include "TestMeshes.h"
+#include "core/BuildPartition.h"
 #include "core/ClusterBounds.h"
+#include "core/meshopt/Meshopt.h"
 
 using namespace conescope;
 
@@ -71,17 +73,36 @@ TEST(Partition, MeshoptMeshletsCoverEveryFaceWithinLimits) {
     EXPECT_THROW(buildMeshoptMeshlets(mesh, {300, 124}, 0.5f), std::invalid_argument);
 }
 
-TEST(Partition, IdsFromArrayOrFile) {
+TEST(Partition, IdsGivenPerFace) {
     const Partition partition = partitionFromIds({7, 7, 3, 9, 3}, 5, "test");
     EXPECT_EQ(partition.clusterCount, 3u);
     EXPECT_EQ(partition.clusterOfFace, (std::vector<uint32_t>{0, 0, 1, 2, 1}));
     EXPECT_THROW(partitionFromIds({1, 2}, 3, "test"), std::runtime_error);
     EXPECT_THROW(partitionFromIds({1, -2, 3}, 3, "test"), std::runtime_error);
     EXPECT_THROW(partitionFromIds({1, 2.5, 3}, 3, "test"), std::runtime_error);
-    const std::string path = ::testing::TempDir() + "/ids.txt";
-    std::ofstream(path) << "# cluster per face\n4 4\n5 # trailing comment\n";
-    EXPECT_EQ(readClusterIdFile(path), (std::vector<double>{4, 4, 5}));
-    std::ofstream(path) << "1 x 2\n";
-    EXPECT_THROW(readClusterIdFile(path), std::runtime_error);
-    EXPECT_THROW(readClusterIdFile(path + ".missing"), std::runtime_error);
+}
+
+// The file builder takes a cluster file's ids as io read them (tests/io/ClusterIdFileTests.cpp):
+// core reads no file, and says so when nobody read it.
+TEST(Partition, TheFileBuilderTakesTheIdsIoRead) {
+    const Mesh mesh = testmesh::icosphere(0);
+    const FaceGeometry faces = computeFaceGeometry(mesh);
+    Settings settings;
+    settings.builder = Builder::File;
+    settings.clusterFile = "ids.txt";
+    EXPECT_THROW(buildPartition(mesh, faces, settings), std::logic_error);
+    auto file = std::make_shared<ClusterIdFile>();
+    file->path = "ids.txt";
+    for (size_t f = 0; f < mesh.faceCount(); ++f) file->ids.push_back(double(f % 3));
+    settings.clusterIds = file;
+    EXPECT_EQ(buildPartition(mesh, faces, settings).clusterCount, 3u);
+    file->error = "ids.txt: cannot open cluster id file";
+    try {
+        buildPartition(mesh, faces, settings);
+        ADD_FAILURE() << "no error";
+    } catch (const std::runtime_error& error) {
+        EXPECT_STREQ(error.what(), "ids.txt: cannot open cluster id file");
+    }
+    settings.clusterFile = "other.txt";  // ids read for another file are not this one's
+    EXPECT_THROW(buildPartition(mesh, faces, settings), std::logic_error);
 }

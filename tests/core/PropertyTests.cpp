@@ -13,6 +13,8 @@
 #include "core/Settings.h"
 
 using namespace conescope;
+using testmesh::randomModel;
+using testmesh::randomSoup;
 using testmesh::randomUnit;
 
 namespace {
@@ -21,36 +23,6 @@ size_t scaleFromEnvironment() {
     const char* text = std::getenv("CONESCOPE_PROPERTY_SCALE");
     const long value = text ? std::strtol(text, nullptr, 10) : 1;
     return value > 0 ? size_t(value) : 1;
-}
-
-// A random triangle soup around the origin whose normals may span any range, hemisphere or more.
-Mesh randomSoup(std::mt19937_64& random, size_t triangles, double spreadDegrees) {
-    Mesh mesh;
-    const glm::dvec3 axis = randomUnit(random);
-    std::uniform_real_distribution<double> unit(-1.0, 1.0);
-    for (size_t t = 0; t < triangles; ++t) {
-        const glm::dvec3 normal = glm::normalize(axis + std::tan(glm::radians(std::min(spreadDegrees, 89.0))) *
-                                                            unit(random) * randomUnit(random));
-        const glm::dvec3 n = spreadDegrees > 90.0 && t % 3 == 0 ? -normal : normal;
-        const glm::dvec3 u = glm::normalize(glm::cross(n, randomUnit(random))), v = glm::cross(n, u);
-        const glm::dvec3 center(unit(random), unit(random), unit(random));
-        const uint32_t base = uint32_t(mesh.positions.size());
-        for (int k = 0; k < 3; ++k) {
-            const double angle = 2 * M_PI * k / 3 + 0.3 * unit(random);
-            mesh.positions.emplace_back(center + 0.3 * (std::cos(angle) * u + std::sin(angle) * v));
-        }
-        mesh.addFace({base, base + 1, base + 2});
-    }
-    return mesh;
-}
-
-glm::dmat4 randomModel(std::mt19937_64& random, double scale) {
-    std::uniform_real_distribution<double> unit(-1.0, 1.0), stretch(0.3, 3.0);
-    glm::dmat4 model = glm::translate(glm::dmat4(1.0), scale * glm::dvec3(unit(random), unit(random), unit(random)));
-    model = glm::rotate(model, M_PI * unit(random), randomUnit(random));
-    glm::dvec3 s = scale * glm::dvec3(stretch(random), stretch(random), stretch(random));
-    if (unit(random) < 0.0) s.x = -s.x;  // mirrored
-    return glm::scale(model, s);
 }
 
 // Eyes of every awkward kind for a mesh whose world bounds are `box`.

@@ -49,7 +49,7 @@ TEST(Statistics, EveryTestIsConservativeAndTheOracleIsTheCeiling) {
     const RunStatistics run = runStatistics(mesh, settings, "torus");
     EXPECT_EQ(run.results.size(), settings.cones.size() * settings.tests.size());
     EXPECT_EQ(run.faces, mesh.faceCount());
-    for (const TestStatistics& result : run.results) {
+    for (const CullTestStatistics& result : run.results) {
         EXPECT_EQ(result.falseCulls, 0u) << toString(result.cone) << "/" << toString(result.test);
         EXPECT_EQ(result.views.size(), 32u);
         EXPECT_GE(result.efficiency, 0.0);
@@ -208,6 +208,7 @@ TEST(Statistics, MeshletsBuiltWhileThePreparationRunsGiveTheSameClusters) {
 // meshoptimizer's count: it once gave 68 clusters on the elephant when asked for 50, one more than
 // at the default.
 TEST(Statistics, ABudgetTheMeshletPartsMissIsGrownAndBoundedWhole) {
+    if (!reproducesLinkedMeshopt()) GTEST_SKIP() << meshoptFallbackNote() << " (its meshlets come as one part)";
     const auto mesh = std::make_shared<const Mesh>(testmesh::readBundledOff("elephant.off"));
     ASSERT_GT(meshletPartsFor(mesh->faceCount()), 1u);
     const PreparedMesh prepared = prepareMesh(mesh, "elephant", false);

@@ -1,5 +1,7 @@
 #include "TestMeshes.h"
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -98,6 +100,50 @@ Mesh randomPatch(std::mt19937_64& random, int cells, double maxTiltDegrees) {
 }
 
 // Just enough of OFF for the bundled meshes (the core tests do not link the io layer).
+Mesh randomSoup(std::mt19937_64& random, size_t triangles, double spreadDegrees) {
+    Mesh mesh;
+    const glm::dvec3 axis = randomUnit(random);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    for (size_t t = 0; t < triangles; ++t) {
+        const glm::dvec3 normal = glm::normalize(axis + std::tan(glm::radians(std::min(spreadDegrees, 89.0))) *
+                                                            unit(random) * randomUnit(random));
+        const glm::dvec3 n = spreadDegrees > 90.0 && t % 3 == 0 ? -normal : normal;
+        const glm::dvec3 u = glm::normalize(glm::cross(n, randomUnit(random))), v = glm::cross(n, u);
+        const glm::dvec3 center(unit(random), unit(random), unit(random));
+        const uint32_t base = uint32_t(mesh.positions.size());
+        for (int k = 0; k < 3; ++k) {
+            const double angle = 2 * M_PI * k / 3 + 0.3 * unit(random);
+            mesh.positions.emplace_back(center + 0.3 * (std::cos(angle) * u + std::sin(angle) * v));
+        }
+        mesh.addFace({base, base + 1, base + 2});
+    }
+    return mesh;
+}
+
+glm::dmat4 randomModel(std::mt19937_64& random, double scale) {
+    std::uniform_real_distribution<double> unit(-1.0, 1.0), stretch(0.3, 3.0);
+    glm::dmat4 model = glm::translate(glm::dmat4(1.0), scale * glm::dvec3(unit(random), unit(random), unit(random)));
+    model = glm::rotate(model, M_PI * unit(random), randomUnit(random));
+    glm::dvec3 s = scale * glm::dvec3(stretch(random), stretch(random), stretch(random));
+    if (unit(random) < 0.0) s.x = -s.x;  // mirrored
+    return glm::scale(model, s);
+}
+
+Mesh scatteredSpheres(std::mt19937_64& random, int pieces) {
+    Mesh mesh;
+    std::uniform_real_distribution<float> place(-20.f, 20.f), size(0.05f, 2.f);
+    for (int p = 0; p < pieces; ++p) {
+        const Mesh piece = icosphere(p % 3);
+        const glm::vec3 centre(place(random), place(random), place(random));
+        const float scale = size(random);
+        const uint32_t first = uint32_t(mesh.positions.size());
+        for (const glm::vec3& q : piece.positions) mesh.positions.push_back(centre + scale * q);
+        for (size_t f = 0; f < piece.faceCount(); ++f)
+            mesh.addFace({first + piece.faceBegin(f)[0], first + piece.faceBegin(f)[1], first + piece.faceBegin(f)[2]});
+    }
+    return mesh;
+}
+
 Mesh readBundledOff(const std::string& name) {
     const std::filesystem::path path =
         std::filesystem::path(__FILE__).parent_path().parent_path().parent_path() / "datasets" / name;

@@ -20,6 +20,14 @@ Mesh quadCube();
 glm::dvec3 randomUnit(std::mt19937_64& random);
 // A random height-field patch: a bumpy grid whose normals spread up to about maxTiltDegrees.
 Mesh randomPatch(std::mt19937_64& random, int cells, double maxTiltDegrees);
+// A random triangle soup around the origin whose normals spread up to spreadDegrees around one
+// axis; above 90 every third normal is turned over, so they span more than a hemisphere.
+Mesh randomSoup(std::mt19937_64& random, size_t triangles, double spreadDegrees);
+// Translated, rotated and stretched (mirrored half of the time) at coordinates of size `scale`.
+glm::dmat4 randomModel(std::mt19937_64& random, double scale);
+// Icospheres of 0 to 2 subdivisions scattered within +-20 of the origin, 0.05 to 2 across: separate
+// pieces, between which meshoptimizer's builder jumps through its k-d tree.
+Mesh scatteredSpheres(std::mt19937_64& random, int pieces);
 
 // A mesh of datasets/ (OFF), read without the io layer, which the core tests do not link.
 Mesh readBundledOff(const std::string& name);

@@ -60,26 +60,6 @@ void appendBinaryFloat(std::string& out, float value, bool bigEndian) {
     appendBinaryInteger(out, bits, 4, bigEndian);
 }
 
-ScratchDirectory::ScratchDirectory() {
-    std::string pattern = (std::filesystem::temp_directory_path() / "conescope-io-XXXXXX").string();
-    // mkdtemp: a unique directory even when ctest runs test cases in parallel.
-    if (!mkdtemp(pattern.data())) throw std::runtime_error("cannot create a scratch directory");
-    path_ = pattern;
-}
-
-ScratchDirectory::~ScratchDirectory() {
-    std::error_code ignored;
-    std::filesystem::remove_all(path_, ignored);
-}
-
-std::string ScratchDirectory::writeFile(const std::string& name, const std::string& bytes) const {
-    std::string fullPath = file(name);
-    std::ofstream out(fullPath, std::ios::binary | std::ios::trunc);
-    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-    if (!out) throw std::runtime_error("cannot write " + fullPath);
-    return fullPath;
-}
-
 namespace {
 struct CommaDecimalPoint : std::numpunct<char> {
     char do_decimal_point() const override { return ','; }

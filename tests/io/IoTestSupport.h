@@ -1,4 +1,4 @@
-// Helpers shared by the io tests: data folders, a scratch directory, and checks on read errors.
+// Helpers shared by the io tests: data folders, checks on read errors (and ScratchDirectory.h).
 #pragma once
 
 #include <cstdint>
@@ -8,29 +8,13 @@
 
 #include <glm/glm.hpp>
 
+#include "ScratchDirectory.h"
 #include "core/Mesh.h"
 
 namespace conescope::testing {
 
 std::filesystem::path datasetsDir();
 std::filesystem::path formatSamplesDir();  // tests/data/formats, written by make_format_samples.py
-
-// A fresh directory under the system temp dir, removed with everything in it on destruction.
-class ScratchDirectory {
-public:
-    ScratchDirectory();
-    ~ScratchDirectory();
-    ScratchDirectory(const ScratchDirectory&) = delete;
-    ScratchDirectory& operator=(const ScratchDirectory&) = delete;
-
-    const std::filesystem::path& path() const { return path_; }
-    // Writes bytes verbatim (binary mode) and returns the file's full path.
-    std::string writeFile(const std::string& name, const std::string& bytes) const;
-    std::string file(const std::string& name) const { return (path_ / name).string(); }
-
-private:
-    std::filesystem::path path_;
-};
 
 // While alive, numbers are formatted the German way: the global C++ locale uses ',' as decimal
 // point (what iostreams would then read and write), and the C locale is de_DE when installed

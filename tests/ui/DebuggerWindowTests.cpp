@@ -2,7 +2,10 @@
 // fraction and loss colourings, the A/B comparison, and a second mesh with its own scale.
 #include <cmath>
 
+#include <QComboBox>
 #include <QFile>
+#include <QScrollBar>
+#include <QTextBrowser>
 #include <QLabel>
 #include <QLocale>
 #include <QTextStream>
@@ -18,6 +21,7 @@
 #include "StatisticsPanel.h"
 #include "UiTestSupport.h"
 #include "WindowTestSupport.h"
+#include "MeshLoading.h"
 #include "core/Comparison.h"
 
 using namespace conescope;
@@ -25,6 +29,22 @@ using namespace conescope::testing;
 
 class DebuggerWindowTests : public QObject, private WindowFixture {
     Q_OBJECT
+
+    // The elephant at the defaults over 32 views (the A/B tests' start), the eye in front of it.
+    void openElephantWithFewViews() {
+        QVERIFY(window_->openMeshBlocking(datasetPath("elephant.off")));
+        Settings few = window_->settings();
+        few.views = 32;
+        window_->setSettings(few);
+        window_->waitUntilIdle();
+        window_->setEyePosition({0.6, 0.3, 1.4});
+    }
+
+    void unpinAndResetSettings() {
+        QTest::keyClick(window_.get(), Qt::Key_A, Qt::ShiftModifier);
+        window_->setSettings(Settings{});
+        window_->waitUntilIdle();
+    }
 
 private slots:
     void initTestCase() { openWindow(); }
@@ -119,7 +139,8 @@ private slots:
         const ClusterSet& a = *window_->session().pinnedClusters();
         const ClusterSet& current = *window_->clusters();
         const Eye eye = window_->currentStatistics()->eye;
-        const std::vector<FaceDiff> diff = faceDiff(a, measureEye(prepared, a, eye, displayedTest(a.settings)).culled, current,
+        const Settings& settingsA = *window_->session().pinnedSettings();
+        const std::vector<FaceDiff> diff = faceDiff(a, measureEye(prepared, a, eye, displayedTest(settingsA)).culled, current,
                                                     window_->currentStatistics()->culled);
         vtkDataArray* shown = window_->scene()->meshPolyData()->GetCellData()->GetArray(comparisonArrayName);
         QVERIFY(shown);
@@ -131,7 +152,8 @@ private slots:
         QVERIFY(legendText(*window_->scene()).contains(QStringLiteral("culled by A only (%1 tris)").arg(onlyA)));
         // The paired statistics over the orbit are the core's comparison.
         QTRY_VERIFY(window_->session().orbitComparison());
-        const Comparison expected = compareClusterSets(prepared, a, current, orbitOf(window_->settings(), prepared.box));
+        const Comparison expected = compareClusterSets(prepared, {a, settingsA}, {current, window_->settings()},
+                                                       orbitOf(window_->settings(), prepared.box));
         const Comparison& orbit = *window_->session().orbitComparison();
         QCOMPARE(orbit.trianglesCulledOnlyA, expected.trianglesCulledOnlyA);
         QCOMPARE(orbit.trianglesCulledOnlyB, expected.trianglesCulledOnlyB);
@@ -176,6 +198,122 @@ private slots:
         window_->setFaceColoring(FaceColoring::CullDecision);
         window_->setSettings(Settings{});
         window_->waitUntilIdle();
+    }
+
+    void pinAfterATestOnlyChangeFindsNoDifference() {
+        openElephantWithFewViews();
+        // Only the Test box changes: no new clusters. A is then exactly what B is.
+        chooseInCombo(window_->settingsPanel()->testBox(), "apex");
+        window_->waitUntilIdle();
+        QTest::keyClick(window_.get(), Qt::Key_A);
+        QVERIFY(window_->session().hasPin());
+        const Comparison* eye = window_->session().eyeComparison();
+        QVERIFY(eye);
+        QCOMPARE(eye->trianglesCulledOnlyA, size_t(0));
+        QCOMPARE(eye->trianglesCulledOnlyB, size_t(0));
+        QCOMPARE(eye->efficiencyA, eye->efficiencyB);
+        QCOMPARE(eye->efficiencyB, window_->currentStatistics()->view().efficiency);
+        QTRY_VERIFY(window_->session().orbitComparison());
+        const Comparison& orbit = *window_->session().orbitComparison();
+        QCOMPARE(orbit.trianglesCulledOnlyA, size_t(0));
+        QCOMPARE(orbit.trianglesCulledOnlyB, size_t(0));
+        // Both sides scored with the apex test: the orbit's efficiency for apex on these clusters.
+        const PreparedMesh& prepared = *window_->preparedMesh();
+        const double apex = measureCulling(cullingInput(prepared, *window_->clusters()), orbitOf(window_->settings(), prepared.box),
+                                           CullTest::Apex)
+                                .efficiency;
+        QCOMPARE(orbit.efficiencyA, apex);
+        QCOMPARE(orbit.efficiencyB, apex);
+        QVERIFY(window_->statisticsPanel()->value(QStringLiteral("A / B culled over the orbit")).startsWith(QStringLiteral("0 only by A, 0 only by B")));
+        unpinAndResetSettings();
+    }
+
+    void eachPinnedSideIsScoredWithItsOwnTest() {
+        openElephantWithFewViews();
+        // meshoptimizer's pipeline through the boxes, one at a time, as a user sets it; pinned; the
+        // defaults back.
+        SettingsPanel* panel = window_->settingsPanel();
+        for (const auto& [box, name] : {std::pair{panel->builderBox(), "meshopt"}, {panel->coneBox(), "meshopt"}, {panel->testBox(), "apex"}}) {
+            chooseInCombo(box, name);
+            window_->waitUntilIdle();
+        }
+        QTest::keyClick(window_.get(), Qt::Key_A);
+        for (const auto& [box, name] : {std::pair{panel->testBox(), "octagon"}, {panel->coneBox(), "minimal"}, {panel->builderBox(), "optimized"}}) {
+            chooseInCombo(box, name);
+            window_->waitUntilIdle();
+        }
+        QTRY_VERIFY(window_->session().orbitComparison());
+        // Each side on its own, from the file: meshopt/meshopt culled by apex, the defaults by octagon.
+        Settings settingsA = window_->settings();
+        settingsA.builder = Builder::Meshopt, settingsA.cones = {ConeMethod::Meshopt}, settingsA.tests = {CullTest::Apex};
+        const Settings settingsB = window_->settings();
+        const PreparedMesh prepared = loadMesh(datasetPath("elephant.off").toStdString(), settingsB);
+        const std::vector<Eye> views = orbitOf(settingsB, prepared.box);
+        const ClusterSet a = buildClusters(prepared, settingsA), b = buildClusters(prepared, settingsB);
+        const CullTestStatistics expectedA = measureCulling(cullingInput(prepared, a), views, CullTest::Apex);
+        const CullTestStatistics expectedB = measureCulling(cullingInput(prepared, b), views, CullTest::Octagon);
+        const Comparison& orbit = *window_->session().orbitComparison();
+        QCOMPARE(orbit.efficiencyA, expectedA.efficiency);
+        QCOMPARE(orbit.efficiencyB, expectedB.efficiency);
+        QCOMPARE(orbit.trianglesCulledOnlyA + orbit.trianglesCulledBoth, expectedA.trianglesCulled);
+        QCOMPARE(orbit.trianglesCulledOnlyB + orbit.trianglesCulledBoth, expectedB.trianglesCulled);
+        // The eye's pair as well.
+        const EyeMeasurement eyeA = measureEye(prepared, a, window_->currentStatistics()->eye, CullTest::Apex);
+        QCOMPARE(window_->session().eyeComparison()->efficiencyA, eyeA.view().efficiency);
+        unpinAndResetSettings();
+    }
+
+    void measurementsInFlightSurviveAChangeThatDoesNotConcernThem() {
+        openElephantWithFewViews();
+        Settings meshopt = window_->settings();
+        meshopt.builder = Builder::Meshopt;
+        window_->setSettings(meshopt);
+        window_->waitUntilIdle();
+        QTest::keyClick(window_.get(), Qt::Key_A);
+        // New views start the orbit and the comparison; the builder's effort, which meshoptimizer's
+        // builder does not use, changes before either is delivered.
+        Settings more = window_->settings();
+        more.views = 40;
+        window_->setSettings(more);
+        more.effort = Effort::Fast;
+        window_->setSettings(more);
+        window_->waitUntilIdle();
+        QVERIFY(window_->session().orbitStatistics());
+        QCOMPARE(window_->orbitStatistics().size(), size_t(40));
+        QVERIFY(window_->session().orbitComparison());
+        QCOMPARE(window_->session().orbitComparison()->views.size(), size_t(40));
+        unpinAndResetSettings();
+    }
+
+    void pickedClusterPageKeepsItsPlaceWhileTheEyeMoves() {
+        QVERIFY(window_->openMeshBlocking(datasetPath("torus.off")));
+        window_->setEyePosition({0.4, -2.2, 1.3});
+        auto* page = window_->findChild<QTextBrowser*>(QStringLiteral("clusterReport"));
+        QVERIFY(page);
+        // A short page view, so the report of the octagon test (eight edges) scrolls.
+        page->setFixedHeight(120);
+        QApplication::processEvents();
+        window_->pickCluster(3);
+        QApplication::processEvents();
+        QScrollBar* scroll = page->verticalScrollBar();
+        QVERIFY(scroll->maximum() > 40);
+        scroll->setValue(scroll->maximum() / 2);
+        const int place = scroll->value();
+        QVERIFY(place > 0);
+        // The eye dragged, N pressed: the reader stays where the margin is.
+        window_->setEyePosition({0.5, -2.1, 1.4});
+        QApplication::processEvents();
+        QCOMPARE(scroll->value(), place);
+        QTest::keyClick(window_.get(), Qt::Key_N);
+        QApplication::processEvents();
+        QCOMPARE(scroll->value(), place);
+        // Another cluster starts at its top.
+        window_->pickCluster(4);
+        QApplication::processEvents();
+        QCOMPARE(scroll->value(), 0);
+        window_->pickCluster(-1);
+        page->setMinimumHeight(0);
+        page->setMaximumHeight(QWIDGETSIZE_MAX);
     }
 
     void secondMeshGetsItsOwnScale() {

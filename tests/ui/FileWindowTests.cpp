@@ -12,9 +12,11 @@
 #include <QMessageBox>
 #include <QMimeData>
 #include <QProcess>
+#include <QProgressBar>
 #include <QPushButton>
 #include <QSet>
 #include <QSignalSpy>
+#include <QSpinBox>
 #include <QStatusBar>
 #include <QSurfaceFormat>
 #include <QTimer>
@@ -37,6 +39,30 @@
 
 using namespace conescope;
 using namespace conescope::testing;
+
+namespace {
+
+// The bundled icosphere with every face turned over: consistent, but every normal points in.
+QString writeInsideOutSphere(const QTemporaryDir& folder) {
+    const Mesh sphere = readMesh(datasetPath("icosphere.off").toStdString());
+    QString text = QStringLiteral("OFF\n%1 %2 0\n").arg(sphere.positions.size()).arg(sphere.faceCount());
+    for (const glm::vec3& p : sphere.positions) text += QStringLiteral("%1 %2 %3\n").arg(p.x, 0, 'g', 9).arg(p.y, 0, 'g', 9).arg(p.z, 0, 'g', 9);
+    for (size_t f = 0; f < sphere.faceCount(); ++f)
+        text += QStringLiteral("3 %1 %2 %3\n").arg(sphere.faceBegin(f)[2]).arg(sphere.faceBegin(f)[1]).arg(sphere.faceBegin(f)[0]);
+    const QString path = folder.filePath(QStringLiteral("inside-out.off"));
+    QFile file(path);
+    if (file.open(QIODevice::WriteOnly)) file.write(text.toUtf8());
+    return path;
+}
+
+// The status bar's Cancel button, as a user presses it.
+QPushButton* cancelButton(MainWindow& window) {
+    for (QPushButton* button : window.findChildren<QPushButton*>())
+        if (button->text() == QStringLiteral("Cancel")) return button;
+    return nullptr;
+}
+
+}  // namespace
 
 class FileWindowTests : public QObject, private WindowFixture {
     Q_OBJECT
@@ -171,7 +197,7 @@ private slots:
         // With the file builder chosen, a plain mesh still opens, with the default builder and a word why.
         QVERIFY(window_->openMeshBlocking(datasetPath("torus.off")));
         QVERIFY(window_->settings().builder == Settings{}.builder);
-        QVERIFY(window_->clusters()->settings.builder == Settings{}.builder);
+        QVERIFY(window_->clusters()->builtWith.builder == Settings{}.builder);
         QCOMPARE(window_->settingsPanel()->builderBox()->currentText(), QString::fromStdString(toString(Settings{}.builder)));
         QVERIFY(window_->statusBar()->currentMessage().contains(QStringLiteral("no cluster_id")));
         QCOMPARE(errors.count(), 0);
@@ -195,7 +221,21 @@ private slots:
         window_->setSettings(other);
         window_->waitUntilIdle();
         QCOMPARE(errors.count(), 1);
-        QCOMPARE(window_->clusters()->settings.limits.maxTriangles, size_t(64));
+        QCOMPARE(window_->clusters()->builtWith.limits.maxTriangles, size_t(64));
+        // A good id file: read through io (core reads no file), its clusters shown.
+        const QString good = temporary_.filePath(QStringLiteral("ids.txt"));
+        QFile goodFile(good);
+        QVERIFY(goodFile.open(QIODevice::WriteOnly));
+        for (size_t f = 0; f < window_->clusters()->partition.clusterOfFace.size(); ++f) goodFile.write(QByteArray::number(int(f % 5)) + "\n");
+        goodFile.close();
+        settings = window_->settings();
+        settings.builder = Builder::File;
+        settings.clusterFile = good.toStdString();
+        window_->setSettings(settings);
+        window_->waitUntilIdle();
+        QCOMPARE(errors.count(), 1);
+        QVERIFY(window_->clusters()->builtWith.builder == Builder::File);
+        QCOMPARE(window_->clusters()->partition.clusterCount, 5u);
         window_->setSettings(Settings{});
         window_->waitUntilIdle();
     }
@@ -225,7 +265,7 @@ private slots:
         QVERIFY(window_->currentStatistics()->view().falseCulls > 0);
         QCOMPARE(window_->statisticsPanel()->value(QStringLiteral("false culls")),
                  QLocale().toString(qulonglong(window_->currentStatistics()->view().falseCulls)));
-        const TestStatistics* orbit = window_->session().orbitStatistics();
+        const CullTestStatistics* orbit = window_->session().orbitStatistics();
         QVERIFY(orbit && orbit->falseCulls > 0);
         WorstClustersView* table = window_->worstClustersView();
         const uint32_t first = uint32_t(table->clusterAt(0));
@@ -270,17 +310,8 @@ private slots:
     }
 
     void insideOutMeshIsWarnedAboutAndRepairedOnRequest() {
-        // The bundled icosphere with every face turned over: consistent, but every normal points in.
         const Mesh sphere = readMesh(datasetPath("icosphere.off").toStdString());
-        QString text = QStringLiteral("OFF\n%1 %2 0\n").arg(sphere.positions.size()).arg(sphere.faceCount());
-        for (const glm::vec3& p : sphere.positions) text += QStringLiteral("%1 %2 %3\n").arg(p.x, 0, 'g', 9).arg(p.y, 0, 'g', 9).arg(p.z, 0, 'g', 9);
-        for (size_t f = 0; f < sphere.faceCount(); ++f)
-            text += QStringLiteral("3 %1 %2 %3\n").arg(sphere.faceBegin(f)[2]).arg(sphere.faceBegin(f)[1]).arg(sphere.faceBegin(f)[0]);
-        const QString path = temporary_.filePath(QStringLiteral("inside-out.off"));
-        QFile file(path);
-        QVERIFY(file.open(QIODevice::WriteOnly));
-        file.write(text.toUtf8());
-        file.close();
+        const QString path = writeInsideOutSphere(temporary_);
         QCheckBox* fix = window_->settingsPanel()->fixWindingBox();
         fix->setChecked(false);
         window_->waitUntilIdle();
@@ -299,6 +330,66 @@ private slots:
         for (size_t f = 0; f < sphere.faceCount(); ++f) QVERIFY(glm::dot(faces.normals[f], faces.centroids[f]) > 0.0);
         fix->setChecked(false);
         window_->waitUntilIdle();
+    }
+
+    void anotherMeshTakesTheWindingWarningAway() {
+        window_->settingsPanel()->fixWindingBox()->setChecked(false);
+        window_->waitUntilIdle();
+        QVERIFY(window_->openMeshBlocking(writeInsideOutSphere(temporary_)));
+        QVERIFY(window_->statusBar()->currentMessage().contains(QStringLiteral("inside out")));
+        // A mesh with nothing to say: the previous mesh's warning must not stay beside "mesh problems: none".
+        QVERIFY(window_->openMeshBlocking(datasetPath("torus.off")));
+        QCOMPARE(window_->statisticsPanel()->value(QStringLiteral("mesh problems")), QStringLiteral("none"));
+        QVERIFY2(!window_->statusBar()->currentMessage().contains(QStringLiteral("inside out")),
+                 qPrintable(window_->statusBar()->currentMessage()));
+    }
+
+    void cancelledBuildPutsTheSettingsBack() {
+        QVERIFY(window_->openMeshBlocking(datasetPath("torus.off")));
+        SettingsPanel* panel = window_->settingsPanel();
+        const size_t shownLimit = window_->settings().limits.maxTriangles;
+        const size_t shownClusters = window_->clusters()->partition.clusterCount;
+        QVERIFY(shownLimit != 48);
+        // Type 48 and press Cancel while the clusters are built, as a user would.
+        panel->maxTrianglesBox()->setValue(48);
+        QVERIFY(cancelButton(*window_));
+        cancelButton(*window_)->click();
+        window_->waitUntilIdle();
+        // The clusters shown stay, and so do the settings they were made with: in the box too.
+        QCOMPARE(window_->clusters()->partition.clusterCount, shownClusters);
+        QCOMPARE(window_->settings().limits.maxTriangles, shownLimit);
+        QCOMPARE(size_t(panel->maxTrianglesBox()->value()), shownLimit);
+        QCOMPARE(panel->settings().limits.maxTriangles, shownLimit);
+        // The export is what the window shows: a core run with the settings in the widgets.
+        const QString path = temporary_.filePath(QStringLiteral("after-cancel.json"));
+        QVERIFY(window_->exportStatistics(path, StatisticsFormat::Json, true));
+        const nlohmann::json exported = readJsonFile(path);
+        QCOMPARE(exported["settings"]["max_triangles"].get<size_t>(), shownLimit);
+        QCOMPARE(exported["clusters"].get<size_t>(), shownClusters);
+        const RunStatistics core = statisticsInProcess(datasetPath("torus.off"), panel->settings());
+        QCOMPARE(exported["results"][0]["efficiency"].get<double>(), core.results.front().efficiency);
+        QCOMPARE(exported["clusters"].get<size_t>(), core.clusters);
+        window_->setSettings(Settings{});
+        window_->waitUntilIdle();
+    }
+
+    void progressBarShowsItsWholeText() {
+        QVERIFY(window_->openMeshBlocking(datasetPath("torus.off")));
+        QProgressBar* bar = window_->statusBar()->findChild<QProgressBar*>();
+        QVERIFY(bar);
+        // Progress as a long orbit reports it.
+        Session& session = window_->session();
+        emit session.taskStarted(QStringLiteral("Orbit statistics"));
+        emit session.progressChanged(0.88, QStringLiteral("orbit statistics"));
+        QApplication::processEvents();
+        QCOMPARE(bar->text(), QStringLiteral("orbit statistics 88%"));
+        const int textWidth = bar->fontMetrics().horizontalAdvance(bar->text());
+        QVERIFY2(bar->width() >= textWidth + 12, qPrintable(QStringLiteral("bar %1 px for %2 px of text").arg(bar->width()).arg(textWidth)));
+        emit session.progressChanged(0.5, QStringLiteral("Comparing A and B over the orbit"));
+        QApplication::processEvents();
+        QVERIFY(bar->width() >= bar->fontMetrics().horizontalAdvance(bar->text()) + 12);
+        saveWindowPicture(QStringLiteral("window-progress.png"));
+        emit session.idle();
     }
 
     void errorDialogOpensAfterTheProgressBarIsGone() {
@@ -336,9 +427,7 @@ private slots:
         QSignalSpy shown(window_.get(), &MainWindow::meshShown);
         window_->openMesh(datasetPath("torus.off"));
         // The Cancel button of the status bar; the task stops at its next stage.
-        QPushButton* cancel = nullptr;
-        for (QPushButton* button : window_->findChildren<QPushButton*>())
-            if (button->text() == QStringLiteral("Cancel")) cancel = button;
+        QPushButton* cancel = cancelButton(*window_);
         QVERIFY(cancel);
         cancel->click();
         window_->waitUntilIdle();

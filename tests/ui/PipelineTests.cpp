@@ -10,6 +10,7 @@
 #include "ClusterReport.h"
 #include "CommandLine.h"
 #include "Datasets.h"
+#include "core/CullMap.h"
 #include "core/Pipeline.h"
 #include "MeshLoading.h"
 #include "UiTestSupport.h"
@@ -128,7 +129,7 @@ private slots:
     void partitionArraysSpreadClusterValues() {
         const PreparedMesh prepared = loadMesh(datasetPath("icosphere.off").toStdString(), Settings{});
         const ClusterSet clusters = buildClusters(prepared, Settings{});
-        const auto arrays = partitionFaceArrays(prepared, clusters);
+        const auto arrays = partitionFaceArrays(prepared, clusters, CullTest::Apex);
         for (const auto& [name, values] : arrays) QCOMPARE(values.size(), prepared.mesh().faceCount());
         for (size_t f = 0; f < prepared.mesh().faceCount(); f += 17) {
             const uint32_t c = clusters.partition.clusterOfFace[f];
@@ -136,6 +137,8 @@ private slots:
             QCOMPARE(arrays.at("cone_axis_y")[f], clusters.bounds.cones[c].axis.y);
             QCOMPARE(arrays.at("cone_half_angle_deg")[f], glm::degrees(clusters.bounds.cones[c].halfAngle()));
             QCOMPARE(arrays.at("aabb_max_z")[f], double(clusters.bounds.boxes[c].max.z));
+            // The fraction of the test asked for, not of the one the clusters were built under.
+            QCOMPARE(arrays.at("cull_fraction")[f], cullFraction(clusters.cullMap, c, CullTest::Apex));
         }
     }
 
@@ -191,6 +194,20 @@ private slots:
             QCOMPARE(int(failed.action), int(CommandLineResult::Action::ExitFailure));
             QVERIFY(!failed.message.isEmpty());
         }
+    }
+
+    void loadMessagesAreSentences() {
+        // A reader's note that ends its sentence, then the winding warning: not "faces.; warning:".
+        PreparedMesh prepared = loadMesh(datasetPath("icosphere.off").toStdString(), Settings{});
+        prepared.readerNotes = {"Skipped 2 primitives of points or lines: they have no faces.", "merged 3 vertices into others"};
+        prepared.report.inconsistentEdges = 4;
+        const QString message = QString::fromStdString(loadMessage(prepared));
+        QVERIFY2(!message.contains(QStringLiteral(".;")) && !message.contains(QStringLiteral("; warning")), qPrintable(message));
+        QVERIFY2(message.startsWith(QStringLiteral("Skipped 2 primitives of points or lines: they have no faces. Merged 3 vertices into "
+                                                   "others. Warning: the mesh has 4 edges")),
+                 qPrintable(message));
+        QVERIFY(message.endsWith(QStringLiteral("tick 'Fix winding' in Settings to repair.")));
+        QCOMPARE(QString::fromStdString(joinSentences({"", "one", "two!", "  "})), QStringLiteral("One. Two!"));
     }
 
     void bundledMeshIsFound() {

@@ -5,6 +5,7 @@
 
 #include <QDir>
 #include <QFileInfo>
+#include <QProcess>
 
 #include "io/MeshReader.h"
 
@@ -48,6 +49,21 @@ std::vector<std::map<std::string, std::string>> readCsvTable(const QString& path
         rows.push_back(row);
     }
     return rows;
+}
+
+nlohmann::json withoutTimings(nlohmann::json document) {
+    if (document.is_object()) document.erase("ns_per_cluster");
+    if (document.is_object() || document.is_array())
+        for (auto item = document.begin(); item != document.end(); ++item) *item = withoutTimings(*item);
+    return document;
+}
+
+int runProgram(const QString& program, const QStringList& arguments, QString* errors) {
+    QProcess process;
+    process.start(program, arguments);
+    if (!process.waitForFinished(120000)) return -1;
+    if (errors) *errors = QString::fromLocal8Bit(process.readAllStandardError());
+    return process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -1;
 }
 
 QString eyeArgument(const glm::dvec3& eye) {

@@ -23,6 +23,14 @@ nlohmann::json readJsonFile(const QString& path);
 // The rows of one "# section: NAME" of a statistics CSV, as header -> value maps.
 std::vector<std::map<std::string, std::string>> readCsvTable(const QString& path);
 
+// The document without its measured times (ns_per_cluster, at any depth): what two runs of the same
+// settings must write alike.
+nlohmann::json withoutTimings(nlohmann::json document);
+
+// Runs a program to its end (two minutes at most): its exit code (-1 when it did not end normally),
+// its stderr in `errors`.
+int runProgram(const QString& program, const QStringList& arguments, QString* errors = nullptr);
+
 // "x,y,z" with enough digits to read back the same doubles.
 QString eyeArgument(const glm::dvec3& eye);
 

@@ -5,6 +5,7 @@
 #include <memory>
 
 #include <QApplication>
+#include <QComboBox>
 #include <QCoreApplication>
 #include <QDir>
 #include <QStandardPaths>
@@ -13,7 +14,6 @@
 #include <QtTest>
 
 #include <QVTKOpenGLNativeWidget.h>
-#include <vtkLegendBoxActor.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkRendererCollection.h>
@@ -51,6 +51,13 @@ struct WindowFixture {
     }
 };
 
+// Selects the entry of a combo box whose text is `name`, as a user would.
+inline void chooseInCombo(QComboBox* box, const std::string& name) {
+    const int index = box->findText(QString::fromStdString(name));
+    QVERIFY2(index >= 0, name.c_str());
+    box->setCurrentIndex(index);
+}
+
 inline vtkRenderer* observerRenderer(MainWindow& window) {
     return window.observerView()->renderWindow()->GetRenderers()->GetFirstRenderer();
 }
@@ -58,8 +65,7 @@ inline vtkRenderer* observerRenderer(MainWindow& window) {
 // Every legend entry's text, one per line.
 inline QString legendText(const ClusterScene& scene) {
     QString text;
-    vtkLegendBoxActor* legend = scene.legend();
-    for (int i = 0; i < legend->GetNumberOfEntries(); ++i) text += QString::fromUtf8(legend->GetEntryString(i)) + '\n';
+    for (const LegendEntry& entry : scene.legend().entries()) text += QString::fromStdString(entry.label) + '\n';
     return text;
 }
 

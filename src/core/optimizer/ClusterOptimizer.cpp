@@ -30,20 +30,18 @@ constexpr double kDefaultFill = 0.68;
 constexpr double kGrowthCap = 1.25;
 // How one effort level searches: where it starts, and its annealing. Sweeps go over all faces; a
 // level gets at most maxSweeps, and no more face visits than sweepFaceVisits (each visit costs well
-// under a microsecond). From a growth start fewer than minSweeps cool too fast to pay: measured on
-// armadillo subdivided to 0.8M and 3.3M triangles, 6 and 4 sweeps added 0.7% and 0.4% to the
-// objective for 1.4 s and 2.9 s, half the whole preparation; such meshes get none at the best
-// level. From meshoptimizer's meshlets the first sweeps pay most: over every CGAL demo mesh (octagon
-// test, against meshoptimizer) no sweep gives 1.287x, one 1.330x, two 1.353x, eight 1.395x, thirty
-// 1.436x. The second sweep pays only on meshes of one part (below 2,048 faces: 1.455x to 1.508x
-// over 43 meshes); on meshes in parts it adds nothing (2k-5k triangles 1.260x either way, 5k-20k
-// 1.230x and 1.231x, above 1.114x both) and cost 5% of the whole run of a 2k-5k mesh, so the
-// balanced level takes two sweeps on a mesh of one part and one on each part (annealingSweepsFor).
+// under a microsecond). From a growth start fewer than minSweeps cool too fast to pay. From
+// meshoptimizer's meshlets the first sweeps pay most, and the second only on a mesh of one part, so
+// the balanced level takes two there and one on each part of a larger mesh (annealingSweepsFor).
+// docs/benchmarks.md ("Why the constants are what they are") has the figures.
 struct SearchPlan {
     bool growthStart;  // false: start from meshoptimizer's meshlets where they are within the limits
     size_t maxSweeps, minSweeps;
     double sweepFaceVisits;
     size_t sweepsPerPart;  // at most this many on each of meshoptimizer's meshlet parts, when more than one
+    // Whether meshoptimizer's builder takes the limits, so that its meshlets can be a start: asked
+    // of meshopt/ once per build (planAt), not again at every step that needs to know.
+    bool meshoptLimits = false;
 };
 
 SearchPlan planFor(Effort effort) {
@@ -54,6 +52,15 @@ SearchPlan planFor(Effort effort) {
     }
     return {true, 100, 8, 5.0e6, 100};
 }
+
+SearchPlan planAt(Effort effort, const MeshletLimits& limits) {
+    SearchPlan plan = planFor(effort);
+    plan.meshoptLimits = meshoptTakesLimits(limits);
+    return plan;
+}
+
+// The fast levels start from meshoptimizer's meshlets where it takes the limits.
+bool startsFromMeshlets(const SearchPlan& plan) { return !plan.growthStart && plan.meshoptLimits; }
 
 // The annealing sweeps the plan buys for a mesh of this size; too few to cool slowly are not worth
 // their time (0).
@@ -136,21 +143,26 @@ Partition optimizeClusters(const Mesh& mesh, const FaceGeometry& faces, const Me
     // the limits do not allow must not end above meshoptimizer's count.
     if (packed && !closerToTheBudget(state, *packed, target)) return optimizer::result(*packed);
     const bool small = mesh.faceCount() < kBothStartsBelowFaces;
-    if (!plan.growthStart || (state.liveClusters <= target && !small) || !meshoptTakesLimits(limits)) return optimizer::result(state);
+    if (!plan.growthStart || (state.liveClusters <= target && !small) || !plan.meshoptLimits) return optimizer::result(state);
     packed = meshletStart(mesh, faces, limits, meshlets ? *meshlets : buildMeshoptMeshlets(mesh, limits, 1.0f));
     if (!packed) return optimizer::result(state);
     reduceAndSearch(*packed, target, sweeps);
     return optimizer::result(closerToTheBudget(*packed, state, target) ? *packed : state);
 }
 
-}  // namespace
-
-size_t defaultClusterBudget(const Mesh& mesh, const MeshletLimits& limits) {
+// defaultClusterBudget, with whether meshoptimizer takes the limits known.
+size_t defaultBudget(const Mesh& mesh, const MeshletLimits& limits, bool meshoptLimits) {
     // meshoptimizer's own count at cone weight 1: the fair comparison at defaults.
-    if (meshoptTakesLimits(limits) && mesh.faceCount() > 0) return meshoptMeshletCount(mesh, limits, 1.0f);
+    if (meshoptLimits && mesh.faceCount() > 0) return meshoptMeshletCount(mesh, limits, 1.0f);
     const double roundPatch = double(std::min(limits.maxTriangles, 2 * limits.maxVertices));
     const double perCluster = std::max(1.0, kDefaultFill * roundPatch);
     return std::max<size_t>(1, size_t(std::ceil(double(triangleCount(mesh)) / perCluster)));
+}
+
+}  // namespace
+
+size_t defaultClusterBudget(const Mesh& mesh, const MeshletLimits& limits) {
+    return defaultBudget(mesh, limits, meshoptTakesLimits(limits));
 }
 
 size_t annealingSweepsFor(Effort effort, size_t faceCount, size_t meshletParts) {
@@ -159,9 +171,7 @@ size_t annealingSweepsFor(Effort effort, size_t faceCount, size_t meshletParts) 
     return meshletParts > 1 ? std::min(sweeps, plan.sweepsPerPart) : sweeps;
 }
 
-bool startsFromMeshoptMeshlets(const MeshletLimits& limits, Effort effort) {
-    return !planFor(effort).growthStart && meshoptTakesLimits(limits);
-}
+bool startsFromMeshoptMeshlets(const MeshletLimits& limits, Effort effort) { return startsFromMeshlets(planAt(effort, limits)); }
 
 namespace {
 
@@ -267,12 +277,12 @@ Partition buildOptimizedClusters(const Mesh& mesh, const FaceGeometry& faces, co
                                  MeshletStream* meshlets, const PartClusters& partDone) {
     const size_t faceCount = mesh.faceCount();
     if (faceCount == 0) return {};
-    const SearchPlan plan = planFor(effort);
+    const SearchPlan plan = planAt(effort, limits);
     const size_t sweeps = annealingSweeps(plan, faceCount);
     // The fast levels start from meshoptimizer's meshlets, whose count is the default budget; a
     // budget above it is grown instead.
     std::unique_ptr<MeshletStream> ownStream;
-    if (startsFromMeshoptMeshlets(limits, effort)) {
+    if (startsFromMeshlets(plan)) {
         if (!meshlets || &meshlets->mesh() != &mesh || !sameLimits(meshlets->limits(), limits)) {
             ownStream = std::make_unique<MeshletStream>(std::shared_ptr<const Mesh>(&mesh, [](const Mesh*) {}), limits,
                                                         meshletPartsFor(faceCount));
@@ -296,7 +306,7 @@ Partition buildOptimizedClusters(const Mesh& mesh, const FaceGeometry& faces, co
             return grown;
         }
     }
-    const size_t target = targetClusters != 0 ? targetClusters : defaultClusterBudget(mesh, limits);
+    const size_t target = targetClusters != 0 ? targetClusters : defaultBudget(mesh, limits, plan.meshoptLimits);
     return optimizeGrownParts(mesh, faces, limits, target, plan, sweeps, progress, partDone);
 }
 

@@ -177,15 +177,15 @@ void farthestPair(const State& state, uint32_t seeds[2]) {
 // 0 or 1) until it holds half of the `total` triangles. False when some face was reached by
 // neither half.
 bool floodInHalves(State& state, const uint32_t seeds[2], double total, double sideTriangles[2]) {
-    struct Entry {
+    struct FloodStep {
         double distance;
         uint32_t face, side;
-        bool operator<(const Entry& other) const {
+        bool operator<(const FloodStep& other) const {
             if (distance != other.distance) return distance > other.distance;
             return face > other.face;
         }
     };
-    std::priority_queue<Entry> heap;
+    std::priority_queue<FloodStep> heap;
     const uint32_t member = ++state.stamp;
     for (uint32_t f : state.pool) state.faceStamp[f] = member;
     const uint32_t taken = ++state.stamp;
@@ -193,7 +193,7 @@ bool floodInHalves(State& state, const uint32_t seeds[2], double total, double s
     sideTriangles[0] = sideTriangles[1] = 0.0;
     size_t assigned = 0;
     while (!heap.empty()) {
-        const Entry top = heap.top();
+        const FloodStep top = heap.top();
         heap.pop();
         if (state.faceStamp[top.face] == taken) continue;
         if (sideTriangles[top.side] + state.faceTriangles[top.face] > 0.5 * total + 2.0 && sideTriangles[1 - top.side] < 0.5 * total)
@@ -349,17 +349,17 @@ void nearestClusters(const State& state, uint32_t cluster, const std::vector<glm
 // cluster changed since it was pushed). Between clusters that share an edge (acrossGaps 0), or
 // between each cluster and its acrossGaps nearest: what lets a mesh of many pieces reach any budget.
 void mergeCheapest(State& state, size_t count, size_t acrossGaps) {
-    struct Entry {
+    struct MergeCandidate {
         double loss;
         uint32_t a, b, versionA, versionB;
-        bool operator<(const Entry& other) const {
+        bool operator<(const MergeCandidate& other) const {
             if (loss != other.loss) return loss > other.loss;
             if (a != other.a) return a > other.a;
             return b > other.b;
         }
     };
     std::vector<uint32_t> version(state.clusters.size(), 0);
-    std::priority_queue<Entry> heap;
+    std::priority_queue<MergeCandidate> heap;
     std::vector<uint32_t> neighbours;
     std::vector<glm::dvec3> centres(state.clusters.size());
     if (acrossGaps)
@@ -386,7 +386,7 @@ void mergeCheapest(State& state, size_t count, size_t acrossGaps) {
         if (!state.clusters[a].faces.empty()) pushPairs(a);
     size_t done = 0;
     while (done < count && !heap.empty()) {
-        const Entry top = heap.top();
+        const MergeCandidate top = heap.top();
         heap.pop();
         if (version[top.a] != top.versionA || version[top.b] != top.versionB) continue;
         if (state.clusters[top.a].faces.empty() || state.clusters[top.b].faces.empty()) continue;

@@ -1,4 +1,4 @@
-#include "TestGeometry.h"
+#include "CullTestGeometry.h"
 
 #include <algorithm>
 #include <cmath>

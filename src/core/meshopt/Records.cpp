@@ -1,6 +1,6 @@
-#include "MeshoptRecords.h"
-
-#include <meshoptimizer.h>
+// meshoptimizer's records tested as engines test them: in float, in the shaders' order of
+// operations, and not made conservative (Meshopt.h, "Engine records").
+#include "Meshopt.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,32 +8,6 @@
 namespace conescope {
 
 namespace {
-
-// meshoptimizer asserts on more (kMeshletMaxTriangles in clusterizer.cpp, 0.18).
-constexpr size_t kLibraryMaxTriangles = 512;
-// It squares coordinates in float: from about 1e19 on that overflows and trips its assertion.
-constexpr float kLibraryLargestCoordinate = 1e18f;
-
-MeshletBounds fromLibrary(const meshopt_Bounds& b) {
-    MeshletBounds bounds;
-    std::copy(b.center, b.center + 3, bounds.center.begin());
-    bounds.radius = b.radius;
-    std::copy(b.cone_apex, b.cone_apex + 3, bounds.coneApex.begin());
-    std::copy(b.cone_axis, b.cone_axis + 3, bounds.coneAxis.begin());
-    bounds.coneCutoff = b.cone_cutoff;
-    std::copy(b.cone_axis_s8, b.cone_axis_s8 + 3, bounds.coneAxisS8.begin());
-    bounds.coneCutoffS8 = b.cone_cutoff_s8;
-    return bounds;
-}
-
-bool libraryTakes(const uint32_t* vertices, size_t count, size_t triangles, const std::vector<glm::vec3>& positions) {
-    if (triangles == 0 || triangles > kLibraryMaxTriangles || positions.empty()) return false;
-    for (size_t i = 0; i < count; ++i) {
-        const glm::vec3 p = glm::abs(positions[vertices[i]]);
-        if (!(std::max({p.x, p.y, p.z}) <= kLibraryLargestCoordinate)) return false;
-    }
-    return true;
-}
 
 using Float3 = std::array<float, 3>;
 
@@ -55,22 +29,10 @@ bool sphereTest(const MeshletBounds& b, const Float3& axis, float cutoff, const 
 
 }  // namespace
 
-MeshletBounds meshoptMeshletBounds(const MeshletArrays& arrays, size_t meshlet, const std::vector<glm::vec3>& positions) {
-    const auto [vertexOffset, triangleOffset, vertexCount, triangleCount] = arrays.meshlets[meshlet];
-    if (!libraryTakes(&arrays.vertices[vertexOffset], vertexCount, triangleCount, positions)) return MeshletBounds{};
-    return fromLibrary(meshopt_computeMeshletBounds(&arrays.vertices[vertexOffset], &arrays.triangles[triangleOffset], triangleCount,
-                                                    &positions[0].x, positions.size(), sizeof(glm::vec3)));
-}
-
 std::vector<MeshletBounds> meshoptBoundsOfMeshlets(const MeshletArrays& arrays, const std::vector<glm::vec3>& positions) {
     std::vector<MeshletBounds> bounds(arrays.meshlets.size());
     for (size_t m = 0; m < bounds.size(); ++m) bounds[m] = meshoptMeshletBounds(arrays, m, positions);
     return bounds;
-}
-
-MeshletBounds meshoptClusterBounds(const std::vector<uint32_t>& indices, const std::vector<glm::vec3>& positions) {
-    if (!libraryTakes(indices.data(), indices.size(), indices.size() / 3, positions)) return MeshletBounds{};
-    return fromLibrary(meshopt_computeClusterBounds(indices.data(), indices.size(), &positions[0].x, positions.size(), sizeof(glm::vec3)));
 }
 
 bool meshoptApexCulls(const MeshletBounds& b, const Eye& eye) {

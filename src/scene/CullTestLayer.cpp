@@ -1,4 +1,4 @@
-#include "scene/TestLayer.h"
+#include "scene/CullTestLayer.h"
 
 #include <algorithm>
 #include <cmath>
@@ -24,11 +24,11 @@ namespace conescope {
 
 namespace {
 
-// Colours of the drawing; the view vector takes the eye's colour, the target the highlight's.
+// Colours of the drawing; the target takes the highlight's (it is the picked cluster's point).
 constexpr Rgb regionColour{0.20, 0.85, 0.35};
 constexpr Rgb axisColour{0.95, 0.95, 0.95};
 constexpr Rgb pointBack{0.20, 0.80, 0.30};
-constexpr Rgb pointFront{0.95, 0.25, 0.20};
+constexpr Rgb pointFront{1.00, 0.35, 0.55};  // rose: red is a false cull, orange a miss
 constexpr double regionOpacity = 0.15;
 
 // Points around a region's boundary at one distance: a circle, or the pyramid's eight edges.
@@ -119,13 +119,13 @@ vtkSmartPointer<vtkActor> pointActor(double size) {
 
 }  // namespace
 
-glm::dvec3 testViewTarget(const TestDrawing& drawing, const Sphere& sphere) {
+glm::dvec3 testViewTarget(const CullTestDrawing& drawing, const Sphere& sphere) {
     const bool apexTest = drawing.test == CullTest::Apex || drawing.test == CullTest::Octagon;
     return apexTest && !drawing.eye.orthographic ? drawing.why.apex : sphere.center;
 }
 
-TestDrawing makeTestDrawing(const CullingInput& input, uint32_t cluster, const Eye& eye, CullTest test) {
-    TestDrawing drawing;
+CullTestDrawing makeTestDrawing(const CullingInput& input, uint32_t cluster, const Eye& eye, CullTest test) {
+    CullTestDrawing drawing;
     drawing.cluster = int(cluster);
     drawing.test = test;
     drawing.eye = eye;
@@ -140,7 +140,7 @@ TestDrawing makeTestDrawing(const CullingInput& input, uint32_t cluster, const E
     return drawing;
 }
 
-TestLayer::TestLayer(const SceneData& data)
+CullTestLayer::CullTestLayer(const SceneData& data)
     : SceneLayer(data), region_(actorFor(plainMapper(emptyPolyData()))), regionOutline_(lineActor(plainMapper(emptyPolyData()), 1.5)),
       axis_(lineActor(plainMapper(emptyPolyData()), 3.0)),
       view_(lineActor(plainMapper(emptyPolyData()), 2.5)), target_(pointActor(12.0)), points_(pointActor(9.0)),
@@ -150,7 +150,7 @@ TestLayer::TestLayer(const SceneData& data)
     region_->GetProperty()->SetOpacity(regionOpacity);
     region_->GetProperty()->BackfaceCullingOff();
     setColour(axis_, axisColour);
-    setColour(view_, SceneColours::eye);
+    setColour(view_, SceneColours::viewVector);
     auto labelMapper = vtkSmartPointer<vtkLabeledDataMapper>::New();
     labelMapper->SetInputData(emptyPolyData());
     labelMapper->SetLabelModeToLabelFieldData();
@@ -165,18 +165,19 @@ TestLayer::TestLayer(const SceneData& data)
     applyVisibility();
 }
 
-std::vector<vtkActor*> TestLayer::actors() const { return {region_, regionOutline_, axis_, view_, target_, points_}; }
-std::vector<vtkProp*> TestLayer::overlays() const { return {labels_}; }
+std::vector<vtkActor*> CullTestLayer::actors() const { return {region_, regionOutline_, axis_, view_, target_, points_}; }
+std::vector<vtkProp*> CullTestLayer::overlays() const { return {labels_}; }
 
-void TestLayer::addLegendEntries(FaceColoring, std::vector<LegendEntry>& entries) const {
+void CullTestLayer::addLegendEntries(FaceColoring, std::vector<LegendEntry>& entries) const {
     const std::string test = toString(drawing_.test);
     if (!drawing_.region.empty()) entries.push_back({"eyes " + test + " culls from", {regionColour}});
-    entries.push_back({"view vector v, cone axis", {SceneColours::eye, axisColour}});
+    entries.push_back({"view vector v", {SceneColours::viewVector}});
+    entries.push_back({"cone axis V1", {axisColour}});
     if (!drawing_.why.vertices.empty() || drawing_.test == CullTest::Aabb || drawing_.test == CullTest::AabbFast)
         entries.push_back({"point sees back / may face", {pointBack, pointFront}});
 }
 
-void TestLayer::setDrawing(const TestDrawing& drawing) {
+void CullTestLayer::setDrawing(const CullTestDrawing& drawing) {
     const size_t clusterCount = data_.palette.size();
     if (drawing.cluster < -1 || drawing.cluster >= int(clusterCount))
         throw std::out_of_range("setTestDrawing: cluster " + std::to_string(drawing.cluster) + " of " + std::to_string(clusterCount));

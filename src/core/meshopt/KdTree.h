@@ -1,5 +1,5 @@
 // meshoptimizer 0.18's k-d tree over triangle centres (MIT licence, (c) Arseny Kapoulkine), made
-// again for the builder's reproduction (MeshoptMeshlets.cpp): the library's float arithmetic in the
+// again for the builder's reproduction (Reproduction.cpp): the library's float arithmetic in the
 // library's order (this file is compiled without contracted multiply-adds, as that one is).
 // Internal to conescope_core.
 #pragma once
@@ -29,7 +29,7 @@ Spread spreadOf(const float* points, size_t stride, const unsigned int* indices,
 // How the library splits a node holding indices[0, count) of spread `spread`: the axis, the mean on
 // it, and how many points went below it (the indices are partitioned so); a leaf when the node is
 // small or the split too lopsided. The tree (kdBuild) and the search for ties without it
-// (MeshoptMeshlets.cpp) both split so.
+// (Reproduction.cpp) both split so.
 struct KdSplit {
     bool leaf = true;
     unsigned int axis = 0;

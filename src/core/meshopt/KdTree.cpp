@@ -1,5 +1,5 @@
-// meshoptimizer 0.18's k-d tree (MeshoptKdTree.h), made again.
-#include "MeshoptKdTree.h"
+// meshoptimizer 0.18's k-d tree (KdTree.h), made again.
+#include "KdTree.h"
 
 #include <cmath>
 

@@ -1,22 +1,12 @@
-// meshopt_buildMeshlets of meshoptimizer 0.18 (MIT licence, (c) Arseny Kapoulkine), made again.
-//
-// The library places one triangle at a time. For each it visits every triangle around every vertex
-// of the meshlet being built (about a hundred visits), ranks them by how many vertices they would
-// add (a triangle left alone at a vertex ranks just after one that adds none) and then by a cone
-// score, and keeps the first best; when the best does not fit, the meshlet is closed and the next
-// one starts with it; when there is none, a k-d tree gives the unplaced triangle nearest to the
-// meshlet's centre. Here a scan stands in for the tree's few searches while it is cheap, and
-// where centres are exactly as near only the nodes on the search's way to the first are made (191
-// of 205 CGAL, assimp and bundled meshes never build the tree), and the triangles
-// around the meshlet are kept in five buckets by that rank,
-// updated as vertices join the meshlet and vertices lose their last triangles, so a step scores
-// only the lowest non-empty bucket (a few dozen triangles) and breaks ties by what the library's
-// visiting order would have met first. Everything that decides (normals, centres, the score, the
-// tree) is the library's float arithmetic in the library's order; this file is compiled without
-// contracted multiply-adds so that the compiler keeps it so. A score that is not a number (from
-// coordinates near the float range) makes that step visit like the library does.
-#include "MeshoptMeshlets.h"
-#include "MeshoptKdTree.h"
+// meshopt_buildMeshlets of meshoptimizer 0.18 (MIT licence, (c) Arseny Kapoulkine), made again:
+// the same decisions, faster. The library visits every triangle around the meshlet at each step;
+// here they are kept in five buckets by the library's first rank (vertices added), so a step scores
+// only the lowest non-empty bucket and breaks ties by the library's visiting order, and a scan
+// stands in for the k-d tree's few searches while it is cheap (docs/architecture.md, "meshoptimizer
+// in one folder", has the whole argument). Everything that decides is the library's float
+// arithmetic in the library's order, compiled without contracted multiply-adds.
+#include "Meshopt.h"
+#include "KdTree.h"
 
 #include <algorithm>
 #include <cfloat>
@@ -37,10 +27,9 @@ constexpr int kRanks = 5;          // 0: adds no vertex, 1: left alone at a vert
 // the float range, where the rounded square root of a square may be less than the number.
 constexpr float kLeastScannedDistance = 0x1p-60f;
 // How many times the triangles scans may look at in all before the tree is built instead. A scan
-// costs about a third of what making the tree costs per triangle and level. Meshes below 2^15
-// triangles have few dead ends, most of them when most triangles are placed: on 62 CGAL meshes of
-// 1k to 32k triangles, the builder took 0.57x to 1.18x its time with 2 (0.90x in the geometric
-// mean), 56 of them never building the tree. Larger meshes have hundreds, and scans only delay it.
+// costs about a third of what making the tree costs per triangle and level; meshes below 2^15
+// triangles have few dead ends, larger ones hundreds, where scans only delay the tree
+// (docs/benchmarks.md, "Why the constants are what they are").
 constexpr size_t kManyScansBelow = size_t(1) << 15;
 constexpr size_t kScannedTimesSmall = 16, kScannedTimesLarge = 2;
 

@@ -7,7 +7,7 @@
 #include <random>
 
 #include "TestMeshes.h"
-#include "core/TestGeometry.h"
+#include "core/CullTestGeometry.h"
 
 using namespace conescope;
 using testmesh::randomUnit;
@@ -38,7 +38,7 @@ glm::dvec3 perpendicular(const glm::dvec3& axis) {
 
 }  // namespace
 
-TEST(TestGeometry, MarginIsPositiveExactlyWhenTheExactTestCulls) {
+TEST(CullTestGeometry, MarginIsPositiveExactlyWhenTheExactTestCulls) {
     const Prepared p = preparedTorus(ConeMethod::Minimal);
     const CullingInput input = cullingInput(p.mesh, p.clusters);
     std::mt19937_64 random(7);
@@ -66,7 +66,7 @@ TEST(TestGeometry, MarginIsPositiveExactlyWhenTheExactTestCulls) {
     EXPECT_GT(drawn, 50u);
 }
 
-TEST(TestGeometry, VerticesTestGivesEveryVertexItsVerdict) {
+TEST(CullTestGeometry, VerticesTestGivesEveryVertexItsVerdict) {
     const Prepared p = preparedTorus(ConeMethod::Minimal);
     const CullingInput input = cullingInput(p.mesh, p.clusters);
     Eye eye;
@@ -82,7 +82,7 @@ TEST(TestGeometry, VerticesTestGivesEveryVertexItsVerdict) {
 }
 
 // Eyes just inside the drawn region are culled by the exact test, eyes just outside are not.
-TEST(TestGeometry, CullRegionIsWhereTheExactTestCulls) {
+TEST(CullTestGeometry, CullRegionIsWhereTheExactTestCulls) {
     for (ConeMethod cone : {ConeMethod::Minimal, ConeMethod::Meshopt}) {
         const Prepared p = preparedTorus(cone);
         const CullingInput input = cullingInput(p.mesh, p.clusters);
@@ -116,7 +116,7 @@ TEST(TestGeometry, CullRegionIsWhereTheExactTestCulls) {
 }
 
 // The octagon test's pyramid: eyes just inside each of its faces are culled, eyes just outside not.
-TEST(TestGeometry, OctagonPyramidIsWhereTheExactTestCulls) {
+TEST(CullTestGeometry, OctagonPyramidIsWhereTheExactTestCulls) {
     const Prepared p = preparedTorus(ConeMethod::Minimal);
     const CullingInput input = cullingInput(p.mesh, p.clusters);
     size_t checked = 0;
@@ -147,7 +147,7 @@ TEST(TestGeometry, OctagonPyramidIsWhereTheExactTestCulls) {
     EXPECT_GT(checked, 200u);
 }
 
-TEST(TestGeometry, RegionIsEmptyWhereTheTestHasNoSolidOfRevolution) {
+TEST(CullTestGeometry, RegionIsEmptyWhereTheTestHasNoSolidOfRevolution) {
     const Prepared p = preparedTorus(ConeMethod::Minimal);
     for (CullTest test : {CullTest::Oracle, CullTest::Vertices, CullTest::Aabb, CullTest::AabbFast})
         EXPECT_TRUE(cullRegion(p.clusters.bounds, 0, test, false, 10.0).empty()) << toString(test);
@@ -158,7 +158,7 @@ TEST(TestGeometry, RegionIsEmptyWhereTheTestHasNoSolidOfRevolution) {
     EXPECT_GT(sphere.angles.back(), sphere.angles.front());
 }
 
-TEST(TestGeometry, GaussMapConesHoldEveryNormalAndTheMinimalIsNarrowest) {
+TEST(CullTestGeometry, GaussMapConesHoldEveryNormalAndTheMinimalIsNarrowest) {
     const Prepared p = preparedTorus(ConeMethod::Average);
     const CullingInput input = cullingInput(p.mesh, p.clusters);
     Eye eye;

@@ -1,4 +1,4 @@
-#include "scene/EyeView.h"
+#include "scene/EyeViewActors.h"
 
 #include <algorithm>
 
@@ -11,7 +11,7 @@
 
 namespace conescope {
 
-vtkSmartPointer<vtkActor> EyeView::makeActor() {
+vtkSmartPointer<vtkActor> EyeViewActors::makeActor() {
     auto actor = actorFor(cellArrayMapper(data_.meshData, clusterIdArrayName, data_.tables.visible));
     actor->GetProperty()->SetInterpolationToFlat();
     // The table has alpha 0 only to mark culled clusters: keep the actor in the opaque pass and drop
@@ -24,7 +24,7 @@ vtkSmartPointer<vtkActor> EyeView::makeActor() {
     return actor;
 }
 
-bool EyeView::owns(vtkActor* actor) const {
+bool EyeViewActors::owns(vtkActor* actor) const {
     return std::any_of(made_.begin(), made_.end(), [&](const vtkWeakPointer<vtkActor>& made) { return made.GetPointer() == actor; });
 }
 

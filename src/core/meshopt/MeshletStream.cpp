@@ -1,10 +1,14 @@
-#include "MeshletStream.h"
+// meshoptimizer's meshlets made on a thread of their own and handed over in parts (Meshopt.h).
+#include "Meshopt.h"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
+#include <condition_variable>
+#include <exception>
+#include <mutex>
+#include <thread>
 #include <utility>
-
-#include <meshoptimizer.h>
 
 namespace conescope {
 
@@ -12,20 +16,12 @@ namespace {
 
 // Below this many faces the meshlets come whole; above, in two parts at least, of about
 // kFacesPerPart faces. Smaller parts let the second core start sooner and leave less to do once
-// the builder is done, but refine within more borders. Measured over every CGAL demo mesh at the
-// balanced effort (culled back faces / meshoptimizer's) and on armadillo (buildClusters, both
-// cores): parts of 8,192 faces 1.346x and 26 ms, 4,096 1.345x and 23 ms, 2,048 1.343x and
-// 21 ms, 1,024 1.342x and 21 ms. On meshes of 2k to 20k triangles the tail decides: preparation
-// over meshoptimizer's, in fresh processes (geometric mean over 15 CGAL meshes, three runs), was
-// 1.06-1.10x with parts of 2,048 faces, 0.99-1.02x with 1,024, 0.94-1.01x with 640, for culling
-// 1.343x, 1.342x and 1.339x (768: 1.340x; 576: 1.336x, no faster). The last share comes in two
-// halves: the part that only begins once the builder is done is then half as long (CGAL's hand,
-// 2,390 faces in four parts, had one core idle for 0.3 ms of its 1.3 ms), for the same culling.
+// the builder is done, but refine within more borders; the last share comes in two halves, so the
+// part that only begins once the builder is done is short. The sizes tried are in
+// docs/benchmarks.md ("Why the constants are what they are").
 constexpr size_t kPartsFromFaces = size_t(1) << 11;
 constexpr size_t kFacesPerPart = 640;
 constexpr size_t kMostShares = 64;
-
-constexpr bool kReproduced = MESHOPTIMIZER_VERSION == kReproducedMeshoptVersion;
 
 // How long finishWork watches for the other thread's end before it waits to be woken.
 constexpr std::chrono::microseconds kWorkWatch(300);
@@ -58,10 +54,47 @@ size_t placedThroughPart(size_t part, size_t partCount, size_t triangles) {
     return (2 * shares - 1) * triangles / (2 * shares);
 }
 
-MeshletStream::MeshletStream(std::shared_ptr<const Mesh> mesh, const MeshletLimits& limits, size_t partCount)
+// The stream's thread and what it shares with the threads that take the parts.
+struct MeshletStream::State {
+    State(std::shared_ptr<const Mesh> mesh, const MeshletLimits& limits, size_t partCount);
+    ~State();
+
+    void build();
+    void waitFor(size_t partsMade);
+    // The fan triangles meshoptimizer is given: the mesh's own corners when every face is a triangle.
+    const uint32_t* triangleIndices() const;
+    size_t triangleIndexCount() const;
+
+    std::shared_ptr<const Mesh> mesh_;
+    MeshletLimits limits_;
+    bool reproduced_;  // else the library builds them, as one part
+    bool allTriangles_ = false;
+    std::vector<uint32_t> indices_, faceOfTriangle_;  // fan triangles and their faces, unless allTriangles_
+    MeshoptMeshlets meshlets_;
+    // Per part, as the builder's thread hands it over: (face, meshlet from the part's first) in the
+    // order placed; sorted into parts_[i] by the first to ask for it, off the builder's thread.
+    std::vector<std::vector<std::pair<uint32_t, uint32_t>>> handedOver_;
+    std::vector<MeshletPart> parts_;
+    std::unique_ptr<std::once_flag[]> sorted_;
+    std::vector<uint8_t> claimed_;  // per face: its part is known
+
+    std::mutex mutex_;
+    std::condition_variable changed_;
+    size_t partsMade_ = 0;
+    bool stopping_ = false, workDone_ = false;
+    std::atomic<bool> workFinished_{false};  // workDone_, readable without the lock (finishWork watches it)
+    std::function<void()> work_;
+    std::exception_ptr buildError_, workError_;
+    CoreSplit cores_;
+    CoreHold builderHold_;
+    std::thread thread_;
+};
+
+MeshletStream::State::State(std::shared_ptr<const Mesh> mesh, const MeshletLimits& limits, size_t partCount)
     : mesh_(std::move(mesh)),
       limits_(limits),
-      handedOver_(kReproduced ? std::max<size_t>(partCount, 1) : 1),
+      reproduced_(reproducesLinkedMeshopt()),
+      handedOver_(reproduced_ ? std::max<size_t>(partCount, 1) : 1),
       parts_(handedOver_.size()),
       sorted_(new std::once_flag[handedOver_.size()]),
       cores_(splitCores()) {
@@ -82,7 +115,6 @@ MeshletStream::MeshletStream(std::shared_ptr<const Mesh> mesh, const MeshletLimi
         std::unique_lock<std::mutex> lock(mutex_);
         changed_.wait(lock, [this] { return stopping_ || work_; });
         if (!work_) return;
-        working_ = true;
         lock.unlock();
         try {
             work_();
@@ -97,11 +129,11 @@ MeshletStream::MeshletStream(std::shared_ptr<const Mesh> mesh, const MeshletLimi
     builderHold_ = CoreHold(thread_.native_handle(), cores_.others);
 }
 
-const uint32_t* MeshletStream::triangleIndices() const { return allTriangles_ ? mesh_->faceVertices.data() : indices_.data(); }
+const uint32_t* MeshletStream::State::triangleIndices() const { return allTriangles_ ? mesh_->faceVertices.data() : indices_.data(); }
 
-size_t MeshletStream::triangleIndexCount() const { return allTriangles_ ? mesh_->faceVertices.size() : indices_.size(); }
+size_t MeshletStream::State::triangleIndexCount() const { return allTriangles_ ? mesh_->faceVertices.size() : indices_.size(); }
 
-MeshletStream::~MeshletStream() {
+MeshletStream::State::~State() {
     {
         std::lock_guard<std::mutex> lock(mutex_);
         stopping_ = true;
@@ -110,9 +142,9 @@ MeshletStream::~MeshletStream() {
     thread_.join();
 }
 
-void MeshletStream::build() {
+void MeshletStream::State::build() {
     const Mesh& mesh = *mesh_;
-    if (!kReproduced) {  // the library: everything at once, one part
+    if (!reproduced_) {  // the library: everything at once, one part
         MeshletPart all;
         all.meshlets = meshoptLibraryMeshlets(mesh, limits_, 1.0f);
         for (uint32_t f = 0; f < mesh.faceCount(); ++f) all.faces.push_back(f);
@@ -123,7 +155,7 @@ void MeshletStream::build() {
         changed_.notify_all();
         return;
     }
-    if (!meshoptTakesLimits(limits_)) buildMeshoptMeshlets(mesh, limits_, 1.0f);  // throws, naming the limits
+    requireMeshoptLimits(limits_);
     // A mesh of triangles is its own fan triangulation: no copy.
     allTriangles_ = true;
     for (size_t f = 0; f < mesh.faceCount() && allTriangles_; ++f) allTriangles_ = mesh.faceSize(f) == 3;
@@ -176,70 +208,83 @@ void MeshletStream::build() {
     handOver(meshlets_.placementOrder.size(), meshlets_.count, true);
 }
 
-void MeshletStream::waitFor(size_t partsMade) {
+void MeshletStream::State::waitFor(size_t partsMade) {
     std::unique_lock<std::mutex> lock(mutex_);
     changed_.wait(lock, [&] { return partsMade_ >= partsMade || buildError_; });
     if (partsMade_ < partsMade) std::rethrow_exception(buildError_);
 }
 
+MeshletStream::MeshletStream(std::shared_ptr<const Mesh> mesh, const MeshletLimits& limits, size_t partCount)
+    : state_(std::make_unique<State>(std::move(mesh), limits, partCount)) {}
+
+MeshletStream::~MeshletStream() = default;
+
+const Mesh& MeshletStream::mesh() const { return *state_->mesh_; }
+
+const MeshletLimits& MeshletStream::limits() const { return state_->limits_; }
+
+size_t MeshletStream::partCount() const { return state_->parts_.size(); }
+
 const MeshletPart& MeshletStream::part(size_t i) {
-    waitFor(i + 1);
-    std::call_once(sorted_[i], [&] {
-        if (!kReproduced) return;  // the library's one part is made whole
-        std::vector<std::pair<uint32_t, uint32_t>>& faceMeshlets = handedOver_[i];
-        sortByFace(faceMeshlets, uint32_t(mesh_->faceCount()));
+    State& s = *state_;
+    s.waitFor(i + 1);
+    std::call_once(s.sorted_[i], [&] {
+        if (!s.reproduced_) return;  // the library's one part is made whole
+        std::vector<std::pair<uint32_t, uint32_t>>& faceMeshlets = s.handedOver_[i];
+        sortByFace(faceMeshlets, uint32_t(s.mesh_->faceCount()));
         std::vector<uint32_t> ids;
         ids.reserve(faceMeshlets.size());
-        for (const auto& [f, meshlet] : faceMeshlets) parts_[i].faces.push_back(f), ids.push_back(meshlet);
-        parts_[i].meshlets = renumberClusters(std::move(ids));
+        for (const auto& [f, meshlet] : faceMeshlets) s.parts_[i].faces.push_back(f), ids.push_back(meshlet);
+        s.parts_[i].meshlets = renumberClusters(std::move(ids));
         faceMeshlets = {};
     });
-    return parts_[i];
+    return s.parts_[i];
 }
 
 size_t MeshletStream::meshletCount() {
     size_t count = 0;
-    for (size_t i = 0; i < parts_.size(); ++i) count += part(i).meshlets.clusterCount;
+    for (size_t i = 0; i < partCount(); ++i) count += part(i).meshlets.clusterCount;
     return count;
 }
 
 Partition MeshletStream::whole() {
-    waitFor(parts_.size());
-    if (!kReproduced) return parts_[0].meshlets;
-    return facesOfMeshlets(*mesh_, meshlets_);
+    state_->waitFor(partCount());
+    if (!state_->reproduced_) return state_->parts_[0].meshlets;
+    return facesOfMeshlets(*state_->mesh_, state_->meshlets_);
 }
 
-CoreHold MeshletStream::holdConsumerCore() const { return CoreHold(thisThread(), cores_.current); }
+CoreHold MeshletStream::holdConsumerCore() const { return CoreHold(thisThread(), state_->cores_.current); }
 
 bool MeshletStream::allPartsMade() {
-    std::lock_guard<std::mutex> lock(mutex_);
-    return partsMade_ >= parts_.size() || buildError_;
+    std::lock_guard<std::mutex> lock(state_->mutex_);
+    return state_->partsMade_ >= partCount() || state_->buildError_;
 }
 
 void MeshletStream::runAfterwards(std::function<void()> work) {
-    std::lock_guard<std::mutex> lock(mutex_);
-    work_ = std::move(work);
-    changed_.notify_all();
+    std::lock_guard<std::mutex> lock(state_->mutex_);
+    state_->work_ = std::move(work);
+    state_->changed_.notify_all();
 }
 
 void MeshletStream::finishWork() {
+    State& s = *state_;
     {
-        std::lock_guard<std::mutex> lock(mutex_);
-        if (!work_) return;
+        std::lock_guard<std::mutex> lock(s.mutex_);
+        if (!s.work_) return;
     }
     // The other thread is on its last part, which takes a small mesh's part a tenth of a
     // millisecond: watched for that long, its end is seen at once, where waking from a wait took
     // about 0.04 ms here. The watch yields the core, in case both threads share one.
     const auto watchUntil = std::chrono::steady_clock::now() + kWorkWatch;
-    for (unsigned i = 1; !workFinished_.load(std::memory_order_acquire); ++i) {
+    for (unsigned i = 1; !s.workFinished_.load(std::memory_order_acquire); ++i) {
         if (i % 64 == 0) {
             if (std::chrono::steady_clock::now() > watchUntil) break;
             std::this_thread::yield();
         }
     }
-    std::unique_lock<std::mutex> lock(mutex_);
-    changed_.wait(lock, [this] { return workDone_ || workFinished_.load(std::memory_order_acquire); });
-    if (workError_) std::rethrow_exception(workError_);
+    std::unique_lock<std::mutex> lock(s.mutex_);
+    s.changed_.wait(lock, [&s] { return s.workDone_ || s.workFinished_.load(std::memory_order_acquire); });
+    if (s.workError_) std::rethrow_exception(s.workError_);
 }
 
 }  // namespace conescope

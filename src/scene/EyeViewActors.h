@@ -15,9 +15,9 @@ class vtkActor;
 
 namespace conescope {
 
-class EyeView {
+class EyeViewActors {
 public:
-    explicit EyeView(const SceneData& data) : data_(data) {}
+    explicit EyeViewActors(const SceneData& data) : data_(data) {}
 
     // Culled clusters have lookup-table alpha 0 and are discarded in the fragment shader, so the actor
     // stays in the opaque pass; every actor made here follows the shared visible-clusters table.

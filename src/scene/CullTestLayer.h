@@ -1,12 +1,13 @@
 // Layer::Test: the picked cluster's cull test drawn in 3D for the current eye. The cone axis V1 from
 // the sphere centre, the point the view vector aims at (the apex, or the sphere centre), the view
 // vector from the eye, the region of eye positions from which the test culls the cluster
-// (translucent, core/TestGeometry.h: a round cone or funnel, the octagon test's pyramid), and the points a vertex or box test looks at, coloured by
-// their verdict, box corners numbered as in the picked-cluster panel.
+// (translucent, core/CullTestGeometry.h: a round cone or funnel, the octagon test's pyramid), and
+// the points a vertex or box test looks at, coloured by their verdict, box corners numbered as in
+// the picked-cluster panel.
 #pragma once
 
 #include "core/Culling.h"
-#include "core/TestGeometry.h"
+#include "core/CullTestGeometry.h"
 #include "scene/SceneLayer.h"
 
 class vtkActor2D;
@@ -14,7 +15,7 @@ class vtkActor2D;
 namespace conescope {
 
 // What the layer draws: one cluster's test from one eye.
-struct TestDrawing {
+struct CullTestDrawing {
     int cluster = -1;                 // -1: nothing
     CullTest test = CullTest::Apex;
     Eye eye;
@@ -24,14 +25,14 @@ struct TestDrawing {
 };
 // explainCull and cullRegion for the drawing; the region reaches eight sphere radii or to the eye,
 // whichever is nearer (four radii for an orthographic eye).
-TestDrawing makeTestDrawing(const CullingInput& input, uint32_t cluster, const Eye& eye, CullTest test);
+CullTestDrawing makeTestDrawing(const CullingInput& input, uint32_t cluster, const Eye& eye, CullTest test);
 // The point the drawing's view vector aims at: the apex for a perspective apex or octagon test, else
 // the sphere centre.
-glm::dvec3 testViewTarget(const TestDrawing& drawing, const Sphere& sphere);
+glm::dvec3 testViewTarget(const CullTestDrawing& drawing, const Sphere& sphere);
 
-class TestLayer : public SceneLayer {
+class CullTestLayer : public SceneLayer {
 public:
-    explicit TestLayer(const SceneData& data);
+    explicit CullTestLayer(const SceneData& data);
 
     // Region first: the layer's main actor.
     std::vector<vtkActor*> actors() const override;
@@ -42,13 +43,13 @@ public:
     int clusterOfCell(vtkActor*, vtkIdType) const override { return -1; }
 
     // Throws std::out_of_range for a cluster outside [-1, K).
-    void setDrawing(const TestDrawing& drawing);
-    const TestDrawing& drawing() const { return drawing_; }
+    void setDrawing(const CullTestDrawing& drawing);
+    const CullTestDrawing& drawing() const { return drawing_; }
 
 private:
     vtkSmartPointer<vtkActor> region_, regionOutline_, axis_, view_, target_, points_;
     vtkSmartPointer<vtkActor2D> labels_;
-    TestDrawing drawing_;
+    CullTestDrawing drawing_;
 };
 
 }  // namespace conescope

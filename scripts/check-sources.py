@@ -1,0 +1,158 @@
+#!/usr/bin/env python3
+"""The rules of docs/architecture.md ("Rules the sources keep") that a script can see:
+
+  - <meshoptimizer.h> is included only under src/core/meshopt/;
+  - no two classes or structs share a name across src/ and ui/ (nested ones count as Outer::Inner,
+    ones local to a function by their own name);
+  - no comment block in src/ or ui/ runs over 15 lines (figures and diaries go to docs/);
+  - the files of src/core include each other without loops (a header and its .cpp count as one);
+  - no source file runs over 600 lines.
+
+  scripts/check-sources.py [ROOT]      # prints each breach, exits 1 if there is one
+
+Run by ctest (label `sources`), so CI keeps them true.
+"""
+import os
+import re
+import sys
+
+MAX_COMMENT_LINES = 15
+MAX_FILE_LINES = 600
+SOURCE_SUFFIXES = (".h", ".cpp")
+
+
+def source_files(root, folders):
+    for folder in folders:
+        for directory, _, names in sorted(os.walk(os.path.join(root, folder))):
+            for name in sorted(names):
+                if name.endswith(SOURCE_SUFFIXES):
+                    path = os.path.join(directory, name)
+                    yield os.path.relpath(path, root), open(path, encoding="utf-8").read().split("\n")
+
+
+def meshoptimizer_includes(files):
+    for path, lines in files:
+        if path.startswith("src/") and not path.startswith("src/core/meshopt/"):
+            for number, line in enumerate(lines, 1):
+                if re.match(r"\s*#\s*include\s*<meshoptimizer\.h>", line):
+                    yield f"{path}:{number}: <meshoptimizer.h> outside src/core/meshopt/"
+
+
+CLASS = re.compile(r"^(\s*)(?:template\s*<[^>]*>\s*)?(?:class|struct)\s+(?:\[\[[^\]]*\]\]\s*)?([A-Za-z_][\w:]*)"
+                   r"(?:\s+final)?\s*(?::[^;{]*)?\{")
+
+
+def class_definitions(path, lines):
+    """(qualified name, line) of every class or struct defined in a file. Namespaces are not indented
+    here, so a definition at column 0 is at namespace scope; an indented one is nested in the
+    enclosing class still open above it, or local to a function."""
+    enclosing = []  # (indent, name) of the classes open above
+    for number, line in enumerate(lines, 1):
+        stripped = line.strip()
+        if stripped.startswith("//"):
+            continue
+        indent = len(line) - len(line.lstrip())
+        if enclosing and stripped.startswith("}") and indent == enclosing[-1][0]:
+            enclosing.pop()
+            continue
+        match = CLASS.match(line)
+        if not match:
+            continue
+        name = match.group(2)
+        if indent == 0:
+            qualified = name
+        elif enclosing:
+            qualified = enclosing[-1][1] + "::" + name
+        else:
+            qualified = name  # local to a function: still one class per name
+        if not stripped.endswith("};"):
+            enclosing.append((indent, qualified))
+        yield qualified, number
+
+
+def shared_class_names(files):
+    where = {}
+    for path, lines in files:
+        for name, number in class_definitions(path, lines):
+            where.setdefault(name, []).append(f"{path}:{number}")
+    for name, places in sorted(where.items()):
+        if len(places) > 1:
+            yield f"class {name} is defined {len(places)} times: " + ", ".join(places)
+
+
+def long_comments(files):
+    for path, lines in files:
+        run, start = 0, 0
+        for number, line in enumerate(lines + [""], 1):
+            if line.strip().startswith("//"):
+                if run == 0:
+                    start = number
+                run += 1
+                continue
+            if run > MAX_COMMENT_LINES:
+                yield f"{path}:{start}: a comment block of {run} lines (at most {MAX_COMMENT_LINES}; figures go to docs/)"
+            run = 0
+        for match in re.finditer(r"/\*.*?\*/", "\n".join(lines), re.S):
+            if match.group(0).count("\n") + 1 > MAX_COMMENT_LINES:
+                number = "\n".join(lines)[: match.start()].count("\n") + 1
+                yield f"{path}:{number}: a /* */ comment of more than {MAX_COMMENT_LINES} lines"
+
+
+def long_files(files):
+    for path, lines in files:
+        if len(lines) - 1 > MAX_FILE_LINES:
+            yield f"{path}: {len(lines) - 1} lines (at most about {MAX_FILE_LINES})"
+
+
+def include_loops(root, files):
+    """Loops among src/core's modules (a header and its .cpp together), following quoted includes."""
+    def module(path):
+        return os.path.splitext(path)[0]
+
+    edges = {}
+    for path, lines in files:
+        if not path.startswith("src/core/"):
+            continue
+        for line in lines:
+            match = re.match(r'\s*#\s*include\s*"([^"]+)"', line)
+            if not match:
+                continue
+            for candidate in (os.path.join(os.path.dirname(path), match.group(1)), os.path.join("src", match.group(1))):
+                candidate = os.path.normpath(candidate)
+                if os.path.isfile(os.path.join(root, candidate)):
+                    if module(candidate) != module(path):
+                        edges.setdefault(module(path), set()).add(module(candidate))
+                    break
+    state, stack, loops = {}, [], []
+
+    def visit(node):
+        state[node] = "open"
+        stack.append(node)
+        for target in sorted(edges.get(node, ())):
+            if state.get(target) == "open":
+                loops.append(stack[stack.index(target):] + [target])
+            elif target not in state:
+                visit(target)
+        stack.pop()
+        state[node] = "done"
+
+    for node in sorted(edges):
+        if node not in state:
+            visit(node)
+    for loop in loops:
+        yield "include loop: " + " -> ".join(loop)
+
+
+def main():
+    root = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), ".."))
+    files = list(source_files(root, ["src", "ui"]))
+    breaches = [*meshoptimizer_includes(files), *shared_class_names(files), *long_comments(files), *long_files(files),
+                *include_loops(root, files)]
+    for breach in breaches:
+        print(breach)
+    print(f"check-sources: {len(files)} files, {len(breaches)} breaches", file=sys.stderr)
+    return 1 if breaches else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

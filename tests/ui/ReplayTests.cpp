@@ -1,0 +1,206 @@
+// Replay files: read and refused naming the step, played in the window (relative paths, captions,
+// screenshots), and `conescope --replay` run as a user runs it, its exports checked against
+// `conescope-cli compare` (issue 29's "done when").
+#include <QFile>
+#include <QImage>
+#include <QSurfaceFormat>
+#include <QtTest>
+
+#include "CommandLine.h"
+#include "ObserverView.h"
+#include "ReplayPlayer.h"
+#include "ReplaySteps.h"
+#include "UiTestSupport.h"
+#include "WindowTestSupport.h"
+
+using namespace conescope;
+using namespace conescope::testing;
+
+namespace {
+
+void writeFile(const QString& path, const QByteArray& text) {
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write(text);
+}
+
+// The message parseReplay refuses `json` with.
+QString refusal(const char* json) {
+    try {
+        parseReplay(json, QDir::tempPath());
+    } catch (const ReplayError& error) {
+        return QString::fromStdString(error.what());
+    }
+    return {};
+}
+
+}  // namespace
+
+class ReplayTests : public QObject, private WindowFixture {
+    Q_OBJECT
+
+    // `conescope --replay` on a file of these steps in the temporary folder; the exit code, stderr in `errors`.
+    int replay(const QString& name, const QByteArray& steps, QString* errors = nullptr) {
+        const QString path = temporary_.filePath(name);
+        writeFile(path, steps);
+        return runProgram(QStringLiteral(CONESCOPE_APP_PATH), {QStringLiteral("--replay"), path}, errors);
+    }
+
+    // `conescope-cli compare` of the elephant at 64 views, distance 3: its JSON.
+    nlohmann::json cliCompare(const QString& a, const QString& b) {
+        const QString out = temporary_.filePath(QStringLiteral("cli-compare.json"));
+        QString errors;
+        const int code = runProgram(QStringLiteral(CONESCOPE_CLI_PATH),
+                                    {QStringLiteral("compare"), datasetPath("elephant.off"), QStringLiteral("--a"), a, QStringLiteral("--b"), b,
+                                     QStringLiteral("--views"), QStringLiteral("64"), QStringLiteral("--distance"), QStringLiteral("3"),
+                                     QStringLiteral("--quiet"), QStringLiteral("-o"), out},
+                                    &errors);
+        if (code != 0) qWarning("conescope-cli compare: %s", qPrintable(errors));
+        return code == 0 ? readJsonFile(out) : nlohmann::json();
+    }
+
+private slots:
+    void initTestCase() { openWindow(); }
+    void cleanupTestCase() { window_.reset(); }
+
+    void readingRefusesWhatCannotBePlayedNamingTheStep() {
+        QVERIFY(refusal("[{\"open\": ").startsWith(QStringLiteral("not JSON")));
+        QVERIFY(refusal("{\"steps\": 3}").contains(QStringLiteral("a replay is a list of steps")));
+        const QString unknown = refusal("[{\"open\": \"a.off\"}, {\"fly\": true}]");
+        QVERIFY2(unknown.startsWith(QStringLiteral("step 2 {\"fly\":true}: unknown step 'fly' (expected one of: open, set,")), qPrintable(unknown));
+        const QString key = refusal("[{\"set\": {\"tset\": \"apex\"}}]");
+        QVERIFY2(key.startsWith(QStringLiteral("step 1 {\"set\":{\"tset\":\"apex\"}}: 'set' unknown key 'tset'")), qPrintable(key));
+        QVERIFY(refusal("[{\"set\": {\"eye\": \"1,2,3\"}}]").contains(QStringLiteral("unknown key 'eye'")));
+        const QString value = refusal("[{\"set\": {\"views\": 64}}, {\"set\": {\"test\": \"apx\"}}]");
+        QVERIFY2(value.startsWith(QStringLiteral("step 2 ")) && value.contains(QStringLiteral("apx")), qPrintable(value));
+        QVERIFY(refusal("[{\"set\": {\"views\": 0}}]").startsWith(QStringLiteral("step 1 ")));
+        QVERIFY(refusal("[{\"eye\": [1, 2]}]").contains(QStringLiteral("takes a point [x, y, z]")));
+        QVERIFY(refusal("[{\"orbit-view\": -1}]").contains(QStringLiteral("takes an orbit view")));
+        QVERIFY(refusal("[{\"pin\": \"B\"}]").contains(QStringLiteral("takes \"A\"")));
+        QVERIFY(refusal("[{\"swap\": false}]").contains(QStringLiteral("takes true")));
+        QVERIFY(refusal("[{\"open\": \"a.off\", \"pin\": \"A\"}]").contains(QStringLiteral("one member")));
+        QVERIFY(refusal("[{\"caption\": 3}]").contains(QStringLiteral("takes a text")));
+        try {
+            readReplayFile(temporary_.filePath(QStringLiteral("no-such-replay.json")));
+            QFAIL("a missing file was read");
+        } catch (const ReplayError& error) {
+            QVERIFY(QString::fromLatin1(error.what()).contains(QStringLiteral("cannot read the replay file")));
+        }
+        // Every kind reads.
+        const std::vector<ReplayStep> steps = parseReplay(
+            R"([{"open": "m.off"}, {"set": {"builder": "meshopt", "max-tris": 64, "test": ["apex", "sphere"], "ortho": true}},
+                {"eye": [1, 2, 3.5]}, {"orbit-view": 3}, {"pick": -1}, {"pin": "A"}, {"swap": true}, {"drop-pin": true},
+                {"cancel-next-build": true}, {"screenshot": "a.png"}, {"window-screenshot": "b.png"}, {"export": "c.json"},
+                {"export-eye": "d.csv"}, {"caption": "text"}])",
+            QDir::tempPath());
+        QCOMPARE(steps.size(), replayStepNames().size());
+    }
+
+    void commandLineTakesAReplay() {
+        const CommandLineResult replay = parseCommandLine({QStringLiteral("conescope"), QStringLiteral("--replay"),
+                                                           QStringLiteral("steps.json"), QStringLiteral("--stay")});
+        QCOMPARE(int(replay.action), int(CommandLineResult::Action::Run));
+        QCOMPARE(replay.options.replay, QStringLiteral("steps.json"));
+        QVERIFY(replay.options.stay);
+        QCOMPARE(int(parseCommandLine({QStringLiteral("conescope"), QStringLiteral("--stay")}).action),
+                 int(CommandLineResult::Action::ExitFailure));
+        QCOMPARE(int(parseCommandLine({QStringLiteral("conescope"), QStringLiteral("--replay"), QStringLiteral("a.json"),
+                                       QStringLiteral("--screenshot"), QStringLiteral("b.png")})
+                         .action),
+                 int(CommandLineResult::Action::ExitFailure));
+    }
+
+    void stepsPlayInTheWindowWithPathsFromTheReplaysFolder() {
+        QDir folder(temporary_.path());
+        QVERIFY(folder.mkpath(QStringLiteral("bug/shots")));
+        QVERIFY(QFile::copy(datasetPath("icosphere.off"), folder.filePath(QStringLiteral("bug/sphere.off"))));
+        const QString file = folder.filePath(QStringLiteral("bug/report.json"));
+        writeFile(file, R"([{"open": "sphere.off"}, {"set": {"views": 16, "test": "apex"}}, {"orbit-view": 3}, {"pick": 2},
+                            {"caption": "cluster 2 from view 3"}, {"screenshot": "shots/view.png"},
+                            {"window-screenshot": "shots/window.png"}, {"export": "orbit.json"}, {"export-eye": "eye.csv"}])");
+        ReplayPlayer player(*window_);
+        std::vector<size_t> finished;
+        connect(&player, &ReplayPlayer::stepFinished, this, [&](size_t step) { finished.push_back(step); });
+        const QString error = player.playBlocking(readReplayFile(file));
+        QVERIFY2(error.isEmpty(), qPrintable(error));
+        QCOMPARE(finished.size(), size_t(9));
+        QCOMPARE(QString::fromStdString(window_->preparedMesh()->path), QDir::cleanPath(folder.filePath(QStringLiteral("bug/sphere.off"))));
+        QCOMPARE(window_->session().orbitStep(), 3L);
+        QCOMPARE(window_->pickedCluster(), 2);
+        QCOMPARE(static_cast<ObserverView*>(window_->observerView())->caption(), QStringLiteral("cluster 2 from view 3"));
+        QCOMPARE(QImage(folder.filePath(QStringLiteral("bug/shots/view.png"))).size(), window_->observerView()->size());
+        QCOMPARE(QImage(folder.filePath(QStringLiteral("bug/shots/window.png"))).size(), window_->size());
+        const nlohmann::json orbit = readJsonFile(folder.filePath(QStringLiteral("bug/orbit.json")));
+        QCOMPARE(orbit["view_count"].get<size_t>(), size_t(16));
+        QCOMPARE(orbit["settings"]["tests"], nlohmann::json::array({"apex"}));
+        QVERIFY(QFile::exists(folder.filePath(QStringLiteral("bug/eye.csv"))));
+        // A step that cannot be done stops the replay with its number and text.
+        const QString stopped = player.playBlocking(parseReplay(R"([{"caption": ""}, {"pick": 100000}, {"caption": "never"}])", folder.path()));
+        QVERIFY2(stopped.startsWith(QStringLiteral("step 2 {\"pick\":100000}: the mesh has ")), qPrintable(stopped));
+        QCOMPARE(static_cast<ObserverView*>(window_->observerView())->caption(), QString());
+        const QString unshowable = player.playBlocking(parseReplay(R"([{"set": {"distance": 3.14159}}])", folder.path()));
+        QVERIFY2(unshowable.contains(QStringLiteral("distance=3.142, not 3.14159")), qPrintable(unshowable));
+        window_->setSettings(Settings{});
+        window_->waitUntilIdle();
+    }
+
+    void replayExitsNonZeroNamingTheStepItCannotDo() {
+        QString errors;
+        QCOMPARE(replay(QStringLiteral("missing.json"), R"([{"caption": "start"}, {"open": "no-such-mesh.off"}])", &errors), 1);
+        QVERIFY2(errors.contains(QStringLiteral("step 2 {\"open\":\"no-such-mesh.off\"}")) && errors.contains(QStringLiteral("no-such-mesh.off")),
+                 qPrintable(errors));
+        QCOMPARE(replay(QStringLiteral("broken.json"), R"([{"open": "x.off"},])", &errors), 1);
+        QVERIFY2(errors.contains(QStringLiteral("not JSON")), qPrintable(errors));
+        QCOMPARE(replay(QStringLiteral("swap.json"), R"([{"swap": true}])", &errors), 1);
+        QVERIFY2(errors.contains(QStringLiteral("step 1 {\"swap\":true}: nothing is pinned")), qPrintable(errors));
+    }
+
+    // Issue 29, done when: meshoptimizer's pipeline pinned as A, the defaults set back, exported.
+    void pinnedMeshoptAgainstTheDefaultsExportsWhatTheCliCompares() {
+        const QString out = temporary_.filePath(QStringLiteral("meshopt-ab.json"));
+        QString errors;
+        // As a user sets the boxes: the test last, after the clusters are built (and back first).
+        const QByteArray steps = QStringLiteral(R"([{"open": "%1"}, {"set": {"views": 64, "distance": 3}},
+            {"set": {"builder": "meshopt", "cone": "meshopt"}}, {"set": {"test": "apex"}}, {"pin": "A"},
+            {"set": {"test": "octagon"}}, {"set": {"builder": "optimized", "cone": "minimal"}}, {"export": "%2"}])")
+                                     .arg(datasetPath("elephant.off"), out)
+                                     .toUtf8();
+        QCOMPARE(replay(QStringLiteral("meshopt-ab-replay.json"), steps, &errors), 0);
+        const nlohmann::json window = readJsonFile(out);
+        const nlohmann::json cli = cliCompare(QStringLiteral("builder=meshopt,cone=meshopt,test=apex"), QString());
+        QVERIFY(!cli.is_null());
+        for (const char* key : {"efficiency_a", "efficiency_b", "triangles_culled_only_a", "triangles_culled_only_b", "test_a", "test_b"})
+            QVERIFY2(window["diff"][key] == cli["diff"][key], key);
+        QCOMPARE(window["diff"]["test_a"].get<std::string>(), std::string("apex"));
+        QVERIFY(window["diff"]["triangles_culled_only_b"].get<size_t>() > 0);
+        // The whole document, each side as `stats` writes it, but for the measured times.
+        QVERIFY(withoutTimings(window) == withoutTimings(cli));
+    }
+
+    // Issue 29, done when: A pinned after a change of the Test box alone is B itself.
+    void pinAfterATestOnlyChangeExportsNoDifference() {
+        const QString out = temporary_.filePath(QStringLiteral("test-only.json"));
+        const QByteArray steps = QStringLiteral(R"([{"open": "%1"}, {"set": {"views": 64, "distance": 3}}, {"set": {"test": "apex"}},
+            {"pin": "A"}, {"export": "%2"}])")
+                                     .arg(datasetPath("elephant.off"), out)
+                                     .toUtf8();
+        QCOMPARE(replay(QStringLiteral("test-only-replay.json"), steps), 0);
+        const nlohmann::json window = readJsonFile(out);
+        QCOMPARE(window["diff"]["triangles_culled_only_a"].get<size_t>(), size_t(0));
+        QCOMPARE(window["diff"]["triangles_culled_only_b"].get<size_t>(), size_t(0));
+        const nlohmann::json cli = cliCompare(QStringLiteral("test=apex"), QStringLiteral("test=apex"));
+        QVERIFY(!cli.is_null());
+        QCOMPARE(window["diff"]["efficiency_a"].get<double>(), cli["diff"]["efficiency_a"].get<double>());
+        QVERIFY(withoutTimings(window) == withoutTimings(cli));
+    }
+};
+
+int main(int argc, char** argv) {
+    // The GL format VTK needs, before the application object exists.
+    QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
+    QApplication application(argc, argv);
+    ReplayTests tests;
+    return QTest::qExec(&tests, argc, argv);
+}
+
+#include "ReplayTests.moc"

@@ -1,0 +1,87 @@
+#include "ReplayPlayer.h"
+
+#include <QEventLoop>
+#include <QTimer>
+
+#include <memory>
+
+#include "MainWindow.h"
+
+namespace conescope {
+
+ReplayPlayer::ReplayPlayer(MainWindow& window, QObject* parent) : QObject(parent), window_(window) {
+    connect(&window_, &MainWindow::errorShown, this, [this](const QString& message) {
+        if (playing_ && stepError_.isEmpty()) stepError_ = message;
+    });
+}
+
+void ReplayPlayer::play(std::vector<ReplayStep> steps) {
+    steps_ = std::move(steps);
+    next_ = 0;
+    playing_ = true;
+    stepError_.clear();
+    // A mesh given on the command line is shown before the first step.
+    whenIdle([this]() { playNext(); });
+}
+
+QString ReplayPlayer::playBlocking(std::vector<ReplayStep> steps) {
+    QString error;
+    QEventLoop loop;
+    const auto done = connect(this, &ReplayPlayer::finished, &loop, &QEventLoop::quit);
+    const auto broken = connect(this, &ReplayPlayer::failed, &loop, [&](const QString& message) {
+        error = message;
+        loop.quit();
+    });
+    play(std::move(steps));
+    loop.exec();
+    disconnect(done);
+    disconnect(broken);
+    return error;
+}
+
+void ReplayPlayer::playNext() {
+    if (next_ == steps_.size()) {
+        playing_ = false;
+        emit finished();
+        return;
+    }
+    stepError_.clear();
+    try {
+        steps_[next_].play(window_);
+    } catch (const std::exception& error) {
+        fail(error.what());
+        return;
+    }
+    whenIdle([this]() {
+        if (!stepError_.isEmpty()) {
+            fail(stepError_.toStdString());
+            return;
+        }
+        emit stepFinished(steps_[next_].number);
+        ++next_;
+        playNext();
+    });
+}
+
+void ReplayPlayer::whenIdle(const std::function<void()>& then) {
+    // Through the event loop first: queued work (an eye moved while dragging, a render) comes in.
+    QTimer::singleShot(0, this, [this, then]() {
+        if (!window_.session().busy()) {
+            then();
+            return;
+        }
+        // Once, when the session's last background task has ended; then through the loop again.
+        auto connection = std::make_shared<QMetaObject::Connection>();
+        *connection = connect(&window_.session(), &Session::idle, this, [this, then, connection]() {
+            disconnect(*connection);
+            whenIdle(then);
+        });
+    });
+}
+
+void ReplayPlayer::fail(const std::string& what) {
+    playing_ = false;
+    emit failed(QString::fromStdString(describeStep(steps_[next_], what)));
+}
+
+}  // namespace conescope

@@ -1,0 +1,278 @@
+#include "ReplaySteps.h"
+
+#include <fstream>
+#include <iterator>
+
+#include <QDir>
+#include <QFileInfo>
+
+#include <nlohmann/json.hpp>
+
+#include "MainWindow.h"
+#include "SettingsPanel.h"
+#include "core/SettingsSchema.h"
+
+namespace conescope {
+
+namespace {
+
+using Json = nlohmann::json;
+using Action = std::function<void(MainWindow&)>;
+
+// A path from the replay file, relative ones taken from its folder.
+QString pathIn(const QDir& folder, const Json& value) {
+    if (!value.is_string() || value.get<std::string>().empty()) throw std::invalid_argument("takes a file path (a string)");
+    return QDir::cleanPath(folder.absoluteFilePath(QString::fromStdString(value.get<std::string>())));
+}
+
+// Steps that are one action without an argument take `true`.
+void requireTrue(const Json& value) {
+    if (!value.is_boolean() || !value.get<bool>()) throw std::invalid_argument("takes true");
+}
+
+long wholeNumber(const Json& value, long minimum, const char* what) {
+    if (!value.is_number_integer() || value.get<long>() < minimum)
+        throw std::invalid_argument(std::string("takes ") + what + " (a whole number from " + std::to_string(minimum) + ")");
+    return value.get<long>();
+}
+
+// A setting's value as the command line's text: strings as they are, numbers as JSON writes them
+// (shortest form that reads back the same), true/false, and lists joined by commas.
+std::string settingValueText(const Json& value) {
+    if (value.is_string()) return value.get<std::string>();
+    if (value.is_boolean()) return value.get<bool>() ? "true" : "false";
+    if (value.is_number()) return value.dump();
+    if (value.is_array()) {
+        std::string text;
+        for (const Json& item : value) text += (text.empty() ? "" : ",") + settingValueText(item);
+        return text;
+    }
+    throw std::invalid_argument("is not a string, a number, true/false or a list");
+}
+
+// The keys "set" takes: every schema flag but the eye, which has a step of its own.
+std::vector<const SettingField*> settableFields() {
+    std::vector<const SettingField*> fields;
+    for (const SettingField& field : settingFields())
+        if (field.flag != "eye") fields.push_back(&field);
+    return fields;
+}
+
+const SettingField& settableField(const std::string& key) {
+    std::string known;
+    for (const SettingField* field : settableFields()) {
+        if (field->flag == key) return *field;
+        known += (known.empty() ? "" : ", ") + field->flag;
+    }
+    throw std::invalid_argument("unknown key '" + key + "' (expected one of: " + known + ")");
+}
+
+// The settings shown after a step must be the ones the step set: a value the widgets cannot hold
+// (more decimals, outside their range) is named instead of quietly differing.
+void checkShown(MainWindow& window) {
+    const Settings asked = window.session().askedSettings();
+    const Settings shown = window.settingsPanel()->settings();
+    for (const SettingField& field : settingFields())
+        if (settingText(field, shown) != settingText(field, asked))
+            throw std::runtime_error("the window's settings show " + field.flag + "=" + settingText(field, shown) + ", not " +
+                                     settingText(field, asked));
+}
+
+Action parseSet(const Json& value, const QDir& folder) {
+    if (!value.is_object() || value.empty()) throw std::invalid_argument("takes an object of settings, {\"test\": \"apex\", ...}");
+    std::vector<std::pair<const SettingField*, std::string>> changes;
+    Settings check;
+    for (const auto& [key, item] : value.items()) {
+        const SettingField& field = settableField(key);
+        std::string text;
+        try {
+            text = settingValueText(item);
+        } catch (const std::invalid_argument& error) {
+            throw std::invalid_argument("'" + key + "' " + error.what());
+        }
+        if (field.kind == SettingKind::Path && !text.empty()) text = pathIn(folder, item).toStdString();
+        parseSetting(field, text, check);  // a bad value fails when the file is read
+        changes.emplace_back(&field, text);
+    }
+    return [changes](MainWindow& window) {
+        Settings settings = window.session().askedSettings();
+        for (const auto& [field, text] : changes) parseSetting(*field, text, settings);
+        window.session().applySettings(settings);
+        checkShown(window);
+    };
+}
+
+Action parseEye(const Json& value, const QDir&) {
+    if (!value.is_array() || value.size() != 3 || !value[0].is_number() || !value[1].is_number() || !value[2].is_number())
+        throw std::invalid_argument("takes a point [x, y, z]");
+    const glm::dvec3 position(value[0].get<double>(), value[1].get<double>(), value[2].get<double>());
+    return [position](MainWindow& window) { window.session().moveEye(position, -1); };
+}
+
+// Whatever acts on the clusters needs a mesh shown.
+const ClusterSet& shownClusters(MainWindow& window) {
+    if (!window.session().clusters()) throw std::runtime_error("no mesh is shown (open one first)");
+    return *window.session().clusters();
+}
+
+// What Export statistics writes, for the orbit or the current eye (while A is pinned: A against B).
+std::function<Action(const Json&, const QDir&)> exportStep(bool orbit) {
+    return [orbit](const Json& value, const QDir& folder) -> Action {
+        const QString path = pathIn(folder, value);
+        return [path, orbit](MainWindow& window) {
+            shownClusters(window);
+            window.session().startStatisticsExport(path, statisticsFormatOf(path.toStdString()), orbit, [](bool) {});
+        };
+    };
+}
+
+struct StepKind {
+    const char* name;
+    // Checks the step's value (throws std::invalid_argument saying what it takes) and returns the
+    // action that plays it.
+    std::function<Action(const Json& value, const QDir& folder)> parse;
+};
+
+// Every step kind: a new kind is one row here (and a line in the README's table).
+const std::vector<StepKind>& stepKinds() {
+    static const std::vector<StepKind> kinds = {
+        {"open",
+         [](const Json& value, const QDir& folder) -> Action {
+             const QString path = pathIn(folder, value);
+             return [path](MainWindow& window) { window.session().openMesh(path); };
+         }},
+        {"set", parseSet},
+        {"eye", parseEye},
+        {"orbit-view",
+         [](const Json& value, const QDir&) -> Action {
+             const long view = wholeNumber(value, 0, "an orbit view, counted from 0");
+             return [view](MainWindow& window) {
+                 shownClusters(window);
+                 if (!window.session().moveEyeToOrbitView(view))
+                     throw std::runtime_error("the orbit has " + std::to_string(window.session().settings().views) +
+                                              " views (0 to " + std::to_string(window.session().settings().views - 1) + ")");
+             };
+         }},
+        {"pick",
+         [](const Json& value, const QDir&) -> Action {
+             const long cluster = wholeNumber(value, -1, "a cluster id, or -1 for none");
+             return [cluster](MainWindow& window) {
+                 const size_t count = shownClusters(window).partition.clusterCount;
+                 if (cluster >= long(count))
+                     throw std::runtime_error("the mesh has " + std::to_string(count) + " clusters (0 to " + std::to_string(count - 1) + ")");
+                 window.session().pickCluster(int(cluster));
+             };
+         }},
+        {"pin",
+         [](const Json& value, const QDir&) -> Action {
+             if (value != Json("A")) throw std::invalid_argument("takes \"A\"");
+             return [](MainWindow& window) {
+                 shownClusters(window);
+                 window.session().pinAsA();
+             };
+         }},
+        {"swap",
+         [](const Json& value, const QDir&) -> Action {
+             requireTrue(value);
+             return [](MainWindow& window) {
+                 if (!window.session().hasPin()) throw std::runtime_error("nothing is pinned as A to swap with");
+                 window.session().swapAB();
+             };
+         }},
+        {"drop-pin",
+         [](const Json& value, const QDir&) -> Action {
+             requireTrue(value);
+             return [](MainWindow& window) { window.session().clearPin(); };
+         }},
+        {"cancel-next-build",
+         [](const Json& value, const QDir&) -> Action {
+             requireTrue(value);
+             return [](MainWindow& window) { window.session().cancelNextBuild(); };
+         }},
+        {"screenshot",
+         [](const Json& value, const QDir& folder) -> Action {
+             const QString path = pathIn(folder, value);
+             return [path](MainWindow& window) {
+                 if (!window.saveScreenshot(path)) throw std::runtime_error(window.lastError().toStdString());
+             };
+         }},
+        {"window-screenshot",
+         [](const Json& value, const QDir& folder) -> Action {
+             const QString path = pathIn(folder, value);
+             return [path](MainWindow& window) {
+                 if (!window.saveWindowScreenshot(path)) throw std::runtime_error(window.lastError().toStdString());
+             };
+         }},
+        {"export", exportStep(true)},
+        {"export-eye", exportStep(false)},
+        {"caption",
+         [](const Json& value, const QDir&) -> Action {
+             if (!value.is_string()) throw std::invalid_argument("takes a text (a string)");
+             const QString text = QString::fromStdString(value.get<std::string>());
+             return [text](MainWindow& window) { window.showCaption(text); };
+         }},
+    };
+    return kinds;
+}
+
+ReplayStep parseStep(const Json& step, size_t number, const QDir& folder) {
+    ReplayStep parsed;
+    parsed.number = number;
+    parsed.text = step.dump();
+    auto fail = [&parsed](const std::string& what) { return ReplayError(describeStep(parsed, what)); };
+    if (!step.is_object() || step.size() != 1) throw fail("a step is an object with one member, {\"KIND\": VALUE}");
+    const std::string& name = step.begin().key();
+    for (const StepKind& kind : stepKinds()) {
+        if (name != kind.name) continue;
+        try {
+            parsed.play = kind.parse(step.begin().value(), folder);
+        } catch (const std::exception& error) {
+            throw fail("'" + name + "' " + error.what());
+        }
+        return parsed;
+    }
+    std::string known;
+    for (const std::string& kind : replayStepNames()) known += (known.empty() ? "" : ", ") + kind;
+    throw fail("unknown step '" + name + "' (expected one of: " + known + ")");
+}
+
+}  // namespace
+
+std::string describeStep(const ReplayStep& step, const std::string& what) {
+    return "step " + std::to_string(step.number) + " " + step.text + ": " + what;
+}
+
+std::vector<std::string> replayStepNames() {
+    std::vector<std::string> names;
+    for (const StepKind& kind : stepKinds()) names.emplace_back(kind.name);
+    return names;
+}
+
+std::vector<ReplayStep> parseReplay(const std::string& json, const QString& folder) {
+    Json document;
+    try {
+        document = Json::parse(json);
+    } catch (const Json::parse_error& error) {
+        throw ReplayError(std::string("not JSON: ") + error.what());
+    }
+    if (document.is_object() && document.size() == 1 && document.contains("steps")) document = document["steps"];
+    if (!document.is_array()) throw ReplayError("a replay is a list of steps, [{\"open\": \"mesh.off\"}, ...], or {\"steps\": [...]}");
+    const QDir directory(folder);
+    std::vector<ReplayStep> steps;
+    for (size_t i = 0; i < document.size(); ++i) steps.push_back(parseStep(document[i], i + 1, directory));
+    return steps;
+}
+
+std::vector<ReplayStep> readReplayFile(const QString& path) {
+    std::ifstream in(path.toStdString(), std::ios::binary);
+    if (!in) throw ReplayError(path.toStdString() + ": cannot read the replay file");
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (in.bad()) throw ReplayError(path.toStdString() + ": cannot read the replay file");
+    try {
+        return parseReplay(text, QFileInfo(path).absolutePath());
+    } catch (const ReplayError& error) {
+        throw ReplayError(path.toStdString() + ": " + error.what());
+    }
+}
+
+}  // namespace conescope
