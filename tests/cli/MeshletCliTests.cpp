@@ -60,9 +60,15 @@ void expectReferenceNumbers(const std::string& mesh) {
 
 TEST(CliMeshlets, MeshoptimizersOwnLoopGivesTheEngineTestsNumbers) {
     for (const char* name : {"elephant.off", "fandisk.off"}) expectReferenceNumbers(dataset(name));
-    // CGAL's larger meshes when scripts/fetch-datasets.sh has fetched them.
+}
+
+// CGAL's bunny00 and armadillo (about a second each) when scripts/fetch-datasets.sh has fetched
+// them; a fresh clone skips them, visibly. bench/results/meshopt-reference.md has all three.
+TEST(CliMeshlets, MeshoptimizersOwnLoopGivesTheEngineTestsNumbersOnFetchedMeshes) {
+    size_t measured = 0;
     for (const char* name : {"cgal/bunny00.off", "cgal/armadillo.off"})
-        if (std::filesystem::exists(dataset(name))) expectReferenceNumbers(dataset(name));
+        if (std::filesystem::exists(dataset(name))) expectReferenceNumbers(dataset(name)), ++measured;
+    if (measured == 0) GTEST_SKIP() << "datasets/cgal/ holds neither bunny00 nor armadillo (scripts/fetch-datasets.sh)";
 }
 
 TEST(CliMeshlets, PartitionOutputReadsBackInEveryCommand) {
