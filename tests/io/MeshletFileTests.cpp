@@ -64,14 +64,20 @@ void expectSameArrays(const MeshletArrays& a, const MeshletArrays& b) {
     }
 }
 
-// The MeshletError applyMeshlets throws for these arrays on the grid ("" when it throws none).
-std::string applyError(MeshletArrays arrays, Mesh mesh = grid()) {
+// The message of the Error that `run` throws ("" when it throws none).
+template <typename Error, typename Run>
+std::string errorOf(Run run) {
     try {
-        applyMeshlets(mesh, arrays);
-    } catch (const MeshletError& error) {
+        run();
+    } catch (const Error& error) {
         return error.what();
     }
     return "";
+}
+
+// The MeshletError applyMeshlets throws for these arrays on the grid ("" when it throws none).
+std::string applyError(MeshletArrays arrays, Mesh mesh = grid()) {
+    return errorOf<MeshletError>([&] { applyMeshlets(mesh, arrays); });
 }
 
 #define EXPECT_HAS(text, fragment) EXPECT_NE(std::string(text).find(fragment), std::string::npos) << (text)
@@ -193,14 +199,7 @@ TEST(MeshletFiles, ReportsFacesInNoMeshlet) {
 }
 
 TEST(MeshletFiles, ReadErrorsNameThePlace) {
-    auto jsonError = [](const std::string& text) {
-        try {
-            parseMeshletJson(text, "m.json");
-        } catch (const MeshletFileError& error) {
-            return std::string(error.what());
-        }
-        return std::string();
-    };
+    auto jsonError = [](const std::string& text) { return errorOf<MeshletFileError>([&] { parseMeshletJson(text, "m.json"); }); };
     const std::string good = meshletJson(gridMeshlets());
     EXPECT_HAS(jsonError("{\"meshlets\": []}"), "m.json: the document: has no \"format\"");
     EXPECT_HAS(jsonError("[1, 2]"), "is not a JSON object");
@@ -218,14 +217,7 @@ TEST(MeshletFiles, ReadErrorsNameThePlace) {
     testing::replaceFirst(text, "[0,0,6,4]", "[-1,0,6,4]");
     EXPECT_HAS(jsonError(text), "meshlets[0][0]: -1 is outside");
 
-    auto binaryError = [](const std::string& bytes) {
-        try {
-            parseMeshletBinary(bytes, "m.meshlets");
-        } catch (const MeshletFileError& error) {
-            return std::string(error.what());
-        }
-        return std::string();
-    };
+    auto binaryError = [](const std::string& bytes) { return errorOf<MeshletFileError>([&] { parseMeshletBinary(bytes, "m.meshlets"); }); };
     const std::string bytes = meshletBinary(gridMeshlets());
     EXPECT_HAS(binaryError(bytes.substr(0, bytes.size() - 4)), "but the file has 132");
     EXPECT_HAS(binaryError("MESHLETX" + bytes.substr(8)), "not a binary meshlet file");
