@@ -1,7 +1,8 @@
 // An engine's meshlets through the command line: meshoptimizer's own loop (tests/reference, which
 // links only the library) writes its meshlets as a meshlet JSON with bounds and as an OBJ with an
-// object per meshlet; conescope-cli reads both with meshoptimizer's meshlet count and scores the
-// engine tests as that loop does. Bad files are refused before anything is measured.
+// object (and, rewritten, a group) per meshlet; conescope-cli reads each with meshoptimizer's
+// meshlet count and scores the engine tests as that loop does. Bad files are refused before
+// anything is measured.
 #include <filesystem>
 
 #include <gtest/gtest.h>
@@ -15,6 +16,7 @@ namespace {
 
 using clitest::CliRun;
 using clitest::dataset;
+using clitest::readTextFile;
 using clitest::runCli;
 using clitest::runStatsJson;
 using clitest::ScratchDirectory;
@@ -44,12 +46,21 @@ std::map<std::string, double> engineEfficiencies(const std::vector<std::string>&
     return efficiencies;
 }
 
+// The OBJ's `o meshlet<i>` objects as `g` groups, which read the same.
+std::string asGroups(const std::string& obj, const ScratchDirectory& scratch) {
+    std::string text = readTextFile(obj);
+    for (size_t at = text.find("\no "); at != std::string::npos; at = text.find("\no ", at + 1)) text[at + 1] = 'g';
+    EXPECT_NE(text.find("\ng meshlet0\n"), std::string::npos);
+    return scratch.writeFile("m-groups.obj", text);
+}
+
 void expectReferenceNumbers(const std::string& mesh) {
     SCOPED_TRACE(mesh);
     ScratchDirectory scratch;
     const nlohmann::json reference = referenceLoop(mesh, scratch);
     for (const std::vector<std::string>& input :
-         {std::vector<std::string>{mesh, "--cluster-file", scratch.file("m.json")}, std::vector<std::string>{scratch.file("m.obj")}}) {
+         {std::vector<std::string>{mesh, "--cluster-file", scratch.file("m.json")}, std::vector<std::string>{scratch.file("m.obj")},
+          std::vector<std::string>{asGroups(scratch.file("m.obj"), scratch)}}) {
         size_t clusters = 0;
         const std::map<std::string, double> ours = engineEfficiencies(input, clusters);
         EXPECT_EQ(clusters, reference["meshlets"].get<size_t>()) << input.back();
