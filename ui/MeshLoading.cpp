@@ -24,7 +24,7 @@ PreparedMesh loadMesh(const std::string& path, const Settings& settings, const P
     auto mesh = std::make_shared<const Mesh>(std::move(file.mesh));
     const double readSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::string unused;
-    if (meshlets) *meshlets = meshoptStartInBackground(mesh, builderForMesh(settings, *mesh, unused));
+    if (meshlets) *meshlets = meshoptStartInBackground(mesh, builderForMesh(withClusterIds(settings), *mesh, unused));
     PreparedMesh prepared = prepareMesh(mesh, path, settings.fixWinding, progress);
     prepared.prepareSeconds += readSeconds;
     prepared.readerNotes = std::move(file.notes);

@@ -28,6 +28,7 @@ ProgressCallback scaled(const ProgressCallback& progress, double from, double to
 Settings withoutClusterFile(Settings settings) {
     settings.builder = Settings{}.builder;
     settings.clusterFile.clear();
+    settings.clusterIds.reset();
     return settings;
 }
 
@@ -59,11 +60,11 @@ void Session::openMesh(const QString& path) {
             SceneResult result;
             std::shared_ptr<MeshletStream> meshlets;  // built while the mesh is prepared, when the builder starts there
             auto prepared = std::make_shared<PreparedMesh>(loadMesh(file, settings, scaled(progress, 0.0, 0.4), &meshlets));
-            Settings chosen = builderForMesh(settings, prepared->mesh(), result.builderNote);
+            // An id file is read here, so the builder is chosen knowing whether it could be.
+            Settings chosen = builderForMesh(withClusterIds(settings), prepared->mesh(), result.builderNote);
             std::shared_ptr<ClusterSet> clusters;
             try {
-                clusters = std::make_shared<ClusterSet>(
-                    buildClusters(*prepared, withClusterIds(chosen), nullptr, scaled(progress, 0.4, 0.9), meshlets.get()));
+                clusters = std::make_shared<ClusterSet>(buildClusters(*prepared, chosen, nullptr, scaled(progress, 0.4, 0.9), meshlets.get()));
             } catch (const std::exception& error) {
                 if (chosen.builder != Builder::File) throw;
                 // A mesh that cannot be read by the file builder can still be looked at.

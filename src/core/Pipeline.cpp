@@ -243,7 +243,10 @@ Settings exportSettings(const Settings& settings, const std::optional<glm::dvec3
 Settings builderForMesh(const Settings& settings, const Mesh& mesh, std::string& why) {
     Settings result = settings;
     const bool hasIds = mesh.faceArrays.count("cluster_id") > 0;
-    const bool hasClusters = settings.clusterFile.empty() ? meshHasOwnClusters(mesh) : mesh.fileClusters.count(settings.clusterFile) > 0;
+    // An id file travels in the settings (io's withClusterIds), a meshlet file on the mesh.
+    const ClusterIdFile* idFile = settings.clusterIds && settings.clusterIds->path == settings.clusterFile ? settings.clusterIds.get() : nullptr;
+    const bool hasClusters = settings.clusterFile.empty() ? meshHasOwnClusters(mesh)
+                                                          : mesh.fileClusters.count(settings.clusterFile) > 0 || (idFile && idFile->error.empty());
     if (settings.builder != Builder::File && hasIds) {
         result.builder = Builder::File;
         result.clusterFile.clear();
@@ -251,6 +254,7 @@ Settings builderForMesh(const Settings& settings, const Mesh& mesh, std::string&
     } else if (settings.builder == Builder::File && !hasClusters) {
         result.builder = Settings{}.builder;
         why = (settings.clusterFile.empty() ? std::string("the mesh has no cluster_id array or groups and no cluster file is given")
+               : idFile                     ? idFile->error
                                             : settings.clusterFile + " was not read with the mesh") +
               ": clusters from the " + toString(result.builder) + " builder instead of the file builder";
     }

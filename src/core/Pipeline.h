@@ -134,8 +134,10 @@ long viewMissingCluster(const PreparedMesh& prepared, const ClusterSet& clusters
 Settings exportSettings(const Settings& settings, const std::optional<glm::dvec3>& eye);
 
 // The builder a freshly opened mesh is shown with: a mesh that carries a cluster_id array shows its
-// own partition (the file builder), and the file builder without a cluster file falls back to the
-// default builder for a mesh without one. `why` gets a sentence for the user when the builder changed.
+// own partition (the file builder), and the file builder falls back to the default builder for a
+// mesh without groups or ids when no cluster file is given, or when its cluster file was not read
+// (settings.clusterIds for an id file, the mesh's fileClusters for a meshlet file). `why` gets a
+// sentence for the user when the builder changed.
 Settings builderForMesh(const Settings& settings, const Mesh& mesh, std::string& why);
 
 // A sentence for the user when a cluster budget was asked for (--clusters) and the builder that takes

@@ -236,6 +236,12 @@ private slots:
         QCOMPARE(errors.count(), 1);
         QVERIFY(window_->clusters()->builtWith.builder == Builder::File);
         QCOMPARE(window_->clusters()->partition.clusterCount, 5u);
+        // Opened with the id file already set (as --cluster-file does), the mesh keeps the file builder.
+        QVERIFY(window_->openMeshBlocking(datasetPath("torus.off")));
+        QVERIFY(window_->clusters()->builtWith.builder == Builder::File);
+        QCOMPARE(window_->settingsPanel()->builderBox()->currentText(), QStringLiteral("file"));
+        QCOMPARE(window_->clusters()->partition.clusterCount, 5u);
+        QCOMPARE(errors.count(), 1);
         window_->setSettings(Settings{});
         window_->waitUntilIdle();
     }
