@@ -141,40 +141,68 @@ std::string firstFew(const std::vector<uint32_t>& faces) {
     return text;
 }
 
-// Whether the polygon's fan has a triangle with these sorted corners.
-bool inFan(const Mesh& mesh, uint32_t face, const std::array<uint32_t, 3>& key) {
+// How many of the polygon's fan triangles have these sorted corners.
+size_t timesInFan(const Mesh& mesh, uint32_t face, const std::array<uint32_t, 3>& key) {
     const uint32_t* c = mesh.faceBegin(face);
-    for (size_t k = 1; k + 1 < mesh.faceSize(face); ++k)
-        if (sortedCorners(c[0], c[k], c[k + 1]) == key) return true;
-    return false;
+    size_t times = 0;
+    for (size_t k = 1; k + 1 < mesh.faceSize(face); ++k) times += sortedCorners(c[0], c[k], c[k + 1]) == key;
+    return times;
 }
 
-// The face a triangle of mesh vertices a, b, c lands on: an unmatched triangle face with these
-// corners, else a polygon holding all three (one whose fan has the triangle first: a triangle
-// whose corners merged into one vertex lies on any polygon around it). kNone with `taken` set when
-// only a matched triangle face has them.
-uint32_t faceOfTriangle(const Mesh& mesh, const Rows& around, const std::vector<uint32_t>& meshletOfFace,
-                        const std::array<uint32_t, 3>& key, uint32_t& taken) {
-    uint32_t polygon = kNone;
-    bool polygonFans = false;
+using PolygonPieces = std::unordered_map<uint32_t, std::vector<Piece>>;
+
+// Whether the triangle's corners run around the face in the face's own winding.
+bool sameWinding(const Mesh& mesh, uint32_t face, const std::array<uint32_t, 3>& corners) {
+    std::array<size_t, 3> at{};
+    for (int k = 0; k < 3; ++k) at[k] = cornerPosition(mesh, face, corners[k]);
+    return (at[0] < at[1]) + (at[1] < at[2]) + (at[2] < at[0]) == 2;
+}
+
+// How well a polygon holding all three corners suits another triangle with them, higher better:
+// room first (its fan has the triangle more often than it holds it yet; else it holds fewer pieces
+// than it needs, another triangulation; else full), then the same winding. Copies of one triangle
+// (a polygon and its back-to-back twin, polygons sharing corners) so go one to each polygon, each
+// to the polygon facing its way.
+int polygonRoom(const Mesh& mesh, uint32_t face, const std::array<uint32_t, 3>& corners, const std::array<uint32_t, 3>& key,
+                const PolygonPieces& pieces) {
+    const auto found = pieces.find(face);
+    const size_t held = found == pieces.end() ? 0 : found->second.size();
+    const size_t heldKey = found == pieces.end() ? 0 : size_t(std::count_if(found->second.begin(), found->second.end(),
+                                                                             [&](const Piece& p) { return p.corners == key; }));
+    const int room = timesInFan(mesh, face, key) > heldKey ? 3 : held + 2 < mesh.faceSize(face) ? 2 : 1;
+    return 2 * room + sameWinding(mesh, face, corners);
+}
+
+// The face a triangle of mesh vertices (corners, as the meshlet winds them) lands on: an unmatched
+// triangle face with these corners (one wound the same way first), else the polygon holding all
+// three that suits it best (polygonRoom; a triangle whose corners merged into one vertex lies on
+// any polygon around it). kNone with `taken` set when only a matched triangle face has them.
+uint32_t faceOfTriangle(const Mesh& mesh, const Rows& around, const std::vector<uint32_t>& meshletOfFace, const PolygonPieces& pieces,
+                        const std::array<uint32_t, 3>& corners, uint32_t& taken) {
+    const std::array<uint32_t, 3> key = sortedCorners(corners[0], corners[1], corners[2]);
+    uint32_t triangle = kNone, polygon = kNone;
+    int best = 0;
     taken = kNone;
     for (const uint32_t* f = around.begin(key[0]); f != around.end(key[0]); ++f) {
-        const uint32_t* corners = mesh.faceBegin(*f);
+        const uint32_t* c = mesh.faceBegin(*f);
         if (mesh.faceSize(*f) == 3) {
-            if (sortedCorners(corners[0], corners[1], corners[2]) != key) continue;
-            if (meshletOfFace[*f] == kNone) {
+            if (sortedCorners(c[0], c[1], c[2]) != key) continue;
+            if (meshletOfFace[*f] != kNone) {
+                if (taken == kNone) taken = *f;
+            } else if (sameWinding(mesh, *f, corners)) {
                 taken = kNone;  // a duplicate face takes the copy its twin's meshlet did not
                 return *f;
+            } else if (triangle == kNone) {
+                triangle = *f;
             }
-            if (taken == kNone) taken = *f;
-        } else if (!polygonFans && cornerPosition(mesh, *f, key[1]) < mesh.faceSize(*f) &&
+        } else if (triangle == kNone && cornerPosition(mesh, *f, key[1]) < mesh.faceSize(*f) &&
                    cornerPosition(mesh, *f, key[2]) < mesh.faceSize(*f)) {
-            const bool fans = inFan(mesh, *f, key);
-            if (polygon == kNone || fans) polygon = *f, polygonFans = fans;
+            const int its = polygonRoom(mesh, *f, corners, key, pieces);
+            if (its > best) polygon = *f, best = its;
         }
     }
-    if (polygon != kNone) taken = kNone;
-    return polygon;
+    if (triangle != kNone || polygon != kNone) taken = kNone;
+    return triangle != kNone ? triangle : polygon;
 }
 
 // The mesh with the listed polygons replaced by their pieces (in the polygon's winding), each
@@ -222,7 +250,7 @@ AppliedMeshlets applyMeshlets(Mesh& mesh, const MeshletArrays& arrays) {
     auto meshVertex = [&](uint32_t fileVertex) { return mesh.fileVertices.empty() ? fileVertex : mesh.fileVertices[fileVertex]; };
     const Rows around = facesAroundVertices(mesh);
     std::vector<uint32_t> meshletOfFace(mesh.faceCount(), kNone);
-    std::unordered_map<uint32_t, std::vector<Piece>> pieces;  // polygons' triangles
+    PolygonPieces pieces;  // polygons' triangles
     for (uint32_t m = 0; m < arrays.meshlets.size(); ++m) {
         const auto [vertexOffset, triangleOffset, vertexCount, triangleCount] = arrays.meshlets[m];
         for (uint32_t t = 0; t < triangleCount; ++t) {
@@ -231,7 +259,7 @@ AppliedMeshlets applyMeshlets(Mesh& mesh, const MeshletArrays& arrays) {
             for (int k = 0; k < 3; ++k) corners[k] = meshVertex(arrays.vertices[vertexOffset + local[k]]);
             const std::array<uint32_t, 3> key = sortedCorners(corners[0], corners[1], corners[2]);
             uint32_t taken = kNone;
-            const uint32_t f = faceOfTriangle(mesh, around, meshletOfFace, key, taken);
+            const uint32_t f = faceOfTriangle(mesh, around, meshletOfFace, pieces, corners, taken);
             const std::string where = triangleName(m, t) + " (vertices " + std::to_string(key[0]) + ", " + std::to_string(key[1]) + ", " +
                                       std::to_string(key[2]) + " of the mesh)";
             if (taken != kNone)

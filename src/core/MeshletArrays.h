@@ -32,9 +32,9 @@ public:
 };
 
 // Puts the meshlets on `mesh`: each triangle is matched to the face with its three corners (file
-// vertices mapped through mesh.fileVertices; winding ignored); a polygon whose triangles lie in
-// different meshlets is cut into those triangles, in its own winding, its face arrays and the other
-// file partitions copied to each piece. Returns the partition with the meshlets' own numbering:
+// vertices mapped through mesh.fileVertices; among faces with the same corners, one wound the same
+// way first); a polygon whose triangles lie in different meshlets is cut into those triangles, in
+// its own winding, its face arrays and the other file partitions copied to each piece. Returns the partition with the meshlets' own numbering:
 // cluster m is meshlet m. Every face must be in exactly one meshlet. Throws MeshletError.
 struct AppliedMeshlets {
     FileClusters clusters;

@@ -141,6 +141,32 @@ TEST(MeshletFiles, DuplicateFacesAndPolygonsThatRepeatAVertexMatch) {
     EXPECT_EQ(cut.clusters.clusterOfFace, (std::vector<uint32_t>{0, 0, 1}));
 }
 
+TEST(MeshletFiles, BackToBackTwinsTakeTheMeshletWoundTheirWay) {
+    // A quad and its reversed twin (a double-sided wall, as furniture models have): the meshlet
+    // holding the twin's fan comes first; each face takes the meshlet wound as it is, whole.
+    Mesh quads;
+    quads.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+    quads.addFace({0, 1, 2, 3});
+    quads.addFace({0, 3, 2, 1});
+    MeshletArrays arrays;
+    arrays.vertices = {0, 3, 2, 1, 0, 1, 2, 3};
+    arrays.triangles = {0, 1, 2, 0, 2, 3, 0, 0, 0, 1, 2, 0, 2, 3, 0, 0};
+    arrays.meshlets = {{0, 0, 4, 2}, {4, 8, 4, 2}};
+    AppliedMeshlets applied = applyMeshlets(quads, arrays);
+    EXPECT_EQ(applied.clusters.clusterOfFace, (std::vector<uint32_t>{1, 0}));
+    EXPECT_EQ(applied.cutPolygons, 0u);
+    // Two triangles back to back, likewise.
+    Mesh triangles;
+    triangles.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}};
+    triangles.addFace({0, 1, 2});
+    triangles.addFace({0, 2, 1});
+    arrays.vertices = {0, 2, 1, 0, 1, 2};
+    arrays.triangles = {0, 1, 2, 0, 0, 1, 2, 0};
+    arrays.meshlets = {{0, 0, 3, 1}, {3, 4, 3, 1}};
+    applied = applyMeshlets(triangles, arrays);
+    EXPECT_EQ(applied.clusters.clusterOfFace, (std::vector<uint32_t>{1, 0}));
+}
+
 TEST(MeshletFiles, RefusesOffsetsAndCountsOutOfRange) {
     MeshletArrays arrays = gridMeshlets();
     arrays.meshlets[1][0] = 7;  // vertex_offset 7 + 6 runs past the 12 entries
