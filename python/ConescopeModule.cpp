@@ -21,6 +21,7 @@
 #include "io/BatchTable.h"
 #include "io/ClusterIdFile.h"
 #include "io/ComparisonIO.h"
+#include "io/ClusterFiles.h"
 #include "io/MeshReader.h"
 #include "io/StatisticsIO.h"
 
@@ -112,9 +113,14 @@ Mesh meshFromPython(py::array_t<float, py::array::c_style | py::array::forcecast
     return meshFromArrays(std::move(mesh), name).mesh;
 }
 
-// A mesh read as the CLI reads it; the reader's notes go to `notes`.
-Mesh readMeshForPython(const std::string& path, std::vector<std::string>& notes) {
-    MeshFile file = withoutGil([&] { return readMeshFile(path, keepGoing); });
+// A mesh read as the CLI reads it, with the file builder's cluster files of `settings`; the reader's
+// notes go to `notes`.
+Mesh readMeshForPython(const std::string& path, std::vector<std::string>& notes, const std::vector<Settings>& settings) {
+    MeshFile file = withoutGil([&] {
+        MeshFile read = readMeshFile(path, keepGoing);
+        for (const Settings& each : settings) readClusterFileOf(read.mesh, each, read.notes);
+        return read;
+    });
     notes.insert(notes.end(), file.notes.begin(), file.notes.end());
     return std::move(file.mesh);
 }
@@ -212,7 +218,7 @@ PYBIND11_MODULE(_conescope, m) {
     m.def("check_compare", [](const std::string& text, const SettingPairs& pairs) { parseConfiguration(text, settingsFrom(pairs)); });
     m.def("stats", [](const std::string& path, const SettingPairs& pairs, bool perView, bool perCluster) {
         std::vector<std::string> notes;
-        const Mesh mesh = readMeshForPython(path, notes);
+        const Mesh mesh = readMeshForPython(path, notes, {settingsFrom(pairs)});
         return statsDocument(mesh, std::filesystem::path(path).filename().string(), pairs, perView, perCluster, notes);
     });
     m.def("stats_arrays", [](py::array_t<float, py::array::c_style | py::array::forcecast> vertices, const py::object& faces,
@@ -222,7 +228,7 @@ PYBIND11_MODULE(_conescope, m) {
     });
     m.def("clusters", [](const std::string& path, const SettingPairs& pairs, const std::string& sort, size_t top) {
         std::vector<std::string> notes;
-        const Mesh mesh = readMeshForPython(path, notes);
+        const Mesh mesh = readMeshForPython(path, notes, {settingsFrom(pairs)});
         return clustersDocument(mesh, std::filesystem::path(path).filename().string(), pairs, sort, top, notes);
     });
     m.def("clusters_arrays", [](py::array_t<float, py::array::c_style | py::array::forcecast> vertices, const py::object& faces,
@@ -233,7 +239,8 @@ PYBIND11_MODULE(_conescope, m) {
     m.def("compare", [](const std::string& path, const std::string& a, const std::string& b, const SettingPairs& pairs,
                         bool perView, bool perCluster) {
         std::vector<std::string> notes;
-        const Mesh mesh = readMeshForPython(path, notes);
+        const Settings base = settingsFrom(pairs);
+        const Mesh mesh = readMeshForPython(path, notes, {parseConfiguration(a, base), parseConfiguration(b, base)});
         return compareDocument(mesh, path, a, b, pairs, perView, perCluster, notes);
     });
     m.def("compare_arrays", [](py::array_t<float, py::array::c_style | py::array::forcecast> vertices, const py::object& faces,

@@ -9,6 +9,9 @@
 #                   loop) and preparation time for a >= 1M-triangle mesh
 #   prepare.txt     preparation against meshoptimizer's at 2k to 3.3M triangles (median of 5 runs, each
 #                   effort level, peak memory, expected cull rate) and the whole stats run at 5k, 52k and 1.2M
+#   records.md      bytes per cluster and culling per byte of every test's record (and records.csv)
+#   meshopt-reference.md  the engine tests against meshoptimizer's own loop on its meshlet files
+#                   (scripts/bench-meshopt-reference.sh)
 #   small-meshes.md the default's preparation and whole run against meshoptimizer's on 15 meshes of 2k
 #                   to 20k triangles, three rounds (scripts/bench-small-meshes.sh; not in the quick run)
 #
@@ -31,7 +34,8 @@ done
 "$root/scripts/fetch-datasets.sh"
 
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DCONESCOPE_BUILD_GUI=OFF >/dev/null
-cmake --build "$build" -j"$(nproc)" --target conescope-bench-report conescope-bench-plot conescope-bench-speed conescope-bench-prepare
+cmake --build "$build" -j"$(nproc)" --target conescope-bench-report conescope-bench-plot conescope-bench-speed conescope-bench-prepare \
+  conescope-bench-records
 bin="$build/bench"
 mkdir -p "$output"
 
@@ -85,6 +89,13 @@ echo "bench-report: preparation and small meshes took $(( $(date +%s) - start ))
   --jobs "$(nproc)" "${report_flags[@]}")
 echo "bench-report: report took $(( $(date +%s) - start )) s" >&2
 
+# Bytes per cluster and culling per byte of every test's record; the quick run on one mesh.
+records_meshes=datasets/cgal
+[[ $quick -eq 1 ]] && records_meshes=datasets/cgal/camel.off
+(cd "$root" && "$bin/conescope-bench-records" --meshes "$records_meshes" --output "$(realpath --relative-to="$root" "$output")")
+echo "bench-report: records took $(( $(date +%s) - start )) s" >&2
+CONESCOPE_BENCH_BUILD_DIR="$build" CONESCOPE_BENCH_OUTPUT="$output" "$root/scripts/bench-meshopt-reference.sh" >/dev/null
+
 xvfb-run -a -s "-screen 0 1600x1000x24" "$bin/conescope-bench-plot" "$output/summary.csv" "$output/efficiency.png"
 
 {
@@ -93,4 +104,4 @@ xvfb-run -a -s "-screen 0 1600x1000x24" "$bin/conescope-bench-plot" "$output/sum
 } > "$output/speed.txt" 2>&1
 echo "bench-report: cull speed took $(( $(date +%s) - start )) s" >&2
 
-echo "bench-report: wrote $output/{report.csv,report.md,summary.csv,efficiency.png,speed.txt,prepare.txt} in $(( $(date +%s) - start )) s" >&2
+echo "bench-report: wrote $output/{report.csv,report.md,summary.csv,efficiency.png,speed.txt,prepare.txt,records.md,meshopt-reference.md} in $(( $(date +%s) - start )) s" >&2

@@ -28,11 +28,12 @@ for target in "${targets[@]}"; do
   case $target in
     fuzz_off_parser) find "$root/datasets" "$root/tests/data" -name '*.off' -size -200k -exec cp {} "$corpus/" \; ;;
     fuzz_mesh_readers)
-      # The first byte picks the reader: 0 off, 1 ply, 2 obj, 3 stl, 4 vtp, 5 vtk, 6 gltf, 7 glb.
+      # The first byte picks the reader: 0 off, 1 ply, 2 obj, 3 stl, 4 vtp, 5 vtk, 6 gltf, 7 glb,
+      # 8 and 9 meshlet files (JSON, binary) on the target's own grid (tests/data/meshlets).
       # (A .gltf seed whose buffer is a file beside it has no such file in the fuzzer's folder; the
       # embedded ones and the .glb carry their data.)
       index=0
-      for extension in off ply obj stl vtp vtk gltf glb; do
+      for extension in off ply obj stl vtp vtk gltf glb json meshlets; do
         while IFS= read -r -d '' file; do
           { printf "\\x$(printf %02x $index)"; cat "$file"; } > "$corpus/$(basename "$file").seed"
         done < <(find "$root/datasets" "$root/tests/data" -name "*.$extension" -size -200k -print0)

@@ -5,6 +5,7 @@
 
 #include <QStringList>
 
+#include "core/RecordTests.h"
 #include "core/Settings.h"
 
 namespace conescope {
@@ -126,8 +127,12 @@ QString testSection(const ClusterReportInput& input) {
     if (input.test == CullTest::Oracle) {
         table.row(QStringLiteral("rule"), QStringLiteral("culled iff every face is back-facing: n&middot;(e &minus; q) &lt; 0 "
                                                          "at every vertex q (exact, per face)"));
-    } else if (!why.cullable) {
-        table.row(QStringLiteral("rule"), QStringLiteral("no cone: the cluster is never culled"));
+    } else if (readsOwnRecord(input.test)) {
+        table.row(QStringLiteral("rule"), QString::fromStdString(ownRecordRule(input.test)))
+            .row(QStringLiteral("record"), QStringLiteral("%1 bytes a cluster%2")
+                                               .arg(recordBytes(input.test))
+                                               .arg(reproducesEngineRecord(input.test) ? QStringLiteral(", as the engine ships it (not conservative)")
+                                                                                       : QString()));
     } else if (input.test == CullTest::Octagon) {
         octagonRows(table, why, eye.orthographic);
         steps = edgeTable(why);
@@ -186,8 +191,7 @@ QString testSection(const ClusterReportInput& input) {
                     .row(QStringLiteral("v&middot;V1"), number(why.viewDotAxis))
                     .row(QStringLiteral("sin &alpha; (+ margin)"), number(why.threshold));
                 break;
-            case CullTest::Oracle:
-            case CullTest::Octagon: break;
+            default: break;  // the oracle, the octagon and the records of their own are above
         }
     }
     if (!std::isnan(why.margin))
@@ -196,6 +200,8 @@ QString testSection(const ClusterReportInput& input) {
                   why.margin > 0.0 ? QStringLiteral("passes by %1").arg(number(why.margin))
                                    : QStringLiteral("<b>short by %1</b>").arg(number(-why.margin)));
     table.row(QStringLiteral("<b>decision</b>"), why.culled ? QStringLiteral("<b>culled</b>") : QStringLiteral("<b>drawn</b>"));
+    if (why.culled && why.frontFaces > 0)
+        table.row(QStringLiteral("<b>false cull</b>"), QStringLiteral("<b>%1 visible faces culled: the record culls too much here</b>").arg(why.frontFaces));
     if (why.culled != why.exactCulled)
         table.row(QStringLiteral("float kernel"), QStringLiteral("drawn: the exact test would cull it, but it lies within the batched "
                                                                  "kernel's rounding slack of the threshold"));
@@ -243,6 +249,8 @@ QString pinnedClusterHtml(const ClusterReportInput& a) {
         table.row(QStringLiteral("margin"), why.margin > 0.0 ? QStringLiteral("passes by %1").arg(number(why.margin))
                                                              : QStringLiteral("short by %1").arg(number(-why.margin)));
     table.row(QStringLiteral("<b>decision</b>"), why.culled ? QStringLiteral("<b>culled</b>") : QStringLiteral("<b>drawn</b>"));
+    if (why.culled && why.frontFaces > 0)
+        table.row(QStringLiteral("<b>false cull</b>"), QStringLiteral("<b>%1 visible faces culled: the record culls too much here</b>").arg(why.frontFaces));
     return table.html();
 }
 

@@ -226,7 +226,9 @@ int runHeadlessScreenshot(const AppOptions& options) {
         const QString meshPath = options.mesh.isEmpty() ? defaultMeshPath() : options.mesh;
         if (meshPath.isEmpty()) throw std::runtime_error("no mesh given and no bundled mesh found");
         const Settings settings = withClusterIds(options.settings);
-        const PreparedMesh prepared = loadMesh(meshPath.toStdString(), settings);
+        PreparedMesh prepared = loadMesh(meshPath.toStdString(), settings);
+        // A cluster file that could not be used is an error here, not a reason to show other clusters.
+        if (needsClusterFile(prepared, settings)) prepared = reprepareMesh(prepared, settings);
         const ClusterSet clusters = buildClusters(prepared, settings);
         ClusterScene scene(prepared.mesh(), prepared.world, prepared.faces, clusters.partition, clusters.bounds);
         if (options.pick && *options.pick >= clusters.partition.clusterCount)

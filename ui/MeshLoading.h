@@ -12,12 +12,20 @@
 
 namespace conescope {
 
-// Reads the file (readMeshFile, throws MeshReadError) and prepares it with settings.fixWinding; the
-// reader's notes are kept. With `meshlets`, when the builder the mesh will be shown with
+// Reads the file (readMeshFile, throws MeshReadError) with the file builder's cluster file (a
+// cluster file that cannot be used leaves its error in the notes) and prepares it with
+// settings.fixWinding; the reader's notes are kept. With `meshlets`, when the builder the mesh will be shown with
 // (builderForMesh) starts from meshoptimizer's meshlets, those are started on another core before
 // the mesh is prepared, for buildClusters.
 PreparedMesh loadMesh(const std::string& path, const Settings& settings, const ProgressCallback& progress = {},
                       std::shared_ptr<MeshletStream>* meshlets = nullptr);
+
+// Whether `settings` use a meshlet file the prepared mesh was not read with.
+bool needsClusterFile(const PreparedMesh& prepared, const Settings& settings);
+
+// The mesh prepared again for `settings`: the winding repair asked for, and a cluster file it was
+// not read with read onto it. Throws ClusterFileError (io/ClusterFiles.h) for a file it cannot use.
+PreparedMesh reprepareMesh(const PreparedMesh& prepared, const Settings& settings, const ProgressCallback& progress = {});
 
 // What the user should know about a loaded mesh, in one line for the status bar: the reader's notes
 // and the winding warning (with how to repair it, or what was repaired), as sentences. Empty when

@@ -1,5 +1,7 @@
 #include "SceneBinding.h"
 
+#include "core/RecordTests.h"
+
 #include "core/CullMap.h"
 
 namespace conescope {
@@ -23,9 +25,12 @@ void showMeasurement(ClusterScene& scene, const PreparedMesh& prepared, const Cl
     const size_t count = clusters.bounds.count();
     std::vector<double> cull(count);
     std::vector<uint8_t> cullable(count);
+    const CullingInput input = cullingInput(prepared, clusters);
+    const CullTest test = measurement.statistics.test;
     for (uint32_t c = 0; c < count; ++c) {
-        cull[c] = cullFraction(clusters.cullMap, c, measurement.statistics.test);
-        cullable[c] = clusters.bounds.cones[c].cullable || measurement.statistics.test == CullTest::Oracle;
+        cull[c] = testCullFraction(clusters.cullMap, input, c, test);
+        // A record of its own is cullable when it culls from somewhere, whatever the displayed cone says.
+        cullable[c] = readsOwnRecord(test) ? cull[c] > 0.0 : clusters.bounds.cones[c].cullable || test == CullTest::Oracle;
     }
     scene.setClusterFractions(cull, clusters.cullMap.oracleFraction, cullable);
 }

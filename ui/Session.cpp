@@ -28,6 +28,7 @@ ProgressCallback scaled(const ProgressCallback& progress, double from, double to
 Settings withoutClusterFile(Settings settings) {
     settings.builder = Settings{}.builder;
     settings.clusterFile.clear();
+    settings.clusterIds.reset();
     return settings;
 }
 
@@ -59,11 +60,11 @@ void Session::openMesh(const QString& path) {
             SceneResult result;
             std::shared_ptr<MeshletStream> meshlets;  // built while the mesh is prepared, when the builder starts there
             auto prepared = std::make_shared<PreparedMesh>(loadMesh(file, settings, scaled(progress, 0.0, 0.4), &meshlets));
-            Settings chosen = builderForMesh(settings, prepared->mesh(), result.builderNote);
+            // An id file is read here, so the builder is chosen knowing whether it could be.
+            Settings chosen = builderForMesh(withClusterIds(settings), prepared->mesh(), result.builderNote);
             std::shared_ptr<ClusterSet> clusters;
             try {
-                clusters = std::make_shared<ClusterSet>(
-                    buildClusters(*prepared, withClusterIds(chosen), nullptr, scaled(progress, 0.4, 0.9), meshlets.get()));
+                clusters = std::make_shared<ClusterSet>(buildClusters(*prepared, chosen, nullptr, scaled(progress, 0.4, 0.9), meshlets.get()));
             } catch (const std::exception& error) {
                 if (chosen.builder != Builder::File) throw;
                 // A mesh that cannot be read by the file builder can still be looked at.
@@ -101,8 +102,8 @@ void Session::openMesh(const QString& path) {
 }
 
 bool Session::needsBuild() const {
-    return shown_.clusters &&
-           (shown_.prepared->fixWindingAsked != asked_.fixWinding || boundsChanged(shown_.clusters->builtWith, asked_));
+    return shown_.clusters && (shown_.prepared->fixWindingAsked != asked_.fixWinding || needsClusterFile(*shown_.prepared, asked_) ||
+                               boundsChanged(shown_.clusters->builtWith, asked_));
 }
 
 void Session::applySettings(const Settings& settings) {
@@ -147,16 +148,13 @@ void Session::requestClusters() {
     runner_.cancel(taskgroups::orbit);
     const Snapshot from = shown_;
     const Settings settings = asked_;
-    const bool reprepare = from.prepared->fixWindingAsked != settings.fixWinding;
+    // Another winding repair, or a meshlet file the mesh was not read with (it may cut polygons).
+    const bool reprepare = from.prepared->fixWindingAsked != settings.fixWinding || needsClusterFile(*from.prepared, settings);
     runner_.run<SceneResult>(
         taskgroups::clusters, tr("Building clusters"),
         [from, settings, reprepare](const ProgressCallback& progress) {
             std::shared_ptr<const PreparedMesh> prepared = from.prepared;
-            if (reprepare) {
-                PreparedMesh again = prepareMesh(prepared->original, prepared->path, settings.fixWinding, scaled(progress, 0.0, 0.3));
-                again.readerNotes = prepared->readerNotes;
-                prepared = std::make_shared<PreparedMesh>(std::move(again));
-            }
+            if (reprepare) prepared = std::make_shared<PreparedMesh>(reprepareMesh(*prepared, settings, scaled(progress, 0.0, 0.3)));
             auto clusters = std::make_shared<ClusterSet>(
                 buildClusters(*prepared, withClusterIds(settings), reprepare ? nullptr : from.clusters.get(), scaled(progress, reprepare ? 0.3 : 0.0, 0.9)));
             progress(0.9, "scene");

@@ -80,7 +80,7 @@ SettingsPanel::SettingsPanel(QWidget* parent) : QWidget(parent) {
     clusterCount_->setSpecialValueText(tr("auto (the builder's default)"));
     effort_ = enumBox(allEfforts(), this);
     clusterFile_ = new QLineEdit(this);
-    clusterFile_->setPlaceholderText(tr("the mesh's cluster_id array"));
+    clusterFile_->setPlaceholderText(tr("the mesh's cluster_id array or groups"));
     clusterFile_->setClearButtonEnabled(true);
     browseClusterFile_ = new QPushButton(tr("Browse..."), this);
     normalWeight_ = weightBox(100.0, 0.25, this);
@@ -260,8 +260,9 @@ void SettingsPanel::describeWidgets() {
 }
 
 void SettingsPanel::browseClusterFile() {
-    const QString path = QFileDialog::getOpenFileName(this, tr("Cluster id file"), clusterFile_->text(),
-                                                      tr("Cluster ids (*.txt *.ids);;All files (*)"));
+    const QString path = QFileDialog::getOpenFileName(
+        this, tr("Cluster file"), clusterFile_->text(),
+        tr("Cluster files (*.json *.meshlets *.txt *.ids);;meshoptimizer meshlets (*.json *.meshlets);;Cluster ids (*.txt *.ids);;All files (*)"));
     if (path.isEmpty()) return;
     clusterFile_->setText(path);
     emitChanged();

@@ -1,5 +1,6 @@
 #include "WorstClustersView.h"
 
+#include <QColor>
 #include <QHeaderView>
 
 namespace conescope {
@@ -44,6 +45,10 @@ const ColumnSpec columns[] = {
      [](const ClusterStatistics& c) { return c.cullFraction; }},
     {"oracle", "Share of view directions from which every face faces away: the most any test could reach", 3,
      [](const ClusterStatistics& c) { return c.oracleFraction; }},
+    {"false culls", "Orbit views from which the test culled it while it held a visible face: only an engine's own record does", -1,
+     [](const ClusterStatistics& c) { return double(c.falseCulls); }},
+    {"quant loss", "Back-facing triangles the quantised record drew and its float original culls, over the orbit", -1,
+     [](const ClusterStatistics& c) { return double(c.quantisationLossTriangles); }},
 };
 
 }  // namespace
@@ -72,8 +77,10 @@ void WorstClustersView::showOrbit(const CullTestStatistics* orbit) {
     const void* rows = orbit ? static_cast<const void*>(orbit->clusters.data()) : nullptr;
     if (rows == shownRows_ && (!orbit || size_t(rowCount()) == orbit->clusters.size())) return;
     shownRows_ = rows;
-    const int sortColumn = horizontalHeader()->sortIndicatorSection();
-    const Qt::SortOrder order = horizontalHeader()->sortIndicatorOrder();
+    int sortColumn = horizontalHeader()->sortIndicatorSection();
+    Qt::SortOrder order = horizontalHeader()->sortIndicatorOrder();
+    // An engine's record that culls visible faces: those clusters first, they are its bug.
+    if (orbit && orbit->falseCulls > 0) sortColumn = int(std::size(columns)) - 2, order = Qt::DescendingOrder;
     setSortingEnabled(false);
     clearContents();
     setRowCount(orbit ? int(orbit->clusters.size()) : 0);
@@ -81,11 +88,17 @@ void WorstClustersView::showOrbit(const CullTestStatistics* orbit) {
         int row = 0;
         for (const ClusterStatistics& cluster : orbit->clusters) {
             for (int k = 0; k < columnCount(); ++k) setItem(row, k, new NumberItem(columns[k].value(cluster), columns[k].decimals));
+            if (cluster.falseCulls > 0) markFalseCulls(row);
             ++row;
         }
     }
     setSortingEnabled(true);
     sortByColumn(sortColumn, order);
+}
+
+void WorstClustersView::markFalseCulls(int row) {
+    // A false cull is an engine bug (a visible face culled): the row stands out.
+    for (int k = 0; k < columnCount(); ++k) item(row, k)->setForeground(QColor(200, 0, 0));
 }
 
 int WorstClustersView::clusterAt(int row) const {

@@ -25,6 +25,7 @@ signals:
     void clusterChosen(int cluster);
 
 private:
+    void markFalseCulls(int row);
     const void* shownRows_ = nullptr;  // the orbit statistics shown, to skip rebuilding the same rows
 };
 

@@ -9,6 +9,7 @@
 #include "core/Comparison.h"
 #include "io/ClusterIdFile.h"
 #include "io/ComparisonIO.h"
+#include "io/ClusterFiles.h"
 #include "io/MeshReader.h"
 #include "io/StatisticsIO.h"
 
@@ -62,7 +63,10 @@ BatchRow runBatchJob(const BatchConfig& config, const BatchJob& job, const std::
     const auto start = std::chrono::steady_clock::now();
     BatchRow row;
     try {
-        const MeshFile file = readMeshFile(job.path);
+        MeshFile file = readMeshFile(job.path);
+        // The file builder's cluster files, on this mesh (a meshlet file may cut its polygons).
+        readClusterFileOf(file.mesh, config.settings, file.notes);
+        if (!config.compare.empty()) readClusterFileOf(file.mesh, parseConfiguration(config.compare, config.settings), file.notes);
         if (testFault) testFault();
         if (config.compare.empty())
             runStatsJob(config, job, file.mesh, row);

@@ -8,6 +8,7 @@
 
 #include "cli/MeshRuns.h"
 #include "cli/OutputFiles.h"
+#include "io/ClusterFiles.h"
 #include "io/MeshReader.h"
 
 namespace conescope::cli {
@@ -36,9 +37,13 @@ void warn(const std::string& message) { std::cerr << "conescope-cli: warning: " 
 
 // The mesh, with what its reader noticed (skipped points and lines, a converted encoding) on stderr
 // even when quiet: it says what the numbers are about.
-Mesh readMeshNoting(const std::string& path, bool quiet) {
+Mesh readMeshNoting(const std::string& path, bool quiet, const std::vector<Settings>& clusterFilesOf) {
     note(quiet, "reading " + path);
     MeshFile file = readMeshFile(path, stderrProgress(quiet));
+    for (const Settings& settings : clusterFilesOf) {
+        if (settings.builder == Builder::File && !settings.clusterFile.empty()) note(quiet, "reading " + settings.clusterFile);
+        readClusterFileOf(file.mesh, settings, file.notes);
+    }
     for (const std::string& readerNote : file.notes) note(false, fileName(path) + ": " + readerNote);
     return std::move(file.mesh);
 }

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "core/Pipeline.h"
 #include "core/Progress.h"
@@ -15,8 +16,9 @@ void note(bool quiet, const std::string& message);
 // Warnings are for every run, --quiet or not: they say the numbers on stdout may be wrong.
 void warn(const std::string& message);
 std::string fileName(const std::string& path);
-// The mesh, with what its reader noticed on stderr even when quiet.
-Mesh readMeshNoting(const std::string& path, bool quiet);
+// The mesh, with what its reader noticed on stderr even when quiet, and the cluster files of the
+// file builder in `clusterFilesOf` read onto it (io/ClusterFiles.h).
+Mesh readMeshNoting(const std::string& path, bool quiet, const std::vector<Settings>& clusterFilesOf = {});
 // Inconsistent or inside-out winding makes every number after it wrong without looking wrong.
 void warnAboutWinding(const RunStatistics& run, bool quiet);
 // Warns, even when quiet, when a cluster budget was asked for and another count made; `which`

@@ -12,6 +12,7 @@
 #include "core/ClusterRanking.h"
 #include "core/MeshChecks.h"
 #include "core/Pipeline.h"
+#include "io/ClusterFiles.h"
 #include "io/ClusterIdFile.h"
 #include "io/MeshReader.h"
 #include "io/MeshWriter.h"
@@ -48,7 +49,7 @@ nlohmann::json meshSummary(const std::string& path, const Mesh& mesh) {
 
 void runStats(const StatsOptions& options) {
     const Settings settings = withClusterIds(options.run.toSettings());
-    const Mesh mesh = readMeshNoting(options.mesh, options.quiet);
+    const Mesh mesh = readMeshNoting(options.mesh, options.quiet, {settings});
     const RunStatistics run = runStatistics(mesh, settings, fileName(options.mesh), stderrProgress(options.quiet));
     warnAboutWinding(run, options.quiet);
     warnAboutBudget(run);
@@ -74,7 +75,7 @@ void runStats(const StatsOptions& options) {
 void runClusters(const ClustersOptions& options) {
     const Settings settings = clusterTableSettings(withClusterIds(options.run.toSettings()));
     const ClusterSortKey key = parseClusterSortKey(options.sort);
-    const Mesh mesh = readMeshNoting(options.mesh, options.quiet);
+    const Mesh mesh = readMeshNoting(options.mesh, options.quiet, {settings});
     const RunStatistics run = runStatistics(mesh, settings, fileName(options.mesh), stderrProgress(options.quiet));
     warnAboutWinding(run, options.quiet);
     warnAboutBudget(run);
@@ -110,13 +111,11 @@ void runCheck(const CheckOptions& options) {
 
 void runPartition(const PartitionOptions& options) {
     const Settings settings = withClusterIds(options.run.toSettings());
-    const Mesh mesh = readMeshNoting(options.mesh, options.quiet);
+    const Mesh mesh = readMeshNoting(options.mesh, options.quiet, {settings});
     note(options.quiet, "building clusters (" + toString(settings.builder) + ")");
     const Partition partition = buildPartition(mesh, computeFaceGeometry(mesh), settings, stderrProgress(options.quiet));
-    const std::vector<double> ids(partition.clusterOfFace.begin(), partition.clusterOfFace.end());
-    replaceFileAtomically(options.output, [&](const std::string& temporary) {
-        writePolyData(mesh, temporary, {{"cluster_id", ids}});
-    });
+    // By the output's extension: a mesh with cluster_id, meshlet arrays, OBJ groups, glTF primitives or ids.
+    replaceFileAtomically(options.output, [&](const std::string& temporary) { writePartitionFile(mesh, partition, temporary); });
     note(options.quiet, "wrote " + options.output + ": " + std::to_string(mesh.faceCount()) + " faces in " +
                             std::to_string(partition.clusterCount) + " clusters");
 }

@@ -16,7 +16,7 @@ void runCompare(const CompareOptions& options) {
     const Settings settingsA = withClusterIds(parseConfiguration(options.a, base));
     const Settings settingsB = withClusterIds(parseConfiguration(options.b, base));
     const std::string format = outputFormat(options.format, options.output, "json");
-    const Mesh mesh = readMeshNoting(options.mesh, options.quiet);
+    const Mesh mesh = readMeshNoting(options.mesh, options.quiet, {settingsA, settingsB});
     const ProgressCallback progress = stderrProgress(options.quiet);
     const ComparedRuns runs = compareMesh(mesh, options.mesh, settingsA, settingsB, base, progress, [&](char side) {
         const Settings& settings = side == 'A' ? settingsA : settingsB;

@@ -126,12 +126,12 @@ int main(int argc, char** argv) {
 
     PartitionOptions partition;
     CLI::App* partitionCommand =
-        app.add_subcommand("partition", "Write the mesh with a per-face cluster_id array (read back by --builder file)");
+        app.add_subcommand("partition", "Write the partition: a mesh with cluster_id, meshoptimizer's meshlet arrays, OBJ groups, glTF primitives or ids (read back by --builder file)");
     partitionCommand->add_option("mesh", partition.mesh, meshFileHelp)->required();
     addBuilderOptions(*partitionCommand, partition.run);
-    partitionCommand->add_option("-o,--output", partition.output, "Output mesh (.vtp or .vtk keep the cluster_id array)")
+    partitionCommand->add_option("-o,--output", partition.output, "Output by extension: .json or .meshlets (meshoptimizer's meshlet arrays and bounds), .obj (an object per cluster), .gltf (a primitive per cluster), .txt (ids), .vtp or .vtk (the mesh with cluster_id)")
         ->required()
-        ->check(meshOutputValidator({".vtp", ".vtk"}));
+        ->check(meshOutputValidator({".json", ".meshlets", ".obj", ".gltf", ".txt", ".vtp", ".vtk"}));
     partitionCommand->add_flag("-q,--quiet", partition.quiet, "No progress messages on stderr");
 
     BatchOptions batch;

@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include "FileBuilder.h"
+
 namespace conescope {
 
 namespace {
@@ -9,7 +11,7 @@ namespace {
 Partition fromClusterFile(const Mesh& mesh, const Settings& settings) {
     const ClusterIdFile* file = settings.clusterIds.get();
     if (!file || file->path != settings.clusterFile)
-        throw std::logic_error(settings.clusterFile + ": cluster id file not read (io/ClusterIdFile.h: withClusterIds)");
+        throw std::logic_error(settings.clusterFile + ": cluster file not read (io: withClusterIds for ids, readClusterFileOf for meshlets)");
     if (!file->error.empty()) throw std::runtime_error(file->error);
     return partitionFromIds(file->ids, mesh.faceCount(), settings.clusterFile);
 }
@@ -34,11 +36,10 @@ Partition buildPartition(const Mesh& mesh, const FaceGeometry& faces, const Sett
         case Builder::Optimized: return buildOptimizedClusters(mesh, faces, settings.limits, settings.clusterCount, progress, settings.effort,
                                                                  meshlets, partDone);
         case Builder::File: {
+            // A meshlet file read with the mesh, an id file read into the settings, or the mesh's own.
+            if (const FileClusters* meshlets = meshletClusters(mesh, settings.clusterFile)) return {meshlets->clusterOfFace, meshlets->clusterCount};
             if (!settings.clusterFile.empty()) return fromClusterFile(mesh, settings);
-            auto ids = mesh.faceArrays.find("cluster_id");
-            if (ids == mesh.faceArrays.end())
-                throw std::runtime_error("the file builder needs a per-face 'cluster_id' array in the mesh or a cluster file");
-            return partitionFromIds(ids->second, mesh.faceCount(), "cluster_id array");
+            return ownClusters(mesh);
         }
     }
     throw std::invalid_argument("unknown builder");

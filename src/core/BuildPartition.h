@@ -16,8 +16,9 @@ namespace conescope {
 // `progress` (stage "clusters") and can be cancelled there; the others report nothing.
 // `meshlets`: meshoptimizer's meshlets when startsFromMeshoptMeshlets(settings), if already started.
 // `partDone`: the optimized builder's parts as they are made (ClusterOptimizer.h); the other
-// builders do not call it. The file builder takes the mesh's cluster_id array, or the ids of
-// settings.clusterFile as io read them into settings.clusterIds (core reads no file).
+// builders do not call it. The file builder takes a meshlet file's partition read with the mesh
+// (FileBuilder.h), the ids of settings.clusterFile as io read them into settings.clusterIds (core
+// reads no file), or the mesh's cluster_id array, else its groups.
 Partition buildPartition(const Mesh& mesh, const FaceGeometry& faces, const Settings& settings,
                          const ProgressCallback& progress = {}, MeshletStream* meshlets = nullptr,
                          const PartClusters& partDone = {});

@@ -10,6 +10,7 @@
 #include <glm/glm.hpp>
 
 #include "Cones.h"
+#include "EngineRecords.h"
 #include "Mesh.h"
 #include "OctagonCones.h"
 #include "Partition.h"
@@ -37,6 +38,9 @@ struct ClusterBounds {
     // The share of view directions from which every face faces away (normalsCullShare), found from
     // the octagon's hull: the oracle's share in the cull map.
     std::vector<double> normalsShares;
+    // The engine tests' and the compact octagon's records, made on first use (RecordTests.h); copies
+    // of the bounds share them.
+    std::shared_ptr<EngineRecords> records = std::make_shared<EngineRecords>();
 
     size_t count() const { return cones.size(); }
 };

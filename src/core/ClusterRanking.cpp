@@ -16,7 +16,8 @@ const std::vector<std::pair<ClusterSortKey, const char*>>& sortKeyNames() {
         {ClusterSortKey::Triangles, "triangles"},      {ClusterSortKey::Vertices, "vertices"},
         {ClusterSortKey::HalfAngle, "half-angle"},     {ClusterSortKey::SphereRadius, "radius"},
         {ClusterSortKey::CullFraction, "cull-fraction"}, {ClusterSortKey::OracleFraction, "oracle-fraction"},
-        {ClusterSortKey::Culled, "culled"}};
+        {ClusterSortKey::Culled, "culled"},            {ClusterSortKey::FalseCulls, "false-culls"},
+        {ClusterSortKey::QuantisationLoss, "quantisation-loss"}};
     return names;
 }
 
@@ -34,6 +35,8 @@ double badness(const ClusterStatistics& c, ClusterSortKey key) {
         case ClusterSortKey::CullFraction: return -c.cullFraction;
         case ClusterSortKey::OracleFraction: return -c.oracleFraction;
         case ClusterSortKey::Culled: return -double(c.timesCulled);
+        case ClusterSortKey::FalseCulls: return double(c.falseCulls);
+        case ClusterSortKey::QuantisationLoss: return double(c.quantisationLossTriangles);
     }
     return 0.0;
 }

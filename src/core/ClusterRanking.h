@@ -22,6 +22,8 @@ enum class ClusterSortKey {
     CullFraction,    // ascending: the clusters culled from the fewest directions first
     OracleFraction,  // ascending
     Culled,          // ascending: the clusters culled least often first
+    FalseCulls,      // views from which an engine's record culled it holding a visible face
+    QuantisationLoss,  // back faces the quantised record drew and its float original culls
 };
 
 std::string toString(ClusterSortKey key);  // "test-loss", "partition-loss", "lost", "missed", ...

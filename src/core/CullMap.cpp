@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "RecordTests.h"
+
 namespace conescope {
 
 CullMap computeCullMap(const ClusterBounds& bounds) {
@@ -20,6 +22,11 @@ CullMap computeCullMap(const ClusterBounds& bounds) {
 double cullFraction(const CullMap& map, uint32_t cluster, CullTest test) {
     if (test == CullTest::Oracle) return map.oracleFraction[cluster];
     return test == CullTest::Octagon ? map.octagonFraction[cluster] : map.coneFraction[cluster];
+}
+
+double testCullFraction(const CullMap& map, const CullingInput& input, uint32_t cluster, CullTest test) {
+    if (!readsOwnRecord(test)) return cullFraction(map, cluster, test);
+    return ownRecordCullShare({input.mesh, input.world, input.faces, input.bounds}, cluster, test);
 }
 
 }  // namespace conescope

@@ -34,4 +34,8 @@ CullMap computeCullMap(const ClusterBounds& bounds);
 // the round cone's for every other test.
 double cullFraction(const CullMap& map, uint32_t cluster, CullTest test);
 
+// Any test's share: a record of its own's (ownRecordCullShare, RecordTests.h) for the tests that
+// read one, the cull map's for the others.
+double testCullFraction(const CullMap& map, const CullingInput& input, uint32_t cluster, CullTest test);
+
 }  // namespace conescope

@@ -9,7 +9,10 @@
 
 namespace conescope {
 
-enum class CullTest { Oracle, Vertices, Aabb, AabbFast, Sphere, Apex, MeshoptSphere, Octagon };
+// The last four read records of their own (RecordTests.h): meshoptimizer's meshopt_Bounds tested as
+// shaders test it, cadscene's packed box and cone, and the octagon in 16 bytes.
+enum class CullTest { Oracle, Vertices, Aabb, AabbFast, Sphere, Apex, MeshoptSphere, Octagon, MeshoptApexF32, MeshoptSphereS8, CadsceneBoxS8,
+                      OctagonCompact };
 
 // The test's name in the settings and statistics ("octagon"); Settings.cpp holds the names.
 std::string toString(CullTest);

@@ -1,6 +1,7 @@
 #include "Culling.h"
 
 #include "BatchCulling.h"
+#include "RecordTests.h"
 
 #include <algorithm>
 #include <limits>
@@ -84,6 +85,7 @@ static bool oracleCulls(const CullingInput& input, uint32_t cluster, const Eye& 
 
 bool cullCluster(const CullingInput& input, uint32_t cluster, const Eye& eye, CullTest test) {
     if (test == CullTest::Oracle) return oracleCulls(input, cluster, eye);
+    if (readsOwnRecord(test)) return ownRecordCulls({input.mesh, input.world, input.faces, input.bounds}, cluster, eye, test);
     const ClusterBounds& bounds = input.bounds;
     const ConeOfNormals& cone = bounds.cones[cluster];
     if (!cone.cullable) return false;
@@ -112,7 +114,11 @@ bool cullCluster(const CullingInput& input, uint32_t cluster, const Eye& eye, Cu
         case CullTest::Octagon:
             return octagonSeesBack(bounds.octagons[cluster], bounds.apexes[cluster] - eye.position,
                                    apexRoundingSlack(bounds.apexes[cluster], eye.position));
-        case CullTest::Oracle: break;
+        case CullTest::Oracle:
+        case CullTest::MeshoptApexF32:
+        case CullTest::MeshoptSphereS8:
+        case CullTest::CadsceneBoxS8:
+        case CullTest::OctagonCompact: break;  // answered above
     }
     return false;
 }
@@ -211,6 +217,8 @@ CullExplanation explainCull(const CullingInput& input, uint32_t cluster, const E
                                   (why.eyeInsideSphere || !(why.angleBDegrees - why.sphereAngleDegrees > 0.0));
     if (test == CullTest::Oracle || !cone.cullable || sphereNeverCulls || (test == CullTest::Octagon && !octagon.cullable))
         why.margin = std::numeric_limits<double>::quiet_NaN();
+    // The records' own tests compare their own numbers, whatever the displayed cone.
+    if (readsOwnRecord(test)) why.margin = ownRecordMargin({input.mesh, input.world, input.faces, input.bounds}, cluster, eye, test);
     const ClusterFaces& rows = bounds.faces;
     for (uint32_t i = rows.starts[cluster]; i < rows.starts[cluster + 1]; ++i) {
         switch (classifyFace(input.mesh, input.world, input.faces, rows.faces[i], eye)) {

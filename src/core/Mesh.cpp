@@ -45,6 +45,12 @@ void validateMesh(const Mesh& mesh) {
         if (values.size() != mesh.faceCount())
             fail("per-face array '" + name + "' has " + std::to_string(values.size()) + " values for " +
                  std::to_string(mesh.faceCount()) + " faces");
+    for (const auto& [path, clusters] : mesh.fileClusters)
+        if (clusters.clusterOfFace.size() != mesh.faceCount())
+            fail("cluster file '" + path + "' gives " + std::to_string(clusters.clusterOfFace.size()) + " faces a cluster, the mesh has " +
+                 std::to_string(mesh.faceCount()));
+    for (uint32_t v : mesh.fileVertices)
+        if (v >= mesh.positions.size()) fail("a file vertex maps past the mesh's " + std::to_string(mesh.positions.size()) + " vertices");
     for (int c = 0; c < 4; ++c)
         for (int r = 0; r < 4; ++r)
             if (!std::isfinite(mesh.model[c][r])) fail("model matrix has a non-finite entry");

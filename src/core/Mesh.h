@@ -11,6 +11,8 @@
 
 #include <glm/glm.hpp>
 
+#include "FileClusters.h"
+
 namespace conescope {
 
 struct Mesh {
@@ -22,6 +24,11 @@ struct Mesh {
     glm::dmat4 model{1.0};
     // Per-face scalar arrays carried over from the file (one value per face).
     std::map<std::string, std::vector<double>> faceArrays;
+    // For each vertex of the file as read, the vertex it became (readers merge equal positions);
+    // empty when they are the same. Meshlet files index the file's vertices.
+    std::vector<uint32_t> fileVertices;
+    // Partitions read from cluster files with the mesh (io's ClusterFiles.h), by the file's path.
+    std::map<std::string, FileClusters> fileClusters;
 
     size_t faceCount() const { return faceStarts.empty() ? 0 : faceStarts.size() - 1; }
     size_t faceSize(size_t f) const { return faceStarts[f + 1] - faceStarts[f]; }

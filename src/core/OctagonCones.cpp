@@ -194,10 +194,22 @@ constexpr int kTurns = 16;  // evenly spaced turns tried over the octagon's 45 d
 
 namespace {
 
+// The octagon with these corners in the gnomonic plane about `axis`, lifted to unit edges (the last
+// repeated where it has fewer than eight). Not cullable unless it has 3 to 8 corners.
+OctagonCone liftedOctagon(const glm::dvec3& axis, const Projection& basis, const std::vector<Point>& corners) {
+    OctagonCone octagon;
+    if (corners.size() < 3 || corners.size() > 8) return octagon;
+    for (size_t k = 0; k < 8; ++k) {
+        const Point& c = corners[std::min(k, corners.size() - 1)];
+        octagon.edges[k] = glm::normalize(axis + c.x * basis.u + c.y * basis.w);
+    }
+    octagon.cullable = true;
+    return octagon;
+}
+
 // The octagon around the hull (indices into projection.points) of the normals projected about
 // `cone`'s axis.
 OctagonCone octagonAround(const ConeOfNormals& cone, const Projection& projection, const std::vector<uint32_t>& hullIndices) {
-    OctagonCone octagon;
     std::vector<Point> hull;
     for (uint32_t i : hullIndices) hull.push_back(projection.points[i]);
     // Turns tried: a side along each edge of the hull (the least area has one there, as the least
@@ -225,14 +237,7 @@ OctagonCone octagonAround(const ConeOfNormals& cone, const Projection& projectio
     // normal lies inside the lifted octagon.
     const double pad = 1e-10 * (1.0 + projection.reach);
     for (int j = 0; j < 4; ++j) strips.low[j] -= pad, strips.high[j] += pad;
-    const std::vector<Point> corners = octagonCorners(strips, directions, 2.0 * (1.0 + projection.reach));
-    if (corners.size() < 3 || corners.size() > 8) return octagon;
-    for (size_t k = 0; k < 8; ++k) {
-        const Point& c = corners[std::min(k, corners.size() - 1)];
-        octagon.edges[k] = glm::normalize(cone.axis + c.x * projection.u + c.y * projection.w);
-    }
-    octagon.cullable = true;
-    return octagon;
+    return liftedOctagon(cone.axis, projection, octagonCorners(strips, directions, 2.0 * (1.0 + projection.reach)));
 }
 
 // normalsCullShare from the hull of the projected normals: its corners are the normals' hull on the sphere.
@@ -246,6 +251,26 @@ double shareOfHull(const glm::dvec3* normals, const Projection& projection, cons
 bool projectsAbout(const ConeOfNormals& cone) { return cone.cullable && cone.cosHalfAngle > 0.0; }
 
 }  // namespace
+
+std::optional<OctagonStrips> octagonStripsOf(const glm::dvec3& axis, double turn, const glm::dvec3* normals, size_t count) {
+    const Projection projection = project(axis, normals, count);
+    if (projection.points.empty()) return std::nullopt;
+    const Strips strips = stripsAround(projection.points, sideDirections(Point(std::cos(turn), std::sin(turn))));
+    OctagonStrips result{axis, turn, strips.low, strips.high};
+    const double pad = 1e-10 * (1.0 + projection.reach);
+    for (int j = 0; j < 4; ++j) result.low[j] -= pad, result.high[j] += pad;
+    return result;
+}
+
+OctagonCone octagonFromStrips(const OctagonStrips& strips) {
+    const Projection basis = project(strips.axis, nullptr, 0);
+    double reach = 0.0;
+    for (int j = 0; j < 4; ++j) reach = std::max({reach, std::abs(strips.low[j]), std::abs(strips.high[j])});
+    if (!std::isfinite(reach)) return {};
+    return liftedOctagon(strips.axis, basis,
+                         octagonCorners(Strips{strips.low, strips.high}, sideDirections(Point(std::cos(strips.turn), std::sin(strips.turn))),
+                                        2.0 * (1.0 + reach)));
+}
 
 OctagonCone octagonCone(const ConeOfNormals& cone, const glm::dvec3* normals, size_t count) {
     if (!projectsAbout(cone)) return {};

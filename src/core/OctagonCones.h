@@ -16,6 +16,7 @@
 
 #include <array>
 #include <cstddef>
+#include <optional>
 
 #include <glm/glm.hpp>
 
@@ -60,6 +61,20 @@ struct OctagonAndShare {
     double normalsShare = 0.0;
 };
 OctagonAndShare octagonAndNormalsShare(const ConeOfNormals& cone, const glm::dvec3* normals, size_t count);
+
+// The octagon as the sample lays it out: in the gnomonic plane about `axis` (its basis the one
+// octagonCone projects with), four strips with sides at `turn` + k 45 degrees, strip k holding every
+// projected normal p with low[k] <= d_k.p <= high[k]. What the compact octagon stores, rounded outward.
+struct OctagonStrips {
+    glm::dvec3 axis{0.0, 0.0, 1.0};
+    double turn = 0.0;  // radians
+    std::array<double, 4> low{}, high{};
+};
+// The strips of these normals (zero normals left out) at this turn, padded against rounding as
+// octagonCone pads its own; empty when some normal is not in front of the axis.
+std::optional<OctagonStrips> octagonStripsOf(const glm::dvec3& axis, double turn, const glm::dvec3* normals, size_t count);
+// The octagon the strips bound: its corners lifted to unit edges. Not cullable when they bound no octagon.
+OctagonCone octagonFromStrips(const OctagonStrips& strips);
 
 // The eight edges of the pyramid of eyes it culls from (unit directions from the apex, in order):
 // each is perpendicular to two neighbouring edges of the octagon, on the side away from the others.

@@ -7,6 +7,8 @@
 #include <stdexcept>
 
 #include "BatchCulling.h"
+#include "FileBuilder.h"
+#include "RecordTests.h"
 #include "SettingsSchema.h"
 
 namespace conescope {
@@ -20,6 +22,13 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 // Calls the callback and turns a refusal into the core's cancellation exception, like runStatistics.
 void report(const ProgressCallback& progress, double fraction, const std::string& stage) {
     if (progress && !progress(fraction, stage)) throw OperationCancelled();
+}
+
+// meshoptimizer's bounds a meshlet file stored for the file builder's cluster file: the meshopt
+// tests then test those (EngineRecords.h) instead of the library's.
+void useStoredMeshletBounds(ClusterBounds& bounds, const Mesh& mesh, const Settings& settings) {
+    if (settings.builder != Builder::File) return;
+    if (const std::vector<MeshletBounds>* stored = storedMeshletBounds(mesh, settings.clusterFile)) bounds.records->useStoredMeshoptBounds(*stored);
 }
 
 }  // namespace
@@ -123,6 +132,7 @@ ClusterSet buildClusters(const PreparedMesh& prepared, const Settings& settings,
         clusters.bounds = computeClusterBounds(prepared.mesh(), prepared.world, prepared.faces, clusters.partition, cone, settings.sphere);
         clusters.boundsSeconds = secondsSince(start);
     }
+    useStoredMeshletBounds(clusters.bounds, prepared.mesh(), settings);
     report(progress, 0.9, "cull map (" + toString(cone) + ")");
     clusters.cullMap = computeCullMap(clusters.bounds);
     report(progress, 1.0, "clusters ready");
@@ -217,6 +227,7 @@ long viewMissingCluster(const PreparedMesh& prepared, const ClusterSet& clusters
         const CullTest test = displayedTest(settings);
         const bool culled = culledInBatch(views[v], test) ? cullClusters(input, views[v], test)[cluster] != 0
                                                           : cullCluster(input, cluster, views[v], test);
+        if (culled && front > 0) return long(v);  // a false cull (an engine's record): the worst there is
         if (back == 0 || culled) continue;
         if (front == 0) return long(v);
         if (partitionLoss < 0) partitionLoss = long(v);
@@ -233,14 +244,20 @@ Settings exportSettings(const Settings& settings, const std::optional<glm::dvec3
 Settings builderForMesh(const Settings& settings, const Mesh& mesh, std::string& why) {
     Settings result = settings;
     const bool hasIds = mesh.faceArrays.count("cluster_id") > 0;
+    // An id file travels in the settings (io's withClusterIds), a meshlet file on the mesh.
+    const ClusterIdFile* idFile = settings.clusterIds && settings.clusterIds->path == settings.clusterFile ? settings.clusterIds.get() : nullptr;
+    const bool hasClusters = settings.clusterFile.empty() ? meshHasOwnClusters(mesh)
+                                                          : mesh.fileClusters.count(settings.clusterFile) > 0 || (idFile && idFile->error.empty());
     if (settings.builder != Builder::File && hasIds) {
         result.builder = Builder::File;
         result.clusterFile.clear();
         why = "the mesh carries a cluster_id array: showing its own partition (the file builder); choose another builder to compare";
-    } else if (settings.builder == Builder::File && settings.clusterFile.empty() && !hasIds) {
+    } else if (settings.builder == Builder::File && !hasClusters) {
         result.builder = Settings{}.builder;
-        why = "the mesh has no cluster_id array and no cluster file is given: clusters from the " + toString(result.builder) +
-              " builder instead of the file builder";
+        why = (settings.clusterFile.empty() ? std::string("the mesh has no cluster_id array or groups and no cluster file is given")
+               : idFile                     ? idFile->error
+                                            : settings.clusterFile + " was not read with the mesh") +
+              ": clusters from the " + toString(result.builder) + " builder instead of the file builder";
     }
     return result;
 }
@@ -282,9 +299,9 @@ RunStatistics measureRun(const PreparedMesh& prepared, const ClusterSet& cluster
         // The displayed cone's bounds are built already; the other cones get theirs for the same partition.
         const bool built = cone == displayedCone(clusters.builtWith) && settings.sphere == clusters.builtWith.sphere;
         if (!built) report(progress, double(step) / double(steps), "bounds (" + toString(cone) + ")");
-        const ClusterBounds bounds = built ? ClusterBounds()
-                                           : computeClusterBounds(prepared.mesh(), prepared.world, prepared.faces,
-                                                                  clusters.partition, cone, settings.sphere);
+        ClusterBounds bounds = built ? ClusterBounds()
+                                     : computeClusterBounds(prepared.mesh(), prepared.world, prepared.faces, clusters.partition, cone, settings.sphere);
+        if (!built) useStoredMeshletBounds(bounds, prepared.mesh(), settings);
         const CullingInput input{prepared.mesh(), prepared.world, prepared.faces, built ? clusters.bounds : bounds};
         if (!built) report(progress, double(step) / double(steps), "cull map (" + toString(cone) + ")");
         const CullMap computed = built ? CullMap() : computeCullMap(input.bounds);
@@ -335,7 +352,8 @@ std::map<std::string, std::vector<double>> partitionFaceArrays(const PreparedMes
     }
     spread("sphere_radius", [&](uint32_t c) { return bounds.spheres[c].radius; });
     const CullMap& map = clusters.cullMap;
-    spread("cull_fraction", [&](uint32_t c) { return cullFraction(map, c, test); });
+    const CullingInput input = cullingInput(prepared, clusters);
+    spread("cull_fraction", [&](uint32_t c) { return testCullFraction(map, input, c, test); });
     spread("oracle_fraction", [&](uint32_t c) { return map.oracleFraction[c]; });
     return arrays;
 }

@@ -122,9 +122,11 @@ glm::dvec3 startingEyePosition(const Aabb& worldBox, const Settings& settings);
 CullTestStatistics measureOrbit(const PreparedMesh& prepared, const ClusterSet& clusters, const Settings& settings,
                             const ProgressCallback& progress = {});
 
-// The first orbit view from which the displayed test draws `cluster` although every face faces away
-// (a miss: the test's loss); else the first from which it is drawn holding back faces and a visible
-// one (the partition's loss); -1 when it is never lost. Where to put the eye to see why it costs.
+// The first orbit view from which the displayed test culls `cluster` holding a visible face (a
+// false cull, only an engine's record makes one) or draws it although every face faces away (a
+// miss: the test's loss), whichever comes first; else the first from which it is drawn holding back
+// faces and a visible one (the partition's loss); -1 when it is never lost. Where to put the eye to
+// see why it costs.
 long viewMissingCluster(const PreparedMesh& prepared, const ClusterSet& clusters, const Settings& settings, uint32_t cluster);
 
 // The settings for a statistics export: the current settings with the eye set (current eye) or
@@ -132,8 +134,10 @@ long viewMissingCluster(const PreparedMesh& prepared, const ClusterSet& clusters
 Settings exportSettings(const Settings& settings, const std::optional<glm::dvec3>& eye);
 
 // The builder a freshly opened mesh is shown with: a mesh that carries a cluster_id array shows its
-// own partition (the file builder), and the file builder without a cluster file falls back to the
-// default builder for a mesh without one. `why` gets a sentence for the user when the builder changed.
+// own partition (the file builder), and the file builder falls back to the default builder for a
+// mesh without groups or ids when no cluster file is given, or when its cluster file was not read
+// (settings.clusterIds for an id file, the mesh's fileClusters for a meshlet file). `why` gets a
+// sentence for the user when the builder changed.
 Settings builderForMesh(const Settings& settings, const Mesh& mesh, std::string& why);
 
 // A sentence for the user when a cluster budget was asked for (--clusters) and the builder that takes

@@ -26,7 +26,11 @@ const NameTable<CullTest>& testNames() {
     static const NameTable<CullTest> names = {{CullTest::Oracle, "oracle"},     {CullTest::Vertices, "vertices"},
                                               {CullTest::Aabb, "aabb"},         {CullTest::AabbFast, "aabb-fast"},
                                               {CullTest::Sphere, "sphere"},     {CullTest::Apex, "apex"},
-                                              {CullTest::Octagon, "octagon"},   {CullTest::MeshoptSphere, "meshopt-sphere"}};
+                                              {CullTest::Octagon, "octagon"},   {CullTest::MeshoptSphere, "meshopt-sphere"},
+                                              {CullTest::OctagonCompact, "octagon-compact"},
+                                              {CullTest::MeshoptApexF32, "meshopt-apex-f32"},
+                                              {CullTest::MeshoptSphereS8, "meshopt-sphere-s8"},
+                                              {CullTest::CadsceneBoxS8, "cadscene-box-s8"}};
     return names;
 }
 const NameTable<SphereMethod>& sphereNames() {

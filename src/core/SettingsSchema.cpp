@@ -179,7 +179,7 @@ std::vector<SettingField> makeFields() {
     row(f);
 
     f = describe("cluster_file", "cluster-file", "PATH",
-         "file builder: text file with one cluster id per face (default: the mesh's cluster_id array)", SettingKind::Path,
+         "file builder: meshoptimizer's meshlets (JSON or binary) or a text file of one cluster id per face (default: the mesh's cluster_id array, else its OBJ groups or glTF primitives)", SettingKind::Path,
          true, Stage::Clusters, {Builder::File});
     f.value = [](const Settings& s) -> SettingValue { return s.clusterFile; };
     f.assign = [](Settings& s, const SettingValue& v) { s.clusterFile = std::get<std::string>(v); };

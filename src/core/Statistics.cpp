@@ -7,10 +7,22 @@
 
 #include "BatchCulling.h"
 #include "ExpectedCull.h"
+#include "RecordTests.h"
 
 namespace conescope {
 
 namespace {
+
+// A quantised record's float original's decisions (RecordTests.h), the float octagon as the
+// product runs it; empty for a test without one.
+std::vector<uint8_t> floatOriginalDecisions(const CullingInput& input, const Eye& eye, CullTest test) {
+    if (!hasFloatOriginal(test)) return {};
+    if (test == CullTest::OctagonCompact) return cullClusters(input, eye, CullTest::Octagon);
+    const RecordInput records{input.mesh, input.world, input.faces, input.bounds};
+    std::vector<uint8_t> culled(input.bounds.count());
+    for (uint32_t c = 0; c < culled.size(); ++c) culled[c] = floatOriginalCulls(records, c, eye, test);
+    return culled;
+}
 
 // What the oracle says about each cluster from one eye; shared by every test of that view.
 struct ClusterTruth {
@@ -45,6 +57,8 @@ CullTestStatistics measureCulling(const CullingInput& input, const std::vector<E
     CullTestStatistics result;
     result.cone = bounds.coneMethod;
     result.test = test;
+    result.bytesPerCluster = recordBytes(test);
+    result.engineRecord = reproducesEngineRecord(test);
     result.clusters.resize(clusterCount);
     for (uint32_t c = 0; c < clusterCount; ++c) {
         ClusterStatistics& cluster = result.clusters[c];
@@ -69,7 +83,9 @@ CullTestStatistics measureCulling(const CullingInput& input, const std::vector<E
     }
 
     // The batched kernel reads the bounds as float arrays: made once for all the views.
-    const bool anyBatched = std::any_of(views.begin(), views.end(), [&](const Eye& eye) { return culledInBatch(eye, test); });
+    // The compact octagon's float original is the batched octagon test.
+    const CullTest batchedTest = test == CullTest::OctagonCompact ? CullTest::Octagon : test;
+    const bool anyBatched = std::any_of(views.begin(), views.end(), [&](const Eye& eye) { return culledInBatch(eye, batchedTest); });
     const ClusterBatch batch = anyBatched ? makeClusterBatch(bounds) : ClusterBatch();
     const CullingInput batched{input.mesh, input.world, input.faces, input.bounds, anyBatched ? &batch : input.batch};
     double totalNanoseconds = 0.0;
@@ -82,6 +98,7 @@ CullTestStatistics measureCulling(const CullingInput& input, const std::vector<E
         const std::vector<uint8_t> culled = cullClusters(batched, eye, test);
         const double nanoseconds = std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start).count();
         totalNanoseconds += nanoseconds;
+        const std::vector<uint8_t> floatCulled = floatOriginalDecisions(batched, eye, test);
 
         ViewStatistics view;
         view.view = v;
@@ -105,6 +122,10 @@ CullTestStatistics measureCulling(const CullingInput& input, const std::vector<E
                 cluster.timesMissed += backFacing;
                 view.testLossTriangles += truth.backTriangles[c];
                 cluster.testLossTriangles += truth.backTriangles[c];
+                if (!floatCulled.empty() && floatCulled[c]) {
+                    view.quantisationLossTriangles += truth.backTriangles[c];
+                    cluster.quantisationLossTriangles += truth.backTriangles[c];
+                }
             } else {
                 view.partitionLossTriangles += truth.backTriangles[c];
                 cluster.partitionLossTriangles += truth.backTriangles[c];
@@ -114,6 +135,7 @@ CullTestStatistics measureCulling(const CullingInput& input, const std::vector<E
         result.meanViewEfficiency += view.efficiency / double(views.size());
         result.testLossTriangles += view.testLossTriangles;
         result.partitionLossTriangles += view.partitionLossTriangles;
+        result.quantisationLossTriangles += view.quantisationLossTriangles;
         result.clustersCulled += view.clustersCulled;
         result.trianglesCulled += view.trianglesCulled;
         result.backFacingTriangles += view.backFacingTriangles;
@@ -122,6 +144,12 @@ CullTestStatistics measureCulling(const CullingInput& input, const std::vector<E
         result.views.push_back(view);
     }
     result.efficiency = cullEfficiency(result.trianglesCulled, result.backFacingTriangles);
+    // The vertices test reads the cluster's vertices besides its cone: 12 bytes each, on average.
+    if (test == CullTest::Vertices) result.bytesPerCluster += size_t(std::lround(12.0 * result.meanClusterVertices));
+    // Own records' shares come from the records; addCullMap fills the others' from the cull map.
+    if (readsOwnRecord(test))
+        for (ClusterStatistics& cluster : result.clusters)
+            cluster.cullFraction = ownRecordCullShare({input.mesh, input.world, input.faces, input.bounds}, cluster.cluster, test);
     result.nanosecondsPerCluster =
         clusterCount && !views.empty() ? totalNanoseconds / double(clusterCount * views.size()) : 0.0;
     return result;
@@ -130,7 +158,7 @@ CullTestStatistics measureCulling(const CullingInput& input, const std::vector<E
 void addCullMap(CullTestStatistics& statistics, const CullMap& map) {
     double cull = 0.0, oracle = 0.0, triangles = 0.0;
     for (ClusterStatistics& cluster : statistics.clusters) {
-        cluster.cullFraction = cullFraction(map, cluster.cluster, statistics.test);
+        if (!readsOwnRecord(statistics.test)) cluster.cullFraction = cullFraction(map, cluster.cluster, statistics.test);
         cluster.oracleFraction = map.oracleFraction[cluster.cluster];
         cull += double(cluster.triangles) * cluster.cullFraction;
         oracle += double(cluster.triangles) * cluster.oracleFraction;

@@ -28,6 +28,8 @@ struct ViewStatistics {
     // partitionLossTriangles = backFacingTriangles. Degenerate faces are in none of them.
     size_t testLossTriangles = 0;       // in back-facing clusters the test drew (a better test could cull them)
     size_t partitionLossTriangles = 0;  // in clusters holding a visible face (no conservative test could)
+    // Of testLossTriangles, those the quantised record's float original culls (RecordTests.h).
+    size_t quantisationLossTriangles = 0;
     double efficiency = 0.0;          // trianglesCulled / backFacingTriangles (1 when none face away)
     double nanosecondsPerCluster = 0.0;
 };
@@ -45,6 +47,7 @@ struct ClusterStatistics {
     size_t falseCulls = 0;
     size_t testLossTriangles = 0;     // summed over the views, as in ViewStatistics
     size_t partitionLossTriangles = 0;
+    size_t quantisationLossTriangles = 0;
     double sphereRadius = 0.0;        // the bounding sphere's
     double cullFraction = 0.0;        // share of directions at infinity the test culls it from (CullMap.h)
     double oracleFraction = 0.0;      // share from which every face faces away
@@ -60,8 +63,11 @@ struct CullTestStatistics {
     size_t falseCulls = 0;
     size_t testLossTriangles = 0;
     size_t partitionLossTriangles = 0;
+    size_t quantisationLossTriangles = 0;
     double efficiency = 0.0;
     double nanosecondsPerCluster = 0.0;
+    size_t bytesPerCluster = 0;       // the record the test reads (recordBytes, RecordTests.h)
+    bool engineRecord = false;        // an engine's record as shipped: not conservative, false culls reported
     size_t uncullableClusters = 0;
     double expectedEfficiency = 0.0;  // sum T_c (1 - sin alpha_c) / T: random-direction estimate
     // The partition's summary, view-independent apart from the first.

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "io/ClassicLocale.h"
+#include "io/MeshletFiles.h"
 
 namespace conescope {
 
@@ -35,7 +36,8 @@ std::vector<double> readClusterIdFile(const std::string& path) {
 }
 
 Settings withClusterIds(Settings settings) {
-    if (settings.builder != Builder::File || settings.clusterFile.empty()) return settings;
+    // A meshlet file is read onto the mesh instead (ClusterFiles.h: it may cut the mesh's polygons).
+    if (settings.builder != Builder::File || settings.clusterFile.empty() || isMeshletFile(settings.clusterFile)) return settings;
     auto file = std::make_shared<ClusterIdFile>();
     file->path = settings.clusterFile;
     try {

@@ -14,7 +14,7 @@ namespace conescope {
 std::vector<double> readClusterIdFile(const std::string& path);
 
 // The settings with settings.clusterIds read from settings.clusterFile when the file builder uses
-// one (else unchanged). A file that cannot be read keeps the reader's message, which buildPartition
+// one that is not a meshlet file (else unchanged: readClusterFileOf, ClusterFiles.h, reads those). A file that cannot be read keeps the reader's message, which buildPartition
 // throws where it would have read the file.
 Settings withClusterIds(Settings settings);
 

@@ -1,5 +1,7 @@
 #include "io/FileChecks.h"
 
+#include <charconv>
+
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
@@ -42,6 +44,14 @@ std::string readFileBytes(const std::string& path) {
     if (input.bad()) throw MeshReadError(path + ": read error");
     bytes.resize(static_cast<size_t>(input.gcount()));
     return bytes;
+}
+
+void appendPointLine(std::string& text, const glm::vec3& point) {
+    char buffer[32];
+    for (int k = 0; k < 3; ++k) {
+        text.append(buffer, std::to_chars(buffer, buffer + sizeof buffer, point[k]).ptr);
+        text += k < 2 ? ' ' : '\n';
+    }
 }
 
 void ReadProgress::report(size_t position) {

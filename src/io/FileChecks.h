@@ -4,6 +4,8 @@
 #include <cstdint>
 #include <string>
 
+#include <glm/glm.hpp>
+
 #include "core/Progress.h"
 
 namespace conescope {
@@ -34,6 +36,9 @@ private:
     size_t next_ = step;
     static constexpr size_t step = size_t(1) << 20;
 };
+
+// "x y z\n": each the shortest text that reads back to the same float, '.' whatever the locale.
+void appendPointLine(std::string& text, const glm::vec3& point);
 
 // Lower-case extension with the dot (".off"), or "" when the name has none.
 std::string lowerCaseExtension(const std::string& path);

@@ -94,11 +94,17 @@ Mesh placeInstances(const std::string& path, const GltfScene& scene, const GltfD
     mesh.faceVertices.reserve(size_t(3 * triangles));
     mesh.faceStarts.reserve(size_t(triangles + 1));
     double reported = 0.0;
+    // Each placed primitive is a group: a cluster per primitive for the file builder.
+    std::vector<double>& groupOfFace = mesh.faceArrays["group_id"];
+    double group = 0.0;
     for (const GltfInstance& instance : scene.instances) {
         const size_t firstVertex = mesh.positions.size();
         const bool mirrored = glm::determinant(glm::dmat3(instance.world)) < 0;
         const std::vector<const aiMesh*>& primitives = decoded.primitives[instance.mesh];
-        for (const aiMesh* primitive : primitives) appendInstance(*primitive, instance.world, mirrored, mesh);
+        for (const aiMesh* primitive : primitives) {
+            appendInstance(*primitive, instance.world, mirrored, mesh);
+            groupOfFace.resize(mesh.faceCount(), group++);
+        }
         requireFiniteWorld(path, instance, mesh, firstVertex);
         const double fraction = double(mesh.positions.size()) / double(vertices);
         if (fraction - reported >= 0.01 || fraction == 1.0) reportOrCancel(progress, reported = fraction, "placing glTF instances");

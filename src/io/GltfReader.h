@@ -7,7 +7,8 @@
 // corner order is reversed to keep every face's outward normal under ConeScope's counter-clockwise
 // convention. Vertices at exactly equal world positions are merged (glTF splits them at UV and
 // normal seams, and non-indexed primitives share none), so components and clusters span whole
-// surfaces.
+// surfaces. Each placed primitive (a primitive of each instance) is a group: the per-face array
+// "group_id", a cluster per primitive for the file builder.
 #pragma once
 
 #include <string>

@@ -23,13 +23,6 @@ void requireValidMesh(const Mesh& mesh, const std::string& path) {
     if (mesh.faceCount() == 0) throw MeshWriteError(path + ": refusing to write a mesh with no faces");
 }
 
-// Shortest text that reads back to the same float, with '.' whatever the locale says.
-void appendNumber(std::string& out, float value) {
-    char buffer[32];
-    auto [end, error] = std::to_chars(buffer, buffer + sizeof buffer, value);
-    out.append(buffer, error == std::errc() ? end : buffer);
-}
-
 void appendNumber(std::string& out, uint64_t value) {
     char buffer[24];
     auto [end, error] = std::to_chars(buffer, buffer + sizeof buffer, value);
@@ -43,14 +36,7 @@ std::string offText(const Mesh& mesh) {
     text += ' ';
     appendNumber(text, uint64_t{mesh.faceCount()});
     text += " 0\n";
-    for (const glm::vec3& p : mesh.positions) {
-        appendNumber(text, p.x);
-        text += ' ';
-        appendNumber(text, p.y);
-        text += ' ';
-        appendNumber(text, p.z);
-        text += '\n';
-    }
+    for (const glm::vec3& p : mesh.positions) appendPointLine(text, p);
     for (size_t f = 0; f < mesh.faceCount(); ++f) {
         appendNumber(text, uint64_t{mesh.faceSize(f)});
         for (size_t k = 0; k < mesh.faceSize(f); ++k) {

@@ -8,6 +8,7 @@
 #include <array>
 #include <cstdint>
 #include <limits>
+#include <map>
 #include <optional>
 
 #include "io/FileChecks.h"
@@ -28,7 +29,7 @@ const char* const elementNames[] = {"vertex", "texture coordinate", "normal"};
 // Statements that are accepted and carry nothing this mesh needs: attributes for texturing,
 // shading and display, grouping, and materials (an empty usemtl included).
 bool isStatementWithoutGeometry(std::string_view keyword) {
-    static const std::string_view keywords[] = {"vp", "g", "o", "s", "usemtl", "mtllib", "mg", "bevel", "c_interp",
+    static const std::string_view keywords[] = {"vp", "s", "usemtl", "mtllib", "mg", "bevel", "c_interp",
                                                 "d_interp", "lod", "shadow_obj", "trace_obj", "maplib", "usemap"};
     for (std::string_view known : keywords)
         if (keyword == known) return true;
@@ -69,6 +70,8 @@ public:
             throw MeshReadError(sourceName_ + ": no faces (" + std::to_string(vertices) + (vertices == 1 ? " vertex" : " vertices") +
                                 (skipped.empty() ? "" : "; " + skipped + " skipped, which are not faces") + ")");
         }
+        // Groups are kept only when the file has some: a cluster per group for the file builder.
+        if (groupStatements_ > 0) mesh_.faceArrays["group_id"] = std::move(groupOfFace_);
         return std::move(mesh_);
     }
 
@@ -87,6 +90,8 @@ private:
             ++defined_[TextureCoordinate];
         } else if (keyword == "vn") {
             ++defined_[Normal];
+        } else if (keyword == "g" || keyword == "o") {
+            readGroup(keyword);
         } else if (keyword == "l" || keyword == "p") {
             skipLineOrPoints(keyword, lineNumber);
         } else if (!isStatementWithoutGeometry(keyword)) {
@@ -119,6 +124,18 @@ private:
         if (mesh_.faceVertices.size() > std::numeric_limits<uint32_t>::max())
             fail(lineNumber, "more face corners than 32-bit offsets can address");
         mesh_.faceStarts.push_back(uint32_t(mesh_.faceVertices.size()));
+        groupOfFace_.push_back(double(group_));
+    }
+
+    // The group a face is in is the pair (object name, group names) of the o and g statements
+    // before it; the same pair again is the same group. Numbered in order of first use.
+    void readGroup(std::string_view keyword) {
+        std::string names;
+        for (size_t k = 1; k < words_.size(); ++k) names += std::string(words_[k]) + (k + 1 < words_.size() ? " " : "");
+        (keyword == "o" ? objectName_ : groupNames_) = names;
+        ++groupStatements_;
+        const auto [entry, added] = groups_.try_emplace(objectName_ + '\n' + groupNames_, uint32_t(groups_.size()));
+        group_ = entry->second;
     }
 
     // Lines and points are checked like faces (bad indices mean a damaged file) but not kept.
@@ -195,6 +212,11 @@ private:
     std::array<ForwardReference, 3> forward_;
     size_t lineElements_ = 0, pointElements_ = 0, unknownStatements_ = 0;
     std::string firstUnknown_;
+    std::string objectName_, groupNames_;
+    std::map<std::string, uint32_t> groups_{{"\n", 0}};  // faces before any o or g: the default group
+    uint32_t group_ = 0;
+    size_t groupStatements_ = 0;
+    std::vector<double> groupOfFace_;
 };
 
 }  // namespace

@@ -4,8 +4,9 @@
 //   v x y z [w | r g b]; f with corners v, v/vt, v//vn or v/vt/vn, any number of corners (polygons
 //   stay polygons), negative indices counting back from the elements defined so far, positive ones
 //   also referring forward; '#' comments to the end of a line, blank lines, CRLF line ends.
-// Accepted and ignored for geometry: vt, vn, vp, g, o, s, usemtl (also empty), mtllib and the other
-// display statements. Skipped with a note: l and p (lines and points are not faces) and statements
+// Accepted and ignored for geometry: vt, vn, vp, s, usemtl (also empty), mtllib and the other
+// display statements. The g and o groups become the per-face array "group_id" when the file has any
+// (a cluster per group for the file builder: meshoptimizer's demo dumps meshlets as `o` objects). Skipped with a note: l and p (lines and points are not faces) and statements
 // with other keywords (free-form curves and surfaces among them).
 #pragma once
 

@@ -81,6 +81,9 @@ size_t mergeEqualPositions(Mesh& mesh) {
     }
     for (uint32_t& vertex : mesh.faceVertices) vertex = mergedIndexOf[vertex];
     mesh.positions = std::move(merged);
+    // Files that index vertices (meshlet files) count them as the file stored them.
+    if (mesh.fileVertices.empty()) mesh.fileVertices = std::move(mergedIndexOf);
+    else for (uint32_t& vertex : mesh.fileVertices) vertex = mergedIndexOf[vertex];
     return repeats;
 }
 

@@ -12,8 +12,9 @@ namespace conescope {
 // the order first seen, and renumbers faceVertices. Every face is kept: one whose corners merge
 // stays a face with a repeated vertex, so computeFaceGeometry and checkMesh count it as degenerate.
 // Clusters never cross components, so a format whose faces share no vertex indices (STL, glTF
-// seams and non-indexed primitives) must be merged before clustering. Returns how many vertices were
-// merged into an earlier one (0: the mesh is unchanged).
+// seams and non-indexed primitives) must be merged before clustering. Mesh::fileVertices then says
+// where each vertex as read went. Returns how many vertices were merged into an earlier one (0: the
+// mesh is unchanged).
 size_t mergeEqualPositions(Mesh& mesh);
 
 }  // namespace conescope

@@ -71,6 +71,9 @@ const std::vector<Column<CullTestStatistics>>& laterTotalColumns() {
         {"max_sphere_radius", [](const CullTestStatistics& r) -> Cell { return r.maxSphereRadius; }},
         {"cull_fraction", [](const CullTestStatistics& r) -> Cell { return r.cullFraction; }},
         {"oracle_fraction", [](const CullTestStatistics& r) -> Cell { return r.oracleFraction; }},
+        {"bytes_per_cluster", [](const CullTestStatistics& r) -> Cell { return r.bytesPerCluster; }},
+        {"engine_record", [](const CullTestStatistics& r) -> Cell { return r.engineRecord; }},
+        {"quantisation_loss_triangles", [](const CullTestStatistics& r) -> Cell { return r.quantisationLossTriangles; }},
     };
     return columns;
 }
@@ -90,6 +93,7 @@ const std::vector<Column<ViewStatistics>>& viewColumns() {
         {"ns_per_cluster", [](const ViewStatistics& v) -> Cell { return v.nanosecondsPerCluster; }},
         {"test_loss_triangles", [](const ViewStatistics& v) -> Cell { return v.testLossTriangles; }},
         {"partition_loss_triangles", [](const ViewStatistics& v) -> Cell { return v.partitionLossTriangles; }},
+        {"quantisation_loss_triangles", [](const ViewStatistics& v) -> Cell { return v.quantisationLossTriangles; }},
     };
     return columns;
 }
@@ -111,6 +115,7 @@ const std::vector<Column<ClusterStatistics>>& clusterColumns() {
         {"sphere_radius", [](const ClusterStatistics& c) -> Cell { return c.sphereRadius; }},
         {"cull_fraction", [](const ClusterStatistics& c) -> Cell { return c.cullFraction; }},
         {"oracle_fraction", [](const ClusterStatistics& c) -> Cell { return c.oracleFraction; }},
+        {"quantisation_loss_triangles", [](const ClusterStatistics& c) -> Cell { return c.quantisationLossTriangles; }},
     };
     return columns;
 }

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "core/ClusterRanking.h"
+#include "core/RecordTests.h"
 
 namespace conescope {
 
@@ -22,13 +23,18 @@ double share(size_t part, size_t whole) { return whole ? double(part) / double(w
 }  // namespace
 
 void writeClusterTableText(const CullTestStatistics& result, const std::vector<uint32_t>& order, std::ostream& out) {
-    out << formatted("%8s %6s %6s %7s %10s %6s %7s %7s %7s %10s %10s\n", "cluster", "tris", "verts", "alpha", "radius",
-                     "cull", "oracle", "culled", "missed", "test_loss", "part_loss");
+    // False culls only for an engine's record (every other test has none); quantisation loss only for a quantised one.
+    const bool engine = result.engineRecord, quantised = hasFloatOriginal(result.test);
+    out << formatted("%8s %6s %6s %7s %10s %6s %7s %7s %7s %10s %10s", "cluster", "tris", "verts", "alpha", "radius", "cull", "oracle",
+                     "culled", "missed", "test_loss", "part_loss")
+        << (engine ? formatted(" %7s", "false") : "") << (quantised ? formatted(" %10s", "quant_loss") : "") << '\n';
     for (uint32_t c : order) {
         const ClusterStatistics& s = result.clusters.at(c);
-        out << formatted("%8u %6zu %6zu %6.1f%s %10.4g %6.3f %7.3f %7zu %7zu %10zu %10zu\n", s.cluster, s.triangles, s.vertices,
+        out << formatted("%8u %6zu %6zu %6.1f%s %10.4g %6.3f %7.3f %7zu %7zu %10zu %10zu", s.cluster, s.triangles, s.vertices,
                          s.halfAngleDegrees, s.cullable ? " " : "*", s.sphereRadius, s.cullFraction, s.oracleFraction,
-                         s.timesCulled, s.timesMissed, s.testLossTriangles, s.partitionLossTriangles);
+                         s.timesCulled, s.timesMissed, s.testLossTriangles, s.partitionLossTriangles)
+            << (engine ? formatted(" %7zu", s.falseCulls) : "") << (quantised ? formatted(" %10zu", s.quantisationLossTriangles) : "")
+            << '\n';
     }
 }
 
@@ -43,6 +49,11 @@ void writeStatisticsText(const RunStatistics& run, std::ostream& out, size_t wor
         out << formatted("  not culled        %.3f lost by the test (whole cluster faced away), %.3f by the partition "
                          "(cluster also held a visible face)\n",
                          share(r.testLossTriangles, r.backFacingTriangles), share(r.partitionLossTriangles, r.backFacingTriangles));
+        out << formatted("  record            %zu bytes a cluster%s", r.bytesPerCluster,
+                         r.engineRecord ? ", an engine's as it ships (not conservative: its false culls are above)" : "");
+        if (hasFloatOriginal(r.test))
+            out << formatted(", quantisation loss %.3f (back faces its float original culls)", share(r.quantisationLossTriangles, r.backFacingTriangles));
+        out << '\n';
         out << formatted("  from any side     the test culls %.3f of the directions, every face faces away from %.3f "
                          "(triangle-weighted)\n",
                          r.cullFraction, r.oracleFraction);

@@ -74,6 +74,8 @@ void expectRowEqualsDocument(const Row& row, const nlohmann::json& document) {
         ASSERT_TRUE(row.count(key)) << key;
         if (value.is_string())
             EXPECT_EQ(row.at(key), value.get<std::string>()) << key;
+        else if (value.is_boolean())  // CSV writes booleans as 1 and 0
+            EXPECT_EQ(row.at(key), value.get<bool>() ? "1" : "0") << row.at("file") << ": " << key;
         else
             EXPECT_EQ(std::stod(row.at(key)), value.get<double>()) << row.at("file") << ": " << key;
     }

@@ -34,6 +34,11 @@ std::vector<std::string> splitLines(const std::string& text) {
 // fork + exec rather than system(): the arguments reach the program exactly as given.
 pid_t startCli(const std::vector<std::string>& arguments, const std::vector<std::string>& environment,
                const std::string& outPath, const std::string& errPath) {
+    return startProgram(CONESCOPE_CLI_PATH, arguments, environment, outPath, errPath);
+}
+
+pid_t startProgram(const std::string& path, const std::vector<std::string>& arguments, const std::vector<std::string>& environment,
+                   const std::string& outPath, const std::string& errPath) {
     const pid_t child = ::fork();
     if (child < 0) throw std::runtime_error("fork failed");
     if (child == 0) {
@@ -47,7 +52,7 @@ pid_t startCli(const std::vector<std::string>& arguments, const std::vector<std:
             ::setenv(variable.substr(0, equals).c_str(), variable.substr(equals + 1).c_str(), 1);
         }
         std::vector<char*> argv;
-        std::string program = CONESCOPE_CLI_PATH;
+        std::string program = path;
         argv.push_back(program.data());
         std::vector<std::string> copies = arguments;
         for (std::string& argument : copies) argv.push_back(argument.data());
@@ -66,10 +71,14 @@ int waitCli(pid_t pid) {
 }
 
 CliRun runCli(const std::vector<std::string>& arguments, const std::vector<std::string>& environment) {
+    return runProgram(CONESCOPE_CLI_PATH, arguments, environment);
+}
+
+CliRun runProgram(const std::string& path, const std::vector<std::string>& arguments, const std::vector<std::string>& environment) {
     ScratchDirectory capture;
     const std::string outPath = capture.file("stdout"), errPath = capture.file("stderr");
     CliRun run;
-    run.exitCode = waitCli(startCli(arguments, environment, outPath, errPath));
+    run.exitCode = waitCli(startProgram(path, arguments, environment, outPath, errPath));
     run.out = readTextFile(outPath);
     run.err = readTextFile(errPath);
     return run;

@@ -28,11 +28,15 @@ struct CliRun {
 // Runs conescope-cli with these arguments (each passed as one word, no shell expansion), and these
 // environment variables ("NAME=value") set besides the test's own.
 CliRun runCli(const std::vector<std::string>& arguments, const std::vector<std::string>& environment = {});
+// The same for another program of the build.
+CliRun runProgram(const std::string& path, const std::vector<std::string>& arguments, const std::vector<std::string>& environment = {});
 
 // conescope-cli started as runCli starts it, its stdout and stderr going to the files `out` and `err`;
 // returns its pid, so a test can signal it midway. waitCli: its exit code, or 128 + the signal.
 pid_t startCli(const std::vector<std::string>& arguments, const std::vector<std::string>& environment,
                const std::string& out, const std::string& err);
+pid_t startProgram(const std::string& path, const std::vector<std::string>& arguments, const std::vector<std::string>& environment,
+                   const std::string& out, const std::string& err);
 int waitCli(pid_t pid);
 
 std::string readTextFile(const std::string& path);

@@ -71,6 +71,7 @@ RunStatistics smallRun() {
     result.expectedEfficiency = 0.25;
     result.uncullableClusters = 1;
     result.nanosecondsPerCluster = 12.5;
+    result.bytesPerCluster = 36;
     result.testLossTriangles = 3;
     result.partitionLossTriangles = 1;
     result.meanViewEfficiency = 0.5;
@@ -144,8 +145,11 @@ TEST(StatisticsJson, HasEveryKeyWithItsValue) {
                                                      "ns_per_cluster", "views", "clusters", "test_loss_triangles",
                                                      "partition_loss_triangles", "mean_view_efficiency",
                                                      "mean_cluster_triangles", "mean_cluster_vertices", "mean_sphere_radius",
-                                                     "max_sphere_radius", "cull_fraction", "oracle_fraction"}));
+                                                     "max_sphere_radius", "cull_fraction", "oracle_fraction", "bytes_per_cluster",
+                                                     "engine_record", "quantisation_loss_triangles"}));
     EXPECT_EQ(result["test_loss_triangles"], 3);
+    EXPECT_EQ(result["bytes_per_cluster"], 36);
+    EXPECT_EQ(result["engine_record"], false);
     EXPECT_EQ(result["oracle_fraction"].get<double>(), 0.375);
     EXPECT_EQ(result["cone"], "average");
     EXPECT_EQ(result["test"], "sphere");
@@ -157,7 +161,8 @@ TEST(StatisticsJson, HasEveryKeyWithItsValue) {
     EXPECT_EQ(keysOf(ortho), (std::set<std::string>{"view", "eye", "direction", "orthographic", "clusters_culled",
                                                     "triangles_culled", "back_facing_triangles", "front_facing_triangles",
                                                     "back_facing_clusters", "missed_clusters", "false_culls", "efficiency",
-                                                    "ns_per_cluster", "test_loss_triangles", "partition_loss_triangles"}));
+                                                    "ns_per_cluster", "test_loss_triangles", "partition_loss_triangles",
+                                                    "quantisation_loss_triangles"}));
     EXPECT_EQ(ortho["partition_loss_triangles"], 1);
     EXPECT_EQ(ortho["view"], 1);
     EXPECT_EQ(ortho["orthographic"], true);
@@ -170,7 +175,7 @@ TEST(StatisticsJson, HasEveryKeyWithItsValue) {
     EXPECT_EQ(keysOf(cluster), (std::set<std::string>{"cluster", "faces", "triangles", "vertices", "half_angle_deg",
                                                       "cullable", "times_culled", "times_back_facing", "false_culls",
                                                       "times_missed", "test_loss_triangles", "partition_loss_triangles",
-                                                      "sphere_radius", "cull_fraction", "oracle_fraction"}));
+                                                      "sphere_radius", "cull_fraction", "oracle_fraction", "quantisation_loss_triangles"}));
     EXPECT_EQ(result["clusters"][0]["times_missed"], 1);
     EXPECT_EQ(result["clusters"][0]["cull_fraction"].get<double>(), 0.375);
     EXPECT_EQ(cluster["cluster"], 1);
@@ -226,19 +231,21 @@ TEST(StatisticsCsv, ExactText) {
               "efficiency,expected_efficiency,uncullable_clusters,ns_per_cluster,open_edges,non_manifold_edges,inconsistent_edges,"
               "duplicate_faces,degenerate_faces,components,orientable,winding_fixed_faces,inside_out_components,"
               "test_loss_triangles,partition_loss_triangles,mean_view_efficiency,mean_cluster_triangles,mean_cluster_vertices,"
-              "mean_sphere_radius,max_sphere_radius,cull_fraction,oracle_fraction\n"
-              "average,sphere,2,2,1,2,6,1,0,0.3333333333333333,0.25,1,12.5,5,0,4,0,0,1,1,3,0,3,1,0.5,1.5,3.5,0.75,1,0.25,0.375\n");
+              "mean_sphere_radius,max_sphere_radius,cull_fraction,oracle_fraction,bytes_per_cluster,engine_record,"
+              "quantisation_loss_triangles\n"
+              "average,sphere,2,2,1,2,6,1,0,0.3333333333333333,0.25,1,12.5,5,0,4,0,0,1,1,3,0,3,1,0.5,1.5,3.5,0.75,1,0.25,0.375,36,0,0\n");
     EXPECT_EQ(csvText(smallRun(), CsvTable::Views),
               "cone,test,view,eye_x,eye_y,eye_z,direction_x,direction_y,direction_z,orthographic,clusters_culled,"
               "triangles_culled,back_facing_triangles,front_facing_triangles,back_facing_clusters,missed_clusters,false_culls,"
-              "efficiency,ns_per_cluster,test_loss_triangles,partition_loss_triangles\n"
-              "average,sphere,0,0,0,3,0,0,-1,0,1,2,2,1,1,0,0,1,10,0,0\n"
-              "average,sphere,1,0,0,0,0,1,0,1,0,0,4,1,1,1,0,0,15,3,1\n");
+              "efficiency,ns_per_cluster,test_loss_triangles,partition_loss_triangles,quantisation_loss_triangles\n"
+              "average,sphere,0,0,0,3,0,0,-1,0,1,2,2,1,1,0,0,1,10,0,0,0\n"
+              "average,sphere,1,0,0,0,0,1,0,1,0,0,4,1,1,1,0,0,15,3,1,0\n");
     EXPECT_EQ(csvText(smallRun(), CsvTable::Clusters),
               "cone,test,cluster,faces,triangles,vertices,half_angle_deg,cullable,times_culled,times_back_facing,false_culls,"
-              "times_missed,test_loss_triangles,partition_loss_triangles,sphere_radius,cull_fraction,oracle_fraction\n"
-              "average,sphere,0,1,2,4,12.75,1,1,2,0,1,3,0,0.5,0.375,0.5\n"
-              "average,sphere,1,1,1,3,90,0,0,0,0,0,0,1,1,0,0\n");
+              "times_missed,test_loss_triangles,partition_loss_triangles,sphere_radius,cull_fraction,oracle_fraction,"
+              "quantisation_loss_triangles\n"
+              "average,sphere,0,1,2,4,12.75,1,1,2,0,1,3,0,0.5,0.375,0.5,0\n"
+              "average,sphere,1,1,1,3,90,0,0,0,0,0,0,1,1,0,0,0\n");
 }
 
 TEST(StatisticsCsv, TablesGoBesideTheTotalsFile) {

@@ -9,6 +9,7 @@
 
 #include "TestMeshes.h"
 #include "core/Culling.h"
+#include "core/RecordTests.h"
 #include "core/Settings.h"
 
 using namespace conescope;
@@ -82,6 +83,10 @@ void checkMesh(std::mt19937_64& random, const Mesh& mesh, const Partition& parti
         for (const ClusterBounds& bounds : boundsPerCone) {
             const CullingInput input{mesh, world, faces, bounds};
             for (CullTest test : allCullTests()) {
+                // Exempt: only the tests that reproduce an engine's record as shipped (meshopt-apex-f32,
+                // meshopt-sphere-s8, cadscene-box-s8); they report their false culls instead. Every
+                // other test, the compact octagon included, must never cull a visible face.
+                if (reproducesEngineRecord(test)) continue;
                 // The exact test and what the product runs (the batched kernel where it applies).
                 for (const std::vector<uint8_t>& culled : {cullClustersExact(input, eye, test), cullClusters(input, eye, test)}) {
                     for (uint32_t c = 0; c < partition.clusterCount; ++c) {
@@ -102,6 +107,13 @@ void checkMesh(std::mt19937_64& random, const Mesh& mesh, const Partition& parti
 }
 
 }  // namespace
+
+TEST(Property, ExemptsExactlyTheEngineRecords) {
+    std::vector<std::string> exempt;
+    for (CullTest test : allCullTests())
+        if (reproducesEngineRecord(test)) exempt.push_back(toString(test));
+    EXPECT_EQ(exempt, (std::vector<std::string>{"meshopt-apex-f32", "meshopt-sphere-s8", "cadscene-box-s8"}));
+}
 
 TEST(Property, NoTestEverCullsAFrontFacingFace) {
     const size_t scale = scaleFromEnvironment();

@@ -31,6 +31,9 @@
 #include "StatisticsPanel.h"
 #include "UiTestSupport.h"
 #include "WindowTestSupport.h"
+#include "WorstClustersView.h"
+#include "core/Pipeline.h"
+#include "io/ClusterFiles.h"
 #include "io/MeshReader.h"
 #include "io/StatisticsIO.h"
 
@@ -233,6 +236,48 @@ private slots:
         QCOMPARE(errors.count(), 1);
         QVERIFY(window_->clusters()->builtWith.builder == Builder::File);
         QCOMPARE(window_->clusters()->partition.clusterCount, 5u);
+        // Opened with the id file already set (as --cluster-file does), the mesh keeps the file builder.
+        QVERIFY(window_->openMeshBlocking(datasetPath("torus.off")));
+        QVERIFY(window_->clusters()->builtWith.builder == Builder::File);
+        QCOMPARE(window_->settingsPanel()->builderBox()->currentText(), QStringLiteral("file"));
+        QCOMPARE(window_->clusters()->partition.clusterCount, 5u);
+        QCOMPARE(errors.count(), 1);
+        window_->setSettings(Settings{});
+        window_->waitUntilIdle();
+    }
+
+    // An engine's meshlets in the file builder, its own record scored: a record that culls too much
+    // shows its false culls in the statistics panel and first in the worst-cluster table.
+    void meshletFileShowsTheEnginesFalseCulls() {
+        const std::string mesh = datasetPath("elephant.off").toStdString();
+        const Mesh elephant = readMesh(mesh);
+        const Partition meshlets = buildMeshoptMeshlets(elephant, {64, 124}, 1.0f);
+        const QString path = temporary_.filePath(QStringLiteral("elephant-meshlets.json"));
+        writePartitionFile(elephant, meshlets, path.toStdString());
+        nlohmann::json json = readJsonFile(path);
+        for (nlohmann::json& bounds : json["bounds"]) bounds["cone_cutoff"] = -1.0;  // culls from everywhere
+        QFile file(path);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write(json.dump().c_str());
+        file.close();
+        QVERIFY(window_->openMeshBlocking(datasetPath("elephant.off")));
+        Settings settings = window_->settings();
+        settings.builder = Builder::File;
+        settings.clusterFile = path.toStdString();
+        settings.tests = {CullTest::MeshoptApexF32};
+        window_->setSettings(settings);
+        window_->waitUntilIdle();
+        QCOMPARE(window_->clusters()->partition.clusterCount, meshlets.clusterCount);
+        QVERIFY(window_->currentStatistics()->view().falseCulls > 0);
+        QCOMPARE(window_->statisticsPanel()->value(QStringLiteral("false culls")),
+                 QLocale().toString(qulonglong(window_->currentStatistics()->view().falseCulls)));
+        const CullTestStatistics* orbit = window_->session().orbitStatistics();
+        QVERIFY(orbit && orbit->falseCulls > 0);
+        WorstClustersView* table = window_->worstClustersView();
+        const uint32_t first = uint32_t(table->clusterAt(0));
+        size_t most = 0;
+        for (const ClusterStatistics& cluster : orbit->clusters) most = std::max(most, cluster.falseCulls);
+        QCOMPARE(orbit->clusters.at(first).falseCulls, most);
         window_->setSettings(Settings{});
         window_->waitUntilIdle();
     }

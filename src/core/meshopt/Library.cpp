@@ -159,4 +159,48 @@ MeshoptClusterBounds meshoptClusterBounds(const Mesh& mesh, const std::vector<gl
     return result;
 }
 
+// --- Engine records: meshopt_Bounds as the library makes them ------------------------------------
+
+namespace {
+
+// meshoptimizer asserts on more (kMeshletMaxTriangles in clusterizer.cpp, 0.18).
+constexpr size_t kLibraryMaxTriangles = 512;
+// It squares coordinates in float: from about 1e19 on that overflows and trips its assertion.
+constexpr float kLibraryLargestCoordinate = 1e18f;
+
+MeshletBounds fromLibrary(const meshopt_Bounds& b) {
+    MeshletBounds bounds;
+    std::copy(b.center, b.center + 3, bounds.center.begin());
+    bounds.radius = b.radius;
+    std::copy(b.cone_apex, b.cone_apex + 3, bounds.coneApex.begin());
+    std::copy(b.cone_axis, b.cone_axis + 3, bounds.coneAxis.begin());
+    bounds.coneCutoff = b.cone_cutoff;
+    std::copy(b.cone_axis_s8, b.cone_axis_s8 + 3, bounds.coneAxisS8.begin());
+    bounds.coneCutoffS8 = b.cone_cutoff_s8;
+    return bounds;
+}
+
+bool libraryTakes(const uint32_t* vertices, size_t count, size_t triangles, const std::vector<glm::vec3>& positions) {
+    if (triangles == 0 || triangles > kLibraryMaxTriangles || positions.empty()) return false;
+    for (size_t i = 0; i < count; ++i) {
+        const glm::vec3 p = glm::abs(positions[vertices[i]]);
+        if (!(std::max({p.x, p.y, p.z}) <= kLibraryLargestCoordinate)) return false;
+    }
+    return true;
+}
+
+}  // namespace
+
+MeshletBounds meshoptMeshletBounds(const MeshletArrays& arrays, size_t meshlet, const std::vector<glm::vec3>& positions) {
+    const auto [vertexOffset, triangleOffset, vertexCount, triangleCount] = arrays.meshlets[meshlet];
+    if (!libraryTakes(&arrays.vertices[vertexOffset], vertexCount, triangleCount, positions)) return MeshletBounds{};
+    return fromLibrary(meshopt_computeMeshletBounds(&arrays.vertices[vertexOffset], &arrays.triangles[triangleOffset], triangleCount,
+                                                    &positions[0].x, positions.size(), sizeof(glm::vec3)));
+}
+
+MeshletBounds meshoptEngineBounds(const std::vector<uint32_t>& indices, const std::vector<glm::vec3>& positions) {
+    if (!libraryTakes(indices.data(), indices.size(), indices.size() / 3, positions)) return MeshletBounds{};
+    return fromLibrary(meshopt_computeClusterBounds(indices.data(), indices.size(), &positions[0].x, positions.size(), sizeof(glm::vec3)));
+}
+
 }  // namespace conescope

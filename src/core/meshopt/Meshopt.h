@@ -5,6 +5,7 @@
 //   The reproduction meshoptimizer 0.18's builder made again, on the library's own arguments
 //   In parts         the meshlets handed over as they are made, on a thread of their own (MeshletStream)
 //   Bounds           meshopt_computeClusterBounds for one cluster of faces
+//   Engine records   meshopt_Bounds as engines ship them, tested as their shaders test them
 // Only Library.cpp includes <meshoptimizer.h>, and a new call into the library goes there too,
 // declared here in its section; the reproduction (Reproduction.cpp, KdTree.h) and the stream
 // (MeshletStream.cpp, CoreAffinity.h) are ConeScope's own code. docs/architecture.md has the why.
@@ -22,7 +23,9 @@
 #include "CoreAffinity.h"
 #include "core/Cones.h"
 #include "core/Mesh.h"
+#include "core/MeshletArrays.h"
 #include "core/Partition.h"
+#include "core/Views.h"
 
 namespace conescope {
 
@@ -175,5 +178,34 @@ struct MeshoptClusterBounds {
 };
 MeshoptClusterBounds meshoptClusterBounds(const Mesh& mesh, const std::vector<glm::vec3>& world, const uint32_t* clusterFaces,
                                           size_t faceCount, const std::vector<glm::dvec3>& normals);
+
+// --- Engine records: meshopt_Bounds as engines ship and test them ----------------------------------
+// The record is the library's own (meshopt_computeMeshletBounds, 0.18), or a meshlet file's, tested
+// in float as shaders test it and NOT made conservative, so its false culls can be counted
+// (CullTest::MeshoptApexF32, MeshoptSphereS8; Records.cpp):
+//   apex-f32:  dot(normalize(cone_apex - eye), cone_axis) >= cone_cutoff     (meshoptimizer.h's perspective test)
+//   sphere-s8: dot(center - eye, axis) >= cutoff * length(center - eye) + radius, with axis =
+//              cone_axis_s8 / 127 and cutoff = cone_cutoff_s8 / 127          (niagara, src/shaders/math.h, coneCull)
+// An orthographic view (direction d) tests dot(d, axis) >= cutoff, as meshoptimizer.h gives it.
+// Beyond 512 triangles (the library's limit) or coordinates beyond 1e18 (it squares them in float)
+// the record never culls: cone_cutoff 1, cone_cutoff_s8 127, the rest zero.
+
+// The library's bounds of meshlet m of `arrays`, whose vertex ids index `positions`; of every meshlet.
+MeshletBounds meshoptMeshletBounds(const MeshletArrays& arrays, size_t meshlet, const std::vector<glm::vec3>& positions);
+std::vector<MeshletBounds> meshoptBoundsOfMeshlets(const MeshletArrays& arrays, const std::vector<glm::vec3>& positions);
+// The same for a cluster given as triangles (three indices each, into `positions`).
+MeshletBounds meshoptEngineBounds(const std::vector<uint32_t>& indices, const std::vector<glm::vec3>& positions);
+
+// The two tests from an eye, in float (`eye.position` rounded to float as a shader gets it), and
+// sphere-s8's float original: the same test with cone_axis and cone_cutoff as floats.
+bool meshoptApexCulls(const MeshletBounds& bounds, const Eye& eye);
+bool meshoptSphereS8Culls(const MeshletBounds& bounds, const Eye& eye);
+bool meshoptSphereF32Culls(const MeshletBounds& bounds, const Eye& eye);
+// How far each passes its threshold (above 0 it culls), in units of the unit view's dot product.
+double meshoptApexMargin(const MeshletBounds& bounds, const Eye& eye);
+double meshoptSphereS8Margin(const MeshletBounds& bounds, const Eye& eye);
+// Share of view directions (eye at infinity) each culls from: (1 - cutoff) / 2, 0 when cutoff >= 1.
+double meshoptApexCullShare(const MeshletBounds& bounds);
+double meshoptSphereS8CullShare(const MeshletBounds& bounds);
 
 }  // namespace conescope

@@ -1,0 +1,60 @@
+// The per-cluster records the engine tests and the compact octagon read (RecordTests.h), kept with
+// the bounds they belong to and made on first use: meshoptimizer's meshopt_Bounds (meshopt/Meshopt.h;
+// a meshlet file's own when it stored them), cadscene's packed cone and box (CadsceneCones.h) and
+// the 16-byte octagon (CompactOctagons.h). Made once per kind under a lock, so the window's threads
+// may ask together; every caller passes the same stages the bounds were made from.
+#pragma once
+
+#include <memory>
+#include <mutex>
+#include <vector>
+
+#include "CadsceneCones.h"
+#include "CompactOctagons.h"
+#include "FileClusters.h"
+#include "Mesh.h"
+#include "Partition.h"
+
+namespace conescope {
+
+// What the records are made from: the stages the bounds were made from, and of the bounds the
+// clusters' faces and cones (ClusterBounds holds the records, so they do not know it).
+struct RecordSource {
+    const Mesh& mesh;
+    const std::vector<glm::vec3>& world;
+    const FaceGeometry& faces;
+    const ClusterFaces& clusters;
+    const std::vector<ConeOfNormals>& cones;
+    size_t count() const { return cones.size(); }
+};
+
+class EngineRecords {
+public:
+    // meshoptimizer's bounds a meshlet file stored, one per cluster: used instead of the library's.
+    void useStoredMeshoptBounds(const std::vector<MeshletBounds>& stored);
+    bool meshoptStored() const { return !stored_.empty(); }
+
+    const std::vector<MeshletBounds>& meshopt(const RecordSource& source) const;
+    // The mesh's world box: the grid of cadscene's boxes and of the compact octagon's apexes.
+    const Aabb& object(const RecordSource& source) const;
+    const std::vector<CadsceneRecord>& cadscene(const RecordSource& source) const;
+    const std::vector<CadsceneFloat>& cadsceneFloat(const RecordSource& source) const;
+    const std::vector<CompactOctagon>& compactOctagons(const RecordSource& source) const;
+    const std::vector<DecodedOctagon>& decodedOctagons(const RecordSource& source) const;
+
+private:
+    mutable std::mutex mutex_;
+    std::vector<MeshletBounds> stored_;
+    mutable bool meshoptMade_ = false, objectMade_ = false, cadsceneMade_ = false, compactMade_ = false;
+    mutable std::vector<MeshletBounds> meshopt_;
+    mutable Aabb object_;
+    mutable std::vector<CadsceneRecord> cadscene_;
+    mutable std::vector<CadsceneFloat> cadsceneFloat_;
+    mutable std::vector<CompactOctagon> compact_;
+    mutable std::vector<DecodedOctagon> decoded_;
+};
+
+// The fan triangles of each cluster's faces, in face order: what an engine's meshlet would hold.
+std::vector<std::vector<uint32_t>> clusterTriangles(const RecordSource& source);
+
+}  // namespace conescope

@@ -1,0 +1,300 @@
+#include "io/MeshletFiles.h"
+
+#include <charconv>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <limits>
+
+#include <nlohmann/json.hpp>
+
+#include "io/FileChecks.h"
+
+namespace conescope {
+
+namespace {
+
+constexpr char kMagic[8] = {'M', 'E', 'S', 'H', 'L', 'E', 'T', 'S'};
+constexpr size_t kHeaderBytes = 32, kMeshletBytes = 16, kBoundsBytes = 48;
+
+// --- JSON ------------------------------------------------------------------------------------------
+
+using Json = nlohmann::json;
+
+[[noreturn]] void failJson(const std::string& source, const std::string& where, const std::string& what) {
+    throw MeshletFileError(source + ": " + where + ": " + what);
+}
+
+const Json& member(const Json& object, const char* key, const std::string& source, const std::string& where = "the document") {
+    const auto found = object.find(key);
+    if (found == object.end()) failJson(source, where, std::string("has no \"") + key + "\"");
+    return *found;
+}
+
+const Json& arrayMember(const Json& object, const char* key, const std::string& source, const std::string& where = "the document") {
+    const Json& value = member(object, key, source, where);
+    if (!value.is_array()) failJson(source, std::string("\"") + key + "\"", "is not an array");
+    return value;
+}
+
+// A whole number in [low, high], or an error naming where it is.
+int64_t wholeNumber(const Json& value, int64_t low, int64_t high, const std::string& source, const std::string& where) {
+    int64_t number = 0;
+    if (value.is_number_unsigned() && value.get<uint64_t>() <= uint64_t(std::numeric_limits<int64_t>::max()))
+        number = int64_t(value.get<uint64_t>());
+    else if (value.is_number_integer())
+        number = value.get<int64_t>();
+    else
+        failJson(source, where, "is " + std::string(value.type_name()) + ", not a whole number");
+    if (number < low || number > high)
+        failJson(source, where, std::to_string(number) + " is outside [" + std::to_string(low) + ", " + std::to_string(high) + "]");
+    return number;
+}
+
+float finiteFloat(const Json& value, const std::string& source, const std::string& where) {
+    if (!value.is_number()) failJson(source, where, "is " + std::string(value.type_name()) + ", not a number");
+    const double number = value.get<double>();
+    if (!std::isfinite(number) || std::abs(number) > double(std::numeric_limits<float>::max()))
+        failJson(source, where, "is not a finite float");
+    return float(number);
+}
+
+template <size_t N, typename Read>
+auto fixedArray(const Json& object, const char* key, const std::string& source, const std::string& where, Read read) {
+    const Json& values = member(object, key, source, where);
+    const std::string name = where + " \"" + key + "\"";
+    if (!values.is_array() || values.size() != N) failJson(source, name, "is not an array of " + std::to_string(N) + " numbers");
+    std::array<decltype(read(values[0], name)), N> result{};
+    for (size_t k = 0; k < N; ++k) result[k] = read(values[k], name + "[" + std::to_string(k) + "]");
+    return result;
+}
+
+MeshletBounds boundsFromJson(const Json& entry, const std::string& source, const std::string& where) {
+    if (!entry.is_object()) failJson(source, where, "is not an object");
+    auto real = [&](const Json& value, const std::string& at) { return finiteFloat(value, source, at); };
+    auto signedByte = [&](const Json& value, const std::string& at) { return int8_t(wholeNumber(value, -128, 127, source, at)); };
+    MeshletBounds bounds;
+    bounds.center = fixedArray<3>(entry, "center", source, where, real);
+    bounds.radius = real(member(entry, "radius", source, where), where + " \"radius\"");
+    bounds.coneApex = fixedArray<3>(entry, "cone_apex", source, where, real);
+    bounds.coneAxis = fixedArray<3>(entry, "cone_axis", source, where, real);
+    bounds.coneCutoff = real(member(entry, "cone_cutoff", source, where), where + " \"cone_cutoff\"");
+    bounds.coneAxisS8 = fixedArray<3>(entry, "cone_axis_s8", source, where, signedByte);
+    bounds.coneCutoffS8 = signedByte(member(entry, "cone_cutoff_s8", source, where), where + " \"cone_cutoff_s8\"");
+    return bounds;
+}
+
+// --- Binary ----------------------------------------------------------------------------------------
+
+uint32_t u32At(const std::string& bytes, size_t offset) {
+    uint32_t value = 0;
+    for (int k = 3; k >= 0; --k) value = value << 8 | uint8_t(bytes[offset + k]);
+    return value;
+}
+
+float f32At(const std::string& bytes, size_t offset) {
+    const uint32_t bits = u32At(bytes, offset);
+    float value = 0.0f;
+    std::memcpy(&value, &bits, 4);
+    return value;
+}
+
+void putU32(std::string& bytes, uint32_t value) {
+    for (int k = 0; k < 4; ++k) bytes.push_back(char(value >> (8 * k) & 0xff));
+}
+
+void putF32(std::string& bytes, float value) {
+    uint32_t bits = 0;
+    std::memcpy(&bits, &value, 4);
+    putU32(bytes, bits);
+}
+
+size_t paddedToFour(size_t count) { return (count + 3) & ~size_t(3); }
+
+// --- Writing JSON ------------------------------------------------------------------------------------
+
+void appendNumber(std::string& text, float value) {
+    char buffer[32];
+    text.append(buffer, std::to_chars(buffer, buffer + sizeof buffer, value).ptr);
+}
+
+template <typename T>
+void appendList(std::string& text, const T* values, size_t count) {
+    text += '[';
+    for (size_t i = 0; i < count; ++i) {
+        if (i) text += ',';
+        if constexpr (std::is_floating_point_v<T>) appendNumber(text, values[i]);
+        else text += std::to_string(int64_t(values[i]));
+    }
+    text += ']';
+}
+
+void appendBounds(std::string& text, const MeshletBounds& b) {
+    text += "{\"center\":";
+    appendList(text, b.center.data(), 3);
+    text += ",\"radius\":";
+    appendNumber(text, b.radius);
+    text += ",\"cone_apex\":";
+    appendList(text, b.coneApex.data(), 3);
+    text += ",\"cone_axis\":";
+    appendList(text, b.coneAxis.data(), 3);
+    text += ",\"cone_cutoff\":";
+    appendNumber(text, b.coneCutoff);
+    text += ",\"cone_axis_s8\":";
+    appendList(text, b.coneAxisS8.data(), 3);
+    text += ",\"cone_cutoff_s8\":" + std::to_string(int(b.coneCutoffS8)) + "}";
+}
+
+}  // namespace
+
+bool isMeshletFile(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::string start(64, '\0');
+    in.read(start.data(), std::streamsize(start.size()));
+    start.resize(size_t(in.gcount()));
+    if (start.compare(0, 8, kMagic, 8) == 0) return true;
+    const size_t first = start.find_first_not_of(" \t\r\n");
+    return first != std::string::npos && start[first] == '{';
+}
+
+MeshletArrays parseMeshletJson(const std::string& text, const std::string& source) {
+    Json document;
+    try {
+        document = Json::parse(text);
+    } catch (const Json::parse_error& error) {
+        throw MeshletFileError(source + ": not valid JSON (" + error.what() + ")");
+    }
+    if (!document.is_object()) failJson(source, "the document", "is not a JSON object");
+    const Json& format = member(document, "format", source);
+    if (!format.is_string() || format.get<std::string>() != "meshoptimizer-meshlets")
+        failJson(source, "\"format\"", "is " + format.dump() + ", not \"meshoptimizer-meshlets\"");
+    MeshletArrays arrays;
+    const Json& meshlets = arrayMember(document, "meshlets", source);
+    for (size_t m = 0; m < meshlets.size(); ++m) {
+        const std::string where = "meshlets[" + std::to_string(m) + "]";
+        if (!meshlets[m].is_array() || meshlets[m].size() != 4)
+            failJson(source, where, "is not [vertex_offset, triangle_offset, vertex_count, triangle_count]");
+        std::array<uint32_t, 4> meshlet{};
+        for (int k = 0; k < 4; ++k)
+            meshlet[k] = uint32_t(wholeNumber(meshlets[m][k], 0, std::numeric_limits<uint32_t>::max(), source, where + "[" + std::to_string(k) + "]"));
+        arrays.meshlets.push_back(meshlet);
+    }
+    const Json& vertices = arrayMember(document, "meshlet_vertices", source);
+    arrays.vertices.reserve(vertices.size());
+    for (size_t i = 0; i < vertices.size(); ++i)
+        arrays.vertices.push_back(
+            uint32_t(wholeNumber(vertices[i], 0, std::numeric_limits<uint32_t>::max(), source, "meshlet_vertices[" + std::to_string(i) + "]")));
+    const Json& triangles = arrayMember(document, "meshlet_triangles", source);
+    arrays.triangles.reserve(triangles.size());
+    for (size_t i = 0; i < triangles.size(); ++i)
+        arrays.triangles.push_back(uint8_t(wholeNumber(triangles[i], 0, 255, source, "meshlet_triangles[" + std::to_string(i) + "]")));
+    if (document.contains("bounds")) {
+        const Json& bounds = arrayMember(document, "bounds", source);
+        if (bounds.size() != meshlets.size())
+            failJson(source, "\"bounds\"", "has " + std::to_string(bounds.size()) + " entries for " + std::to_string(meshlets.size()) + " meshlets");
+        for (size_t m = 0; m < bounds.size(); ++m) arrays.bounds.push_back(boundsFromJson(bounds[m], source, "bounds[" + std::to_string(m) + "]"));
+    }
+    return arrays;
+}
+
+MeshletArrays parseMeshletBinary(const std::string& bytes, const std::string& source) {
+    if (bytes.size() < kHeaderBytes || bytes.compare(0, 8, kMagic, 8) != 0)
+        throw MeshletFileError(source + ": not a binary meshlet file (it starts with \"MESHLETS\" and a 32-byte header)");
+    const uint32_t version = u32At(bytes, 8), flags = u32At(bytes, 12);
+    if (version != 1) throw MeshletFileError(source + ": byte 8: version " + std::to_string(version) + ", this reader knows version 1");
+    if (flags > 1) throw MeshletFileError(source + ": byte 12: unknown flags " + std::to_string(flags) + " (only bit 0, bounds, is defined)");
+    const uint64_t meshletCount = u32At(bytes, 16), vertexCount = u32At(bytes, 20), triangleBytes = u32At(bytes, 24);
+    const bool hasBounds = flags & 1;
+    const uint64_t expected = kHeaderBytes + meshletCount * kMeshletBytes + vertexCount * 4 + paddedToFour(triangleBytes) +
+                              (hasBounds ? meshletCount * kBoundsBytes : 0);
+    if (expected != bytes.size())
+        throw MeshletFileError(source + ": the header promises " + std::to_string(meshletCount) + " meshlets, " + std::to_string(vertexCount) +
+                               " meshlet_vertices and " + std::to_string(triangleBytes) + " triangle bytes" + (hasBounds ? " with bounds" : "") +
+                               " (" + std::to_string(expected) + " bytes) but the file has " + std::to_string(bytes.size()));
+    MeshletArrays arrays;
+    size_t at = kHeaderBytes;
+    arrays.meshlets.resize(meshletCount);
+    for (auto& meshlet : arrays.meshlets)
+        for (uint32_t& field : meshlet) field = u32At(bytes, at), at += 4;
+    arrays.vertices.resize(vertexCount);
+    for (uint32_t& vertex : arrays.vertices) vertex = u32At(bytes, at), at += 4;
+    arrays.triangles.assign(bytes.begin() + long(at), bytes.begin() + long(at + triangleBytes));
+    at += paddedToFour(triangleBytes);
+    if (hasBounds) {
+        arrays.bounds.resize(meshletCount);
+        for (size_t m = 0; m < meshletCount; ++m, at += kBoundsBytes) {
+            MeshletBounds& b = arrays.bounds[m];
+            // 11 floats (centre, radius, apex, axis, cutoff), then the four signed bytes.
+            float fields[11];
+            for (int k = 0; k < 11; ++k) fields[k] = f32At(bytes, at + 4 * k);
+            for (int k = 0; k < 11; ++k)
+                if (!std::isfinite(fields[k]))
+                    throw MeshletFileError(source + ": byte " + std::to_string(at + 4 * k) + ": bounds of meshlet " + std::to_string(m) +
+                                           " hold a number that is not finite");
+            b.center = {fields[0], fields[1], fields[2]};
+            b.radius = fields[3];
+            b.coneApex = {fields[4], fields[5], fields[6]};
+            b.coneAxis = {fields[7], fields[8], fields[9]};
+            b.coneCutoff = fields[10];
+            for (int k = 0; k < 3; ++k) b.coneAxisS8[k] = int8_t(bytes[at + 44 + k]);
+            b.coneCutoffS8 = int8_t(bytes[at + 47]);
+        }
+    }
+    return arrays;
+}
+
+MeshletArrays readMeshletFile(const std::string& path) {
+    std::string bytes;
+    try {
+        bytes = readFileBytes(path);
+    } catch (const std::exception& error) {
+        throw MeshletFileError(error.what());
+    }
+    if (bytes.compare(0, 8, kMagic, 8) == 0) return parseMeshletBinary(bytes, path);
+    return parseMeshletJson(bytes, path);
+}
+
+std::string meshletJson(const MeshletArrays& arrays) {
+    std::string text = "{\"format\":\"meshoptimizer-meshlets\",\n\"meshlets\":[";
+    for (size_t m = 0; m < arrays.meshlets.size(); ++m) {
+        if (m) text += ',';
+        appendList(text, arrays.meshlets[m].data(), 4);
+    }
+    text += "],\n\"meshlet_vertices\":";
+    appendList(text, arrays.vertices.data(), arrays.vertices.size());
+    text += ",\n\"meshlet_triangles\":";
+    appendList(text, arrays.triangles.data(), arrays.triangles.size());
+    if (!arrays.bounds.empty()) {
+        text += ",\n\"bounds\":[";
+        for (size_t m = 0; m < arrays.bounds.size(); ++m) {
+            if (m) text += ",\n";
+            appendBounds(text, arrays.bounds[m]);
+        }
+        text += ']';
+    }
+    return text + "}\n";
+}
+
+std::string meshletBinary(const MeshletArrays& arrays) {
+    std::string bytes(kMagic, 8);
+    for (uint64_t value : {uint64_t(1), uint64_t(arrays.bounds.empty() ? 0 : 1), uint64_t(arrays.meshlets.size()),
+                           uint64_t(arrays.vertices.size()), uint64_t(arrays.triangles.size()), uint64_t(0)})
+        putU32(bytes, uint32_t(value));
+    for (const auto& meshlet : arrays.meshlets)
+        for (uint32_t field : meshlet) putU32(bytes, field);
+    for (uint32_t vertex : arrays.vertices) putU32(bytes, vertex);
+    bytes.append(arrays.triangles.begin(), arrays.triangles.end());
+    bytes.resize(bytes.size() + paddedToFour(arrays.triangles.size()) - arrays.triangles.size(), '\0');
+    for (const MeshletBounds& b : arrays.bounds) {
+        for (float value : b.center) putF32(bytes, value);
+        putF32(bytes, b.radius);
+        for (float value : b.coneApex) putF32(bytes, value);
+        for (float value : b.coneAxis) putF32(bytes, value);
+        putF32(bytes, b.coneCutoff);
+        for (int8_t value : b.coneAxisS8) bytes.push_back(char(value));
+        bytes.push_back(char(b.coneCutoffS8));
+    }
+    return bytes;
+}
+
+}  // namespace conescope

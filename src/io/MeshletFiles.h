@@ -1,0 +1,34 @@
+// meshoptimizer's meshlet arrays in files: JSON and a little-endian binary form of the same content,
+// both holding meshopt_buildMeshlets's three arrays exactly as it fills them and, optionally, one
+// meshopt_Bounds per meshlet. The layouts (JSON keys; binary header, arrays, padding, bounds) are
+// in README.md, "Debugging your engine's meshlets"; the binary's size must be exactly its header's.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+#include "core/MeshletArrays.h"
+
+namespace conescope {
+
+// Thrown for a file that is not a well-formed meshlet file; what() starts with the path and says
+// where (the JSON member, or the byte offset) and what is wrong.
+class MeshletFileError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+// Whether the file starts like a meshlet file (JSON object or the binary magic), by its content.
+bool isMeshletFile(const std::string& path);
+
+// Reads either form, told apart by the first bytes. Checks the structure only (types, counts, sizes);
+// applyMeshlets (core/MeshletArrays.h) checks the arrays against a mesh. Throws MeshletFileError.
+MeshletArrays readMeshletFile(const std::string& path);
+MeshletArrays parseMeshletJson(const std::string& text, const std::string& sourceName);
+MeshletArrays parseMeshletBinary(const std::string& bytes, const std::string& sourceName);
+
+// The arrays as JSON text (bounds when the arrays hold them) and as the binary form.
+std::string meshletJson(const MeshletArrays& arrays);
+std::string meshletBinary(const MeshletArrays& arrays);
+
+}  // namespace conescope
