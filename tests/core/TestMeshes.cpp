@@ -75,6 +75,35 @@ Mesh quadCube() {
     return mesh;
 }
 
+Mesh boxProp(std::mt19937_64& random, int boxes, int cells) {
+    std::uniform_real_distribution<double> size(0.05, 1.5), place(-1.0, 1.0);
+    Mesh mesh;
+    for (int b = 0; b < boxes; ++b) {
+        const glm::dvec3 low(place(random), place(random), place(random)), extent(size(random), size(random), size(random));
+        // Each side: a (cells + 1)^2 grid of corners over two axes, wound outwards.
+        for (int axis = 0; axis < 3; ++axis)
+            for (int side = 0; side < 2; ++side) {
+                const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+                const uint32_t first = uint32_t(mesh.positions.size());
+                for (int i = 0; i <= cells; ++i)
+                    for (int j = 0; j <= cells; ++j) {
+                        glm::dvec3 p = low;
+                        p[axis] += side * extent[axis];
+                        p[u] += extent[u] * i / cells;
+                        p[v] += extent[v] * j / cells;
+                        mesh.positions.emplace_back(p);
+                    }
+                for (int i = 0; i < cells; ++i)
+                    for (int j = 0; j < cells; ++j) {
+                        const uint32_t a = first + uint32_t(i * (cells + 1) + j), c = a + uint32_t(cells + 2);
+                        if (side == 1) mesh.addFace({a, a + uint32_t(cells + 1), c, a + 1});
+                        else mesh.addFace({a, a + 1, c, a + uint32_t(cells + 1)});
+                    }
+            }
+    }
+    return mesh;
+}
+
 glm::dvec3 randomUnit(std::mt19937_64& random) {
     std::normal_distribution<double> gauss;
     glm::dvec3 v;

@@ -29,6 +29,10 @@ glm::dmat4 randomModel(std::mt19937_64& random, double scale);
 // pieces, between which meshoptimizer's builder jumps through its k-d tree.
 Mesh scatteredSpheres(std::mt19937_64& random, int pieces);
 
+// Furniture made of closed boxes (a desk top on legs, shelves, a door): `boxes` boxes of random
+// sizes side by side, each side a grid of cells x cells quads, as modelling tools export them.
+Mesh boxProp(std::mt19937_64& random, int boxes, int cells);
+
 // A mesh of datasets/ (OFF), read without the io layer, which the core tests do not link.
 Mesh readBundledOff(const std::string& name);
 

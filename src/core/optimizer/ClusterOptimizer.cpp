@@ -106,15 +106,23 @@ void reduceAndSearch(optimizer::State& state, size_t target, size_t sweeps) {
 // dragknob, patch-13), and the second start costs little there.
 constexpr size_t kBothStartsBelowFaces = size_t(1) << 14;
 
-// meshoptimizer's meshlets as a search state, or nothing when a polygon split across meshlets
-// makes one hold more than the limits (the search keeps limits, it does not restore them). Their
-// pieces stay together: handing a meshlet's smaller pieces to neighbours with room (measured on
-// CGAL's cheese) widened those neighbours' cones more than it saved.
-std::unique_ptr<optimizer::State> meshletStart(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits,
-                                                const Partition& meshlets) {
+// meshoptimizer's meshlets searched at the budget, or those meshlets again where the search ended
+// lower in the objective at their count (annealing accepts losses): never worse than
+// meshoptimizer's own partition, in expectation over view directions. A polygon split across
+// meshlets joins one of them whole and can overfill it: such meshlets first pass faces to
+// neighbours with room, and those still over the limits keep their size, never growing past it
+// (the limits of meshoptimizer's own partition of these faces; whole polygons within the limits
+// need more clusters than its count on most polygon meshes). A meshlet's pieces stay together:
+// handing its smaller pieces to neighbours with room (measured on CGAL's cheese) widened those
+// neighbours' cones more than it saved.
+std::unique_ptr<optimizer::State> searchFromMeshlets(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits,
+                                                     const Partition& meshlets, size_t target, size_t sweeps) {
     auto state = std::make_unique<optimizer::State>(mesh, faces, limits);
     optimizer::assign(*state, meshlets);
-    if (!withinLimits(*state)) state.reset();
+    const double startValue = objectiveOf(*state);
+    if (!withinLimits(*state)) optimizer::shedOverLimits(*state);
+    reduceAndSearch(*state, target, sweeps);
+    if (state->liveClusters >= meshlets.clusterCount && objectiveOf(*state) < startValue) optimizer::assign(*state, meshlets);
     return state;
 }
 
@@ -127,8 +135,8 @@ std::unique_ptr<optimizer::State> meshletStart(const Mesh& mesh, const FaceGeome
 Partition optimizeClusters(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits, size_t target,
                            const SearchPlan& plan, size_t sweeps, const Partition* meshlets) {
     std::unique_ptr<optimizer::State> packed;
-    if (!plan.growthStart && meshlets && (packed = meshletStart(mesh, faces, limits, *meshlets))) {
-        reduceAndSearch(*packed, target, sweeps);
+    if (!plan.growthStart && meshlets) {
+        packed = searchFromMeshlets(mesh, faces, limits, *meshlets, target, sweeps);
         if (packed->liveClusters <= target) return optimizer::result(*packed);
     }
     optimizer::State state(mesh, faces, limits);
@@ -144,9 +152,7 @@ Partition optimizeClusters(const Mesh& mesh, const FaceGeometry& faces, const Me
     if (packed && !closerToTheBudget(state, *packed, target)) return optimizer::result(*packed);
     const bool small = mesh.faceCount() < kBothStartsBelowFaces;
     if (!plan.growthStart || (state.liveClusters <= target && !small) || !plan.meshoptLimits) return optimizer::result(state);
-    packed = meshletStart(mesh, faces, limits, meshlets ? *meshlets : buildMeshoptMeshlets(mesh, limits, 1.0f));
-    if (!packed) return optimizer::result(state);
-    reduceAndSearch(*packed, target, sweeps);
+    packed = searchFromMeshlets(mesh, faces, limits, meshlets ? *meshlets : buildMeshoptMeshlets(mesh, limits, 1.0f), target, sweeps);
     return optimizer::result(closerToTheBudget(*packed, state, target) ? *packed : state);
 }
 
