@@ -18,7 +18,7 @@ std::string fileName(const std::string& path);
 // The mesh, with what its reader noticed on stderr even when quiet.
 Mesh readMeshNoting(const std::string& path, bool quiet);
 // Inconsistent or inside-out winding makes every number after it wrong without looking wrong.
-void warnAboutWinding(const RunStatistics& run, bool quiet);
+void warnAboutMesh(const RunStatistics& run, bool quiet);
 // Warns, even when quiet, when a cluster budget was asked for and another count made; `which`
 // (say "A: ") goes before the warning.
 void warnAboutBudget(const RunStatistics& run, const std::string& which = "");
