@@ -204,9 +204,23 @@ Mesh scatteredSpheres(std::mt19937_64& random, int pieces) {
     return mesh;
 }
 
+namespace {
+
+Mesh readOffAt(const std::filesystem::path& path);
+
+}  // namespace
+
 Mesh readBundledOff(const std::string& name) {
-    const std::filesystem::path path =
-        std::filesystem::path(__FILE__).parent_path().parent_path().parent_path() / "datasets" / name;
+    return readOffAt(std::filesystem::path(__FILE__).parent_path().parent_path().parent_path() / "datasets" / name);
+}
+
+Mesh readTestDataOff(const std::string& name) {
+    return readOffAt(std::filesystem::path(__FILE__).parent_path().parent_path() / "data" / name);
+}
+
+namespace {
+
+Mesh readOffAt(const std::filesystem::path& path) {
     std::ifstream file(path);
     if (!file) throw std::runtime_error("cannot open " + path.string());
     std::vector<double> numbers;
@@ -234,5 +248,7 @@ Mesh readBundledOff(const std::string& name) {
     validateMesh(mesh);
     return mesh;
 }
+
+}  // namespace
 
 }  // namespace conescope::testmesh

@@ -41,5 +41,7 @@ Mesh furnitureProp(std::mt19937_64& random, int kind, int cells, bool triangles)
 
 // A mesh of datasets/ (OFF), read without the io layer, which the core tests do not link.
 Mesh readBundledOff(const std::string& name);
+// A mesh of tests/data/ (OFF) the same way, say "cgal/bones.off".
+Mesh readTestDataOff(const std::string& name);
 
 }  // namespace conescope::testmesh
