@@ -57,7 +57,7 @@ void warnAboutMesh(const RunStatistics& run, bool quiet) {
 
 // A count other than the one asked for makes every comparison at that count unfair.
 void warnAboutBudget(const RunStatistics& run, const std::string& which) {
-    const std::string warning = budgetMissed(run.settings, run.clusters);
+    const std::string warning = budgetMissed(run.settings, run.clusters, run.fewestClusters);
     if (!warning.empty()) warn(which + warning);
 }
 

@@ -248,8 +248,11 @@ TEST(ClusterOptimizer, ManyPiecesReachABudgetBelowTheirCount) {
     const Partition fast = buildOptimizedClusters(mesh, faces, limits, 8, {}, Effort::Fast);
     expectValidWithinLimits(mesh, fast, limits);
     EXPECT_EQ(fast.clusterCount, 8u);
-    // Below what the limits allow (800 triangles need 7 clusters of 124), it gets as close as it can.
-    EXPECT_GE(buildOptimizedClusters(mesh, faces, limits, 2).clusterCount, 7u);
+    // 480 vertices need 8 clusters of 64 (800 triangles 7 of 124): the budget of 8 above is that bound.
+    EXPECT_EQ(fewestClustersWithin(mesh, limits), 8u);
+    EXPECT_EQ(fewestClustersWithin(mesh, MeshletLimits{255, 124}), 7u);
+    // Below what the limits allow, it gets as close as it can.
+    EXPECT_GE(buildOptimizedClusters(mesh, faces, limits, 2).clusterCount, 8u);
 }
 
 // A mesh of quads: meshoptimizer's meshlets hold fan triangles, and a quad split across two of them

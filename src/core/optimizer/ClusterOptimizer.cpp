@@ -172,6 +172,18 @@ size_t defaultClusterBudget(const Mesh& mesh, const MeshletLimits& limits) {
     return defaultBudget(mesh, limits, meshoptTakesLimits(limits));
 }
 
+size_t fewestClustersWithin(const Mesh& mesh, const MeshletLimits& limits) {
+    std::vector<bool> used(mesh.positions.size(), false);
+    size_t usedVertices = 0;
+    for (size_t f = 0; f < mesh.faceCount(); ++f)
+        for (size_t k = 0; k < mesh.faceSize(f); ++k) {
+            const uint32_t v = mesh.faceBegin(f)[k];
+            if (!used[v]) used[v] = true, ++usedVertices;
+        }
+    auto atLeast = [](size_t count, size_t perCluster) { return (count + perCluster - 1) / std::max<size_t>(perCluster, 1); };
+    return std::max(atLeast(triangleCount(mesh), limits.maxTriangles), atLeast(usedVertices, limits.maxVertices));
+}
+
 size_t annealingSweepsFor(Effort effort, size_t faceCount, size_t meshletParts) {
     const SearchPlan plan = planFor(effort);
     const size_t sweeps = annealingSweeps(plan, faceCount);
