@@ -57,6 +57,8 @@ std::string loadMessage(const PreparedMesh& prepared) {
         pieces.push_back("Warning: " + warning +
                          (prepared.windingFixedFaces > 0 ? " (repaired: " + std::to_string(prepared.windingFixedFaces) + " faces flipped)"
                                                          : "; tick 'Fix winding' in Settings to repair"));
+    const std::string sides = doubleSidedWarning(prepared.report);
+    if (!sides.empty()) pieces.push_back("Warning: " + sides);
     return joinSentences(pieces);
 }
 

@@ -32,6 +32,13 @@ Settings withoutClusterFile(Settings settings) {
     return settings;
 }
 
+// The budget warning for what the window shows, with the fewest clusters its limits allow.
+std::string budgetMissedIn(const Snapshot& shown) {
+    const Settings& settings = shown.settings;
+    const size_t fewest = settings.clusterCount != 0 ? fewestClustersWithin(shown.prepared->mesh(), settings.limits) : 0;
+    return budgetMissed(settings, shown.clusters->partition.clusterCount, fewest);
+}
+
 }  // namespace
 
 Session::Session(QObject* parent) : QObject(parent), layers_(firstLookLayers()) {
@@ -89,7 +96,7 @@ void Session::openMesh(const QString& path) {
             }
             showSceneResult(result, true);
             const std::string message = joinSentences(
-                {loadMessage(*shown_.prepared), builderNote, budgetMissed(shown_.settings, shown_.clusters->partition.clusterCount)});
+                {loadMessage(*shown_.prepared), builderNote, budgetMissedIn(shown_)});
             emit meshShown(path, QString::fromStdString(message));
         },
         [this, path](const QString& error) {
@@ -165,7 +172,7 @@ void Session::requestClusters() {
         },
         [this](SceneResult& result) {
             showSceneResult(result, false);
-            const std::string missed = budgetMissed(shown_.settings, shown_.clusters->partition.clusterCount);
+            const std::string missed = budgetMissedIn(shown_);
             if (!missed.empty()) emit notice(QString::fromStdString(missed), 8000);
         },
         [this, settings](const QString& error) {

@@ -83,6 +83,7 @@ void StatisticsPanel::showClusters(const PreparedMesh& prepared, const ClusterSe
     if (report.inconsistentEdges) problems << tr("%1 inconsistently wound edges").arg(report.inconsistentEdges);
     if (report.insideOutComponents) problems << tr("%1 inside-out components").arg(report.insideOutComponents);
     if (report.duplicateFaces) problems << tr("%1 duplicate faces").arg(report.duplicateFaces);
+    if (report.doubleSidedFaces) problems << tr("%1 double-sided").arg(report.doubleSidedFaces);
     if (prepared.windingFixedFaces) problems << tr("%1 faces flipped").arg(prepared.windingFixedFaces);
     values_["mesh problems"]->setText(problems.isEmpty() ? tr("none") : problems.join(QStringLiteral(", ")));
     values_["clusters"]->setText(count(clusters.partition.clusterCount));

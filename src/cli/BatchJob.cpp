@@ -42,7 +42,7 @@ void runCompareJob(const BatchConfig& config, const BatchJob& job, const Mesh& m
         writeTextFileAtomically(job.compareJson, text.str());
     }
     std::vector<std::string> warnings = runWarnings(runs.b);
-    const std::string budgetA = budgetMissed(runs.a.settings, runs.a.clusters);
+    const std::string budgetA = budgetMissed(runs.a.settings, runs.a.clusters, runs.a.fewestClusters);
     if (!budgetA.empty()) warnings.push_back("A: " + budgetA);
     addRunCells(row, runs.b, warnings);
     addComparisonCells(row, runs);

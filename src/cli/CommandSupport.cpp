@@ -48,19 +48,21 @@ Mesh readMeshNoting(const std::string& path, bool quiet, const std::vector<Setti
     return std::move(file.mesh);
 }
 
-// Inconsistent or inside-out winding makes every number after it wrong without looking wrong.
-void warnAboutWinding(const RunStatistics& run, bool quiet) {
+// Inconsistent or inside-out winding makes every number after it wrong without looking wrong, and
+// double-sided faces make culling nothing look like a failure of the clusters.
+void warnAboutMesh(const RunStatistics& run, bool quiet) {
     const std::string warning = windingWarning(run.meshReport);
-    if (warning.empty()) return;
-    if (run.settings.fixWinding)
+    if (!warning.empty() && run.settings.fixWinding)
         note(quiet, "--fix-winding flipped " + std::to_string(run.windingFixedFaces) + " faces (" + warning + ")");
-    else
+    else if (!warning.empty())
         warn(runWarnings(run).front());
+    const std::string sides = doubleSidedWarning(run.meshReport);
+    if (!sides.empty()) warn(sides);
 }
 
 // A count other than the one asked for makes every comparison at that count unfair.
 void warnAboutBudget(const RunStatistics& run, const std::string& which) {
-    const std::string warning = budgetMissed(run.settings, run.clusters);
+    const std::string warning = budgetMissed(run.settings, run.clusters, run.fewestClusters);
     if (!warning.empty()) warn(which + warning);
 }
 

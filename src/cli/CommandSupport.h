@@ -20,7 +20,7 @@ std::string fileName(const std::string& path);
 // file builder in `clusterFilesOf` read onto it (io/ClusterFiles.h).
 Mesh readMeshNoting(const std::string& path, bool quiet, const std::vector<Settings>& clusterFilesOf = {});
 // Inconsistent or inside-out winding makes every number after it wrong without looking wrong.
-void warnAboutWinding(const RunStatistics& run, bool quiet);
+void warnAboutMesh(const RunStatistics& run, bool quiet);
 // Warns, even when quiet, when a cluster budget was asked for and another count made; `which`
 // (say "A: ") goes before the warning.
 void warnAboutBudget(const RunStatistics& run, const std::string& which = "");

@@ -51,7 +51,7 @@ void runStats(const StatsOptions& options) {
     const Settings settings = withClusterIds(options.run.toSettings());
     const Mesh mesh = readMeshNoting(options.mesh, options.quiet, {settings});
     const RunStatistics run = runStatistics(mesh, settings, fileName(options.mesh), stderrProgress(options.quiet));
-    warnAboutWinding(run, options.quiet);
+    warnAboutMesh(run, options.quiet);
     warnAboutBudget(run);
     const std::string format = outputFormat(options.format, options.output, "json");
     if (format != "csv" && !options.table.empty()) throw std::invalid_argument("--table applies to CSV output only");
@@ -77,7 +77,7 @@ void runClusters(const ClustersOptions& options) {
     const ClusterSortKey key = parseClusterSortKey(options.sort);
     const Mesh mesh = readMeshNoting(options.mesh, options.quiet, {settings});
     const RunStatistics run = runStatistics(mesh, settings, fileName(options.mesh), stderrProgress(options.quiet));
-    warnAboutWinding(run, options.quiet);
+    warnAboutMesh(run, options.quiet);
     warnAboutBudget(run);
     const CullTestStatistics& result = run.results.front();
     std::ostringstream text;

@@ -22,7 +22,7 @@ void runCompare(const CompareOptions& options) {
         const Settings& settings = side == 'A' ? settingsA : settingsB;
         note(options.quiet, std::string("building ") + side + "'s clusters (" + toString(settings.builder) + ")");
     });
-    warnAboutWinding(runs.a, options.quiet);
+    warnAboutMesh(runs.a, options.quiet);
     warnAboutBudget(runs.a, "A: ");
     warnAboutBudget(runs.b, "B: ");
     // Unequal counts make the comparison unfair: said even with --quiet.

@@ -11,7 +11,9 @@ std::vector<std::string> runWarnings(const RunStatistics& run, const std::string
     std::vector<std::string> warnings;
     const std::string winding = windingWarning(run.meshReport);
     if (!winding.empty() && !run.settings.fixWinding) warnings.push_back(which + winding + "; repair with --fix-winding");
-    const std::string budget = budgetMissed(run.settings, run.clusters);
+    const std::string sides = doubleSidedWarning(run.meshReport);
+    if (!sides.empty()) warnings.push_back(which + sides);
+    const std::string budget = budgetMissed(run.settings, run.clusters, run.fewestClusters);
     if (!budget.empty()) warnings.push_back(which + budget);
     return warnings;
 }

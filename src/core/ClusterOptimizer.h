@@ -32,6 +32,11 @@ enum class Effort { Fast, Balanced, Best };
 // both limits can hold.
 size_t defaultClusterBudget(const Mesh& mesh, const MeshletLimits& limits);
 
+// The fewest clusters the limits allow, whatever the partition: every triangle and every vertex a
+// face uses must be in some cluster. A budget below it cannot be met; one at or above it may still
+// be out of reach where the vertex limit binds (a 64-vertex patch of a surface holds about 98 triangles).
+size_t fewestClustersWithin(const Mesh& mesh, const MeshletLimits& limits);
+
 // What a caller does with each part of the partition as soon as it is made, on the thread that made
 // it (say its bounds): the part's number among `parts`, its faces (ascending mesh face ids) and
 // their clusters, numbered from 0 within the part. The partition numbers its clusters part after

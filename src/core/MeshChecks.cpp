@@ -89,11 +89,24 @@ std::array<uint32_t, 3> cornersOf(const Mesh& mesh, size_t face) {
     return sortedCorners(v[0], v[1], v[2]);
 }
 
+// Faces with the same vertex set as an earlier face, and those of them wound against it.
+struct Duplicates {
+    size_t faces = 0, reversed = 0;
+};
+
+// Whether face `g`, of the same vertices as `f`, runs them the other way round.
+bool woundAgainst(const Mesh& mesh, size_t f, size_t g) {
+    const size_t n = mesh.faceSize(f);
+    const uint32_t *a = mesh.faceBegin(f), *b = mesh.faceBegin(g);
+    const size_t at = size_t(std::find(b, b + n, a[0]) - b);
+    return at < n && b[(at + 1) % n] != a[1] && b[(at + n - 1) % n] == a[1];
+}
+
 // Simple triangles whose corners an earlier simple triangle already has. Two such triangles run the
 // same three edges, so an earlier twin is among the half-edges of the face's two lowest corners,
 // which come in face order: a look along one edge per face instead of a table of every face.
-size_t countDuplicateTriangles(const Mesh& mesh, const std::vector<HalfEdge>& edges) {
-    size_t duplicates = 0;
+Duplicates countDuplicateTriangles(const Mesh& mesh, const std::vector<HalfEdge>& edges) {
+    Duplicates duplicates;
     for (size_t i = 0; i < edges.size();) {
         size_t j = i;
         while (j < edges.size() && edges[j].key() == edges[i].key()) ++j;
@@ -102,11 +115,12 @@ size_t countDuplicateTriangles(const Mesh& mesh, const std::vector<HalfEdge>& ed
             if (!simpleTriangle(mesh, f)) continue;
             const std::array<uint32_t, 3> corners = cornersOf(mesh, f);
             if (edgeKey(corners[0], corners[1]) != edges[i].key()) continue;  // f's twins are looked for along its lowest edge
-            for (size_t h = i; h < k; ++h)
-                if (edges[h].face != f && simpleTriangle(mesh, edges[h].face) && cornersOf(mesh, edges[h].face) == corners) {
-                    ++duplicates;
-                    break;
-                }
+            bool twin = false, reversed = false;
+            for (size_t h = i; h < k && !reversed; ++h)
+                if (edges[h].face != f && simpleTriangle(mesh, edges[h].face) && cornersOf(mesh, edges[h].face) == corners)
+                    twin = true, reversed = woundAgainst(mesh, f, edges[h].face);
+            duplicates.faces += twin;
+            duplicates.reversed += reversed;
         }
         i = j;
     }
@@ -129,11 +143,11 @@ uint32_t hashOf(const std::vector<uint32_t>& vertices) {
 // already has. An open-addressing table of (hash, face) holds one entry per distinct set; equal
 // hashes are compared exactly. A node-based hash set of strings cost a heap allocation per face and
 // most of the check's time on millions of faces.
-size_t countDuplicateOtherFaces(const Mesh& mesh) {
+Duplicates countDuplicateOtherFaces(const Mesh& mesh) {
     const size_t faceCount = mesh.faceCount();
     size_t others = 0;
     for (size_t f = 0; f < faceCount; ++f) others += !simpleTriangle(mesh, f);
-    if (others < 2) return 0;
+    if (others < 2) return {};
     size_t capacity = 16;
     while (capacity < others + others / 3) capacity *= 2;  // load at most 3/4
     constexpr uint64_t kEmpty = ~uint64_t(0);
@@ -141,7 +155,7 @@ size_t countDuplicateOtherFaces(const Mesh& mesh) {
     reserveLarge(slots, capacity);
     slots.assign(capacity, kEmpty);
     std::vector<uint32_t> vertices, other;
-    size_t duplicates = 0;
+    Duplicates duplicates;
     for (size_t f = 0; f < faceCount; ++f) {
         if (simpleTriangle(mesh, f)) continue;
         sortedVertices(mesh, f, vertices);
@@ -154,7 +168,8 @@ size_t countDuplicateOtherFaces(const Mesh& mesh) {
             if (uint32_t(slots[i] >> 32) != hash) continue;
             sortedVertices(mesh, uint32_t(slots[i]), other);
             if (other == vertices) {
-                ++duplicates;
+                ++duplicates.faces;
+                duplicates.reversed += woundAgainst(mesh, f, uint32_t(slots[i]));
                 break;
             }
         }
@@ -246,7 +261,9 @@ MeshReport checkMesh(const Mesh& mesh, const FaceGeometry& faces) {
     const Orientation orientation = orientFaces(mesh, edges);
     report.components = orientation.components;
     report.orientable = orientation.orientable;
-    report.duplicateFaces = countDuplicateTriangles(mesh, edges) + countDuplicateOtherFaces(mesh);
+    const Duplicates triangles = countDuplicateTriangles(mesh, edges), others = countDuplicateOtherFaces(mesh);
+    report.duplicateFaces = triangles.faces + others.faces;
+    report.doubleSidedFaces = triangles.reversed + others.reversed;
     const std::vector<uint8_t> asTheyStand(mesh.faceCount(), 0);
     for (uint8_t insideOut : insideOutComponents(mesh, edges, orientation, asTheyStand)) report.insideOutComponents += insideOut;
     return report;
@@ -279,6 +296,14 @@ size_t fixWinding(Mesh& mesh) {
 }
 
 bool windingNeedsFixing(const MeshReport& report) { return report.inconsistentEdges > 0 || report.insideOutComponents > 0; }
+
+std::string doubleSidedWarning(const MeshReport& report) {
+    if (report.doubleSidedFaces == 0) return {};
+    const size_t n = report.doubleSidedFaces;
+    return "the mesh is double-sided: " + std::to_string(n) + " face" + (n == 1 ? " lies" : "s lie") +
+           " back to back with a face of the same corners wound the other way; from any eye one of each pair faces it, so "
+           "back-face culling can remove neither side (nor a cluster holding both)";
+}
 
 std::string windingWarning(const MeshReport& report) {
     if (!windingNeedsFixing(report)) return {};

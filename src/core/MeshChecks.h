@@ -15,6 +15,7 @@ struct MeshReport {
     size_t nonManifoldEdges = 0;     // edges with three or more faces
     size_t inconsistentEdges = 0;    // edges whose two faces run them in the same direction
     size_t duplicateFaces = 0;       // faces with the same vertex set as an earlier face
+    size_t doubleSidedFaces = 0;     // of those, faces wound against such a face: back to back with it
     size_t degenerateFaces = 0;
     size_t components = 0;           // edge-connected pieces
     bool orientable = true;          // winding can be made consistent on every component
@@ -31,6 +32,11 @@ size_t fixWinding(Mesh& mesh);
 
 // True when fixWinding would change something the report found.
 bool windingNeedsFixing(const MeshReport& report);
+
+// One sentence for the user when the mesh has double-sided geometry (a face and the same face wound
+// the other way), naming the count: from any eye one of each pair faces it, so back-face culling can
+// remove neither, nor any cluster holding both; empty when there is none.
+std::string doubleSidedWarning(const MeshReport& report);
 
 // One sentence for the user when the report finds what makes culling wrong (inconsistent winding,
 // inside-out components), naming the counts; empty when there is none. Callers add how to repair.

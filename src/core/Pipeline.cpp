@@ -262,13 +262,18 @@ Settings builderForMesh(const Settings& settings, const Mesh& mesh, std::string&
     return result;
 }
 
-std::string budgetMissed(const Settings& settings, size_t clustersMade) {
+std::string budgetMissed(const Settings& settings, size_t clustersMade, size_t fewestPossible) {
     const bool takesBudget = settings.builder == Builder::Optimized || settings.builder == Builder::KMeans;
     if (!takesBudget || settings.clusterCount == 0 || clustersMade == settings.clusterCount) return {};
-    return "asked for " + std::to_string(settings.clusterCount) + " clusters, made " + std::to_string(clustersMade) +
-           ": the nearest count the " + toString(settings.builder) + " builder reached within " +
-           std::to_string(settings.limits.maxVertices) + " vertices and " + std::to_string(settings.limits.maxTriangles) +
-           " triangles per cluster";
+    const std::string asked = "asked for " + std::to_string(settings.clusterCount) + " clusters, made " + std::to_string(clustersMade);
+    const std::string limits = std::to_string(settings.limits.maxVertices) + " vertices and " +
+                               std::to_string(settings.limits.maxTriangles) + " triangles per cluster";
+    if (clustersMade > settings.clusterCount && fewestPossible > settings.clusterCount)
+        return asked + ": impossible within " + limits + ", which allow no fewer than " + std::to_string(fewestPossible);
+    std::string sentence = asked + ": the nearest count the " + toString(settings.builder) + " builder reached within " + limits;
+    if (clustersMade > settings.clusterCount && fewestPossible > 0)
+        sentence += " (the limits alone allow as few as " + std::to_string(fewestPossible) + ")";
+    return sentence;
 }
 
 RunStatistics measureRun(const PreparedMesh& prepared, const ClusterSet& clusters, const Settings& settings,
@@ -291,6 +296,7 @@ RunStatistics measureRun(const PreparedMesh& prepared, const ClusterSet& cluster
     run.triangles = prepared.triangles;
     run.degenerateFaces = prepared.faces.degenerateCount;
     run.clusters = clusters.partition.clusterCount;
+    if (settings.clusterCount != 0) run.fewestClusters = fewestClustersWithin(prepared.mesh(), settings.limits);
     const std::vector<Eye> views = viewsFor(settings, prepared.box);
     run.viewCount = views.size();
     const size_t steps = settings.cones.size() * settings.tests.size();

@@ -141,9 +141,10 @@ Settings exportSettings(const Settings& settings, const std::optional<glm::dvec3
 Settings builderForMesh(const Settings& settings, const Mesh& mesh, std::string& why);
 
 // A sentence for the user when a cluster budget was asked for (--clusters) and the builder that takes
-// one made another count (the limits allow no fewer, or the builder reached no nearer); empty
-// otherwise. Numbers compared at the asked count would not be at equal counts.
-std::string budgetMissed(const Settings& settings, size_t clustersMade);
+// one made another count; empty otherwise. Numbers compared at the asked count would not be at equal
+// counts. It says whether the limits make the budget impossible (`fewestPossible`,
+// fewestClustersWithin; 0 when unknown) or the builder reached no nearer.
+std::string budgetMissed(const Settings& settings, size_t clustersMade, size_t fewestPossible);
 
 // The statistics of a whole run from the stages: every cone and test of `settings` over its views
 // (the single eye or the orbit), the displayed cone's bounds taken from `clusters`, the others

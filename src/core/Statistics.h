@@ -90,6 +90,7 @@ struct RunStatistics {
     MeshReport meshReport;            // winding and manifold problems found before culling
     size_t windingFixedFaces = 0;     // faces flipped because settings.fixWinding was set
     size_t clusters = 0;
+    size_t fewestClusters = 0;        // fewestClustersWithin the settings' limits: says why a budget was missed
     size_t viewCount = 0;
     std::vector<CullTestStatistics> results;
 };

@@ -66,9 +66,10 @@ public:
         addNotes(notes);
         if (mesh_.faceCount() == 0) {
             std::string skipped = skippedElements();
+            if (shortFaces_) skipped += (skipped.empty() ? "" : " and ") + counted(shortFaces_, "face") + " of fewer than 3 corners";
             const size_t vertices = mesh_.positions.size();
             throw MeshReadError(sourceName_ + ": no faces (" + std::to_string(vertices) + (vertices == 1 ? " vertex" : " vertices") +
-                                (skipped.empty() ? "" : "; " + skipped + " skipped, which are not faces") + ")");
+                                (skipped.empty() ? "" : "; " + skipped + " skipped, " + whichAreNotFaces()) + ")");
         }
         // Groups are kept only when the file has some: a cluster per group for the file builder.
         if (groupStatements_ > 0) mesh_.faceArrays["group_id"] = std::move(groupOfFace_);
@@ -117,10 +118,17 @@ private:
         ++defined_[Position];
     }
 
+    // A face of one or two corners (exporters write edges so) draws nothing: skipped with a note,
+    // as lines are, its corners still checked. One without corners is a damaged line.
     void readFace(size_t lineNumber) {
-        for (size_t k = 1; k < words_.size(); ++k) mesh_.faceVertices.push_back(uint32_t(readCorner(words_[k], lineNumber)));
         const size_t corners = words_.size() - 1;
-        if (corners < 3) fail(lineNumber, "face has " + counted(corners, "corner") + "; a face needs at least 3");
+        if (corners == 0) fail(lineNumber, "face has 0 corners; a face needs at least 3");
+        if (corners < 3) {
+            for (size_t k = 1; k < words_.size(); ++k) readCorner(words_[k], lineNumber);
+            if (shortFaces_++ == 0) firstShortFace_ = lineNumber;
+            return;
+        }
+        for (size_t k = 1; k < words_.size(); ++k) mesh_.faceVertices.push_back(uint32_t(readCorner(words_[k], lineNumber)));
         if (mesh_.faceVertices.size() > std::numeric_limits<uint32_t>::max())
             fail(lineNumber, "more face corners than 32-bit offsets can address");
         mesh_.faceStarts.push_back(uint32_t(mesh_.faceVertices.size()));
@@ -195,9 +203,18 @@ private:
         return lines + (!lines.empty() && !points.empty() ? " and " : "") + points;
     }
 
+    // "which is not a face" for one line or point, "which are not faces" for more.
+    std::string whichAreNotFaces() const {
+        return lineElements_ + pointElements_ + shortFaces_ == 1 ? "which is not a face" : "which are not faces";
+    }
+
     void addNotes(std::vector<std::string>& notes) const {
         if (std::string skipped = skippedElements(); !skipped.empty())
-            notes.push_back("skipped " + skipped + ": they are not faces");
+            notes.push_back("skipped " + skipped + (lineElements_ + pointElements_ == 1 ? ": it is not a face" : ": they are not faces"));
+        if (shortFaces_)
+            notes.push_back("skipped " + counted(shortFaces_, "face") + " of fewer than 3 corners (" +
+                            (shortFaces_ == 1 ? "line " : "the first on line ") + std::to_string(firstShortFace_) +
+                            "): a face needs at least 3");
         if (unknownStatements_)
             notes.push_back("ignored " + counted(unknownStatements_, "statement") + " with a keyword this reader does not know (" +
                             firstUnknown_ + (unknownStatements_ > 1 ? " is the first" : "") + ")");
@@ -211,6 +228,7 @@ private:
     std::array<int64_t, 3> defined_{};  // v, vt and vn statements read so far
     std::array<ForwardReference, 3> forward_;
     size_t lineElements_ = 0, pointElements_ = 0, unknownStatements_ = 0;
+    size_t shortFaces_ = 0, firstShortFace_ = 0;  // faces of 1 or 2 corners, skipped
     std::string firstUnknown_;
     std::string objectName_, groupNames_;
     std::map<std::string, uint32_t> groups_{{"\n", 0}};  // faces before any o or g: the default group

@@ -6,8 +6,9 @@
 //   also referring forward; '#' comments to the end of a line, blank lines, CRLF line ends.
 // Accepted and ignored for geometry: vt, vn, vp, s, usemtl (also empty), mtllib and the other
 // display statements. The g and o groups become the per-face array "group_id" when the file has any
-// (a cluster per group for the file builder: meshoptimizer's demo dumps meshlets as `o` objects). Skipped with a note: l and p (lines and points are not faces) and statements
-// with other keywords (free-form curves and surfaces among them).
+// (a cluster per group for the file builder: meshoptimizer's demo dumps meshlets as `o` objects).
+// Skipped with a note: l and p (lines and points are not faces), faces of one or two corners
+// (`f a b`, an edge some exporters write among the faces) and statements with other keywords.
 #pragma once
 
 #include <string>
@@ -22,7 +23,7 @@ namespace conescope {
 // Parses OBJ text held in memory (ASCII or UTF-8 without a byte order mark). sourceName only labels
 // messages ("sourceName:line: what"). What was skipped is described in `notes`, one sentence each.
 // Throws MeshReadError on a malformed vertex or corner, an index of an element the file does not
-// have, a face of fewer than 3 corners, and no faces; OperationCancelled when `progress` says stop.
+// have, a face without corners, and no faces; OperationCancelled when `progress` says stop.
 // Does not run validateMesh (readMesh does).
 Mesh parseObj(std::string_view text, const std::string& sourceName, std::vector<std::string>& notes,
               const ProgressCallback& progress = {});

@@ -128,6 +128,7 @@ const std::vector<Column<MeshReport>>& reportColumns() {
         {"non_manifold_edges", [](const MeshReport& m) -> Cell { return m.nonManifoldEdges; }},
         {"inconsistent_edges", [](const MeshReport& m) -> Cell { return m.inconsistentEdges; }},
         {"duplicate_faces", [](const MeshReport& m) -> Cell { return m.duplicateFaces; }},
+        {"double_sided_faces", [](const MeshReport& m) -> Cell { return m.doubleSidedFaces; }},
         {"degenerate_faces", [](const MeshReport& m) -> Cell { return m.degenerateFaces; }},
         {"components", [](const MeshReport& m) -> Cell { return m.components; }},
         {"orientable", [](const MeshReport& m) -> Cell { return m.orientable; }},

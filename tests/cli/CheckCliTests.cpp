@@ -2,6 +2,7 @@
 // winding repair (check, stats, the CSV totals), and partitions written and read back as files.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -128,6 +129,38 @@ TEST(CliCheck, CleanMeshHasNoProblems) {
         EXPECT_EQ(report[key], 0) << key;
     EXPECT_EQ(report["components"], 1);
     EXPECT_EQ(report["orientable"], true);
+}
+
+// A cube whose every triangle is followed by its reverse (double-sided, as some exporters write
+// props): nothing can be culled, and the run says why, with the count, in stats and in check.
+TEST(CliCheck, DoubleSidedMeshIsWarnedAboutWithItsCount) {
+    std::istringstream cube(clitest::readTextFile(dataset("cube.off")));
+    std::string line, faces;
+    std::vector<std::string> vertices;
+    while (std::getline(cube, line)) {
+        int a, b, c;
+        if (std::sscanf(line.c_str(), "3 %d %d %d", &a, &b, &c) == 3)
+            faces += line + "\n3 " + std::to_string(c) + " " + std::to_string(b) + " " + std::to_string(a) + "\n";
+        else if (!line.empty() && line[0] != '#' && line != "OFF" && line.find(' ') != std::string::npos && line != "8 12 0")
+            vertices.push_back(line);
+    }
+    ASSERT_EQ(vertices.size(), 8u);
+    std::string text = "OFF\n8 24 0\n";
+    for (const std::string& v : vertices) text += v + "\n";
+    ScratchDirectory scratch;
+    const std::string path = scratch.writeFile("double-sided.off", text + faces);
+    const CliRun run = runCli({"stats", path, "--views", "16", "--no-per-view", "--no-per-cluster", "--format", "json", "--quiet"});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_NE(run.err.find("double-sided: 12 faces lie back to back"), std::string::npos) << run.err;
+    const nlohmann::json stats = nlohmann::json::parse(run.out);
+    EXPECT_EQ(stats["mesh"]["report"]["double_sided_faces"], 12);
+    EXPECT_EQ(stats["results"][0]["triangles_culled"], 0);
+    EXPECT_GT(stats["results"][0]["back_facing_triangles"], 0);
+    const CliRun check = runCli({"check", path});
+    ASSERT_EQ(check.exitCode, 0) << check.err;
+    EXPECT_EQ(nlohmann::json::parse(check.out)["report"]["double_sided_faces"], 12);
+    const CliRun single = runCli({"stats", dataset("cube.off"), "--views", "4", "--format", "json", "--quiet"});
+    EXPECT_EQ(single.err.find("double-sided"), std::string::npos) << single.err;
 }
 
 // A tetrahedron in ASCII STL plus a triangle with two equal corners, which VTK's STL reader used to

@@ -137,6 +137,36 @@ TEST(MeshChecks, DuplicateFacesCountedAsABruteForceSetWould) {
     }
 }
 
+// Double-sided geometry as exporters write it: faces each followed by the same face wound the
+// other way (any rotation), beside copies wound the same way, triangles and polygons alike. Only the
+// reversed copies are double-sided; every copy is a duplicate; the warning gives the count.
+TEST(MeshChecks, DoubleSidedFacesAreTheDuplicatesWoundTheOtherWay) {
+    std::mt19937_64 random(19256);
+    for (const Mesh& single : {testmesh::icosphere(2), testmesh::quadCube()}) {
+        Mesh mesh;
+        mesh.positions = single.positions;
+        size_t reversed = 0, copies = 0;
+        for (size_t f = 0; f < single.faceCount(); ++f) {
+            std::vector<uint32_t> face(single.faceBegin(f), single.faceBegin(f) + single.faceSize(f));
+            mesh.addFace(face.data(), face.size());
+            const unsigned kind = unsigned(random() % 3);  // 0: alone, 1: a reversed copy, 2: a same-wound copy
+            if (kind == 0) continue;
+            std::rotate(face.begin(), face.begin() + long(random() % face.size()), face.end());
+            if (kind == 1) std::reverse(face.begin(), face.end());
+            mesh.addFace(face.data(), face.size());
+            ++copies, reversed += kind == 1;
+        }
+        ASSERT_GT(reversed, 0u);
+        ASSERT_GT(copies, reversed);
+        const MeshReport report = checkMesh(mesh, computeFaceGeometry(mesh));
+        EXPECT_EQ(report.duplicateFaces, copies);
+        EXPECT_EQ(report.doubleSidedFaces, reversed);
+        EXPECT_NE(doubleSidedWarning(report).find(std::to_string(reversed) + " faces lie back to back"), std::string::npos)
+            << doubleSidedWarning(report);
+        EXPECT_EQ(doubleSidedWarning(checkMesh(single, computeFaceGeometry(single))), "");
+    }
+}
+
 namespace {
 
 void turnOver(Mesh& mesh, size_t firstFace, size_t endFace) {

@@ -227,17 +227,49 @@ TEST(Statistics, ABudgetTheMeshletPartsMissIsGrownAndBoundedWhole) {
     }
 }
 
-// Said only when a builder that takes a budget was given one and made another count.
+// Said only when a builder that takes a budget was given one and made another count, and whether
+// the limits make the budget impossible or the builder reached no nearer.
 TEST(Statistics, BudgetMissedSaysBothCounts) {
     Settings settings;
-    EXPECT_EQ(budgetMissed(settings, 64), "");  // no budget asked for: meshoptimizer's count
+    EXPECT_EQ(budgetMissed(settings, 64, 40), "");  // no budget asked for: meshoptimizer's count
     settings.clusterCount = 50;
-    EXPECT_EQ(budgetMissed(settings, 50), "");
-    const std::string missed = budgetMissed(settings, 64);
-    EXPECT_NE(missed.find("asked for 50 clusters, made 64"), std::string::npos) << missed;
+    EXPECT_EQ(budgetMissed(settings, 50, 40), "");
+    const std::string missed = budgetMissed(settings, 64, 40);
+    EXPECT_NE(missed.find("asked for 50 clusters, made 64: the nearest count"), std::string::npos) << missed;
     EXPECT_NE(missed.find("64 vertices and 124 triangles"), std::string::npos) << missed;
+    EXPECT_NE(missed.find("as few as 40"), std::string::npos) << missed;
+    const std::string impossible = budgetMissed(settings, 64, 60);
+    EXPECT_NE(impossible.find("asked for 50 clusters, made 64: impossible within 64 vertices and 124 triangles"),
+              std::string::npos) << impossible;
+    EXPECT_NE(impossible.find("no fewer than 60"), std::string::npos) << impossible;
     settings.builder = Builder::KMeans;
-    EXPECT_NE(budgetMissed(settings, 49), "");
+    EXPECT_NE(budgetMissed(settings, 49, 0), "");
     settings.builder = Builder::Meshlet;  // takes no budget
-    EXPECT_EQ(budgetMissed(settings, 64), "");
+    EXPECT_EQ(budgetMissed(settings, 64, 40), "");
+}
+
+// The run knows the fewest clusters its limits allow, for the warning: 40 separate icospheres of
+// 12 vertices need 8 clusters of 64 vertices.
+TEST(Statistics, RunKnowsTheFewestClustersItsLimitsAllow) {
+    Mesh mesh;
+    for (int piece = 0; piece < 40; ++piece) {
+        Mesh ball = testmesh::icosphere(0);
+        const uint32_t offset = uint32_t(mesh.positions.size());
+        for (glm::vec3 p : ball.positions) mesh.positions.push_back(0.2f * p + glm::vec3(float(piece), 0.0f, 0.0f));
+        for (size_t f = 0; f < ball.faceCount(); ++f) {
+            std::vector<uint32_t> face(ball.faceBegin(f), ball.faceBegin(f) + ball.faceSize(f));
+            for (uint32_t& v : face) v += offset;
+            mesh.addFace(face.data(), face.size());
+        }
+    }
+    mesh.positions.emplace_back(100.0f, 0.0f, 0.0f);  // a vertex no face uses needs no cluster
+    const PreparedMesh prepared = prepareMesh(std::make_shared<const Mesh>(std::move(mesh)), "pieces", false);
+    Settings settings;
+    settings.clusterCount = 5;
+    const RunStatistics run = measureRun(prepared, buildClusters(prepared, settings), settings);
+    EXPECT_EQ(run.fewestClusters, 8u);
+    EXPECT_GE(run.clusters, 8u);
+    EXPECT_NE(budgetMissed(run.settings, run.clusters, run.fewestClusters).find("impossible"), std::string::npos);
+    settings.clusterCount = 8;  // the bound itself: met, merging across the gaps
+    EXPECT_EQ(measureRun(prepared, buildClusters(prepared, settings), settings).clusters, 8u);
 }

@@ -34,7 +34,7 @@ Mesh icosphere(int subdivisions) {
         std::vector<glm::uvec3> finer;
         for (const auto& f : faces) {
             const uint32_t ab = midpoint(f.x, f.y), bc = midpoint(f.y, f.z), ca = midpoint(f.z, f.x);
-            for (const glm::uvec3 child : {glm::uvec3(f.x, ab, ca), glm::uvec3(f.y, bc, ab), glm::uvec3(f.z, ca, bc), glm::uvec3(ab, bc, ca)})
+            for (const glm::uvec3& child : {glm::uvec3(f.x, ab, ca), glm::uvec3(f.y, bc, ab), glm::uvec3(f.z, ca, bc), glm::uvec3(ab, bc, ca)})
                 finer.push_back(child);
         }
         faces.swap(finer);
@@ -72,6 +72,66 @@ Mesh quadCube() {
     mesh.addFace({2, 6, 7, 3});  // +y
     mesh.addFace({0, 2, 3, 1});  // -z
     mesh.addFace({4, 5, 7, 6});  // +z
+    return mesh;
+}
+
+void addBox(Mesh& mesh, const glm::dvec3& low, const glm::dvec3& extent, int cells, bool triangles) {
+    // Each side: a (cells + 1)^2 grid of corners over two axes, wound outwards.
+    for (int axis = 0; axis < 3; ++axis)
+        for (int side = 0; side < 2; ++side) {
+            const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+            const uint32_t first = uint32_t(mesh.positions.size());
+            for (int i = 0; i <= cells; ++i)
+                for (int j = 0; j <= cells; ++j) {
+                    glm::dvec3 p = low;
+                    p[axis] += side * extent[axis];
+                    p[u] += extent[u] * i / cells;
+                    p[v] += extent[v] * j / cells;
+                    mesh.positions.emplace_back(p);
+                }
+            for (int i = 0; i < cells; ++i)
+                for (int j = 0; j < cells; ++j) {
+                    const uint32_t a = first + uint32_t(i * (cells + 1) + j), c = a + uint32_t(cells + 2);
+                    uint32_t quad[4] = {a, a + 1, c, a + uint32_t(cells + 1)};
+                    if (side == 1) std::swap(quad[1], quad[3]);
+                    if (!triangles) mesh.addFace({quad[0], quad[1], quad[2], quad[3]});
+                    else mesh.addFace({quad[0], quad[1], quad[2]}), mesh.addFace({quad[0], quad[2], quad[3]});
+                }
+        }
+}
+
+Mesh boxProp(std::mt19937_64& random, int boxes, int cells) {
+    std::uniform_real_distribution<double> size(0.05, 1.5), place(-1.0, 1.0);
+    Mesh mesh;
+    for (int b = 0; b < boxes; ++b) {
+        const glm::dvec3 low(place(random), place(random), place(random)), extent(size(random), size(random), size(random));
+        addBox(mesh, low, extent, cells, false);
+    }
+    return mesh;
+}
+
+Mesh furnitureProp(std::mt19937_64& random, int kind, int cells, bool triangles) {
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    auto between = [&](double low, double high) { return low + (high - low) * unit(random); };
+    Mesh mesh;
+    const double width = between(0.8, 2.0), depth = between(0.3, 0.9), height = between(0.7, 2.2), board = between(0.02, 0.06);
+    if (kind == 0) {  // a desk: a top on four legs, a drawer box under one side
+        addBox(mesh, {0, height - board, 0}, {width, board, depth}, cells, triangles);
+        for (int leg = 0; leg < 4; ++leg)
+            addBox(mesh, {(leg & 1) * (width - 0.05), 0, (leg >> 1) * (depth - 0.05)}, {0.05, height - board, 0.05}, 1, triangles);
+        addBox(mesh, {0.05, height * 0.6, 0.05}, {width * 0.4, height * 0.3, depth - 0.1}, std::max(1, cells / 2), triangles);
+    } else if (kind == 1) {  // shelves: two sides, a back and boards between them
+        addBox(mesh, {0, 0, 0}, {board, height, depth}, cells, triangles);
+        addBox(mesh, {width - board, 0, 0}, {board, height, depth}, cells, triangles);
+        addBox(mesh, {board, 0, 0}, {width - 2 * board, height, board}, cells, triangles);
+        const int boards = 2 + int(unit(random) * 4);
+        for (int k = 0; k < boards; ++k)
+            addBox(mesh, {board, height * k / (boards - 1) * 0.97, board}, {width - 2 * board, board, depth - board}, cells, triangles);
+    } else {  // a door: one panel, a handle on each side
+        addBox(mesh, {0, 0, 0}, {width * 0.5, height, board}, cells, triangles);
+        addBox(mesh, {width * 0.4, height * 0.5, board}, {0.02, 0.1, 0.04}, 1, triangles);
+        addBox(mesh, {width * 0.4, height * 0.5, -0.04}, {0.02, 0.1, 0.04}, 1, triangles);
+    }
     return mesh;
 }
 
@@ -144,9 +204,23 @@ Mesh scatteredSpheres(std::mt19937_64& random, int pieces) {
     return mesh;
 }
 
+namespace {
+
+Mesh readOffAt(const std::filesystem::path& path);
+
+}  // namespace
+
 Mesh readBundledOff(const std::string& name) {
-    const std::filesystem::path path =
-        std::filesystem::path(__FILE__).parent_path().parent_path().parent_path() / "datasets" / name;
+    return readOffAt(std::filesystem::path(__FILE__).parent_path().parent_path().parent_path() / "datasets" / name);
+}
+
+Mesh readTestDataOff(const std::string& name) {
+    return readOffAt(std::filesystem::path(__FILE__).parent_path().parent_path() / "data" / name);
+}
+
+namespace {
+
+Mesh readOffAt(const std::filesystem::path& path) {
     std::ifstream file(path);
     if (!file) throw std::runtime_error("cannot open " + path.string());
     std::vector<double> numbers;
@@ -174,5 +248,7 @@ Mesh readBundledOff(const std::string& name) {
     validateMesh(mesh);
     return mesh;
 }
+
+}  // namespace
 
 }  // namespace conescope::testmesh

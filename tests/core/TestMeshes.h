@@ -29,7 +29,19 @@ glm::dmat4 randomModel(std::mt19937_64& random, double scale);
 // pieces, between which meshoptimizer's builder jumps through its k-d tree.
 Mesh scatteredSpheres(std::mt19937_64& random, int pieces);
 
+// Furniture made of closed boxes (a desk top on legs, shelves, a door): `boxes` boxes of random
+// sizes side by side, each side a grid of cells x cells quads, as modelling tools export them.
+Mesh boxProp(std::mt19937_64& random, int boxes, int cells);
+// One closed box from `low` across `extent`, each side cells x cells quads (or each quad as two
+// triangles), wound outwards.
+void addBox(Mesh& mesh, const glm::dvec3& low, const glm::dvec3& extent, int cells, bool triangles);
+// Furniture of closed boxes as props are modelled: kind 0 a desk (a top on legs, a drawer box),
+// 1 shelves (sides, a back, 2 to 5 boards), 2 a door with handles; random sizes, boards 2 to 6 cm.
+Mesh furnitureProp(std::mt19937_64& random, int kind, int cells, bool triangles);
+
 // A mesh of datasets/ (OFF), read without the io layer, which the core tests do not link.
 Mesh readBundledOff(const std::string& name);
+// A mesh of tests/data/ (OFF) the same way, say "cgal/bones.off".
+Mesh readTestDataOff(const std::string& name);
 
 }  // namespace conescope::testmesh

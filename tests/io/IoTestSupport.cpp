@@ -15,7 +15,8 @@ namespace conescope::testing {
 
 std::filesystem::path datasetsDir() { return CONESCOPE_DATASETS_DIR; }
 
-std::filesystem::path formatSamplesDir() { return std::filesystem::path(CONESCOPE_TESTDATA_DIR) / "formats"; }
+std::filesystem::path testDataDir() { return CONESCOPE_TESTDATA_DIR; }
+std::filesystem::path formatSamplesDir() { return testDataDir() / "formats"; }
 
 std::string fileBytes(const std::filesystem::path& path) {
     std::ifstream input(path, std::ios::binary);

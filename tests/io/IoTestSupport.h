@@ -15,6 +15,7 @@ namespace conescope::testing {
 
 std::filesystem::path datasetsDir();
 std::filesystem::path formatSamplesDir();  // tests/data/formats, written by make_format_samples.py
+std::filesystem::path testDataDir();       // tests/data
 
 // While alive, numbers are formatted the German way: the global C++ locale uses ',' as decimal
 // point (what iostreams would then read and write), and the C locale is de_DE when installed

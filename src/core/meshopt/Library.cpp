@@ -55,6 +55,7 @@ size_t meshoptLibraryMeshletCount(const Mesh& mesh, const MeshletLimits& limits,
     requireMeshoptLimits(limits);
     const std::vector<uint32_t> indices = fanTriangles(mesh);
     if (indices.empty()) return 0;
+    if (indices.size() != 3 * mesh.faceCount()) return meshoptLibraryMeshlets(mesh, limits, coneWeight).clusterCount;
     return libraryMeshlets(mesh, indices, limits, coneWeight).count;
 }
 

@@ -78,7 +78,9 @@ size_t meshoptMeshletCount(const Mesh& mesh, const MeshletLimits& limits, float 
     requireMeshoptLimits(limits);
     const std::vector<uint32_t> indices = fanTriangles(mesh);
     if (indices.empty()) return 0;
-    return reproduce(mesh, indices, limits, coneWeight).count;
+    const MeshoptMeshlets meshlets = reproduce(mesh, indices, limits, coneWeight);
+    // A meshlet holding only triangles of polygons that earlier ones took is no cluster of faces.
+    return indices.size() == 3 * mesh.faceCount() ? meshlets.count : facesOfMeshlets(mesh, meshlets).clusterCount;
 }
 
 }  // namespace conescope

@@ -63,8 +63,9 @@ Partition meshoptReproducedMeshlets(const Mesh& mesh, const MeshletLimits& limit
 // The same from the library itself, its output triangles matched back to faces by their corners
 // (of faces with the same corners, each takes the next one not yet matched).
 Partition meshoptLibraryMeshlets(const Mesh& mesh, const MeshletLimits& limits, float coneWeight);
-// How many meshlets buildMeshoptMeshlets makes, without mapping them back to faces (the optimized
-// builder's default budget), and how many the library makes. Throw as requireMeshoptLimits.
+// How many clusters buildMeshoptMeshlets makes (the optimized builder's default budget), without
+// mapping the meshlets back to faces where every face is a triangle, and how many the library's
+// make. Throw as requireMeshoptLimits.
 size_t meshoptMeshletCount(const Mesh& mesh, const MeshletLimits& limits, float coneWeight);
 size_t meshoptLibraryMeshletCount(const Mesh& mesh, const MeshletLimits& limits, float coneWeight);
 

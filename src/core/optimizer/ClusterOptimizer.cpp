@@ -9,6 +9,7 @@
 #include <memory>
 #include <numeric>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "Parts.h"
@@ -106,15 +107,23 @@ void reduceAndSearch(optimizer::State& state, size_t target, size_t sweeps) {
 // dragknob, patch-13), and the second start costs little there.
 constexpr size_t kBothStartsBelowFaces = size_t(1) << 14;
 
-// meshoptimizer's meshlets as a search state, or nothing when a polygon split across meshlets
-// makes one hold more than the limits (the search keeps limits, it does not restore them). Their
-// pieces stay together: handing a meshlet's smaller pieces to neighbours with room (measured on
-// CGAL's cheese) widened those neighbours' cones more than it saved.
-std::unique_ptr<optimizer::State> meshletStart(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits,
-                                                const Partition& meshlets) {
+// meshoptimizer's meshlets searched at the budget, or those meshlets again where the search ended
+// lower in the objective at their count (annealing accepts losses): never worse than
+// meshoptimizer's own partition, in expectation over view directions. A polygon split across
+// meshlets joins one of them whole and can overfill it: such meshlets first pass faces to
+// neighbours with room, and those still over the limits keep their size, never growing past it
+// (the limits of meshoptimizer's own partition of these faces; whole polygons within the limits
+// need more clusters than its count on most polygon meshes). A meshlet's pieces stay together:
+// handing its smaller pieces to neighbours with room (measured on CGAL's cheese) widened those
+// neighbours' cones more than it saved.
+std::unique_ptr<optimizer::State> searchFromMeshlets(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits,
+                                                     const Partition& meshlets, size_t target, size_t sweeps) {
     auto state = std::make_unique<optimizer::State>(mesh, faces, limits);
     optimizer::assign(*state, meshlets);
-    if (!withinLimits(*state)) state.reset();
+    const double startValue = objectiveOf(*state);
+    if (!withinLimits(*state)) optimizer::shedOverLimits(*state);
+    reduceAndSearch(*state, target, sweeps);
+    if (state->liveClusters >= meshlets.clusterCount && objectiveOf(*state) < startValue) optimizer::assign(*state, meshlets);
     return state;
 }
 
@@ -127,8 +136,8 @@ std::unique_ptr<optimizer::State> meshletStart(const Mesh& mesh, const FaceGeome
 Partition optimizeClusters(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits, size_t target,
                            const SearchPlan& plan, size_t sweeps, const Partition* meshlets) {
     std::unique_ptr<optimizer::State> packed;
-    if (!plan.growthStart && meshlets && (packed = meshletStart(mesh, faces, limits, *meshlets))) {
-        reduceAndSearch(*packed, target, sweeps);
+    if (!plan.growthStart && meshlets) {
+        packed = searchFromMeshlets(mesh, faces, limits, *meshlets, target, sweeps);
         if (packed->liveClusters <= target) return optimizer::result(*packed);
     }
     optimizer::State state(mesh, faces, limits);
@@ -144,9 +153,7 @@ Partition optimizeClusters(const Mesh& mesh, const FaceGeometry& faces, const Me
     if (packed && !closerToTheBudget(state, *packed, target)) return optimizer::result(*packed);
     const bool small = mesh.faceCount() < kBothStartsBelowFaces;
     if (!plan.growthStart || (state.liveClusters <= target && !small) || !plan.meshoptLimits) return optimizer::result(state);
-    packed = meshletStart(mesh, faces, limits, meshlets ? *meshlets : buildMeshoptMeshlets(mesh, limits, 1.0f));
-    if (!packed) return optimizer::result(state);
-    reduceAndSearch(*packed, target, sweeps);
+    packed = searchFromMeshlets(mesh, faces, limits, meshlets ? *meshlets : buildMeshoptMeshlets(mesh, limits, 1.0f), target, sweeps);
     return optimizer::result(closerToTheBudget(*packed, state, target) ? *packed : state);
 }
 
@@ -163,6 +170,18 @@ size_t defaultBudget(const Mesh& mesh, const MeshletLimits& limits, bool meshopt
 
 size_t defaultClusterBudget(const Mesh& mesh, const MeshletLimits& limits) {
     return defaultBudget(mesh, limits, meshoptTakesLimits(limits));
+}
+
+size_t fewestClustersWithin(const Mesh& mesh, const MeshletLimits& limits) {
+    std::vector<bool> used(mesh.positions.size(), false);
+    size_t usedVertices = 0;
+    for (size_t f = 0; f < mesh.faceCount(); ++f)
+        for (size_t k = 0; k < mesh.faceSize(f); ++k) {
+            const uint32_t v = mesh.faceBegin(f)[k];
+            if (!used[v]) used[v] = true, ++usedVertices;
+        }
+    auto atLeast = [](size_t count, size_t perCluster) { return (count + perCluster - 1) / std::max<size_t>(perCluster, 1); };
+    return std::max(atLeast(triangleCount(mesh), limits.maxTriangles), atLeast(usedVertices, limits.maxVertices));
 }
 
 size_t annealingSweepsFor(Effort effort, size_t faceCount, size_t meshletParts) {
@@ -268,6 +287,70 @@ Partition optimizeGrownParts(const Mesh& mesh, const FaceGeometry& faces, const 
     return optimizer::joinParts(parts, results);
 }
 
+// Whether a mesh is one piece through shared vertices.
+bool onePiece(const Mesh& mesh) {
+    std::vector<uint32_t> parent(mesh.positions.size());
+    std::iota(parent.begin(), parent.end(), 0u);
+    auto root = [&](uint32_t v) {
+        while (parent[v] != v) v = parent[v] = parent[parent[v]];
+        return v;
+    };
+    size_t pieces = mesh.positions.size();
+    for (size_t f = 0; f < mesh.faceCount(); ++f)
+        for (size_t k = 1; k < mesh.faceSize(f); ++k) {
+            const uint32_t a = root(mesh.faceBegin(f)[0]), b = root(mesh.faceBegin(f)[k]);
+            if (a != b) parent[b] = a, --pieces;
+        }
+    return pieces == 1;
+}
+
+// `start` split to `target` clusters, the clusters whose halves gain most in expectation first
+// (halves grown and reduced as on any mesh): a cone's halves are never wider, so the split never
+// culls less in expectation than `start`. Clusters of one face, of separate pieces (a meshlet
+// joined across a gap: its halves could span it), or whose halves miss 2 stay whole.
+Partition splitToBudget(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits, Partition start,
+                        size_t target) {
+    const SearchPlan fast = planAt(Effort::Fast, limits);
+    std::vector<uint32_t> newIndex(mesh.positions.size(), optimizer::kNone);
+    while (start.clusterCount < target) {
+        const ClusterFaces rows = facesByCluster(start);
+        std::vector<std::pair<double, uint32_t>> gains;  // (culled triangles gained, cluster)
+        std::vector<Partition> halves(start.clusterCount);
+        for (uint32_t c = 0; c < start.clusterCount; ++c) {
+            const size_t count = rows.starts[c + 1] - rows.starts[c];
+            if (count < 2) continue;
+            const optimizer::MeshPart piece = optimizer::extractPart(mesh, faces, rows.faces.data() + rows.starts[c], count, newIndex);
+            if (!onePiece(piece.mesh)) continue;
+            halves[c] = optimizeClusters(piece.mesh, piece.faces, limits, 2, fast, 0, nullptr);
+            if (halves[c].clusterCount != 2) continue;
+            Partition whole;
+            whole.clusterOfFace.assign(count, 0);
+            whole.clusterCount = 1;
+            const double triangles = double(triangleCount(piece.mesh));
+            gains.emplace_back(triangles * (expectedCullRate(piece.mesh, piece.faces, halves[c]) -
+                                            expectedCullRate(piece.mesh, piece.faces, whole)), c);
+        }
+        if (gains.empty()) break;
+        std::sort(gains.begin(), gains.end(), [](const auto& a, const auto& b) { return a.first != b.first ? a.first > b.first : a.second < b.second; });
+        gains.resize(std::min(gains.size(), target - start.clusterCount));
+        for (const auto& [gain, c] : gains) {
+            const uint32_t second = start.clusterCount++;
+            for (uint32_t i = rows.starts[c]; i < rows.starts[c + 1]; ++i)
+                if (halves[c].clusterOfFace[i - rows.starts[c]] == 1) start.clusterOfFace[rows.faces[i]] = second;
+        }
+    }
+    return start;
+}
+
+// Whether partition `a` is the one to keep over `b` at a budget: within it first, then the nearer
+// count, then the higher expected cull rate.
+bool betterAtBudget(const Mesh& mesh, const FaceGeometry& faces, const Partition& a, const Partition& b, size_t target) {
+    const bool aAbove = a.clusterCount > target, bAbove = b.clusterCount > target;
+    if (aAbove != bAbove) return !aAbove;
+    if (a.clusterCount != b.clusterCount) return aAbove ? a.clusterCount < b.clusterCount : a.clusterCount > b.clusterCount;
+    return expectedCullRate(mesh, faces, a) > expectedCullRate(mesh, faces, b);
+}
+
 bool sameLimits(const MeshletLimits& a, const MeshletLimits& b) { return a.maxVertices == b.maxVertices && a.maxTriangles == b.maxTriangles; }
 
 }  // namespace
@@ -305,6 +388,25 @@ Partition buildOptimizedClusters(const Mesh& mesh, const FaceGeometry& faces, co
             }
             return grown;
         }
+        // A budget above meshoptimizer's count: its optimised meshlets split to the budget and
+        // searched again, or clusters grown and reduced to it, whichever culls more in expectation.
+        // Growth alone culled less than meshoptimizer's count on a third of CGAL's meshes (a cliff
+        // at 1.05x its count: docs/benchmarks.md, "Budget sweep").
+        const Partition fromMeshlets = optimizeMeshletParts(mesh, faces, limits, 0, plan,
+                                                            annealingSweepsFor(effort, faceCount, meshlets->partCount()),
+                                                            *meshlets, progress, {});
+        const Partition halves = splitToBudget(mesh, faces, limits, fromMeshlets, targetClusters);
+        // Growth keeps ties: its clusters are of near faces, where a split's halves can span pieces
+        // a meshlet joined across gaps.
+        Partition split = optimizeClusters(mesh, faces, limits, targetClusters, plan, sweeps, &halves);
+        Partition best = optimizeGrownParts(mesh, faces, limits, targetClusters, plan, sweeps, progress, {});
+        if (betterAtBudget(mesh, faces, split, best, targetClusters)) best = std::move(split);
+        if (partDone) {
+            std::vector<uint32_t> every(faceCount);
+            std::iota(every.begin(), every.end(), 0u);
+            partDone(0, 1, every, best);
+        }
+        return best;
     }
     const size_t target = targetClusters != 0 ? targetClusters : defaultBudget(mesh, limits, plan.meshoptLimits);
     return optimizeGrownParts(mesh, faces, limits, target, plan, sweeps, progress, partDone);

@@ -83,9 +83,9 @@ bool makeRoom(State& state, uint32_t face, uint32_t cluster, uint32_t from) {
     return false;
 }
 
-// Of the clusters `face` could join, the one where the objective loses least (by the grown cap's
-// bound); kNone when it fits in none.
-uint32_t cheapestHome(const State& state, uint32_t face, const uint32_t* targets, size_t targetCount) {
+}  // namespace
+
+uint32_t cheapestHome(const State& state, uint32_t face, const uint32_t* targets, size_t targetCount, double* gainOut) {
     double bestGain = -kInfinity;
     uint32_t bestTarget = kNone;
     for (size_t k = 0; k < targetCount; ++k) {
@@ -99,8 +99,11 @@ uint32_t cheapestHome(const State& state, uint32_t face, const uint32_t* targets
                             valueOf(target.triangles, target.cap);
         if (gain > bestGain) bestGain = gain, bestTarget = to;
     }
+    if (gainOut) *gainOut = bestGain;
     return bestTarget;
 }
+
+namespace {
 
 // Exact caps for every cluster the moves in state.undo touched.
 void recomputeTouchedCaps(State& state) {

@@ -25,6 +25,9 @@ struct Cluster {
     uint32_t vertices = 0;
     uint32_t triangles = 0;
     Cap cap;
+    // Above the limits: the size a meshlet of meshoptimizer's had once whole polygons filled it,
+    // which it may keep (shedOverLimits); 0 below them.
+    uint32_t keptVertices = 0, keptTriangles = 0;
 };
 
 struct State {
@@ -95,8 +98,8 @@ inline uint32_t ownVertices(const State& state, uint32_t face) {
 // Whether `face` can join `cluster` within both limits.
 inline bool fits(const State& state, uint32_t face, uint32_t cluster) {
     const Cluster& target = state.clusters[cluster];
-    return target.triangles + state.faceTriangles[face] <= state.limits.maxTriangles &&
-           target.vertices + newVertices(state, face, cluster) <= state.limits.maxVertices;
+    return target.triangles + state.faceTriangles[face] <= std::max<size_t>(state.limits.maxTriangles, target.keptTriangles) &&
+           target.vertices + newVertices(state, face, cluster) <= std::max<size_t>(state.limits.maxVertices, target.keptVertices);
 }
 
 // Moves a face to another cluster, keeping both clusters' counts (not their caps) up to date.

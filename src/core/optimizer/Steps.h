@@ -10,6 +10,16 @@
 
 namespace conescope::optimizer {
 
+// Limits.cpp: clusters over the limits (meshoptimizer's meshlets once each polygon split across
+// two of them has joined one whole) pass border faces to neighbours with room, where the objective
+// loses least, until within them or no face fits elsewhere; each cluster still over them may keep
+// the size it is left with, never growing past it.
+void shedOverLimits(State& state);
+
+// Reduction.cpp: of the clusters `face` could join, the one where the objective loses least (by
+// the grown cap's bound; that change in *gain); kNone when it fits in none.
+uint32_t cheapestHome(const State& state, uint32_t face, const uint32_t* targets, size_t targetCount, double* gain = nullptr);
+
 // Growth.cpp: clusters of like normals grown one at a time over edge neighbours, each until no
 // face fits the limits or `triangleCap` triangles. Makes more clusters than the budget.
 void grow(State& state, double triangleCap);
