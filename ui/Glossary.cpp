@@ -95,6 +95,17 @@ const std::vector<GlossaryEntry>& glossary() {
         {"test octagon", tr("Test: octagon"),
          tr("The apex test with an eight-sided cone of normals: tighter where the normals spread more one way than the "
             "other. Culls when g\u00b7v > 0 for each of its eight edges g.")},
+        {"test octagon-compact", tr("Test: octagon-compact"),
+         tr("The octagon test on a 16-byte record (edges quantised, kept conservative): what an engine would store.")},
+        {"test meshopt-apex-f32", tr("Test: meshopt-apex-f32"),
+         tr("meshoptimizer's own record in float, tested as a shader does: dot(normalize(apex \u2212 e), axis) \u2265 cutoff. "
+            "Not made safe: its culls of a cluster with a visible face are counted as the record's false culls.")},
+        {"test meshopt-sphere-s8", tr("Test: meshopt-sphere-s8"),
+         tr("meshoptimizer's 8-bit cone with its bounding sphere, tested as niagara's task shader does. Not made safe: "
+            "its false culls are counted.")},
+        {"test cadscene-box-s8", tr("Test: cadscene-box-s8"),
+         tr("NVIDIA cadscene's record: an octahedral axis, an 8-bit angle and an 8-bit box, tested at the box's 8 corners. "
+            "Not made safe: its false culls are counted.")},
         {"cone average", tr("Cone: average"), tr("The article's cone: V1 is the mean normal, \u03b1 the angle to the farthest normal.")},
         {"cone seed-sphere", tr("Cone: seed-sphere"), tr("The article's note: V1 towards the centre of the smallest sphere around the normals' tips.")},
         {"cone minimal", tr("Cone: minimal"), tr("The narrowest cone that holds every normal (the smallest cap on the Gauss sphere).")},

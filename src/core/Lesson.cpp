@@ -31,6 +31,10 @@ std::string testInWords(CullTest test) {
         case CullTest::Apex: return "the apex test";
         case CullTest::MeshoptSphere: return "meshoptimizer's sphere test";
         case CullTest::Octagon: return "the octagon test";
+        case CullTest::MeshoptApexF32: return "meshoptimizer's float apex record";
+        case CullTest::MeshoptSphereS8: return "meshoptimizer's 8-bit cone with niagara's sphere test";
+        case CullTest::CadsceneBoxS8: return "cadscene's 8-bit box record";
+        case CullTest::OctagonCompact: return "the octagon test on its 16-byte record";
     }
     return "the test";
 }

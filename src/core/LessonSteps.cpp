@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "LessonText.h"
+#include "RecordTests.h"
 
 namespace conescope {
 
@@ -23,6 +24,23 @@ std::string apexSentence(const Lesson& lesson) {
 }
 
 std::string holdsOrFails(double margin) { return margin > 0.0 ? "so the test holds" : "so the test fails"; }
+
+// The tests that read a record of their own (RecordTests.h) are told by their rule, not drawn.
+std::string recordBound(const Lesson& lesson) {
+    const std::string kept = reproducesEngineRecord(lesson.test)
+                                 ? " It is scored as the engine ships it, not made safe: where it culls a cluster with a "
+                                   "face the eye can see, that is the record's false cull, an engine bug."
+                                 : " It is kept conservative, like the float octagon it is packed from.";
+    return "This test reads a record of its own, " + std::to_string(recordBytes(lesson.test)) +
+           " bytes a cluster, as an engine stores it; its bound is inside the record and is not drawn here." + kept;
+}
+
+std::string recordTest(const Lesson& lesson) {
+    const double margin = lesson.why.margin;
+    return "The record's rule: " + ownRecordRule(lesson.test) + ". From this eye it " +
+           (margin > 0.0 ? "passes its threshold by " + amount(margin) : "falls short of its threshold by " + amount(-margin)) +
+           " (in units of a unit view vector's dot product), " + holdsOrFails(margin) + ".";
+}
 
 std::string eyeSentence(const Lesson& lesson) {
     if (lesson.eye.orthographic)
@@ -124,6 +142,10 @@ std::string boundStep(const Lesson& lesson) {
                    (lesson.test == CullTest::AabbFast ? " This form compares squares instead of normalising each view "
                                                         "vector, as the article's optimised version does."
                                                       : "");
+        case CullTest::MeshoptApexF32:
+        case CullTest::MeshoptSphereS8:
+        case CullTest::CadsceneBoxS8:
+        case CullTest::OctagonCompact: return recordBound(lesson);
         case CullTest::Vertices:
             return manyDirections + "This test checks the view vector to each of the cluster's " +
                    count(lesson.vertices, "vertex", "vertices") +
@@ -140,6 +162,7 @@ std::string testStep(const Lesson& lesson) {
         return eye + "The oracle checks n\u00b7(e \u2212 q) < 0 at every corner q of every face (for a far eye, n\u00b7d > 0): " +
                count(why.backFaces, "face passes", "faces pass") + ", " + count(why.frontFaces, "does", "do") +
                " not. It culls only when every face passes.";
+    if (readsOwnRecord(lesson.test)) return eye + recordTest(lesson);
     if (!why.cullable) return eye + "Without a cone the test has nothing to compare: the cluster is drawn from every eye.";
     if (lesson.test == CullTest::Octagon) return eye + octagonTest(lesson);
     if (lesson.eye.orthographic) return eye + roundCone(lesson, "d");
@@ -153,7 +176,11 @@ std::string testStep(const Lesson& lesson) {
         case CullTest::AabbFast: return eye + eachPoint(lesson, "corner", 8);
         case CullTest::Vertices: return eye + eachPoint(lesson, "vertex", why.pointsTested);
         case CullTest::Oracle:
-        case CullTest::Octagon: break;
+        case CullTest::Octagon:
+        case CullTest::MeshoptApexF32:
+        case CullTest::MeshoptSphereS8:
+        case CullTest::CadsceneBoxS8:
+        case CullTest::OctagonCompact: break;  // answered above
     }
     return eye;
 }

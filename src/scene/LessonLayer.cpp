@@ -212,13 +212,17 @@ void LessonLayer::addLegendEntries(FaceColoring, std::vector<LegendEntry>& entri
     if (step >= 4) {
         switch (lesson.test) {
             case CullTest::Apex:
-            case CullTest::Octagon: entries.push_back({"apex, behind every face plane", {SceneColours::highlight}}); break;
+            case CullTest::Octagon:
+            case CullTest::OctagonCompact: entries.push_back({"apex, behind every face plane", {SceneColours::highlight}}); break;
             case CullTest::Sphere:
             case CullTest::MeshoptSphere: entries.push_back({"bounding sphere", {SceneColours::highlight}}); break;
             case CullTest::Aabb:
             case CullTest::AabbFast: entries.push_back({"bounding box and its corners", {SceneColours::highlight}}); break;
             case CullTest::Vertices: entries.push_back({"the cluster's vertices", {SceneColours::highlight}}); break;
-            case CullTest::Oracle: break;
+            case CullTest::Oracle:
+            case CullTest::MeshoptApexF32:  // the engines' records hold bounds of their own, told in words
+            case CullTest::MeshoptSphereS8:
+            case CullTest::CadsceneBoxS8: break;
         }
     }
 }
@@ -289,7 +293,8 @@ void LessonLayer::drawBound(const Lesson& lesson) {
     std::vector<glm::dvec3> points;
     switch (lesson.test) {
         case CullTest::Apex:
-        case CullTest::Octagon: {
+        case CullTest::Octagon:
+        case CullTest::OctagonCompact: {
             // Lines from the apex to the cluster's outline: every face lies in front of it.
             const uint32_t* faces = bounds.faces.faces.data() + bounds.faces.starts[c];
             const GlyphGeometry outline = clusterOutline(data_.mesh, faces, bounds.faces.starts[c + 1] - bounds.faces.starts[c], int(c));
@@ -320,7 +325,10 @@ void LessonLayer::drawBound(const Lesson& lesson) {
                 points.emplace_back(p[0], p[1], p[2]);
             }
             break;
-        case CullTest::Oracle: break;
+        case CullTest::Oracle:
+        case CullTest::MeshoptApexF32:  // the engines' records hold bounds of their own, told in words
+        case CullTest::MeshoptSphereS8:
+        case CullTest::CadsceneBoxS8: break;
     }
     if (!lines.points.empty()) setInput(bound_, polyDataFrom(lines, CellKind::Lines));
     if (!points.empty()) setInput(boundPoints_, pointPolyData(points));

@@ -12,6 +12,7 @@
 #include "core/CrossSection.h"
 #include "core/Lesson.h"
 #include "core/LessonText.h"
+#include "core/RecordTests.h"
 
 using namespace conescope;
 using testmesh::randomUnit;
@@ -110,6 +111,32 @@ TEST(Lesson, TheTestStepWritesTheComparedNumbersAndTheRightSign) {
             EXPECT_TRUE(contains(octagon.steps[4].text, std::to_string(octagon.why.edgesBack) + " of 8 edges pass"));
         }
     }
+}
+
+// The engines' records are told by their own rule and decision: the verdict and the margin's side
+// are the record's, and a record that culls a visible face says it is a false cull.
+TEST(Lesson, ARecordsTestIsToldByItsRuleAndItsOwnDecision) {
+    const Prepared p(ConeMethod::Minimal);
+    const CullingInput input = cullingInput(p.mesh, p.clusters);
+    std::mt19937_64 random(5);
+    std::map<bool, size_t> verdicts;
+    for (int trial = 0; trial < 12; ++trial) {
+        const Eye eye = Eye::perspective(randomUnit(random) * (1.3 + trial % 4));
+        for (CullTest test : {CullTest::MeshoptApexF32, CullTest::MeshoptSphereS8, CullTest::CadsceneBoxS8, CullTest::OctagonCompact}) {
+            for (uint32_t c = 0; c < p.clusters.bounds.count(); c += 9) {
+                const Lesson lesson = makeLesson(p.mesh, p.clusters, c, eye, test);
+                const CullExplanation why = explainCull(input, c, eye, test);
+                EXPECT_EQ(lesson.why.culled, why.culled);
+                EXPECT_TRUE(contains(lesson.steps[3].text, std::to_string(recordBytes(test)) + " bytes a cluster")) << lesson.steps[3].text;
+                EXPECT_TRUE(contains(lesson.steps[4].text, ownRecordRule(test))) << lesson.steps[4].text;
+                EXPECT_TRUE(contains(lesson.steps[4].text, why.margin > 0.0 ? "so the test holds" : "so the test fails"));
+                if (why.culled && why.frontFaces > 0) EXPECT_EQ(lesson.outcome, LessonOutcome::FalseCull);
+                ++verdicts[why.culled];
+            }
+        }
+    }
+    EXPECT_GT(verdicts[true], 0u);
+    EXPECT_GT(verdicts[false], 0u);
 }
 
 TEST(Lesson, AClusterWithoutAConeIsNeverCulledAndSaysSo) {
