@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "LessonText.h"
+#include "RecordTests.h"
 
 namespace conescope {
 
@@ -73,7 +74,10 @@ std::string captionOf(const Lesson& lesson, const CrossSection& section) {
     if (section.octagon) text += " Yellow: where the octagon test's eight-sided cone meets the page.";
     const double vAngle = glm::degrees(std::atan2(section.view.x, section.view.y));
     const std::string v = lesson.eye.orthographic ? "d" : "v";
-    if (section.hasWedge())
+    if (section.hasWedge() && readsOwnRecord(lesson.test))
+        text += " This cone culls when " + v + " lies in the shaded wedge (" + v + " is " + degrees(vAngle) +
+                " from V1); the record's test compares its own cone and bound (step 5), so its verdict can differ.";
+    else if (section.hasWedge())
         text += " The test culls when " + v + " lies in the shaded wedge; " + v + " is " + degrees(vAngle) + " from V1.";
     else if (lesson.test != CullTest::Oracle)
         text += " No " + v + " in this page makes the test cull.";

@@ -190,7 +190,7 @@ Lesson makeLesson(const PreparedMesh& prepared, const ClusterSet& clusters, uint
     }
     lesson.averageCone = clusterCone(prepared.mesh(), prepared.world, prepared.faces, faces, lesson.faces, ConeMethod::Average);
     lesson.minimalCone = clusterCone(prepared.mesh(), prepared.world, prepared.faces, faces, lesson.faces, ConeMethod::Minimal);
-    lesson.cullFraction = cullFraction(clusters.cullMap, cluster, test);
+    lesson.cullFraction = testCullFraction(clusters.cullMap, input, cluster, test);  // a record's own share for its tests
     lesson.oracleFraction = clusters.cullMap.oracleFraction[cluster];
     lesson.outcome = outcomeOf(lesson.why);
     lesson.steps = {

@@ -131,6 +131,10 @@ TEST(Lesson, ARecordsTestIsToldByItsRuleAndItsOwnDecision) {
                 EXPECT_TRUE(contains(lesson.steps[4].text, ownRecordRule(test))) << lesson.steps[4].text;
                 EXPECT_TRUE(contains(lesson.steps[4].text, why.margin > 0.0 ? "so the test holds" : "so the test fails"));
                 if (why.culled && why.frontFaces > 0) EXPECT_EQ(lesson.outcome, LessonOutcome::FalseCull);
+                EXPECT_DOUBLE_EQ(lesson.cullFraction, testCullFraction(p.clusters.cullMap, input, c, test));
+                // The cross-section draws the displayed cone, and says the record may decide otherwise.
+                const CrossSection section = crossSectionOf(lesson);
+                if (section.hasWedge()) EXPECT_TRUE(contains(section.caption, "its verdict can differ")) << section.caption;
                 ++verdicts[why.culled];
             }
         }
