@@ -265,7 +265,7 @@ Settings builderForMesh(const Settings& settings, const Mesh& mesh, std::string&
 std::string budgetMissed(const Settings& settings, size_t clustersMade, size_t fewestPossible) {
     const bool takesBudget = settings.builder == Builder::Optimized || settings.builder == Builder::KMeans;
     if (!takesBudget || settings.clusterCount == 0 || clustersMade == settings.clusterCount) return {};
-    const std::string asked = "asked for " + std::to_string(settings.clusterCount) + " clusters, made " + std::to_string(clustersMade);
+    const std::string asked = "asked for " + std::to_string(settings.clusterCount) + (settings.clusterCount == 1 ? " cluster" : " clusters") + ", made " + std::to_string(clustersMade);
     const std::string limits = std::to_string(settings.limits.maxVertices) + " vertices and " +
                                std::to_string(settings.limits.maxTriangles) + " triangles per cluster";
     if (clustersMade > settings.clusterCount && fewestPossible > settings.clusterCount)

@@ -242,6 +242,9 @@ TEST(Statistics, BudgetMissedSaysBothCounts) {
     EXPECT_NE(impossible.find("asked for 50 clusters, made 64: impossible within 64 vertices and 124 triangles"),
               std::string::npos) << impossible;
     EXPECT_NE(impossible.find("no fewer than 60"), std::string::npos) << impossible;
+    settings.clusterCount = 1;
+    EXPECT_NE(budgetMissed(settings, 3, 2).find("asked for 1 cluster, made 3: impossible"), std::string::npos);
+    settings.clusterCount = 50;
     settings.builder = Builder::KMeans;
     EXPECT_NE(budgetMissed(settings, 49, 0), "");
     settings.builder = Builder::Meshlet;  // takes no budget
