@@ -95,14 +95,16 @@ Rows facesAcrossEdges(const Mesh& mesh) {
     Rows rows;
     rows.starts.assign(mesh.faceCount() + 1, 0);
     rows.items.reserve(edges.size());
+    // Per face: the last row it went into, so each row holds a face once without searching the
+    // row (quadratic where edges carry many faces: a tenth of white_lily's run).
+    std::vector<uint32_t> inRowOf(mesh.faceCount(), ~0u);  // ~0u: none yet
     for (size_t f = 0; f < mesh.faceCount(); ++f) {
-        const size_t rowStart = rows.items.size();
         uint32_t side = mesh.faceStarts[f];
         forEachSide(mesh, f, [&](uint32_t, uint32_t) {
             const uint32_t first = edgeOfSide[side++];
             for (uint32_t i = first; i < edges.size() && edges[i].key() == edges[first].key(); ++i) {
                 const uint32_t g = edges[i].face;
-                if (g != f && std::find(rows.items.begin() + long(rowStart), rows.items.end(), g) == rows.items.end()) rows.items.push_back(g);
+                if (g != f && inRowOf[g] != f) inRowOf[g] = uint32_t(f), rows.items.push_back(g);
             }
         });
         rows.starts[f + 1] = uint32_t(rows.items.size());

@@ -12,6 +12,8 @@ State::State(const Mesh& mesh, const FaceGeometry& geometry, const MeshletLimits
     slotOf.assign(faceCount, 0);
     faceStamp.assign(faceCount, 0);
     faceMark.assign(faceCount, 0);
+    ringStamp.assign(faceCount, 0);
+    ringSlot.assign(faceCount, 0);
     vertexStamp.assign(mesh.positions.size(), 0);
     faceTriangles.resize(faceCount);
     usable.resize(faceCount);
@@ -115,34 +117,30 @@ Cap capRemoving(State& state, uint32_t face) {
 namespace {
 
 constexpr size_t kRingSize = 48;
-// The corners' faces in the cluster as met, repeats included: a face meets about 15 on ordinary
-// meshes; more only around corners of very many faces, where the ring is too large anyway.
-constexpr size_t kRingMet = 4 * kRingSize;
 
 // Usually the cluster's faces around the corners of `face` already join its edge neighbours: a
 // walk over that ring (at most kRingSize faces, on the stack) answers without the whole cluster.
 // True when it reaches all neighboursInCluster from `first`; false when it does not or the ring
-// is too large to tell. The ring is sorted, so the walk finds a face in it by bisection: a linear
-// search there took a quarter of the run on props of many faces per edge (docs/benchmarks.md).
-bool ringJoinsNeighbours(const State& state, uint32_t face, uint32_t first, uint32_t neighboursInCluster) {
+// is too large to tell. Each ring face is stamped with its place in the ring, so the walk finds it
+// at once: searching the ring (linearly, then by bisection) took a quarter of the run on props of
+// many faces per edge (docs/benchmarks.md).
+bool ringJoinsNeighbours(State& state, uint32_t face, uint32_t first, uint32_t neighboursInCluster) {
     const uint32_t cluster = state.clusterOf[face];
-    uint32_t ring[kRingMet];
+    if (++state.ringStampNow == 0) std::fill(state.ringStamp.begin(), state.ringStamp.end(), 0), state.ringStampNow = 1;
+    const uint32_t inRing = state.ringStampNow;
+    uint32_t ringFace[kRingSize];
     size_t ringCount = 0;
     for (size_t k = 0; k < state.mesh.faceSize(face); ++k) {
         const uint32_t v = state.mesh.faceBegin(face)[k];
         for (const uint32_t* g = state.aroundVertex.begin(v); g != state.aroundVertex.end(v); ++g)
-            if (*g != face && state.clusterOf[*g] == cluster) {
-                if (ringCount == kRingMet) return false;
-                ring[ringCount++] = *g;
+            if (*g != face && state.clusterOf[*g] == cluster && state.ringStamp[*g] != inRing) {
+                if (ringCount + 1 == kRingSize) return false;
+                state.ringStamp[*g] = inRing;
+                state.ringSlot[*g] = uint8_t(ringCount);
+                ringFace[ringCount++] = *g;
             }
     }
-    std::sort(ring, ring + ringCount);
-    ringCount = size_t(std::unique(ring, ring + ringCount) - ring);
-    if (ringCount >= kRingSize) return false;
-    auto indexOf = [&](uint32_t g) {
-        const uint32_t* at = std::lower_bound(ring, ring + ringCount, g);
-        return at != ring + ringCount && *at == g ? size_t(at - ring) : ringCount;
-    };
+    auto indexOf = [&](uint32_t g) { return state.ringStamp[g] == inRing ? size_t(state.ringSlot[g]) : ringCount; };
     bool reachedRing[kRingSize] = {}, edgeNeighbour[kRingSize] = {};
     for (const uint32_t* h = state.acrossEdge.begin(face); h != state.acrossEdge.end(face); ++h)
         if (state.clusterOf[*h] == cluster && indexOf(*h) < ringCount) edgeNeighbour[indexOf(*h)] = true;
@@ -151,7 +149,7 @@ bool ringJoinsNeighbours(const State& state, uint32_t face, uint32_t first, uint
     reachedRing[start] = true;
     stack[top++] = start;
     while (top > 0) {
-        const uint32_t f = ring[stack[--top]];
+        const uint32_t f = ringFace[stack[--top]];
         for (const uint32_t* g = state.acrossEdge.begin(f); g != state.acrossEdge.end(f); ++g) {
             if (state.clusterOf[*g] != cluster) continue;
             const size_t i = indexOf(*g);

@@ -48,6 +48,10 @@ struct State {
     // ++stamp, so marking a face or vertex needs no clearing.
     std::vector<uint32_t> faceStamp, vertexStamp, faceMark;
     uint32_t stamp = 0;
+    // Per face: the ring walk's stamp (its own, so callers' marks survive) and place in the ring.
+    std::vector<uint32_t> ringStamp;
+    std::vector<uint8_t> ringSlot;
+    uint32_t ringStampNow = 0;
     std::vector<glm::dvec3> gathered;  // normals for a cap (gatherNormals)
     std::vector<uint32_t> walk, queue, members, neighbours, pool, bestPool, bestHalf;
     std::vector<std::pair<uint32_t, uint32_t>> undo;  // (face, cluster it came from)
