@@ -35,8 +35,9 @@ void GaussMapView::showPick(const Session& session, bool newPick) {
 }
 
 void GaussMapView::resizeEvent(QResizeEvent* event) {
-    QVTKOpenGLNativeWidget::resizeEvent(event);
+    // Fitted before the base class draws the frame at the new size (as ObserverView::resizeEvent).
     scene_.fitLegend(height());
+    QVTKOpenGLNativeWidget::resizeEvent(event);
 }
 
 void GaussMapView::render() {

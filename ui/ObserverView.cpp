@@ -222,8 +222,10 @@ bool ObserverView::event(QEvent* event) {
 }
 
 void ObserverView::resizeEvent(QResizeEvent* event) {
-    QVTKOpenGLNativeWidget::resizeEvent(event);
+    // Before the base class: it draws the frame at the new size, which must have the legend fitted to
+    // it (nothing draws again after a dock re-arrangement, so a stale legend would stay on screen).
     emit resized();
+    QVTKOpenGLNativeWidget::resizeEvent(event);
 }
 
 void ObserverView::onLeftButtonPress() { interactor()->GetEventPosition(pressPosition_); }

@@ -74,7 +74,7 @@ signals:
     void clicked(const QPoint& display);
     void cameraMoved(const glm::dvec3& position);
     void eyeHandleMoved(const glm::dvec3& position);
-    // The view's size changed (its legend is fitted to it).
+    // The view's size changed (its legend is fitted to it), sent before the frame at that size is drawn.
     void resized();
 
 protected:

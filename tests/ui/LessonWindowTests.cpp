@@ -114,6 +114,37 @@ private slots:
         QVERIFY(!window_->showLessonStep(kLessonStepCount + 1));
     }
 
+    // A lesson step hides the bottom docks and the view grows: the frame drawn at the new size has the
+    // legend fitted to it, not the small one the short view had (the last frame stays until the next draw).
+    void theLegendIsFittedBeforeTheGrownViewIsDrawn() {
+        window_->resize(1280, 720);  // the view short enough for the smallest legend
+        QVERIFY(window_->openMeshBlocking(datasetPath("torus.off")));
+        QApplication::processEvents();
+        const ClusterScene* scene = window_->scene();
+        QVERIFY(window_->observerView()->height() <= 450);
+        QCOMPARE(scene->legend().scale(), legendScaleFor(450));
+        std::pair<const ClusterScene*, double> drawn{scene, 0.0};
+        vtkNew<vtkCallbackCommand> record;
+        record->SetClientData(&drawn);
+        record->SetCallback([](vtkObject*, unsigned long, void* data, void*) {
+            auto* last = static_cast<std::pair<const ClusterScene*, double>*>(data);
+            last->second = last->first->legend().scale();
+        });
+        vtkRenderWindow* renderWindow = window_->observerView()->renderWindow();
+        const unsigned long tag = renderWindow->AddObserver(vtkCommand::StartEvent, record);
+        window_->pickCluster(3);
+        QVERIFY(window_->showLessonStep(1));
+        QApplication::processEvents();
+        renderWindow->RemoveObserver(tag);
+        QCOMPARE(window_->scene(), scene);
+        QVERIFY(window_->observerView()->height() > 600);
+        QCOMPARE(scene->legend().scale(), 1.0);
+        QCOMPARE(drawn.second, 1.0);
+        window_->showLessonStep(0);
+        window_->resize(1280, 960);
+        QApplication::processEvents();
+    }
+
     void theWordsFollowTheEye() {
         QVERIFY(window_->openMeshBlocking(datasetPath("torus.off")));
         window_->pickCluster(3);
