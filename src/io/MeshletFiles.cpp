@@ -1,6 +1,5 @@
 #include "io/MeshletFiles.h"
 
-#include <charconv>
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -111,40 +110,6 @@ void putF32(std::string& bytes, float value) {
 
 size_t paddedToFour(size_t count) { return (count + 3) & ~size_t(3); }
 
-// --- Writing JSON ------------------------------------------------------------------------------------
-
-void appendNumber(std::string& text, float value) {
-    char buffer[32];
-    text.append(buffer, std::to_chars(buffer, buffer + sizeof buffer, value).ptr);
-}
-
-template <typename T>
-void appendList(std::string& text, const T* values, size_t count) {
-    text += '[';
-    for (size_t i = 0; i < count; ++i) {
-        if (i) text += ',';
-        if constexpr (std::is_floating_point_v<T>) appendNumber(text, values[i]);
-        else text += std::to_string(int64_t(values[i]));
-    }
-    text += ']';
-}
-
-void appendBounds(std::string& text, const MeshletBounds& b) {
-    text += "{\"center\":";
-    appendList(text, b.center.data(), 3);
-    text += ",\"radius\":";
-    appendNumber(text, b.radius);
-    text += ",\"cone_apex\":";
-    appendList(text, b.coneApex.data(), 3);
-    text += ",\"cone_axis\":";
-    appendList(text, b.coneAxis.data(), 3);
-    text += ",\"cone_cutoff\":";
-    appendNumber(text, b.coneCutoff);
-    text += ",\"cone_axis_s8\":";
-    appendList(text, b.coneAxisS8.data(), 3);
-    text += ",\"cone_cutoff_s8\":" + std::to_string(int(b.coneCutoffS8)) + "}";
-}
-
 }  // namespace
 
 bool isMeshletFile(const std::string& path) {
@@ -254,25 +219,25 @@ MeshletArrays readMeshletFile(const std::string& path) {
     return parseMeshletJson(bytes, path);
 }
 
+// nlohmann's writer, in meshoptimizer's order: a float bound is written as the double it widens to,
+// which reads back as the same float.
 std::string meshletJson(const MeshletArrays& arrays) {
-    std::string text = "{\"format\":\"meshoptimizer-meshlets\",\n\"meshlets\":[";
-    for (size_t m = 0; m < arrays.meshlets.size(); ++m) {
-        if (m) text += ',';
-        appendList(text, arrays.meshlets[m].data(), 4);
-    }
-    text += "],\n\"meshlet_vertices\":";
-    appendList(text, arrays.vertices.data(), arrays.vertices.size());
-    text += ",\n\"meshlet_triangles\":";
-    appendList(text, arrays.triangles.data(), arrays.triangles.size());
+    nlohmann::ordered_json document = {{"format", "meshoptimizer-meshlets"},
+                     {"meshlets", arrays.meshlets},
+                     {"meshlet_vertices", arrays.vertices},
+                     {"meshlet_triangles", arrays.triangles}};
     if (!arrays.bounds.empty()) {
-        text += ",\n\"bounds\":[";
-        for (size_t m = 0; m < arrays.bounds.size(); ++m) {
-            if (m) text += ",\n";
-            appendBounds(text, arrays.bounds[m]);
-        }
-        text += ']';
+        nlohmann::ordered_json& bounds = document["bounds"] = nlohmann::ordered_json::array();
+        for (const MeshletBounds& b : arrays.bounds)
+            bounds.push_back({{"center", b.center},
+                              {"radius", b.radius},
+                              {"cone_apex", b.coneApex},
+                              {"cone_axis", b.coneAxis},
+                              {"cone_cutoff", b.coneCutoff},
+                              {"cone_axis_s8", b.coneAxisS8},
+                              {"cone_cutoff_s8", b.coneCutoffS8}});
     }
-    return text + "}\n";
+    return document.dump() + "\n";
 }
 
 std::string meshletBinary(const MeshletArrays& arrays) {
