@@ -27,8 +27,8 @@ namespace conescope {
 
 namespace {
 
-constexpr Rgb sphereColour{0.55, 0.58, 0.65};
-constexpr Rgb normalColour{0.95, 0.95, 0.95};
+constexpr Rgb sphereColour = SceneColours::gaussSphere;
+constexpr Rgb normalColour = SceneColours::normalTip;
 constexpr Rgb octagonColour{1.00, 0.90, 0.20};
 constexpr int circleSegments = 96;
 

@@ -24,9 +24,9 @@ namespace conescope {
 
 namespace {
 
-constexpr Rgb gaussColour{0.55, 0.58, 0.65};
-constexpr Rgb tipColour{0.95, 0.95, 0.95};
-constexpr Rgb axisColour{0.95, 0.95, 0.95};
+constexpr Rgb gaussColour = SceneColours::gaussSphere;
+constexpr Rgb tipColour = SceneColours::normalTip;
+constexpr Rgb axisColour = SceneColours::normalTip;
 constexpr int rimSegments = 64;
 
 // Arrows from each point along its vector, `length` long, as one polydata (a glyph filter run once).

@@ -72,6 +72,8 @@ struct SceneColours {
     static constexpr Rgb border{0.08, 0.08, 0.08};
     static constexpr Rgb normals{0.55, 1.00, 0.25};     // lime: green is the test's region of eyes
     static constexpr Rgb lessonNormal{0.85, 0.12, 0.10};  // a lesson's normals: red, as in seed 000's figure
+    static constexpr Rgb gaussSphere{0.55, 0.58, 0.65};   // the Gauss sphere, in the Gauss map and the lesson alike
+    static constexpr Rgb normalTip{0.95, 0.95, 0.95};     // a normal's tip on it (and the lesson's cone axis)
     static constexpr Rgb eye{0.95, 0.10, 0.85};         // magenta: the cull eye, and nothing else
     static constexpr Rgb viewVector{0.00, 1.00, 0.70};  // turquoise: v, from the eye (and on the Gauss map)
     static constexpr Rgb highlight{1.00, 0.95, 0.15};
