@@ -148,6 +148,22 @@ TEST(GltfReader, TrsMatrixAndChildTransformsAreComposed) {
     });
 }
 
+// Meshlet files index the file's vertices as read (Mesh::fileVertices): for glTF, each placed
+// primitive's POSITION vertices one after another, nodes in a depth-first walk of the scene (a
+// node, then its children), not in the order of the nodes array. transforms.gltf lists the child
+// first; the walk places the TRS node (centre (0, 0, 5)), its child ((0, 4, 5)), then the matrix node.
+TEST(GltfReader, FileVerticesFollowTheDepthFirstWalkOfTheScene) {
+    const Mesh mesh = readMesh(gltfSample("transforms.gltf"));
+    ASSERT_EQ(mesh.fileVertices.size(), 72u);
+    const glm::dvec3 centres[] = {{0, 0, 5}, {0, 4, 5}, {10, 0, 0}};
+    for (size_t instance = 0; instance < 3; ++instance) {
+        glm::dvec3 sum(0.0);
+        for (size_t v = 24 * instance; v < 24 * (instance + 1); ++v) sum += glm::dvec3(mesh.positions[mesh.fileVertices[v]]);
+        const glm::dvec3 centre = sum / 24.0;
+        EXPECT_LT(glm::length(centre - centres[instance]), 1e-5) << "instance " << instance;
+    }
+}
+
 // The cube at x = 3 under a mirror scale (-1, 1, 1): it lands at x = -3 and, its triangles turned,
 // every face still points out. From an eye in front of its +z face, exactly that face's two
 // triangles face the eye (by the core's per-face oracle); the other ten face away.
