@@ -36,7 +36,7 @@ void GaussMapView::showPick(const Session& session, bool newPick) {
 
 void GaussMapView::resizeEvent(QResizeEvent* event) {
     // Fitted before the base class draws the frame at the new size (as ObserverView::resizeEvent).
-    scene_.fitLegend(height());
+    scene_.fitLegend(height(), devicePixelRatioF());
     QVTKOpenGLNativeWidget::resizeEvent(event);
 }
 

@@ -188,7 +188,7 @@ void MainWindow::connectControls() {
     connect(eyePanel_, &EyePanel::followToggled, this, &MainWindow::setFollowing);
     connect(eyePanel_, &EyePanel::animateToggled, this, &MainWindow::setAnimating);
     connect(view_, &ObserverView::clicked, this, &MainWindow::pickDisplay);
-    connect(view_, &ObserverView::resized, this, [this]() { session_.fitLegend(view_->height()); });
+    connect(view_, &ObserverView::resized, this, [this]() { session_.fitLegend(view_->height(), view_->devicePixelRatioF()); });
     // Over the legend, each entry says what it means.
     view_->setToolTipSource([this](const QPoint& display) -> QString {
         if (!session_.scene() || !layerVisible(Layer::Legend)) return {};

@@ -241,7 +241,7 @@ void Session::showSceneResult(SceneResult& result, bool newMesh) {
     scene_ = std::move(result.scene);
     for (const auto& [layer, visible] : layers_) scene_->setLayerVisible(layer, visible);
     scene_->setFaceColoring(coloring_);
-    if (legendViewHeight_ > 0) scene_->fitLegend(legendViewHeight_);
+    if (legendViewHeight_ > 0) scene_->fitLegend(legendViewHeight_, legendPixelRatio_);
     if (!samePartition || picked_ >= int(shown_.clusters->partition.clusterCount)) picked_ = -1;
     scene_->setHighlightedCluster(picked_);
     orbit_.reset();

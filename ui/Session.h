@@ -80,7 +80,7 @@ public:
     void setFaceColoring(FaceColoring coloring);
     void setLayerVisible(Layer layer, bool visible);
     // The legend fitted to a view this many pixels high (ClusterScene::fitLegend), kept for new scenes.
-    void fitLegend(int viewHeight);
+    void fitLegend(int viewHeight, double pixelRatio = 1.0);
 
     // Blocking forms and helpers for the window's test interface.
     bool exportStatistics(const QString& path, StatisticsFormat format, bool orbit);
@@ -229,6 +229,7 @@ private:
     QTimer animationTimer_;
     std::map<Layer, bool> layers_;
     int legendViewHeight_ = 0;  // 0: not known yet
+    double legendPixelRatio_ = 1.0;
     FaceColoring coloring_ = FaceColoring::CullDecision;
     int picked_ = -1;
     int lessonStep_ = 0;

@@ -111,9 +111,10 @@ void Session::setLayerVisible(Layer layer, bool visible) {
     if (scene_) scene_->setLayerVisible(layer, visible);
 }
 
-void Session::fitLegend(int viewHeight) {
+void Session::fitLegend(int viewHeight, double pixelRatio) {
     legendViewHeight_ = viewHeight;
-    if (scene_ && viewHeight > 0) scene_->fitLegend(viewHeight);
+    legendPixelRatio_ = pixelRatio;
+    if (scene_ && viewHeight > 0) scene_->fitLegend(viewHeight, pixelRatio);
 }
 
 void Session::setFaceColoring(FaceColoring coloring) {

@@ -223,9 +223,9 @@ const SceneLegend& ClusterScene::legend() const {
     return impl_->legend;
 }
 
-void ClusterScene::fitLegend(int viewHeight) {
+void ClusterScene::fitLegend(int viewHeight, double pixelRatio) {
     impl_->updateStaleLegend();
-    impl_->legend.setScale(legendScaleFor(viewHeight));
+    impl_->legend.setScale(legendScaleFor(viewHeight), pixelRatio);
 }
 
 vtkActor* ClusterScene::actor(Layer layer) const {

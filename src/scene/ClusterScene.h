@@ -148,7 +148,7 @@ public:
     // Entries follow the visible layers and the colouring (SceneLegend.h).
     const SceneLegend& legend() const;
     // The legend's size for a view this many pixels high: smaller in a small view (SceneLegend::setScale).
-    void fitLegend(int viewHeight);
+    void fitLegend(int viewHeight, double pixelRatio = 1.0);
 
 private:
     struct Impl;

@@ -43,7 +43,7 @@ public:
     void placeCamera(vtkCamera* camera) const;
     const SceneLegend& legend() const;
     // The legend's size for a view this many pixels high (SceneLegend::setScale).
-    void fitLegend(int viewHeight);
+    void fitLegend(int viewHeight, double pixelRatio = 1.0);
 
 private:
     struct Impl;

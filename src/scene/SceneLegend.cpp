@@ -40,12 +40,13 @@ vtkSmartPointer<vtkTextProperty> textProperty(double fontSize) {
     return property;
 }
 
-// The text's size in pixels as a text actor draws it in a window of 72 dpi (VTK's default).
-std::array<double, 2> textSize(const std::string& text, vtkTextProperty* property) {
+// The text's size in pixels as a text actor draws it in a window of `dpi` (VTK's default is 72).
+std::array<double, 2> textSize(const std::string& text, vtkTextProperty* property, int dpi) {
     int box[4] = {0, 0, 0, 0};
     vtkTextRenderer* renderer = vtkTextRenderer::GetInstance();
-    if (renderer && renderer->GetBoundingBox(property, text, box, 72)) return {double(box[1] - box[0] + 1), double(box[3] - box[2] + 1)};
-    return {0.6 * property->GetFontSize() * double(text.size()), double(property->GetFontSize())};
+    if (renderer && renderer->GetBoundingBox(property, text, box, dpi)) return {double(box[1] - box[0] + 1), double(box[3] - box[2] + 1)};
+    const double ratio = double(dpi) / 72.0;
+    return {0.6 * ratio * property->GetFontSize() * double(text.size()), ratio * property->GetFontSize()};
 }
 
 std::string scaleText(double value) {
@@ -118,7 +119,7 @@ void SceneLegend::addText(const std::string& text, double x, double centreY, dou
     actor->PickableOff();
     assembly_->AddPart(actor);
     textActors_.push_back(actor);
-    const std::array<double, 2> size = textSize(text, actor->GetTextProperty());
+    const std::array<double, 2> size = textSize(text, actor->GetTextProperty(), int(std::lround(72.0 * pixelRatio_)));
     texts_.push_back({text, {x, centreY - 0.5 * size[1], x + size[0], centreY + 0.5 * size[1]}});
 }
 
@@ -150,7 +151,7 @@ void SceneLegend::layOut(const std::vector<LegendEntry>& entries) {
     colourData_->ShallowCopy(emptyColoured());
     size_t rows = 0;
     for (const LegendEntry& entry : entries) rows += entry.scale ? 2 : 1;
-    const double k = scale_, margin = k * legendMargin, padding = k * legendPadding, row = k * rowHeight;
+    const double k = scale_ * pixelRatio_, margin = k * legendMargin, padding = k * legendPadding, row = k * rowHeight;
     const double left = margin + padding;
     const double top = margin + 2.0 * padding + double(rows) * row;
     double y = top - padding - 0.5 * row;  // the centre of the current row
@@ -158,18 +159,18 @@ void SceneLegend::layOut(const std::vector<LegendEntry>& entries) {
         if (!entry.scale) {
             const Rectangle swatch{left, y - 0.5 * k * swatchHeight, left + k * swatchWidth, y + 0.5 * k * swatchHeight};
             addColours(entry.colours, swatch);
-            addText(entry.label, swatch[2] + k * swatchGap, y, k * labelFontSize);
+            addText(entry.label, swatch[2] + k * swatchGap, y, scale_ * labelFontSize);
             y -= row;
             continue;
         }
         // A continuous colouring: its label, and under it the bar with its ends written beside them.
-        addText(entry.label, left, y, k * labelFontSize);
+        addText(entry.label, left, y, scale_ * labelFontSize);
         y -= row;
-        addText(scaleText((*entry.scale)[0]), left, y, k * scaleFontSize);
+        addText(scaleText((*entry.scale)[0]), left, y, scale_ * scaleFontSize);
         const double barLeft = texts_.back().box[2] + 0.5 * k * swatchGap;
         const Rectangle bar{barLeft, y - 0.5 * k * swatchHeight, barLeft + k * barWidth, y + 0.5 * k * swatchHeight};
         addColours(entry.colours, bar);
-        addText(scaleText((*entry.scale)[1]), bar[2] + 0.5 * k * swatchGap, y, k * scaleFontSize);
+        addText(scaleText((*entry.scale)[1]), bar[2] + 0.5 * k * swatchGap, y, scale_ * scaleFontSize);
         y -= row;
     }
     double right = left;
@@ -183,9 +184,10 @@ void SceneLegend::layOut(const std::vector<LegendEntry>& entries) {
     setVisible(visible_);
 }
 
-void SceneLegend::setScale(double scale) {
-    if (scale == scale_ || !(scale > 0.0)) return;
+void SceneLegend::setScale(double scale, double pixelRatio) {
+    if ((scale == scale_ && pixelRatio == pixelRatio_) || !(scale > 0.0) || !(pixelRatio > 0.0)) return;
     scale_ = scale;
+    pixelRatio_ = pixelRatio;
     layOut(std::vector<LegendEntry>(entries_));
 }
 

@@ -31,8 +31,11 @@ public:
     // Replaces the entries; an empty legend is hidden.
     void show(const std::vector<LegendEntry>& entries);
     // Every size (text, rows, swatches) times `scale`: a small view gets a smaller legend. 1 by default.
-    void setScale(double scale);
+    // `pixelRatio` is the view's device pixels per widget pixel: VTK draws the text at 72 dpi times it
+    // (HiDPI), so the box, rows and swatches are laid out that much larger too.
+    void setScale(double scale, double pixelRatio = 1.0);
     double scale() const { return scale_; }
+    double pixelRatio() const { return pixelRatio_; }
     void setVisible(bool visible);
     bool visible() const { return visible_; }
     // Drawn: visible and with entries.
@@ -61,6 +64,7 @@ private:
     std::vector<LegendEntry> entries_;
     bool visible_ = false;
     double scale_ = 1.0;
+    double pixelRatio_ = 1.0;
     vtkSmartPointer<vtkPropAssembly> assembly_;
     vtkSmartPointer<vtkActor2D> background_, colours_;
     vtkSmartPointer<vtkPolyData> backgroundData_, colourData_;

@@ -79,8 +79,9 @@ void requireDisplay() {
     if (!display || !*display) throw std::runtime_error("rendering needs an X display; run under xvfb-run");
 }
 
-vtkSmartPointer<vtkImageData> renderOffScreen(vtkRenderer* renderer, int width, int height) {
+vtkSmartPointer<vtkImageData> renderOffScreen(vtkRenderer* renderer, int width, int height, int dpi) {
     auto window = vtkSmartPointer<vtkRenderWindow>::New();
+    window->SetDPI(dpi);
     window->SetOffScreenRendering(1);
     window->SetMultiSamples(0);
     window->SetSize(width, height);
@@ -119,7 +120,7 @@ vtkSmartPointer<vtkImageData> renderToImage(const ClusterScene& scene, const Ren
         renderer->ResetCameraClippingRange();
     }
 
-    vtkSmartPointer<vtkImageData> image = renderOffScreen(renderer, options.width, options.height);
+    vtkSmartPointer<vtkImageData> image = renderOffScreen(renderer, options.width, options.height, options.dpi);
     // Leave the scene's actors free for another renderer.
     if (!options.fromEye) scene.removeFrom(renderer);
     return image;

@@ -38,6 +38,9 @@ struct RenderOptions {
     // Render what the cull eye sees instead of the observer view: camera from applyEyeToCamera, only
     // the visible-clusters actor (culled clusters removed). Needs setEye.
     bool fromEye = false;
+    // The window's dots per inch: 72 (VTK's default) times the screen's device pixel ratio, as the
+    // app's view sets it on a HiDPI screen (text is drawn that much larger).
+    int dpi = 72;
 };
 
 // Points the options' camera at the scene's test drawing (setTestDrawing): the picked cluster seen from
@@ -51,7 +54,7 @@ void placeObserverCamera(const ClusterScene& scene, const RenderOptions& options
 // Throws std::runtime_error ("rendering needs an X display; run under xvfb-run") without a DISPLAY.
 void requireDisplay();
 // Renders the renderer alone in an off-screen window of that size into an RGB image, multisampling off.
-vtkSmartPointer<vtkImageData> renderOffScreen(vtkRenderer* renderer, int width, int height);
+vtkSmartPointer<vtkImageData> renderOffScreen(vtkRenderer* renderer, int width, int height, int dpi = 72);
 
 // Renders into an RGB image of options.width x options.height (multisampling off, so the pixels are
 // the same on every run of the same driver). Throws std::runtime_error when there is no X display

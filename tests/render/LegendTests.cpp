@@ -61,9 +61,19 @@ struct Torus {
         clusters.cullMap = computeCullMap(clusters.bounds);
     }
     ClusterScene scene() const { return ClusterScene(input.mesh, input.world, input.faces, input.partition, input.bounds); }
+    // Coloured by the sphere test's decisions from `eye`, against the oracle's.
+    ClusterScene decidedScene() const;
 };
 
 const Eye eye = Eye::perspective({-1.6, 2.4, 1.5});
+
+ClusterScene Torus::decidedScene() const {
+    ClusterScene decided = scene();
+    const CullingInput culling = cullingInput(prepared, clusters);
+    decided.setClusterDecisions(cullClusters(culling, eye, CullTest::Sphere), cullClusters(culling, eye, CullTest::Oracle));
+    decided.setFaceColoring(FaceColoring::CullDecision);
+    return decided;
+}
 
 RenderOptions picture() {
     RenderOptions options;
@@ -77,10 +87,7 @@ RenderOptions picture() {
 
 TEST(Legend, SwatchesAreWideAndLeaveAGapBeforeTheirText) {
     const Torus torus;
-    ClusterScene scene = torus.scene();
-    const CullingInput input = cullingInput(torus.prepared, torus.clusters);
-    scene.setClusterDecisions(cullClusters(input, eye, CullTest::Sphere), cullClusters(input, eye, CullTest::Oracle));
-    scene.setFaceColoring(FaceColoring::CullDecision);
+    ClusterScene scene = torus.decidedScene();
     const Pixels pixels(renderToImage(scene, picture()));
     // The missed-cull swatch: orange pixels inside the legend's box (the mesh behind it is dimmed).
     const SceneLegend::Rectangle box = scene.legend().box();
@@ -98,6 +105,30 @@ TEST(Legend, SwatchesAreWideAndLeaveAGapBeforeTheirText) {
             if (pixels.white(x, y)) text = std::min(text, x);
     ASSERT_LT(text, pixels.width) << "no text beside the swatch";
     EXPECT_GE(text - right - 1, 4) << "the swatch runs into its text: swatch ends at " << right << ", text starts at " << text;
+}
+
+// On a HiDPI screen (Qt's device pixel ratio 2, so VTK draws text at 144 dpi) the box, rows and
+// swatches grow with the text: every white text pixel near the legend lies inside its box, and the
+// box is about twice the size it has at ratio 1.
+TEST(Legend, AtPixelRatioTwoTheTextStaysInsideItsBox) {
+    const Torus torus;
+    ClusterScene scene = torus.decidedScene();
+    scene.fitLegend(600, 1.0);
+    const SceneLegend::Rectangle single = scene.legend().box();
+    scene.fitLegend(600, 2.0);
+    const SceneLegend::Rectangle box = scene.legend().box();
+    EXPECT_NEAR(box[2] - box[0], 2.0 * (single[2] - single[0]), 0.1 * (single[2] - single[0]));
+    EXPECT_NEAR(box[3] - box[1], 2.0 * (single[3] - single[1]), 0.1 * (single[3] - single[1]));
+    RenderOptions options = picture();
+    options.width = 800, options.height = 600, options.dpi = 144;
+    options.cameraPosition = glm::dvec3(22.0, -26.0, 24.0);  // the torus small in the middle, away from the legend
+    const Pixels pixels(renderToImage(scene, options));
+    int inside = 0, outside = 0;
+    for (int y = 0; y < std::min(pixels.height, int(2.0 * box[3])); ++y)
+        for (int x = 0; x < std::min(pixels.width, int(2.0 * box[2])); ++x)
+            if (pixels.white(x, y)) ++(x >= box[0] && x <= box[2] && y >= box[1] && y <= box[3] ? inside : outside);
+    EXPECT_GT(inside, 200) << "no text drawn in the legend";
+    EXPECT_EQ(outside, 0) << "text drawn outside the legend's box " << box[0] << " " << box[1] << " " << box[2] << " " << box[3];
 }
 
 TEST(Legend, FractionColouringsHaveAColourBarWithItsEndsWritten) {
