@@ -14,6 +14,9 @@
 #                   (scripts/bench-meshopt-reference.sh)
 #   small-meshes.md the default's preparation and whole run against meshoptimizer's on 15 meshes of 2k
 #                   to 20k triangles, three rounds (scripts/bench-small-meshes.sh; not in the quick run)
+#   polygon-speed.txt  the whole stats run against meshoptimizer's on 8 polygon props of 50k to 200k
+#                   triangles (scripts/bench-polygon-speed.sh; once scripts/bench-props.sh has fetched them;
+#                   not in the quick run)
 #
 #   scripts/bench-report.sh            # full run (see docs/benchmarks.md for its duration)
 #   scripts/bench-report.sh --quick    # one budget, one distance, cull timings on the real mesh only
@@ -81,6 +84,11 @@ start=$(date +%s)
 } > "$output/prepare.txt" 2>&1
 if [[ $quick -eq 0 ]]; then
   CONESCOPE_BENCH_BUILD_DIR="$build" CONESCOPE_BENCH_OUTPUT="$output" "$root/scripts/bench-small-meshes.sh"
+  if [[ -d "$root/datasets/props-debian/sh3d" ]]; then
+    CONESCOPE_BENCH_BUILD_DIR="$build" CONESCOPE_BENCH_OUTPUT="$output" "$root/scripts/bench-polygon-speed.sh"
+  else
+    echo "bench-report: no polygon props yet (scripts/bench-props.sh fetches them): polygon-speed.txt not written" >&2
+  fi
 fi
 echo "bench-report: preparation and small meshes took $(( $(date +%s) - start )) s" >&2
 
