@@ -37,11 +37,44 @@ void moveGrowingCap(State& state, uint32_t face, uint32_t to) {
     if (state.usable[face]) state.clusters[to].cap = growCap(state.clusters[to].cap, state.geometry.normals[face]);
 }
 
+// The faces a cluster could pass on to a third cluster (not `from`) while a dissolve of `from`
+// runs: border faces with a neighbour that has room, in the cluster's order. They do not depend on
+// the face that needs the room, so they are listed once and kept until some face moves (a failing
+// dissolve asks the same full neighbours again for every one of its faces).
+struct Handover {
+    uint32_t face, to, own;  // own: vertices only this face uses in its cluster
+    int8_t connected;        // whether its cluster stays in one piece without it: -1 not yet known
+};
+struct Handovers {
+    std::vector<uint32_t> listedAt;               // per cluster: the epoch its list is of
+    std::vector<std::vector<Handover>> ofCluster;  // per cluster
+    uint32_t epoch = 1;                            // bumped whenever a face moves
+    explicit Handovers(size_t clusters) : listedAt(clusters, 0), ofCluster(clusters) {}
+};
+
+std::vector<Handover>& handoversOf(State& state, Handovers& handovers, uint32_t cluster, uint32_t from) {
+    std::vector<Handover>& list = handovers.ofCluster[cluster];
+    if (handovers.listedAt[cluster] == handovers.epoch) return list;
+    handovers.listedAt[cluster] = handovers.epoch;
+    list.clear();
+    for (uint32_t g : state.clusters[cluster].faces) {
+        // Only a border face has somewhere to go; most members are inside, so ask that first.
+        uint32_t others[8];
+        const size_t otherCount = neighbourClusters(state, g, others);
+        for (size_t i = 0; i < otherCount; ++i)
+            if (others[i] != from && fits(state, g, others[i])) {
+                list.push_back({g, others[i], ownVertices(state, g), -1});
+                break;
+            }
+    }
+    return list;
+}
+
 // Frees room for `face` in `cluster` by passing one of the cluster's border faces on to a third
-// cluster (not `from`, where `face` comes from). Cheap tests first (would `face` fit without it,
-// does it fit elsewhere), the connectivity walk last. The move is recorded in state.undo. (Chains
-// of two such hand-overs reached tight budgets slightly more often at twice the cost: not worth it.)
-bool makeRoom(State& state, uint32_t face, uint32_t cluster, uint32_t from) {
+// cluster (not `from`, where `face` comes from). Cheap tests first (would `face` fit without it),
+// the connectivity walk last. The move is recorded in state.undo. (Chains of two such hand-overs
+// reached tight budgets slightly more often at twice the cost: not worth it.)
+bool makeRoom(State& state, uint32_t face, uint32_t cluster, uint32_t from, Handovers& handovers) {
     const Cluster& full = state.clusters[cluster];
     // Who in the cluster uses each corner of `face` (none, one face, or more), so that what
     // arrives without g is a lookup per corner rather than a walk around it for every g.
@@ -54,31 +87,23 @@ bool makeRoom(State& state, uint32_t face, uint32_t cluster, uint32_t from) {
             if (state.clusterOf[*g] == cluster) corner.soleUser = *g, ++corner.users;
         state.corners.push_back(corner);
     }
-    state.members = full.faces;
-    for (uint32_t g : state.members) {
-        if (g == face || state.clusterOf[g] != cluster ||
-            full.triangles - state.faceTriangles[g] + state.faceTriangles[face] > state.limits.maxTriangles)
-            continue;
-        // Only a border face has somewhere to go; most members are inside, so ask that first.
-        uint32_t others[8];
-        const size_t otherCount = neighbourClusters(state, g, others);
-        if (std::count(others, others + otherCount, from) == long(otherCount)) continue;
+    for (Handover& hand : handoversOf(state, handovers, cluster, from)) {
+        const uint32_t g = hand.face;
+        if (full.triangles - state.faceTriangles[g] + state.faceTriangles[face] > state.limits.maxTriangles) continue;
         // Vertices once g is gone: g's own ones leave, face's ones not used by the rest arrive.
         uint32_t arriving = 0;
         for (const State::Corner& corner : state.corners) arriving += corner.users == 0 || (corner.users == 1 && corner.soleUser == g);
-        if (full.vertices - ownVertices(state, g) + arriving > state.limits.maxVertices) continue;
+        if (full.vertices - hand.own + arriving > state.limits.maxVertices) continue;
         bool touches = false;  // `face` must still border the cluster without g
         for (const uint32_t* k = state.acrossEdge.begin(face); k != state.acrossEdge.end(face); ++k)
             touches |= *k != g && state.clusterOf[*k] == cluster;
         if (!touches) continue;
-        for (size_t i = 0; i < otherCount; ++i) {
-            const uint32_t other = others[i];
-            if (other == from || !fits(state, g, other)) continue;
-            if (!staysConnectedWithout(state, g)) break;
-            moveGrowingCap(state, g, other);
-            state.undo.emplace_back(g, cluster);
-            return true;
-        }
+        if (hand.connected < 0) hand.connected = staysConnectedWithout(state, g);
+        if (!hand.connected) continue;
+        moveGrowingCap(state, g, hand.to);
+        ++handovers.epoch;
+        state.undo.emplace_back(g, cluster);
+        return true;
     }
     return false;
 }
@@ -118,8 +143,9 @@ void recomputeTouchedCaps(State& state) {
 // cluster where the objective loses least; a full neighbour first passes one of its own border
 // faces on. Caps are grown approximately on the way and recomputed at the end. Undone (returns
 // false) if some face finds no room.
-bool dissolve(State& state, uint32_t cluster) {
+bool dissolve(State& state, uint32_t cluster, Handovers& handovers) {
     if (state.clusters[cluster].faces.empty()) return false;
+    ++handovers.epoch;
     state.undo.clear();
     std::vector<uint32_t>& queue = state.queue;
     uint32_t queued = 0;  // faceStamp of faces in the queue (other checks may overwrite some: harmless)
@@ -140,11 +166,12 @@ bool dissolve(State& state, uint32_t cluster) {
             const size_t targetCount = neighbourClusters(state, face, targets);
             uint32_t bestTarget = cheapestHome(state, face, targets, targetCount);
             for (size_t k = 0; k < targetCount && bestTarget == kNone && pushing; ++k)
-                if (makeRoom(state, face, targets[k], cluster)) bestTarget = targets[k];
+                if (makeRoom(state, face, targets[k], cluster, handovers)) bestTarget = targets[k];
             if (bestTarget == kNone && round == 3) break;  // last round: one stuck face fails it all
             if (bestTarget == kNone) continue;
             state.undo.emplace_back(face, cluster);
             moveGrowingCap(state, face, bestTarget);
+            ++handovers.epoch;
             for (const uint32_t* g = state.acrossEdge.begin(face); g != state.acrossEdge.end(face); ++g)
                 if (state.clusterOf[*g] == cluster && state.faceStamp[*g] != queued) state.faceStamp[*g] = queued, queue.push_back(*g);
         }
@@ -233,6 +260,19 @@ double valueOfHalves(State& state, const double sideTriangles[2]) {
     return value;
 }
 
+// Distinct vertices of the faces in state.pool.
+size_t poolVertices(State& state) {
+    ++state.stamp;
+    size_t vertices = 0;
+    for (uint32_t f : state.pool)
+        for (size_t k = 0; k < state.mesh.faceSize(f); ++k) {
+            uint32_t& stamp = state.vertexStamp[state.mesh.faceBegin(f)[k]];
+            vertices += stamp != state.stamp;
+            stamp = state.stamp;
+        }
+    return vertices;
+}
+
 // This cluster and two of its neighbours are cut again into two compact halves grown from their
 // two farthest faces; the count drops by one when both halves fit. For when no neighbour has
 // room to take the cluster face by face. The best pair by objective wins.
@@ -249,6 +289,7 @@ bool threeIntoTwo(State& state, uint32_t cluster) {
             state.pool = state.clusters[cluster].faces;
             state.pool.insert(state.pool.end(), state.clusters[a].faces.begin(), state.clusters[a].faces.end());
             state.pool.insert(state.pool.end(), state.clusters[b].faces.begin(), state.clusters[b].faces.end());
+            if (poolVertices(state) > 2 * size_t(state.limits.maxVertices)) continue;  // no two halves hold them
             uint32_t seeds[2];
             farthestPair(state, seeds);
             double sideTriangles[2];
@@ -456,30 +497,31 @@ bool dissolveAcrossGaps(State& state, uint32_t cluster, const std::vector<glm::d
 // success and is undone; where most fail (full neighbours all round), the pass stops after a few
 // times as many failures as there are clusters still to remove, and the steps after it (three into
 // two, merges) take over.
-void dissolveSmallest(State& state, size_t target) {
+void dissolveSmallest(State& state, size_t target, Handovers& handovers) {
     if (state.liveClusters <= target) return;
     size_t failuresLeft = kFailuresPerRemoval * (state.liveClusters - target) + kFailuresAtLeast;
     for (uint32_t c : clustersBySize(state)) {
         if (state.liveClusters <= target) return;
-        if (!dissolve(state, c) && --failuresLeft == 0) return;
+        if (!dissolve(state, c, handovers) && --failuresLeft == 0) return;
     }
 }
 
 }  // namespace
 
 void reduceTo(State& state, size_t target) {
-    dissolveSmallest(state, target);
+    Handovers handovers(state.clusters.size());
+    dissolveSmallest(state, target, handovers);
     if (state.liveClusters > target) mergeCheapest(state, state.liveClusters - target, 0);
     // Where every neighbour is full, three clusters become two, which frees room for more dissolving.
     for (int round = 0; round < 4 && state.liveClusters > target; ++round) {
         const size_t before = state.liveClusters;
         compact(state);
-        dissolveSmallest(state, target);
+        dissolveSmallest(state, target, handovers);
         for (uint32_t c : clustersBySize(state)) {
             if (state.liveClusters <= target) break;
             if (!state.clusters[c].faces.empty()) threeIntoTwo(state, c);
         }
-        dissolveSmallest(state, target);
+        dissolveSmallest(state, target, handovers);
         if (state.liveClusters == before) break;
     }
     // Still above: separate pieces (each at least one cluster) or clusters boxed in by full
