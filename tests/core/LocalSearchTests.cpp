@@ -1,5 +1,6 @@
 // The optimized builder's local search steps on a real partition: what an annealing sweep reports
-// as moved, and the refinement that then looks only at the clusters those moves touched.
+// as moved, and the refinement that then looks only at the clusters those moves touched; and the
+// undo of recorded moves the reduction's failed steps rely on.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -79,6 +80,35 @@ TEST(LocalSearch, AFullRefinementAfterwardsGainsLittle) {
     EXPECT_GT(aroundValue, 0.998 * fullValue);  // 0.12% less here; the faces around the moves alone gave 1.1% less
     optimizer::refine(around.state);
     EXPECT_LT(objective(around.state), 1.001 * aroundValue);
+}
+
+// The reduction skips a step that failed until a cluster it reads changes, which holds only if a
+// failed step leaves every cluster as it was, down to the order of its faces (undoMoves).
+TEST(State, UndoingRecordedMovesRestoresEveryClusterInItsOrder) {
+    Refined refined;
+    State& state = refined.state;
+    const State before = state;
+    // Border faces handed on, some twice and some out of a cluster that just took a face.
+    size_t moves = 0;
+    for (uint32_t face = 0; face < state.faceCount && moves < 200; face += 7) {
+        uint32_t targets[8];
+        const size_t count = optimizer::neighbourClusters(state, face, targets);
+        if (count == 0 || state.clusters[state.clusterOf[face]].faces.size() <= 1) continue;
+        optimizer::moveRecorded(state, face, targets[0]);
+        ++moves;
+        if (moves % 3 == 0 && optimizer::neighbourClusters(state, face, targets) > 0) optimizer::moveRecorded(state, face, targets[0]), ++moves;
+    }
+    ASSERT_GT(moves, 100u);
+    ASSERT_NE(state.clusterOf, before.clusterOf);
+    optimizer::undoMoves(state);
+    EXPECT_TRUE(state.undo.empty());
+    EXPECT_EQ(state.clusterOf, before.clusterOf);
+    EXPECT_EQ(state.slotOf, before.slotOf);
+    for (size_t c = 0; c < state.clusters.size(); ++c) {
+        EXPECT_EQ(state.clusters[c].faces, before.clusters[c].faces) << c;
+        EXPECT_EQ(state.clusters[c].vertices, before.clusters[c].vertices) << c;
+        EXPECT_EQ(state.clusters[c].triangles, before.clusters[c].triangles) << c;
+    }
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <initializer_list>
 #include <limits>
 #include <queue>
 #include <vector>
@@ -20,6 +21,41 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 constexpr size_t kFailuresPerRemoval = 4;
 constexpr size_t kFailuresAtLeast = 32;
 
+// Which clusters each step changed, so that a step that failed on a cluster is tried again only
+// once a cluster it reads has changed: until then it fails the same way, since a failed step
+// leaves every cluster as it was, down to the order of its faces and its cap (the passes below
+// retry every cluster, and failures cost as much as successes).
+struct Changes {
+    std::vector<uint32_t> at;                          // per cluster: the commit that last changed it
+    std::vector<uint32_t> dissolveFailed, splitFailed;  // per cluster: commits at its last failure, or kNone
+    uint32_t commits = 0;
+    std::vector<uint32_t> ring, nextRing;  // scratch for unchangedSince
+
+    explicit Changes(size_t clusters) : at(clusters, 0), dissolveFailed(clusters, kNone), splitFailed(clusters, kNone) {}
+    template <typename Clusters>
+    void commit(const Clusters& clusters) {
+        ++commits;
+        for (uint32_t c : clusters) at[c] = commits;
+    }
+    void commit(std::initializer_list<uint32_t> clusters) { commit<std::initializer_list<uint32_t>>(clusters); }
+};
+
+// Whether no cluster within `rings` steps of `cluster` (over shared edges) changed after commit
+// `failed`: a dissolve reads two rings (its faces' new homes, and theirs when they make room), a
+// three-into-two one.
+bool unchangedSince(const State& state, Changes& changes, uint32_t cluster, uint32_t failed, int rings) {
+    if (failed == kNone || changes.at[cluster] > failed) return false;
+    clustersAround(state, cluster, std::numeric_limits<size_t>::max(), changes.ring);
+    for (uint32_t n : changes.ring) {
+        if (changes.at[n] > failed) return false;
+        if (rings < 2) continue;
+        clustersAround(state, n, std::numeric_limits<size_t>::max(), changes.nextRing);
+        for (uint32_t m : changes.nextRing)
+            if (changes.at[m] > failed) return false;
+    }
+    return true;
+}
+
 // Live clusters, smallest first (ties by id): the order in which dissolving is tried.
 std::vector<uint32_t> clustersBySize(const State& state) {
     std::vector<uint32_t> order;
@@ -30,18 +66,65 @@ std::vector<uint32_t> clustersBySize(const State& state) {
     return order;
 }
 
-// The face moves on and the cluster it joins gets a cap that holds it (grown, not exact: cheap,
-// and recomputed once the step is done).
+// The face moves on (recorded in state.undo) and the cluster it joins gets a cap that holds it
+// (grown, not exact: cheap, and recomputed once the step is done).
 void moveGrowingCap(State& state, uint32_t face, uint32_t to) {
-    move(state, face, to);
+    moveRecorded(state, face, to);
     if (state.usable[face]) state.clusters[to].cap = growCap(state.clusters[to].cap, state.geometry.normals[face]);
 }
 
+// The faces a cluster could pass on to a third cluster (not `from`) while a dissolve of `from`
+// runs: border faces with a neighbour that has room, in the cluster's order. They do not depend on
+// the face that needs the room, so they are listed once and kept until some face moves (a failing
+// dissolve asks the same full neighbours again for every one of its faces).
+struct Handover {
+    uint32_t face, to, own;  // own: vertices only this face uses in its cluster
+    int8_t connected;        // whether its cluster stays in one piece without it: -1 not yet known
+};
+struct Handovers {
+    std::vector<uint32_t> listedAt;               // per cluster: the epoch its list is of
+    std::vector<std::vector<Handover>> ofCluster;  // per cluster
+    uint32_t epoch = 1;                            // bumped whenever a face moves
+    // The caps of the clusters a dissolve grew, as they were before it (savedAt: its epoch at
+    // the start), put back when it fails.
+    std::vector<uint32_t> savedAt;
+    std::vector<std::pair<uint32_t, Cap>> savedCaps;
+    uint32_t dissolveEpoch = 0;
+    explicit Handovers(size_t clusters) : listedAt(clusters, 0), ofCluster(clusters), savedAt(clusters, 0) {}
+};
+
+// A face moves to a cluster during a dissolve: recorded for undoMoves, the cluster's cap grown
+// to hold it and its cap before kept.
+void handOver(State& state, Handovers& handovers, uint32_t face, uint32_t to) {
+    if (handovers.savedAt[to] != handovers.dissolveEpoch)
+        handovers.savedAt[to] = handovers.dissolveEpoch, handovers.savedCaps.emplace_back(to, state.clusters[to].cap);
+    moveGrowingCap(state, face, to);
+    ++handovers.epoch;
+}
+
+std::vector<Handover>& handoversOf(State& state, Handovers& handovers, uint32_t cluster, uint32_t from) {
+    std::vector<Handover>& list = handovers.ofCluster[cluster];
+    if (handovers.listedAt[cluster] == handovers.epoch) return list;
+    handovers.listedAt[cluster] = handovers.epoch;
+    list.clear();
+    for (uint32_t g : state.clusters[cluster].faces) {
+        // Only a border face has somewhere to go; most members are inside, so ask that first.
+        uint32_t others[8];
+        const size_t otherCount = neighbourClusters(state, g, others);
+        for (size_t i = 0; i < otherCount; ++i)
+            if (others[i] != from && fits(state, g, others[i])) {
+                list.push_back({g, others[i], ownVertices(state, g), -1});
+                break;
+            }
+    }
+    return list;
+}
+
 // Frees room for `face` in `cluster` by passing one of the cluster's border faces on to a third
-// cluster (not `from`, where `face` comes from). Cheap tests first (would `face` fit without it,
-// does it fit elsewhere), the connectivity walk last. The move is recorded in state.undo. (Chains
-// of two such hand-overs reached tight budgets slightly more often at twice the cost: not worth it.)
-bool makeRoom(State& state, uint32_t face, uint32_t cluster, uint32_t from) {
+// cluster (not `from`, where `face` comes from). Cheap tests first (would `face` fit without it),
+// the connectivity walk last. The move is recorded in state.undo. (Chains of two such hand-overs
+// reached tight budgets slightly more often at twice the cost: not worth it.)
+bool makeRoom(State& state, uint32_t face, uint32_t cluster, uint32_t from, Handovers& handovers) {
     const Cluster& full = state.clusters[cluster];
     // Who in the cluster uses each corner of `face` (none, one face, or more), so that what
     // arrives without g is a lookup per corner rather than a walk around it for every g.
@@ -54,31 +137,21 @@ bool makeRoom(State& state, uint32_t face, uint32_t cluster, uint32_t from) {
             if (state.clusterOf[*g] == cluster) corner.soleUser = *g, ++corner.users;
         state.corners.push_back(corner);
     }
-    state.members = full.faces;
-    for (uint32_t g : state.members) {
-        if (g == face || state.clusterOf[g] != cluster ||
-            full.triangles - state.faceTriangles[g] + state.faceTriangles[face] > state.limits.maxTriangles)
-            continue;
-        // Only a border face has somewhere to go; most members are inside, so ask that first.
-        uint32_t others[8];
-        const size_t otherCount = neighbourClusters(state, g, others);
-        if (std::count(others, others + otherCount, from) == long(otherCount)) continue;
+    for (Handover& hand : handoversOf(state, handovers, cluster, from)) {
+        const uint32_t g = hand.face;
+        if (full.triangles - state.faceTriangles[g] + state.faceTriangles[face] > state.limits.maxTriangles) continue;
         // Vertices once g is gone: g's own ones leave, face's ones not used by the rest arrive.
         uint32_t arriving = 0;
         for (const State::Corner& corner : state.corners) arriving += corner.users == 0 || (corner.users == 1 && corner.soleUser == g);
-        if (full.vertices - ownVertices(state, g) + arriving > state.limits.maxVertices) continue;
+        if (full.vertices - hand.own + arriving > state.limits.maxVertices) continue;
         bool touches = false;  // `face` must still border the cluster without g
         for (const uint32_t* k = state.acrossEdge.begin(face); k != state.acrossEdge.end(face); ++k)
             touches |= *k != g && state.clusterOf[*k] == cluster;
         if (!touches) continue;
-        for (size_t i = 0; i < otherCount; ++i) {
-            const uint32_t other = others[i];
-            if (other == from || !fits(state, g, other)) continue;
-            if (!staysConnectedWithout(state, g)) break;
-            moveGrowingCap(state, g, other);
-            state.undo.emplace_back(g, cluster);
-            return true;
-        }
+        if (hand.connected < 0) hand.connected = staysConnectedWithout(state, g);
+        if (!hand.connected) continue;
+        handOver(state, handovers, g, hand.to);
+        return true;
     }
     return false;
 }
@@ -108,7 +181,7 @@ namespace {
 // Exact caps for every cluster the moves in state.undo touched.
 void recomputeTouchedCaps(State& state) {
     state.members.clear();
-    for (const auto& [face, from] : state.undo) state.members.push_back(from), state.members.push_back(state.clusterOf[face]);
+    for (const State::Moved& moved : state.undo) state.members.push_back(moved.from), state.members.push_back(state.clusterOf[moved.face]);
     std::sort(state.members.begin(), state.members.end());
     state.members.erase(std::unique(state.members.begin(), state.members.end()), state.members.end());
     for (uint32_t c : state.members) state.clusters[c].cap = state.clusters[c].faces.empty() ? Cap{} : exactCap(state, c);
@@ -118,8 +191,11 @@ void recomputeTouchedCaps(State& state) {
 // cluster where the objective loses least; a full neighbour first passes one of its own border
 // faces on. Caps are grown approximately on the way and recomputed at the end. Undone (returns
 // false) if some face finds no room.
-bool dissolve(State& state, uint32_t cluster) {
+bool dissolve(State& state, uint32_t cluster, Handovers& handovers) {
     if (state.clusters[cluster].faces.empty()) return false;
+    ++handovers.epoch;
+    handovers.dissolveEpoch = handovers.epoch;
+    handovers.savedCaps.clear();
     state.undo.clear();
     std::vector<uint32_t>& queue = state.queue;
     uint32_t queued = 0;  // faceStamp of faces in the queue (other checks may overwrite some: harmless)
@@ -140,139 +216,21 @@ bool dissolve(State& state, uint32_t cluster) {
             const size_t targetCount = neighbourClusters(state, face, targets);
             uint32_t bestTarget = cheapestHome(state, face, targets, targetCount);
             for (size_t k = 0; k < targetCount && bestTarget == kNone && pushing; ++k)
-                if (makeRoom(state, face, targets[k], cluster)) bestTarget = targets[k];
+                if (makeRoom(state, face, targets[k], cluster, handovers)) bestTarget = targets[k];
             if (bestTarget == kNone && round == 3) break;  // last round: one stuck face fails it all
             if (bestTarget == kNone) continue;
-            state.undo.emplace_back(face, cluster);
-            moveGrowingCap(state, face, bestTarget);
+            handOver(state, handovers, face, bestTarget);
             for (const uint32_t* g = state.acrossEdge.begin(face); g != state.acrossEdge.end(face); ++g)
                 if (state.clusterOf[*g] == cluster && state.faceStamp[*g] != queued) state.faceStamp[*g] = queued, queue.push_back(*g);
         }
         refill();
     }
-    const bool emptied = state.clusters[cluster].faces.empty();
-    if (!emptied)
-        for (size_t i = state.undo.size(); i-- > 0;) move(state, state.undo[i].first, state.undo[i].second);
-    recomputeTouchedCaps(state);
-    if (emptied) --state.liveClusters;
-    return emptied;
-}
-
-// The two faces of state.pool farthest apart, roughly: the one farthest from the pool's centre,
-// then the one farthest from that. They seed the two halves of threeIntoTwo.
-void farthestPair(const State& state, uint32_t seeds[2]) {
-    const std::vector<glm::dvec3>& centroids = state.geometry.centroids;
-    glm::dvec3 center(0.0);
-    for (uint32_t f : state.pool) center += centroids[f];
-    center /= double(state.pool.size());
-    seeds[0] = seeds[1] = state.pool[0];
-    double farthest = -1.0;
-    for (uint32_t f : state.pool)
-        if (glm::length(centroids[f] - center) > farthest) farthest = glm::length(centroids[f] - center), seeds[0] = f;
-    farthest = -1.0;
-    for (uint32_t f : state.pool) {
-        const double distance = glm::length(centroids[f] - centroids[seeds[0]]);
-        if (distance > farthest) farthest = distance, seeds[1] = f;
+    if (!state.clusters[cluster].faces.empty()) {  // every face back in its place, every cap as it was
+        undoMoves(state);
+        for (const auto& [c, cap] : handovers.savedCaps) state.clusters[c].cap = cap;
+        return false;
     }
-}
-
-// Balanced flood of state.pool from the two seeds: each half takes its nearest faces (faceMark =
-// 0 or 1) until it holds half of the `total` triangles. False when some face was reached by
-// neither half.
-bool floodInHalves(State& state, const uint32_t seeds[2], double total, double sideTriangles[2]) {
-    struct FloodStep {
-        double distance;
-        uint32_t face, side;
-        bool operator<(const FloodStep& other) const {
-            if (distance != other.distance) return distance > other.distance;
-            return face > other.face;
-        }
-    };
-    std::priority_queue<FloodStep> heap;
-    const uint32_t member = ++state.stamp;
-    for (uint32_t f : state.pool) state.faceStamp[f] = member;
-    const uint32_t taken = ++state.stamp;
-    for (uint32_t side = 0; side < 2; ++side) heap.push({0.0, seeds[side], side});
-    sideTriangles[0] = sideTriangles[1] = 0.0;
-    size_t assigned = 0;
-    while (!heap.empty()) {
-        const FloodStep top = heap.top();
-        heap.pop();
-        if (state.faceStamp[top.face] == taken) continue;
-        if (sideTriangles[top.side] + state.faceTriangles[top.face] > 0.5 * total + 2.0 && sideTriangles[1 - top.side] < 0.5 * total)
-            continue;  // this half is full; the other may still reach the face
-        state.faceStamp[top.face] = taken;
-        state.faceMark[top.face] = top.side;
-        sideTriangles[top.side] += state.faceTriangles[top.face];
-        ++assigned;
-        for (const uint32_t* g = state.acrossEdge.begin(top.face); g != state.acrossEdge.end(top.face); ++g)
-            if (state.faceStamp[*g] == member)
-                heap.push({glm::length(state.geometry.centroids[*g] - state.geometry.centroids[seeds[top.side]]), *g, top.side});
-    }
-    return assigned == state.pool.size();
-}
-
-// The objective of the two halves floodInHalves marked, or -infinity when one breaks a limit.
-double valueOfHalves(State& state, const double sideTriangles[2]) {
-    double value = 0.0;
-    for (uint32_t side = 0; side < 2; ++side) {
-        ++state.stamp;
-        uint32_t vertices = 0;
-        state.gathered.clear();
-        for (uint32_t f : state.pool) {
-            if (state.faceMark[f] != side) continue;
-            if (state.usable[f]) state.gathered.push_back(state.geometry.normals[f]);
-            for (size_t k = 0; k < state.mesh.faceSize(f); ++k) {
-                const uint32_t v = state.mesh.faceBegin(f)[k];
-                if (state.vertexStamp[v] != state.stamp) state.vertexStamp[v] = state.stamp, ++vertices;
-            }
-        }
-        if (vertices > state.limits.maxVertices || sideTriangles[side] > double(state.limits.maxTriangles)) return -kInfinity;
-        value += valueOf(sideTriangles[side], minimalCap(state.gathered.data(), state.gathered.size()));
-    }
-    return value;
-}
-
-// This cluster and two of its neighbours are cut again into two compact halves grown from their
-// two farthest faces; the count drops by one when both halves fit. For when no neighbour has
-// room to take the cluster face by face. The best pair by objective wins.
-bool threeIntoTwo(State& state, uint32_t cluster) {
-    std::vector<uint32_t>& neighbours = state.neighbours;
-    clustersAround(state, cluster, 64, neighbours);
-    double bestValue = -kInfinity;
-    uint32_t bestPair[2] = {kNone, kNone};
-    for (size_t i = 0; i < neighbours.size(); ++i)
-        for (size_t j = i + 1; j < neighbours.size(); ++j) {
-            const uint32_t a = neighbours[i], b = neighbours[j];
-            const double total = double(state.clusters[cluster].triangles) + state.clusters[a].triangles + state.clusters[b].triangles;
-            if (total > 2.0 * double(state.limits.maxTriangles)) continue;
-            state.pool = state.clusters[cluster].faces;
-            state.pool.insert(state.pool.end(), state.clusters[a].faces.begin(), state.clusters[a].faces.end());
-            state.pool.insert(state.pool.end(), state.clusters[b].faces.begin(), state.clusters[b].faces.end());
-            uint32_t seeds[2];
-            farthestPair(state, seeds);
-            double sideTriangles[2];
-            if (!floodInHalves(state, seeds, total, sideTriangles)) continue;
-            const double value = valueOfHalves(state, sideTriangles);
-            if (value <= bestValue) continue;
-            bestValue = value;
-            state.bestPool = state.pool;
-            state.bestHalf.clear();
-            for (uint32_t f : state.pool)
-                if (state.faceMark[f] == 0) state.bestHalf.push_back(f);
-            bestPair[0] = a, bestPair[1] = b;
-        }
-    if (bestPair[0] == kNone) return false;
-    // Half 0 goes to the first neighbour, half 1 to the second; this cluster empties.
-    ++state.stamp;
-    for (uint32_t f : state.bestHalf) state.faceStamp[f] = state.stamp;
-    for (uint32_t f : state.bestPool) {
-        const uint32_t want = state.faceStamp[f] == state.stamp ? bestPair[0] : bestPair[1];
-        if (state.clusterOf[f] != want) move(state, f, want);
-    }
-    state.clusters[bestPair[0]].cap = exactCap(state, bestPair[0]);
-    state.clusters[bestPair[1]].cap = exactCap(state, bestPair[1]);
-    state.clusters[cluster].cap = Cap{};
+    recomputeTouchedCaps(state);  // lists the touched clusters in state.members
     --state.liveClusters;
     return true;
 }
@@ -351,7 +309,7 @@ void nearestClusters(const State& state, uint32_t cluster, const std::vector<glm
 // Whole-cluster merges, cheapest objective loss first (lazy heap: an entry is stale once either
 // cluster changed since it was pushed). Between clusters that share an edge (acrossGaps 0), or
 // between each cluster and its acrossGaps nearest: what lets a mesh of many pieces reach any budget.
-void mergeCheapest(State& state, size_t count, size_t acrossGaps) {
+void mergeCheapest(State& state, size_t count, size_t acrossGaps, Changes& changes) {
     struct MergeCandidate {
         double loss;
         uint32_t a, b, versionA, versionB;
@@ -396,6 +354,7 @@ void mergeCheapest(State& state, size_t count, size_t acrossGaps) {
         Cap merged;
         if (!std::isfinite(mergeLoss(state, top.a, top.b, &merged))) continue;  // the entry's loss was this one's
         mergeInto(state, top.a, top.b, merged);
+        changes.commit({top.a, top.b});
         ++version[top.a];
         ++version[top.b];
         ++done;
@@ -406,8 +365,9 @@ void mergeCheapest(State& state, size_t count, size_t acrossGaps) {
 
 // Moves that save a vertex: a border face whose corners the neighbour already uses, and one of
 // which only it uses in its own cluster. Full clusters get room that way for the reduction.
-size_t compact(State& state) {
+size_t compact(State& state, Changes& changes) {
     size_t moves = 0;
+    const uint32_t committedBefore = changes.commits;
     for (uint32_t face = 0; face < state.faceCount; ++face) {
         const uint32_t from = state.clusterOf[face];
         if (state.clusters[from].faces.size() <= 1 || ownVertices(state, face) == 0) continue;
@@ -418,14 +378,14 @@ size_t compact(State& state) {
             if (newVertices(state, face, to) != 0 || state.clusters[to].triangles + state.faceTriangles[face] > state.limits.maxTriangles)
                 continue;
             if (!staysConnectedWithout(state, face)) break;
-            moveGrowingCap(state, face, to);
+            move(state, face, to);
+            changes.commit({from, to});
             ++moves;
             break;
         }
     }
-    if (moves > 0)
-        for (uint32_t c = 0; c < state.clusters.size(); ++c)
-            if (!state.clusters[c].faces.empty()) state.clusters[c].cap = exactCap(state, c);
+    for (uint32_t c = 0; c < state.clusters.size(); ++c)  // exact caps where faces moved
+        if (changes.at[c] > committedBefore && !state.clusters[c].faces.empty()) state.clusters[c].cap = exactCap(state, c);
     return moves;
 }
 
@@ -440,11 +400,11 @@ bool dissolveAcrossGaps(State& state, uint32_t cluster, const std::vector<glm::d
     for (uint32_t face : state.members) {
         const uint32_t to = cheapestHome(state, face, targets.data(), targets.size());
         if (to == kNone) {
-            for (size_t i = state.undo.size(); i-- > 0;) move(state, state.undo[i].first, state.undo[i].second);
             recomputeTouchedCaps(state);
+            undoMoves(state);
+            for (uint32_t c : state.members) state.clusters[c].cap = state.clusters[c].faces.empty() ? Cap{} : exactCap(state, c);
             return false;
         }
-        state.undo.emplace_back(face, cluster);
         moveGrowingCap(state, face, to);
     }
     recomputeTouchedCaps(state);
@@ -456,36 +416,49 @@ bool dissolveAcrossGaps(State& state, uint32_t cluster, const std::vector<glm::d
 // success and is undone; where most fail (full neighbours all round), the pass stops after a few
 // times as many failures as there are clusters still to remove, and the steps after it (three into
 // two, merges) take over.
-void dissolveSmallest(State& state, size_t target) {
+void dissolveSmallest(State& state, size_t target, Changes& changes, Handovers& handovers) {
     if (state.liveClusters <= target) return;
     size_t failuresLeft = kFailuresPerRemoval * (state.liveClusters - target) + kFailuresAtLeast;
     for (uint32_t c : clustersBySize(state)) {
         if (state.liveClusters <= target) return;
-        if (!dissolve(state, c) && --failuresLeft == 0) return;
+        // A failure known in advance counts as one, so the pass ends where it did before.
+        const bool emptied = !unchangedSince(state, changes, c, changes.dissolveFailed[c], 2) && dissolve(state, c, handovers);
+        if (emptied) changes.commit(state.members);  // the clusters recomputeTouchedCaps listed
+        else changes.dissolveFailed[c] = changes.commits;
+        if (!emptied && --failuresLeft == 0) return;
+    }
+}
+
+// Three into two for each cluster, smallest first, while above the target.
+void splitThreeIntoTwo(State& state, size_t target, Changes& changes) {
+    for (uint32_t c : clustersBySize(state)) {
+        if (state.liveClusters <= target) break;
+        if (state.clusters[c].faces.empty() || unchangedSince(state, changes, c, changes.splitFailed[c], 1)) continue;
+        if (threeIntoTwo(state, c)) changes.commit(state.members);
+        else changes.splitFailed[c] = changes.commits;
     }
 }
 
 }  // namespace
 
 void reduceTo(State& state, size_t target) {
-    dissolveSmallest(state, target);
-    if (state.liveClusters > target) mergeCheapest(state, state.liveClusters - target, 0);
+    Changes changes(state.clusters.size());
+    Handovers handovers(state.clusters.size());
+    dissolveSmallest(state, target, changes, handovers);
+    if (state.liveClusters > target) mergeCheapest(state, state.liveClusters - target, 0, changes);
     // Where every neighbour is full, three clusters become two, which frees room for more dissolving.
     for (int round = 0; round < 4 && state.liveClusters > target; ++round) {
         const size_t before = state.liveClusters;
-        compact(state);
-        dissolveSmallest(state, target);
-        for (uint32_t c : clustersBySize(state)) {
-            if (state.liveClusters <= target) break;
-            if (!state.clusters[c].faces.empty()) threeIntoTwo(state, c);
-        }
-        dissolveSmallest(state, target);
+        compact(state, changes);
+        dissolveSmallest(state, target, changes, handovers);
+        splitThreeIntoTwo(state, target, changes);
+        dissolveSmallest(state, target, changes, handovers);
         if (state.liveClusters == before) break;
     }
     // Still above: separate pieces (each at least one cluster) or clusters boxed in by full
     // neighbours. The nearest ones merge across the gap, cheapest first.
     for (size_t nearest : kNearestAcrossGaps) {
-        if (state.liveClusters > target) mergeCheapest(state, state.liveClusters - target, nearest);
+        if (state.liveClusters > target) mergeCheapest(state, state.liveClusters - target, nearest, changes);
         if (state.liveClusters <= target) break;
         // No whole pair fits: the smallest clusters go face by face into their nearest ones.
         std::vector<glm::dvec3> centres(state.clusters.size());
@@ -495,7 +468,7 @@ void reduceTo(State& state, size_t target) {
             if (!dissolveAcrossGaps(state, c, centres, nearest)) continue;
             // The clusters that took faces move their centres (each once).
             state.members.clear();
-            for (const auto& [face, from] : state.undo) state.members.push_back(state.clusterOf[face]);
+            for (const State::Moved& moved : state.undo) state.members.push_back(state.clusterOf[moved.face]);
             std::sort(state.members.begin(), state.members.end());
             state.members.erase(std::unique(state.members.begin(), state.members.end()), state.members.end());
             for (uint32_t taker : state.members) centres[taker] = clusterCentre(state, taker);

@@ -56,6 +56,40 @@ void move(State& state, uint32_t face, uint32_t to) {
     attach(state, face, to);
 }
 
+void moveRecorded(State& state, uint32_t face, uint32_t to) {
+    state.undo.push_back({face, state.clusterOf[face], state.slotOf[face]});
+    move(state, face, to);
+}
+
+void undoMoves(State& state) {
+    for (size_t i = state.undo.size(); i-- > 0;) {
+        const State::Moved& moved = state.undo[i];
+        Cluster& holder = state.clusters[state.clusterOf[moved.face]];
+        if (holder.faces.back() != moved.face) {  // not last in (cannot happen when undone last first): a plain move
+            move(state, moved.face, moved.from);
+            continue;
+        }
+        // attach and detach backwards: off the end of its holder, into its old place in `from`.
+        holder.vertices -= ownVertices(state, moved.face);
+        holder.triangles -= state.faceTriangles[moved.face];
+        holder.faces.pop_back();
+        Cluster& source = state.clusters[moved.from];
+        source.vertices += newVertices(state, moved.face, moved.from);
+        source.triangles += state.faceTriangles[moved.face];
+        if (moved.slot < source.faces.size()) {
+            const uint32_t displaced = source.faces[moved.slot];
+            state.slotOf[displaced] = uint32_t(source.faces.size());
+            source.faces.push_back(displaced);
+            source.faces[moved.slot] = moved.face;
+        } else {
+            source.faces.push_back(moved.face);
+        }
+        state.slotOf[moved.face] = moved.slot;
+        state.clusterOf[moved.face] = moved.from;
+    }
+    state.undo.clear();
+}
+
 void clustersAround(const State& state, uint32_t cluster, size_t limit, std::vector<uint32_t>& out) {
     out.clear();
     for (uint32_t f : state.clusters[cluster].faces) {

@@ -54,7 +54,10 @@ struct State {
     uint32_t ringStampNow = 0;
     std::vector<glm::dvec3> gathered;  // normals for a cap (gatherNormals)
     std::vector<uint32_t> walk, queue, members, neighbours, pool, bestPool, bestHalf;
-    std::vector<std::pair<uint32_t, uint32_t>> undo;  // (face, cluster it came from)
+    struct Moved {
+        uint32_t face, from, slot;  // the cluster it came from and its place there
+    };
+    std::vector<Moved> undo;
     struct Corner {
         uint32_t users = 0;  // faces of a cluster using a corner: 0, 1 or 2 (two or more)
         uint32_t soleUser = kNone;
@@ -108,6 +111,10 @@ inline bool fits(const State& state, uint32_t face, uint32_t cluster) {
 
 // Moves a face to another cluster, keeping both clusters' counts (not their caps) up to date.
 void move(State& state, uint32_t face, uint32_t to);
+// The same, recorded in state.undo so that undoMoves can put every face back in its place.
+void moveRecorded(State& state, uint32_t face, uint32_t to);
+// Undoes the moves in state.undo, last first, leaving each cluster's faces in their order before.
+void undoMoves(State& state);
 // Different clusters across the edges of `face`, at most 8.
 inline size_t neighbourClusters(const State& state, uint32_t face, uint32_t* out) {
     size_t count = 0;

@@ -28,6 +28,11 @@ void grow(State& state, double triangleCap);
 // `target` are left (or no step gets further).
 void reduceTo(State& state, size_t target);
 
+// ThreeIntoTwo.cpp: the cluster and the two of its neighbours whose faces, cut again into two
+// compact halves within the limits, score best by the objective become those two halves; false
+// (nothing changes) when no pair fits. On success state.members lists the three clusters.
+bool threeIntoTwo(State& state, uint32_t cluster);
+
 // LocalSearch.cpp: border faces moved to the neighbouring cluster where the objective gains, until
 // no move gains (or a pass limit).
 void refine(State& state);
