@@ -41,8 +41,8 @@ std::vector<uint32_t> anneal(State& state, size_t sweeps);
 
 // Packing.cpp: for an explicit budget the other steps missed (`made`): `target` compact clusters
 // grown at once from the centres of made's largest ones (else from seeds spread over the mesh),
-// what they leave reduced into them, then local search (with `sweeps` annealing sweeps); of the
-// packings that reach the budget, the one that culls most in expectation, else `made`. Reaches
+// what they leave reduced into them, then local search; the packing that reaches the budget with
+// cells turned most towards their normals, annealed `sweeps` times, else `made`. Reaches
 // budgets up to about triangles / 93 at 64 vertices, where the other steps stop near triangles / 86.
 Partition packToBudget(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits, size_t target, size_t sweeps,
                        const Partition& made);
