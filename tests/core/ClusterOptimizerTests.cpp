@@ -268,6 +268,9 @@ TEST(ClusterOptimizer, PackingReachesBudgetsTheVertexLimitBinds) {
         EXPECT_EQ(partition.clusterCount, budget) << toString(effort);
         EXPECT_GT(expectedCullRate(mesh, faces, partition), 0.0);
     }
+    // Packing hears a cancel between its packings.
+    const ProgressCallback cancelPacking = [](double, const std::string& stage) { return stage != "packing clusters"; };
+    EXPECT_THROW(buildOptimizedClusters(mesh, faces, limits, 24, cancelPacking), OperationCancelled);
 }
 
 // A mesh of quads: meshoptimizer's meshlets hold fan triangles, and a quad split across two of them

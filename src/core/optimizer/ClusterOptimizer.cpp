@@ -431,7 +431,7 @@ Partition buildOptimizedClusters(const Mesh& mesh, const FaceGeometry& faces, co
         return made;
     // Its annealing is the best level's (one run, on at most 2^17 faces), but for the fast level.
     const size_t sweeps = effort == Effort::Fast ? 0 : annealingSweepsFor(Effort::Best, mesh.faceCount(), 1);
-    Partition packed = optimizer::packToBudget(mesh, faces, limits, targetClusters, sweeps, made);
+    Partition packed = optimizer::packToBudget(mesh, faces, limits, targetClusters, sweeps, made, progress);
     if (packed.clusterCount > targetClusters) return made;
     if (partDone) {
         std::vector<uint32_t> every(mesh.faceCount());

@@ -181,7 +181,12 @@ Partition annealed(const Mesh& mesh, const FaceGeometry& faces, const MeshletLim
 }  // namespace
 
 Partition packToBudget(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits, size_t target, size_t sweeps,
-                       const Partition& made) {
+                       const Partition& made, const ProgressCallback& progress) {
+    // Each packing may take a second on a large mesh: a cancel is heard between them.
+    auto pack = [&](const std::vector<Seed>& seeds, double turnWeight) {
+        if (progress && !progress(1.0, "packing clusters")) throw OperationCancelled();
+        return packWith(mesh, faces, limits, target, seeds, turnWeight);
+    };
     // A round patch of maxVertices holds about 2 V - 2 - 3.5 sqrt(V) triangles (98 at 64): packing
     // discs gets no further (rings of a thin tube and closed pieces can: CGAL's pipe at 107). On a
     // large mesh, where trying costs several seconds, a budget past that is not tried.
@@ -199,7 +204,7 @@ Partition packToBudget(const Mesh& mesh, const FaceGeometry& faces, const Meshle
         const std::vector<Seed> starts[2] = {largestCentres(mesh, faces, limits, made, target), spreadSeeds(mesh, faces, limits, target)};
         for (size_t i = std::size(kTurnWeights); i-- > 0;)
             for (const std::vector<Seed>& seeds : starts) {
-                Partition packed = packWith(mesh, faces, limits, target, seeds, kTurnWeights[i] * cellRadius);
+                Partition packed = pack(seeds, kTurnWeights[i] * cellRadius);
                 if (packed.clusterCount <= target) return annealed(mesh, faces, limits, packed, sweeps);
             }
         return best;
@@ -209,7 +214,7 @@ Partition packToBudget(const Mesh& mesh, const FaceGeometry& faces, const Meshle
         const std::vector<Seed> seeds = fromMade ? largestCentres(mesh, faces, limits, made, target) : spreadSeeds(mesh, faces, limits, target);
         // Whether the packing at weight i reaches the budget; kept when it culls most so far.
         auto reaches = [&](size_t i) {
-            Partition packed = packWith(mesh, faces, limits, target, seeds, kTurnWeights[i] * cellRadius);
+            Partition packed = pack(seeds, kTurnWeights[i] * cellRadius);
             if (packed.clusterCount > target) return false;
             const double rate = expectedCullRate(mesh, faces, packed);
             if (rate > bestRate) bestRate = rate, best = std::move(packed);
