@@ -49,7 +49,8 @@ using PartClusters = std::function<void(size_t part, size_t parts, const std::ve
 // defaultClusterBudget): from meshoptimizer's meshlets or from grown clusters reduced to the budget,
 // then local search, on parts of the mesh at once (docs/architecture.md, "The optimized builder",
 // has the steps). The result has at most targetClusters clusters whenever the limits allow
-// meshoptimizer's count, and never more than that count. The same input gives the same partition
+// meshoptimizer's count, and never more than that count. An explicit budget those steps miss is
+// packed to (compact clusters, which cull less), on meshes up to 2^17 faces, where packing reaches it. The same input gives the same partition
 // on any number of cores.
 // `progress` hears (parts done / parts, "clusters") as parts finish, on the calling thread;
 // returning false stops the parts not yet started and throws OperationCancelled.

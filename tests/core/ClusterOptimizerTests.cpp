@@ -255,6 +255,24 @@ TEST(ClusterOptimizer, ManyPiecesReachABudgetBelowTheirCount) {
     EXPECT_GE(buildOptimizedClusters(mesh, faces, limits, 2).clusterCount, 8u);
 }
 
+// A tube like CGAL's knot2, where the vertex limit binds: clusters shaped by their normals hold
+// about 80 triangles in 64 vertices and stopped at 27 clusters; compact packed ones reach budgets
+// up to about triangles / 93, within the limits.
+TEST(ClusterOptimizer, PackingReachesBudgetsTheVertexLimitBinds) {
+    const Mesh mesh = testmesh::torus(1.0, 0.3, 64, 16);  // 2,048 triangles, 1,024 vertices
+    const FaceGeometry faces = computeFaceGeometry(mesh);
+    const MeshletLimits limits{64, 124};
+    for (const auto& [budget, effort] : {std::pair{size_t(24), Effort::Balanced}, std::pair{size_t(22), Effort::Fast}}) {
+        const Partition partition = buildOptimizedClusters(mesh, faces, limits, budget, {}, effort);
+        expectValidWithinLimits(mesh, partition, limits);
+        EXPECT_EQ(partition.clusterCount, budget) << toString(effort);
+        EXPECT_GT(expectedCullRate(mesh, faces, partition), 0.0);
+    }
+    // Packing hears a cancel between its packings.
+    const ProgressCallback cancelPacking = [](double, const std::string& stage) { return stage != "packing clusters"; };
+    EXPECT_THROW(buildOptimizedClusters(mesh, faces, limits, 24, cancelPacking), OperationCancelled);
+}
+
 // A mesh of quads: meshoptimizer's meshlets hold fan triangles, and a quad split across two of them
 // overfills the one that takes it. The default keeps meshoptimizer's count and never goes past
 // the fill of its partition (it used to grow its own clusters, 8% more of them); growth holds

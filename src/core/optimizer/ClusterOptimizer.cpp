@@ -355,9 +355,11 @@ bool sameLimits(const MeshletLimits& a, const MeshletLimits& b) { return a.maxVe
 
 }  // namespace
 
-Partition buildOptimizedClusters(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits,
-                                 size_t targetClusters, const ProgressCallback& progress, Effort effort,
-                                 MeshletStream* meshlets, const PartClusters& partDone) {
+namespace {
+
+// The builder's steps to the budget, before packing (buildOptimizedClusters).
+Partition buildNearBudget(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits, size_t targetClusters,
+                          const ProgressCallback& progress, Effort effort, MeshletStream* meshlets, const PartClusters& partDone) {
     const size_t faceCount = mesh.faceCount();
     if (faceCount == 0) return {};
     const SearchPlan plan = planAt(effort, limits);
@@ -410,6 +412,33 @@ Partition buildOptimizedClusters(const Mesh& mesh, const FaceGeometry& faces, co
     }
     const size_t target = targetClusters != 0 ? targetClusters : defaultBudget(mesh, limits, plan.meshoptLimits);
     return optimizeGrownParts(mesh, faces, limits, target, plan, sweeps, progress, partDone);
+}
+
+// Packing is tried on meshes up to this many faces (one part's size): its seeds and reduction
+// run over the whole mesh at once.
+constexpr size_t kPackingFacesAtMost = size_t(1) << 17;
+
+}  // namespace
+
+Partition buildOptimizedClusters(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits,
+                                 size_t targetClusters, const ProgressCallback& progress, Effort effort,
+                                 MeshletStream* meshlets, const PartClusters& partDone) {
+    Partition made = buildNearBudget(mesh, faces, limits, targetClusters, progress, effort, meshlets, partDone);
+    // An explicit budget missed: compact clusters packed to it, kept only when they reach it (they
+    // cull less than clusters shaped by their normals: a trade worth making for the budget only).
+    if (targetClusters == 0 || made.clusterCount <= targetClusters || mesh.faceCount() > kPackingFacesAtMost ||
+        targetClusters < fewestClustersWithin(mesh, limits))
+        return made;
+    // Its annealing is the best level's (one run, on at most 2^17 faces), but for the fast level.
+    const size_t sweeps = effort == Effort::Fast ? 0 : annealingSweepsFor(Effort::Best, mesh.faceCount(), 1);
+    Partition packed = optimizer::packToBudget(mesh, faces, limits, targetClusters, sweeps, made, progress);
+    if (packed.clusterCount > targetClusters) return made;
+    if (partDone) {
+        std::vector<uint32_t> every(mesh.faceCount());
+        std::iota(every.begin(), every.end(), 0u);
+        partDone(0, 1, every, packed);
+    }
+    return packed;
 }
 
 }  // namespace conescope

@@ -26,8 +26,6 @@ State::State(const Mesh& mesh, const FaceGeometry& geometry, const MeshletLimits
 // ---------------------------------------------------------------------------------------------
 // Membership.
 
-namespace {
-
 void attach(State& state, uint32_t face, uint32_t cluster) {
     Cluster& target = state.clusters[cluster];
     target.vertices += newVertices(state, face, cluster);
@@ -36,6 +34,8 @@ void attach(State& state, uint32_t face, uint32_t cluster) {
     state.slotOf[face] = uint32_t(target.faces.size());
     target.faces.push_back(face);
 }
+
+namespace {
 
 // The last face of the cluster takes the leaving face's slot: O(1) whatever the cluster's size.
 void detach(State& state, uint32_t face) {

@@ -109,6 +109,8 @@ inline bool fits(const State& state, uint32_t face, uint32_t cluster) {
            target.vertices + newVertices(state, face, cluster) <= std::max<size_t>(state.limits.maxVertices, target.keptVertices);
 }
 
+// A face of no cluster joins one, keeping its counts (not its cap) up to date.
+void attach(State& state, uint32_t face, uint32_t cluster);
 // Moves a face to another cluster, keeping both clusters' counts (not their caps) up to date.
 void move(State& state, uint32_t face, uint32_t to);
 // The same, recorded in state.undo so that undoMoves can put every face back in its place.
