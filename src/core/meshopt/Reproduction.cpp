@@ -118,6 +118,10 @@ struct Builder {
     // offsets[v]; placed ones are swapped out with the last), which vertex of the meshlet each
     // vertex is (kUnused: none), which triangles are placed.
     std::vector<uint32_t> counts, offsets, around;
+    // Where each corner's triangle sits in `around` (index t * 3 + k): ties in bestAround find
+    // the library's visiting order there at once, where searching lists of hundreds of triangles
+    // at each tie was a quarter of a leafy prop's build.
+    std::vector<uint32_t> slot;
     std::vector<Cone> cones;
     std::vector<KdNode> nodes;       // empty until built (nearestUnplaced)
     std::vector<uint8_t> deadNodes;  // subtrees holding only placed triangles (kdNearest)
@@ -161,13 +165,9 @@ struct Builder {
     // Where the library's visit meets t first: (place of the meshlet vertex, place in its list).
     uint64_t firstVisit(uint32_t t) const {
         uint64_t first = ~uint64_t(0);
-        for (int k = 0; k < 3; ++k) {
+        for (int k = 0; k < 3; ++k) {  // a corner repeated in t: the first of its places, as a search finds
             const uint32_t v = corners(t)[k];
-            if (used[v] == kUnused) continue;
-            const uint32_t* list = around.data() + offsets[v];
-            uint32_t place = 0;
-            while (list[place] != t) ++place;
-            first = std::min(first, uint64_t(used[v]) << 32 | place);
+            if (used[v] != kUnused) first = std::min(first, uint64_t(used[v]) << 32 | (slot[size_t(t) * 3 + k] - offsets[v]));
         }
         return first;
     }
@@ -343,13 +343,19 @@ struct Builder {
             }
         ++triangles;
         meshletOfTriangle[t] = meshlet;
+        bool removed[3] = {false, false, false};
         for (int k = 0; k < 3; ++k) {  // out of the lists of its corners, the last taking its place
-            uint32_t* list = around.data() + offsets[c[k]];
-            const uint32_t size = counts[c[k]];
-            for (uint32_t i = 0; i < size; ++i)
-                if (list[i] == t) {
-                    list[i] = list[size - 1];
-                    counts[c[k]]--;
+            // The first place of t in the list (a repeated corner has two), as a search finds.
+            int first = -1;
+            for (int j = 0; j < 3; ++j)
+                if (c[j] == c[k] && !removed[j] && (first < 0 || slot[size_t(t) * 3 + j] < slot[size_t(t) * 3 + first])) first = j;
+            removed[first] = true;
+            const uint32_t at = slot[size_t(t) * 3 + first], last = offsets[c[k]] + --counts[c[k]];
+            const uint32_t moved = around[last];
+            around[at] = moved;
+            for (int j = 0; j < 3; ++j)
+                if (corners(moved)[j] == c[k] && slot[size_t(moved) * 3 + j] == last) {
+                    slot[size_t(moved) * 3 + j] = at;
                     break;
                 }
         }
@@ -398,8 +404,13 @@ void reproduceMeshoptMeshlets(MeshoptMeshlets& result, const uint32_t* indices, 
     uint32_t offset = 0;
     for (size_t v = 0; v < vertexCount; ++v) b.offsets[v] = offset, offset += b.counts[v];
     b.around.resize(indexCount);
+    b.slot.resize(triangleCount * 3);
     for (size_t t = 0; t < triangleCount; ++t)
-        for (int k = 0; k < 3; ++k) b.around[b.offsets[indices[t * 3 + k]]++] = uint32_t(t);
+        for (int k = 0; k < 3; ++k) {
+            const uint32_t at = b.offsets[indices[t * 3 + k]]++;
+            b.around[at] = uint32_t(t);
+            b.slot[t * 3 + k] = at;
+        }
     for (size_t v = 0; v < vertexCount; ++v) b.offsets[v] -= b.counts[v];
 
     b.cones.resize(triangleCount);
