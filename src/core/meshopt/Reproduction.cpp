@@ -11,6 +11,8 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <system_error>
+#include <thread>
 
 namespace conescope {
 
@@ -232,13 +234,37 @@ struct Builder {
         return best;
     }
 
-    // The library's k-d tree, built the first time a scan cannot stand in for it.
-    void buildTree() {
-        std::vector<unsigned int> kdIndices(triangleCount);
+    // The library's k-d tree, made the first time a scan cannot stand in for it (treeReady), or
+    // at once on another thread (startTree).
+    std::vector<unsigned int> kdIndices;
+    std::thread treeMaker;
+    bool treeReady = false;
+
+    ~Builder() {
+        if (treeMaker.joinable()) treeMaker.join();
+    }
+
+    void allocateTree() {
+        kdIndices.resize(triangleCount);
         for (size_t i = 0; i < triangleCount; ++i) kdIndices[i] = unsigned(i);
         nodes.resize(triangleCount * 2);
-        meshoptkd::kdBuild(nodes.data(), &cones[0].px, sizeof(Cone) / sizeof(float), kdIndices.data(), triangleCount, 8);
         deadNodes.assign(nodes.size(), 0);
+    }
+
+    void makeTree() { meshoptkd::kdBuild(nodes.data(), &cones[0].px, sizeof(Cone) / sizeof(float), kdIndices.data(), triangleCount, 8); }
+
+    // Large meshes need the tree after a few dead ends nearly always (all of CGAL's and the props
+    // tried): it is made on a thread of its own, held on `cores` (if any), while this one places
+    // the first triangles, so that it is ready sooner. Made the same way, it answers the same.
+    void startTree(const Cores& cores) {
+        allocateTree();
+        try {
+            treeMaker = std::thread([this, cores] {
+                const CoreHold hold(thisThread(), cores);
+                makeTree();
+            });
+        } catch (const std::system_error&) {  // no thread: made here when needed
+        }
     }
 
     // The unplaced triangle the tree's search would find, by a scan: the search finds the nearest
@@ -303,7 +329,7 @@ struct Builder {
     // Where the tree is not built yet, scans stand in for it while they have looked at no more
     // than kScannedTimes the triangles in all; the tree is built once they would look at more.
     uint32_t nearestUnplaced(const Cone& cone) {
-        if (nodes.empty()) {
+        if (!treeReady) {
             const size_t unplaced = triangleCount - placedCount;
             uint32_t nearest = kNone;
             const size_t scannedTimes = triangleCount < kManyScansBelow ? kScannedTimesSmall : kScannedTimesLarge;
@@ -311,7 +337,13 @@ struct Builder {
                 scanned += unplaced;
                 if (nearestByScan(cone, nearest)) return nearest;
             }
-            buildTree();
+            if (treeMaker.joinable()) {
+                treeMaker.join();
+            } else {
+                if (nodes.empty()) allocateTree();
+                makeTree();
+            }
+            treeReady = true;
             ++treesBuilt;
         }
         float position[3] = {cone.px, cone.py, cone.pz};
@@ -383,7 +415,7 @@ struct Builder {
 
 void reproduceMeshoptMeshlets(MeshoptMeshlets& result, const uint32_t* indices, size_t indexCount, const float* positions,
                               size_t vertexCount, size_t positionStride, size_t maxVertices, size_t maxTriangles, float coneWeight,
-                              const MeshletClosed& closed) {
+                              const MeshletClosed& closed, const Cores& treeCores) {
     result = MeshoptMeshlets{};
     const size_t triangleCount = indexCount / 3;
     if (triangleCount == 0) {
@@ -420,6 +452,7 @@ void reproduceMeshoptMeshlets(MeshoptMeshlets& result, const uint32_t* indices, 
     b.distanceFree = coneWeight == 1.f && b.expectedRadius >= kLeastPlainRadius &&
                      centresWithin(b.cones.data(), triangleCount, kFarthestPlainCentre);
 
+    if (triangleCount >= kManyScansBelow) b.startTree(treeCores);
     b.used.assign(vertexCount, kUnused);
     b.emitted.assign(triangleCount, 0);
     b.listed.assign(triangleCount, 0);
