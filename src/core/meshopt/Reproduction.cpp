@@ -256,12 +256,14 @@ struct Builder {
     // Large meshes need the tree after a few dead ends nearly always (all of CGAL's and the props
     // tried): it is made on a thread of its own, held on `cores` (if any), while this one places
     // the first triangles, so that it is ready sooner. Made the same way, it answers the same.
+    // Its second half is made on this thread's cores, which wait for the tree on most props.
     void startTree(const Cores& cores) {
         allocateTree();
         try {
-            treeMaker = std::thread([this, cores] {
+            treeMaker = std::thread([this, cores, builderCores = coresOf(thisThread())] {
                 const CoreHold hold(thisThread(), cores);
-                makeTree();
+                meshoptkd::kdBuildInTwo(nodes.data(), &cones[0].px, sizeof(Cone) / sizeof(float), kdIndices.data(), triangleCount, 8,
+                                        builderCores);
             });
         } catch (const std::system_error&) {  // no thread: made here when needed
         }
