@@ -32,6 +32,7 @@
 #include "BenchSupport.h"
 #include "core/ClusterBounds.h"
 #include "core/ClusterOptimizer.h"
+#include "core/LargeArrays.h"
 #include "core/Pipeline.h"
 #include "core/Settings.h"
 #include "core/SettingsSchema.h"
@@ -117,6 +118,7 @@ Measurement prepareMeshopt(const Mesh& mesh, float coneWeight) {
 // The CLI has made its options from the settings schema before it reads the mesh, as here.
 Measurement wholeRunConeScope(const std::string& path) {
     settingFields();
+    keepFreedMemory();  // as the CLI's main does
     const Stopwatch clock;
     const Mesh mesh = readMeshFile(path).mesh;
     Settings settings;

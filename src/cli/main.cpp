@@ -10,6 +10,7 @@
 #include "cli/OutputFiles.h"
 #include "core/ClusterRanking.h"
 #include "core/Comparison.h"
+#include "core/LargeArrays.h"
 #include "io/MeshReader.h"
 #include "io/MeshWriter.h"
 
@@ -40,6 +41,7 @@ CLI::Validator meshOutputValidator(const std::vector<std::string>& extensions) {
 
 int main(int argc, char** argv) {
     using namespace conescope::cli;
+    conescope::keepFreedMemory();
 
     CLI::App app{"ConeScope: back-face culling of mesh clusters with normal cones.", "conescope-cli"};
     app.require_subcommand(1);

@@ -5,6 +5,9 @@
 #if defined(__linux__)
 #include <sys/mman.h>
 #endif
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
 
 namespace conescope {
 
@@ -17,6 +20,14 @@ void adviseHugePages(void* data, size_t bytes) {
 #else
     (void)data;
     (void)bytes;
+#endif
+}
+
+void keepFreedMemory() {
+#if defined(__GLIBC__)
+    // Blocks up to glibc's largest threshold come from the heap, and the heap's top is not trimmed.
+    mallopt(M_MMAP_THRESHOLD, 32 << 20);
+    mallopt(M_TRIM_THRESHOLD, 1 << 30);
 #endif
 }
 

@@ -7,9 +7,11 @@
 #include <gtest/gtest.h>
 #include <meshoptimizer.h>
 
+#include <cmath>
 #include <random>
 
 #include "TestMeshes.h"
+#include "core/meshopt/KdTree.h"
 #include "core/meshopt/Meshopt.h"
 #include "core/Partition.h"
 
@@ -110,6 +112,32 @@ TEST(MeshoptMeshlets, TheTreeIsBuiltOnlyWhereScansCannotStandIn) {
     // Forty pieces: too many searches for scans.
     std::mt19937_64 random(5);
     EXPECT_TRUE(built(scatteredPieces(random, 40)));
+}
+
+// From 2^15 triangles the tree is made at once on threads of its own, its root's two subtrees at
+// the same time (kdBuildInTwo): the same nodes as made in one piece, and the library's meshlets.
+TEST(MeshoptMeshlets, TheTreeMadeInTwoHalvesIsTheSameTree) {
+    std::mt19937_64 random(7);
+    std::uniform_real_distribution<float> coordinate(-1.0f, 1.0f);
+    for (size_t count : {size_t(5), size_t(100), size_t(40000)}) {
+        std::vector<glm::vec3> points(count);
+        for (glm::vec3& p : points) p = glm::vec3(coordinate(random), coordinate(random), std::round(coordinate(random) * 4.0f));
+        std::vector<unsigned int> wholeIndices(count), halvesIndices(count);
+        for (unsigned int i = 0; i < count; ++i) wholeIndices[i] = halvesIndices[i] = i;
+        std::vector<meshoptkd::KdNode> whole(2 * count), halves(2 * count);
+        const size_t used = meshoptkd::kdBuild(whole.data(), &points[0].x, 3, wholeIndices.data(), count, 8);
+        ASSERT_EQ(meshoptkd::kdBuildInTwo(halves.data(), &points[0].x, 3, halvesIndices.data(), count, 8, Cores{}), used);
+        EXPECT_EQ(halvesIndices, wholeIndices);
+        for (size_t n = 0; n < used; ++n) {
+            EXPECT_EQ(halves[n].index, whole[n].index) << n;
+            EXPECT_EQ(halves[n].axis, whole[n].axis) << n;
+            EXPECT_EQ(halves[n].children, whole[n].children) << n;
+        }
+    }
+    if (!reproducesLinkedMeshopt()) GTEST_SKIP() << meshoptFallbackNote();
+    expectSameAsLibrary(fromMesh(testmesh::icosphere(6)), 64, 124, 1.0f);
+    std::mt19937_64 pieces(11);
+    expectSameAsLibrary(scatteredPieces(pieces, 700), 64, 124, 1.0f);
 }
 
 // Regular grids, flat, bowl-shaped or bumpy, centred on the origin or copied side by side, their

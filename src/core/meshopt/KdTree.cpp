@@ -1,7 +1,11 @@
 // meshoptimizer 0.18's k-d tree (KdTree.h), made again.
 #include "KdTree.h"
 
+#include <algorithm>
 #include <cmath>
+#include <system_error>
+#include <thread>
+#include <vector>
 
 namespace conescope::meshoptkd {
 
@@ -119,6 +123,36 @@ size_t kdBuild(size_t offset, KdNode* nodes, const float* points, size_t stride,
 size_t kdBuild(KdNode* nodes, const float* points, size_t stride, unsigned int* indices, size_t count, size_t leafSize) {
     return kdBuild(0, nodes, points, stride, indices, count, leafSize,
                    count > leafSize ? spreadOf(points, stride, indices, count) : Spread{});
+}
+
+size_t kdBuildInTwo(KdNode* nodes, const float* points, size_t stride, unsigned int* indices, size_t count, size_t leafSize,
+                    const Cores& cores) {
+    const Spread spread = count > leafSize ? spreadOf(points, stride, indices, count) : Spread{};
+    const KdSplit node = kdSplit(points, stride, indices, count, leafSize, spread);
+    if (node.leaf) return kdBuildLeaf(0, nodes, indices, count);
+    const size_t middle = node.middle;
+    nodes[0].split = node.split;
+    nodes[0].axis = node.axis;
+    Spread left, right;
+    spreadsOf(points, stride, indices, middle > leafSize ? middle : 0, indices + middle, count - middle > leafSize ? count - middle : 0,
+              left, right);
+    std::vector<KdNode> second(2 * (count - middle));
+    size_t secondCount = 0;
+    auto makeSecond = [&] { secondCount = kdBuild(0, second.data(), points, stride, indices + middle, count - middle, leafSize, right); };
+    std::thread maker;
+    try {
+        maker = std::thread([&] {
+            const CoreHold hold(thisThread(), cores);
+            makeSecond();
+        });
+    } catch (const std::system_error&) {  // no thread: made here
+    }
+    const size_t nextOffset = kdBuild(1, nodes, points, stride, indices, middle, leafSize, left);
+    if (maker.joinable()) maker.join();
+    else makeSecond();
+    nodes[0].children = unsigned(nextOffset - 1);
+    std::copy(second.begin(), second.begin() + long(secondCount), nodes + nextOffset);
+    return nextOffset + secondCount;
 }
 
 // The distance the library's search measures from `position` to a triangle's centre.

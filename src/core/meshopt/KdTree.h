@@ -6,6 +6,8 @@
 
 #include <cstddef>
 
+#include "CoreAffinity.h"
+
 namespace conescope::meshoptkd {
 
 // Branches split at the mean of the axis of largest variance, leaves hold up to 8 points and list
@@ -40,6 +42,11 @@ KdSplit kdSplit(const float* points, size_t stride, unsigned int* indices, size_
 
 // The whole tree into nodes (2 * count of them at most); returns the nodes used.
 size_t kdBuild(KdNode* nodes, const float* points, size_t stride, unsigned int* indices, size_t count, size_t leafSize);
+// The same nodes, the root's second subtree made at once on a thread of its own held on `cores`
+// (if any), into an array of its own, then copied after the first: children are counted from
+// their node, so a subtree can be made anywhere.
+size_t kdBuildInTwo(KdNode* nodes, const float* points, size_t stride, unsigned int* indices, size_t count, size_t leafSize,
+                    const Cores& cores);
 
 // The distance the library's search measures from `position` to a triangle's centre.
 float centreDistance(const float* point, const float* position);

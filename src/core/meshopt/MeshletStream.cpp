@@ -200,7 +200,7 @@ void MeshletStream::State::build() {
         return true;
     };
     reproduceMeshoptMeshlets(meshlets_, triangleIndices(), triangleIndexCount(), &mesh.positions[0].x, mesh.positions.size(),
-                             sizeof(glm::vec3), limits_.maxVertices, limits_.maxTriangles, 1.0f, closed);
+                             sizeof(glm::vec3), limits_.maxVertices, limits_.maxTriangles, 1.0f, closed, cores_.current);
     {
         std::lock_guard<std::mutex> lock(mutex_);
         if (stopping_) return;

@@ -94,10 +94,11 @@ using MeshletClosed = std::function<bool(size_t closedMeshlets, size_t placedTri
 
 // The arguments are meshopt_buildMeshlets' (positionStride in bytes); the limits must be ones it
 // takes. Indices must be below vertexCount. `result`'s vectors are sized before the first triangle
-// is placed, so that a listener may read placed entries while it runs.
+// is placed, so that a listener may read placed entries while it runs. On large meshes the k-d tree
+// is made on a thread of its own, held on `treeCores` where given (a core that would idle).
 void reproduceMeshoptMeshlets(MeshoptMeshlets& result, const uint32_t* indices, size_t indexCount, const float* positions,
                               size_t vertexCount, size_t positionStride, size_t maxVertices, size_t maxTriangles, float coneWeight,
-                              const MeshletClosed& closed = {});
+                              const MeshletClosed& closed = {}, const Cores& treeCores = {});
 MeshoptMeshlets reproduceMeshoptMeshlets(const uint32_t* indices, size_t indexCount, const float* positions, size_t vertexCount,
                                          size_t positionStride, size_t maxVertices, size_t maxTriangles, float coneWeight);
 

@@ -11,6 +11,8 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <system_error>
+#include <thread>
 
 namespace conescope {
 
@@ -118,6 +120,10 @@ struct Builder {
     // offsets[v]; placed ones are swapped out with the last), which vertex of the meshlet each
     // vertex is (kUnused: none), which triangles are placed.
     std::vector<uint32_t> counts, offsets, around;
+    // Where each corner's triangle sits in `around` (index t * 3 + k): ties in bestAround find
+    // the library's visiting order there at once, where searching lists of hundreds of triangles
+    // at each tie was a quarter of a leafy prop's build.
+    std::vector<uint32_t> slot;
     std::vector<Cone> cones;
     std::vector<KdNode> nodes;       // empty until built (nearestUnplaced)
     std::vector<uint8_t> deadNodes;  // subtrees holding only placed triangles (kdNearest)
@@ -161,13 +167,9 @@ struct Builder {
     // Where the library's visit meets t first: (place of the meshlet vertex, place in its list).
     uint64_t firstVisit(uint32_t t) const {
         uint64_t first = ~uint64_t(0);
-        for (int k = 0; k < 3; ++k) {
+        for (int k = 0; k < 3; ++k) {  // a corner repeated in t: the first of its places, as a search finds
             const uint32_t v = corners(t)[k];
-            if (used[v] == kUnused) continue;
-            const uint32_t* list = around.data() + offsets[v];
-            uint32_t place = 0;
-            while (list[place] != t) ++place;
-            first = std::min(first, uint64_t(used[v]) << 32 | place);
+            if (used[v] != kUnused) first = std::min(first, uint64_t(used[v]) << 32 | (slot[size_t(t) * 3 + k] - offsets[v]));
         }
         return first;
     }
@@ -232,13 +234,39 @@ struct Builder {
         return best;
     }
 
-    // The library's k-d tree, built the first time a scan cannot stand in for it.
-    void buildTree() {
-        std::vector<unsigned int> kdIndices(triangleCount);
+    // The library's k-d tree, made the first time a scan cannot stand in for it (treeReady), or
+    // at once on another thread (startTree).
+    std::vector<unsigned int> kdIndices;
+    std::thread treeMaker;
+    bool treeReady = false;
+
+    ~Builder() {
+        if (treeMaker.joinable()) treeMaker.join();
+    }
+
+    void allocateTree() {
+        kdIndices.resize(triangleCount);
         for (size_t i = 0; i < triangleCount; ++i) kdIndices[i] = unsigned(i);
         nodes.resize(triangleCount * 2);
-        meshoptkd::kdBuild(nodes.data(), &cones[0].px, sizeof(Cone) / sizeof(float), kdIndices.data(), triangleCount, 8);
         deadNodes.assign(nodes.size(), 0);
+    }
+
+    void makeTree() { meshoptkd::kdBuild(nodes.data(), &cones[0].px, sizeof(Cone) / sizeof(float), kdIndices.data(), triangleCount, 8); }
+
+    // Large meshes need the tree after a few dead ends nearly always (all of CGAL's and the props
+    // tried): it is made on a thread of its own, held on `cores` (if any), while this one places
+    // the first triangles, so that it is ready sooner. Made the same way, it answers the same.
+    // Its second half is made on this thread's cores, which wait for the tree on most props.
+    void startTree(const Cores& cores) {
+        allocateTree();
+        try {
+            treeMaker = std::thread([this, cores, builderCores = coresOf(thisThread())] {
+                const CoreHold hold(thisThread(), cores);
+                meshoptkd::kdBuildInTwo(nodes.data(), &cones[0].px, sizeof(Cone) / sizeof(float), kdIndices.data(), triangleCount, 8,
+                                        builderCores);
+            });
+        } catch (const std::system_error&) {  // no thread: made here when needed
+        }
     }
 
     // The unplaced triangle the tree's search would find, by a scan: the search finds the nearest
@@ -303,7 +331,7 @@ struct Builder {
     // Where the tree is not built yet, scans stand in for it while they have looked at no more
     // than kScannedTimes the triangles in all; the tree is built once they would look at more.
     uint32_t nearestUnplaced(const Cone& cone) {
-        if (nodes.empty()) {
+        if (!treeReady) {
             const size_t unplaced = triangleCount - placedCount;
             uint32_t nearest = kNone;
             const size_t scannedTimes = triangleCount < kManyScansBelow ? kScannedTimesSmall : kScannedTimesLarge;
@@ -311,7 +339,13 @@ struct Builder {
                 scanned += unplaced;
                 if (nearestByScan(cone, nearest)) return nearest;
             }
-            buildTree();
+            if (treeMaker.joinable()) {
+                treeMaker.join();
+            } else {
+                if (nodes.empty()) allocateTree();
+                makeTree();
+            }
+            treeReady = true;
             ++treesBuilt;
         }
         float position[3] = {cone.px, cone.py, cone.pz};
@@ -343,13 +377,19 @@ struct Builder {
             }
         ++triangles;
         meshletOfTriangle[t] = meshlet;
+        bool removed[3] = {false, false, false};
         for (int k = 0; k < 3; ++k) {  // out of the lists of its corners, the last taking its place
-            uint32_t* list = around.data() + offsets[c[k]];
-            const uint32_t size = counts[c[k]];
-            for (uint32_t i = 0; i < size; ++i)
-                if (list[i] == t) {
-                    list[i] = list[size - 1];
-                    counts[c[k]]--;
+            // The first place of t in the list (a repeated corner has two), as a search finds.
+            int first = -1;
+            for (int j = 0; j < 3; ++j)
+                if (c[j] == c[k] && !removed[j] && (first < 0 || slot[size_t(t) * 3 + j] < slot[size_t(t) * 3 + first])) first = j;
+            removed[first] = true;
+            const uint32_t at = slot[size_t(t) * 3 + first], last = offsets[c[k]] + --counts[c[k]];
+            const uint32_t moved = around[last];
+            around[at] = moved;
+            for (int j = 0; j < 3; ++j)
+                if (corners(moved)[j] == c[k] && slot[size_t(moved) * 3 + j] == last) {
+                    slot[size_t(moved) * 3 + j] = at;
                     break;
                 }
         }
@@ -377,7 +417,7 @@ struct Builder {
 
 void reproduceMeshoptMeshlets(MeshoptMeshlets& result, const uint32_t* indices, size_t indexCount, const float* positions,
                               size_t vertexCount, size_t positionStride, size_t maxVertices, size_t maxTriangles, float coneWeight,
-                              const MeshletClosed& closed) {
+                              const MeshletClosed& closed, const Cores& treeCores) {
     result = MeshoptMeshlets{};
     const size_t triangleCount = indexCount / 3;
     if (triangleCount == 0) {
@@ -398,8 +438,13 @@ void reproduceMeshoptMeshlets(MeshoptMeshlets& result, const uint32_t* indices, 
     uint32_t offset = 0;
     for (size_t v = 0; v < vertexCount; ++v) b.offsets[v] = offset, offset += b.counts[v];
     b.around.resize(indexCount);
+    b.slot.resize(triangleCount * 3);
     for (size_t t = 0; t < triangleCount; ++t)
-        for (int k = 0; k < 3; ++k) b.around[b.offsets[indices[t * 3 + k]]++] = uint32_t(t);
+        for (int k = 0; k < 3; ++k) {
+            const uint32_t at = b.offsets[indices[t * 3 + k]]++;
+            b.around[at] = uint32_t(t);
+            b.slot[t * 3 + k] = at;
+        }
     for (size_t v = 0; v < vertexCount; ++v) b.offsets[v] -= b.counts[v];
 
     b.cones.resize(triangleCount);
@@ -409,6 +454,7 @@ void reproduceMeshoptMeshlets(MeshoptMeshlets& result, const uint32_t* indices, 
     b.distanceFree = coneWeight == 1.f && b.expectedRadius >= kLeastPlainRadius &&
                      centresWithin(b.cones.data(), triangleCount, kFarthestPlainCentre);
 
+    if (triangleCount >= kManyScansBelow) b.startTree(treeCores);
     b.used.assign(vertexCount, kUnused);
     b.emitted.assign(triangleCount, 0);
     b.listed.assign(triangleCount, 0);
