@@ -297,7 +297,10 @@ void printRows(const std::vector<Row>& rows, const std::string& reference, bool 
         std::ostringstream line;
         line << std::fixed << "| " << row.name << " | " << row.runs.front().clusters << " | " << std::setprecision(3) << median(walls)
              << " | " << *std::min_element(walls.begin(), walls.end()) << " | " << median(cpus) << " | " << std::setprecision(0)
-             << peak << " | " << std::setprecision(2) << (referenceWall > 0.0 ? median(walls) / referenceWall : 0.0) << "x |";
+             << peak << " | ";
+        // Without the reference row (--only left it out) there is no ratio: a dash, not 0.00x.
+        if (referenceWall > 0.0) line << std::setprecision(2) << median(walls) / referenceWall << "x |";
+        else line << "- |";
         if (guide) line << " " << std::setprecision(4) << row.runs.front().expectedRate << " |";
         std::cout << line.str() << "\n";
     }
