@@ -8,7 +8,9 @@
 #pragma once
 
 #include <bitset>
+#include <system_error>
 #include <thread>
+#include <utility>
 
 namespace conescope {
 
@@ -47,5 +49,19 @@ private:
 Cores coresOf(std::thread::native_handle_type thread);
 // The calling thread's handle, for a hold.
 std::thread::native_handle_type thisThread();
+
+// A thread running `work`, held on `cores` (nothing held when empty). Not joinable when the system
+// makes no thread: the caller then does the work itself.
+template <typename Work>
+std::thread threadOnCores(const Cores& cores, Work work) {
+    try {
+        return std::thread([cores, work = std::move(work)]() mutable {
+            const CoreHold hold(thisThread(), cores);
+            work();
+        });
+    } catch (const std::system_error&) {
+        return std::thread();
+    }
+}
 
 }  // namespace conescope

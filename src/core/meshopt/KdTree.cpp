@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -139,14 +138,7 @@ size_t kdBuildInTwo(KdNode* nodes, const float* points, size_t stride, unsigned 
     std::vector<KdNode> second(2 * (count - middle));
     size_t secondCount = 0;
     auto makeSecond = [&] { secondCount = kdBuild(0, second.data(), points, stride, indices + middle, count - middle, leafSize, right); };
-    std::thread maker;
-    try {
-        maker = std::thread([&] {
-            const CoreHold hold(thisThread(), cores);
-            makeSecond();
-        });
-    } catch (const std::system_error&) {  // no thread: made here
-    }
+    std::thread maker = threadOnCores(cores, makeSecond);
     const size_t nextOffset = kdBuild(1, nodes, points, stride, indices, middle, leafSize, left);
     if (maker.joinable()) maker.join();
     else makeSecond();

@@ -11,7 +11,6 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
-#include <system_error>
 #include <thread>
 
 namespace conescope {
@@ -259,14 +258,11 @@ struct Builder {
     // Its second half is made on this thread's cores, which wait for the tree on most props.
     void startTree(const Cores& cores) {
         allocateTree();
-        try {
-            treeMaker = std::thread([this, cores, builderCores = coresOf(thisThread())] {
-                const CoreHold hold(thisThread(), cores);
-                meshoptkd::kdBuildInTwo(nodes.data(), &cones[0].px, sizeof(Cone) / sizeof(float), kdIndices.data(), triangleCount, 8,
-                                        builderCores);
-            });
-        } catch (const std::system_error&) {  // no thread: made here when needed
-        }
+        // Without a thread (not joinable) the tree is made here when needed.
+        treeMaker = threadOnCores(cores, [this, builderCores = coresOf(thisThread())] {
+            meshoptkd::kdBuildInTwo(nodes.data(), &cones[0].px, sizeof(Cone) / sizeof(float), kdIndices.data(), triangleCount, 8,
+                                    builderCores);
+        });
     }
 
     // The unplaced triangle the tree's search would find, by a scan: the search finds the nearest
