@@ -46,8 +46,7 @@ struct Seed {
 
 // `count` seed faces, each the farthest (along edges, centroid to centroid) from those before it;
 // a piece no seed reached yet is the farthest of all, so separate pieces get seeds first.
-std::vector<Seed> spreadSeeds(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits, size_t count) {
-    const State state(mesh, faces, limits);
+std::vector<Seed> spreadSeeds(const State& state, size_t count) {
     const double inf = std::numeric_limits<double>::infinity();
     const std::vector<glm::dvec3>& centroids = state.geometry.centroids;
     std::vector<double> distance(state.faceCount, inf);
@@ -59,7 +58,7 @@ std::vector<Seed> spreadSeeds(const Mesh& mesh, const FaceGeometry& faces, const
         const auto [d, seed] = farthest.top();
         farthest.pop();
         if (d != distance[seed] || (d == 0.0 && !seeds.empty())) continue;
-        seeds.push_back({seed, faces.normals[seed]});
+        seeds.push_back({seed, state.geometry.normals[seed]});
         distance[seed] = 0.0;
         near.push({0.0, seed, 0});
         while (!near.empty()) {  // distances shortened by the new seed
@@ -130,9 +129,7 @@ std::vector<Seed> centredSeeds(const State& state) {
 // Seeds where the clusters already made are, the smallest left out: cells then take those
 // clusters' places and normals (they culled more, and reached more budgets, than seeds spread
 // evenly on CGAL's knot2, femur and mannequin-devil).
-std::vector<Seed> largestCentres(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits, const Partition& made,
-                                 size_t count) {
-    State state(mesh, faces, limits);
+std::vector<Seed> largestCentres(State& state, const Partition& made, size_t count) {
     assign(state, made);
     const std::vector<Seed> centres = centredSeeds(state);  // one per cluster, in order
     std::vector<uint32_t> order(centres.size());
@@ -145,10 +142,9 @@ std::vector<Seed> largestCentres(const Mesh& mesh, const FaceGeometry& faces, co
 }
 
 // One packing at one turn weight (in cell radii): cells grown, moved to their centres while that
-// leaves fewer triangles out, what is left grown and reduced, then local search.
-Partition packWith(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits, size_t target,
-                   std::vector<Seed> seeds, double turnWeight) {
-    State state(mesh, faces, limits);
+// leaves fewer triangles out, what is left grown and reduced, then local search. `state` is the
+// packings' own, cleared first (its adjacency is made once for them all).
+Partition packWith(State& state, size_t target, std::vector<Seed> seeds, double turnWeight) {
     std::vector<Seed> bestSeeds = seeds;
     size_t fewestLeft = growCells(state, seeds, turnWeight);
     bool lastIsBest = true;
@@ -170,9 +166,8 @@ Partition packWith(const Mesh& mesh, const FaceGeometry& faces, const MeshletLim
 // The chosen packing searched further: annealing, then greedy moves where it moved faces. Compact
 // cells gain much from it (knot2 at 124 clusters: expected efficiency 0.096 after 2 sweeps, 0.187
 // after 100), and one packing is annealed, not every one tried.
-Partition annealed(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits, const Partition& packed, size_t sweeps) {
+Partition annealed(State& state, const Partition& packed, size_t sweeps) {
     if (sweeps == 0) return packed;
-    State state(mesh, faces, limits);
     assign(state, packed);
     refineAround(state, anneal(state, sweeps));
     return result(state);
@@ -183,9 +178,10 @@ Partition annealed(const Mesh& mesh, const FaceGeometry& faces, const MeshletLim
 Partition packToBudget(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits, size_t target, size_t sweeps,
                        const Partition& made, const ProgressCallback& progress) {
     // Each packing may take a second on a large mesh: a cancel is heard between them.
+    State state(mesh, faces, limits);
     auto pack = [&](const std::vector<Seed>& seeds, double turnWeight) {
         if (progress && !progress(1.0, "packing clusters")) throw OperationCancelled();
-        return packWith(mesh, faces, limits, target, seeds, turnWeight);
+        return packWith(state, target, seeds, turnWeight);
     };
     // A round patch of maxVertices holds about 2 V - 2 - 3.5 sqrt(V) triangles (98 at 64): packing
     // discs gets no further (rings of a thin tube and closed pieces can: CGAL's pipe at 107). On a
@@ -201,7 +197,7 @@ Partition packToBudget(const Mesh& mesh, const FaceGeometry& faces, const Meshle
     // bisect for the largest weight that reaches it, from the first start that does.
     Partition best = made;
     if (mesh.faceCount() <= kAlwaysTriedBelowFaces) {
-        const std::vector<Seed> starts[2] = {largestCentres(mesh, faces, limits, made, target), spreadSeeds(mesh, faces, limits, target)};
+        const std::vector<Seed> starts[2] = {largestCentres(state, made, target), spreadSeeds(state, target)};
         // Weight 0 first: where its packings end far above the budget (more than 5% and one),
         // no weight was seen to reach it, and the other ten packings are not worth their time.
         Partition tightest[2] = {pack(starts[0], 0.0), pack(starts[1], 0.0)};
@@ -210,15 +206,15 @@ Partition packToBudget(const Mesh& mesh, const FaceGeometry& faces, const Meshle
         for (size_t i = std::size(kTurnWeights); i-- > 1;)
             for (const std::vector<Seed>& seeds : starts) {
                 Partition packed = pack(seeds, kTurnWeights[i] * cellRadius);
-                if (packed.clusterCount <= target) return annealed(mesh, faces, limits, packed, sweeps);
+                if (packed.clusterCount <= target) return annealed(state, packed, sweeps);
             }
         for (const Partition& packed : tightest)
-            if (packed.clusterCount <= target) return annealed(mesh, faces, limits, packed, sweeps);
+            if (packed.clusterCount <= target) return annealed(state, packed, sweeps);
         return best;
     }
     double bestRate = -1.0;
     for (const bool fromMade : {true, false}) {
-        const std::vector<Seed> seeds = fromMade ? largestCentres(mesh, faces, limits, made, target) : spreadSeeds(mesh, faces, limits, target);
+        const std::vector<Seed> seeds = fromMade ? largestCentres(state, made, target) : spreadSeeds(state, target);
         // Whether the packing at weight i reaches the budget; kept when it culls most so far.
         auto reaches = [&](size_t i) {
             Partition packed = pack(seeds, kTurnWeights[i] * cellRadius);
@@ -235,7 +231,7 @@ Partition packToBudget(const Mesh& mesh, const FaceGeometry& faces, const Meshle
         }
         break;
     }
-    return best.clusterCount <= target ? annealed(mesh, faces, limits, best, sweeps) : best;
+    return best.clusterCount <= target ? annealed(state, best, sweeps) : best;
 }
 
 }  // namespace conescope::optimizer
