@@ -351,6 +351,14 @@ bool betterAtBudget(const Mesh& mesh, const FaceGeometry& faces, const Partition
     return expectedCullRate(mesh, faces, a) > expectedCullRate(mesh, faces, b);
 }
 
+// A partition of the whole mesh told to `partDone` as its one part.
+void heardAsOnePart(const PartClusters& partDone, size_t faceCount, const Partition& partition) {
+    if (!partDone) return;
+    std::vector<uint32_t> every(faceCount);
+    std::iota(every.begin(), every.end(), 0u);
+    partDone(0, 1, every, partition);
+}
+
 bool sameLimits(const MeshletLimits& a, const MeshletLimits& b) { return a.maxVertices == b.maxVertices && a.maxTriangles == b.maxTriangles; }
 
 }  // namespace
@@ -374,21 +382,21 @@ Partition buildNearBudget(const Mesh& mesh, const FaceGeometry& faces, const Mes
             meshlets = ownStream.get();
         }
         if (targetClusters == 0 || targetClusters <= meshlets->meshletCount()) {
+            // The default budget keeps the refined meshlets: as fast as meshoptimizer's own build.
+            // At the balanced level an explicit budget also grows its own clusters and keeps what
+            // culls more in expectation: growth beat the refined meshlets a few clusters below
+            // their count (a cliff at the count: docs/benchmarks.md, "Budget sweep").
+            const bool alsoGrow = targetClusters != 0 && effort == Effort::Balanced;
             const Partition fromMeshlets = optimizeMeshletParts(mesh, faces, limits, targetClusters, plan,
                                                                 annealingSweepsFor(effort, faceCount, meshlets->partCount()),
-                                                                *meshlets, progress, partDone);
-            if (targetClusters == 0 || fromMeshlets.clusterCount <= targetClusters) return fromMeshlets;
-            // A part's share of the budget can be below what its own faces allow while the whole mesh
-            // allows the budget: the clusters are then grown and reduced as for a budget above
-            // meshoptimizer's count, and the result nearer the budget is kept (heard as one part).
+                                                                *meshlets, progress, alsoGrow ? PartClusters() : partDone);
+            if (targetClusters == 0 || (!alsoGrow && fromMeshlets.clusterCount <= targetClusters)) return fromMeshlets;
+            // Elsewhere growth is tried where a part's share of the budget is below what its own
+            // faces allow while the whole mesh allows the budget.
             const Partition grown = optimizeGrownParts(mesh, faces, limits, targetClusters, plan, sweeps, progress, {});
-            if (grown.clusterCount >= fromMeshlets.clusterCount) return fromMeshlets;
-            if (partDone) {
-                std::vector<uint32_t> every(faceCount);
-                std::iota(every.begin(), every.end(), 0u);
-                partDone(0, 1, every, grown);
-            }
-            return grown;
+            const Partition& kept = betterAtBudget(mesh, faces, grown, fromMeshlets, targetClusters) ? grown : fromMeshlets;
+            if (alsoGrow || &kept == &grown) heardAsOnePart(partDone, faceCount, kept);  // else its parts were heard
+            return kept;
         }
         // A budget above meshoptimizer's count: its optimised meshlets split to the budget and
         // searched again, or clusters grown and reduced to it, whichever culls more in expectation.
@@ -403,11 +411,7 @@ Partition buildNearBudget(const Mesh& mesh, const FaceGeometry& faces, const Mes
         Partition split = optimizeClusters(mesh, faces, limits, targetClusters, plan, sweeps, &halves);
         Partition best = optimizeGrownParts(mesh, faces, limits, targetClusters, plan, sweeps, progress, {});
         if (betterAtBudget(mesh, faces, split, best, targetClusters)) best = std::move(split);
-        if (partDone) {
-            std::vector<uint32_t> every(faceCount);
-            std::iota(every.begin(), every.end(), 0u);
-            partDone(0, 1, every, best);
-        }
+        heardAsOnePart(partDone, faceCount, best);
         return best;
     }
     const size_t target = targetClusters != 0 ? targetClusters : defaultBudget(mesh, limits, plan.meshoptLimits);
@@ -424,21 +428,28 @@ Partition buildOptimizedClusters(const Mesh& mesh, const FaceGeometry& faces, co
                                  size_t targetClusters, const ProgressCallback& progress, Effort effort,
                                  MeshletStream* meshlets, const PartClusters& partDone) {
     Partition made = buildNearBudget(mesh, faces, limits, targetClusters, progress, effort, meshlets, partDone);
-    // An explicit budget missed: compact clusters packed to it, kept only when they reach it (they
-    // cull less than clusters shaped by their normals: a trade worth making for the budget only).
-    if (targetClusters == 0 || made.clusterCount <= targetClusters || mesh.faceCount() > kPackingFacesAtMost ||
-        targetClusters < fewestClustersWithin(mesh, limits))
-        return made;
-    // Its annealing is the best level's (one run, on at most 2^17 faces), but for the fast level.
+    // At the balanced level an explicit budget is annealed as long as a packing is (the best level's
+    // sweeps, one run, on at most 2^17 faces): a budget is asked for when the clusters are built
+    // once, and every budget then meets the same search (a shorter one left the count culling less
+    // than a packed budget below it: docs/benchmarks.md, "Budget sweep"). The best level has
+    // annealed that long already; the fast level does not anneal.
+    if (targetClusters == 0 || mesh.faceCount() > kPackingFacesAtMost) return made;
     const size_t sweeps = effort == Effort::Fast ? 0 : annealingSweepsFor(Effort::Best, mesh.faceCount(), 1);
-    Partition packed = optimizer::packToBudget(mesh, faces, limits, targetClusters, sweeps, made, progress);
-    if (packed.clusterCount > targetClusters) return made;
-    if (partDone) {
-        std::vector<uint32_t> every(mesh.faceCount());
-        std::iota(every.begin(), every.end(), 0u);
-        partDone(0, 1, every, packed);
+    Partition kept;
+    if (made.clusterCount <= targetClusters) {
+        if (effort != Effort::Balanced || sweeps == 0) return made;
+        optimizer::State state(mesh, faces, limits);
+        kept = optimizer::annealedFurther(state, made, sweeps);
+        if (expectedCullRate(mesh, faces, kept) <= expectedCullRate(mesh, faces, made)) return made;
+    } else {
+        // Missed: compact clusters packed to it, kept only when they reach it (they cull less than
+        // clusters shaped by their normals: a trade worth making for the budget only).
+        if (targetClusters < fewestClustersWithin(mesh, limits)) return made;
+        kept = optimizer::packToBudget(mesh, faces, limits, targetClusters, sweeps, made, progress);
+        if (kept.clusterCount > targetClusters) return made;
     }
-    return packed;
+    heardAsOnePart(partDone, mesh.faceCount(), kept);
+    return kept;
 }
 
 }  // namespace conescope

@@ -144,4 +144,11 @@ std::vector<uint32_t> anneal(State& state, size_t sweeps) {
     return moved;
 }
 
+Partition annealedFurther(State& state, const Partition& start, size_t sweeps) {
+    if (sweeps == 0) return start;
+    assign(state, start);
+    refineAround(state, anneal(state, sweeps));
+    return result(state);
+}
+
 }  // namespace conescope::optimizer

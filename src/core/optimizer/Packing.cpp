@@ -163,16 +163,6 @@ Partition packWith(State& state, size_t target, std::vector<Seed> seeds, double 
     return result(state);
 }
 
-// The chosen packing searched further: annealing, then greedy moves where it moved faces. Compact
-// cells gain much from it (knot2 at 124 clusters: expected efficiency 0.096 after 2 sweeps, 0.187
-// after 100), and one packing is annealed, not every one tried.
-Partition annealed(State& state, const Partition& packed, size_t sweeps) {
-    if (sweeps == 0) return packed;
-    assign(state, packed);
-    refineAround(state, anneal(state, sweeps));
-    return result(state);
-}
-
 }  // namespace
 
 Partition packToBudget(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits, size_t target, size_t sweeps,
@@ -206,10 +196,10 @@ Partition packToBudget(const Mesh& mesh, const FaceGeometry& faces, const Meshle
         for (size_t i = std::size(kTurnWeights); i-- > 1;)
             for (const std::vector<Seed>& seeds : starts) {
                 Partition packed = pack(seeds, kTurnWeights[i] * cellRadius);
-                if (packed.clusterCount <= target) return annealed(state, packed, sweeps);
+                if (packed.clusterCount <= target) return annealedFurther(state, packed, sweeps);
             }
         for (const Partition& packed : tightest)
-            if (packed.clusterCount <= target) return annealed(state, packed, sweeps);
+            if (packed.clusterCount <= target) return annealedFurther(state, packed, sweeps);
         return best;
     }
     double bestRate = -1.0;
@@ -231,7 +221,7 @@ Partition packToBudget(const Mesh& mesh, const FaceGeometry& faces, const Meshle
         }
         break;
     }
-    return best.clusterCount <= target ? annealed(state, best, sweeps) : best;
+    return best.clusterCount <= target ? annealedFurther(state, best, sweeps) : best;
 }
 
 }  // namespace conescope::optimizer
