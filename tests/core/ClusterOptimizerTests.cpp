@@ -232,6 +232,9 @@ TEST(ClusterOptimizer, AtMeshoptimizersCountABudgetCullsAtLeastOneBelowIt) {
     EXPECT_EQ(atCount.clusterCount, count);
     EXPECT_LT(below.clusterCount, count);
     EXPECT_GE(expectedCullRate(mesh, faces, atCount), expectedCullRate(mesh, faces, below));
+    // The longer annealing hears a cancel before it starts.
+    const ProgressCallback cancelAnnealing = [](double, const std::string& stage) { return stage != "annealing clusters"; };
+    EXPECT_THROW(buildOptimizedClusters(mesh, faces, limits, count, cancelAnnealing), OperationCancelled);
 }
 
 // Many separate pieces: each used to be a cluster at least. Clusters now merge across the gaps

@@ -438,6 +438,8 @@ Partition buildOptimizedClusters(const Mesh& mesh, const FaceGeometry& faces, co
     Partition kept;
     if (made.clusterCount <= targetClusters) {
         if (effort != Effort::Balanced || sweeps == 0) return made;
+        // It may take a second or two on a large mesh: a cancel is heard before it.
+        if (progress && !progress(1.0, "annealing clusters")) throw OperationCancelled();
         optimizer::State state(mesh, faces, limits);
         kept = optimizer::annealedFurther(state, made, sweeps);
         if (expectedCullRate(mesh, faces, kept) <= expectedCullRate(mesh, faces, made)) return made;
