@@ -25,9 +25,16 @@ QString efficiencies(const Comparison& comparison) {
 }
 
 QString configuration(const Settings& settings) {
+    QString builder = QString::fromStdString(toString(settings.builder));
+    // The optimized builder's effort and budget change what it makes at the same count: an
+    // explicit budget is searched longer than the default one (README, "Builders").
+    if (settings.builder == Builder::Optimized)
+        builder += QStringLiteral(" (%1, %2)")
+                       .arg(QString::fromStdString(toString(settings.effort)),
+                            settings.clusterCount != 0 ? QStringLiteral("budget %1").arg(settings.clusterCount)
+                                                       : QStringLiteral("default budget"));
     return QStringLiteral("%1, %2 / %3, %4/%5")
-        .arg(QString::fromStdString(toString(settings.builder)), QString::fromStdString(toString(displayedCone(settings))),
-             QString::fromStdString(toString(displayedTest(settings))))
+        .arg(builder, QString::fromStdString(toString(displayedCone(settings))), QString::fromStdString(toString(displayedTest(settings))))
         .arg(settings.limits.maxVertices)
         .arg(settings.limits.maxTriangles);
 }
