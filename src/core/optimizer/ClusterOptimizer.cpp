@@ -424,9 +424,11 @@ constexpr size_t kPackingFacesAtMost = size_t(1) << 17;
 
 }  // namespace
 
-Partition buildOptimizedClusters(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits,
-                                 size_t targetClusters, const ProgressCallback& progress, Effort effort,
-                                 MeshletStream* meshlets, const PartClusters& partDone) {
+namespace {
+
+// The whole build at one budget (buildOptimizedClusters without the climb).
+Partition buildAtBudget(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits, size_t targetClusters,
+                        const ProgressCallback& progress, Effort effort, MeshletStream* meshlets, const PartClusters& partDone) {
     Partition made = buildNearBudget(mesh, faces, limits, targetClusters, progress, effort, meshlets, partDone);
     // At the balanced level an explicit budget is annealed as long as a packing is (the best level's
     // sweeps, one run, on at most 2^17 faces): a budget is asked for when the clusters are built
@@ -452,6 +454,38 @@ Partition buildOptimizedClusters(const Mesh& mesh, const FaceGeometry& faces, co
     }
     heardAsOnePart(partDone, mesh.faceCount(), kept);
     return kept;
+}
+
+// The climb costs a whole build per cluster above the count: it is made on meshes of at most this
+// many faces (at most 48 clusters at the count, a few tens of milliseconds a build) and up to
+// kClimbAboveCount times the count.
+constexpr size_t kClimbFacesAtMost = size_t(1) << 12;
+constexpr double kClimbAboveCount = 1.25;
+
+}  // namespace
+
+Partition buildOptimizedClusters(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits,
+                                 size_t targetClusters, const ProgressCallback& progress, Effort effort,
+                                 MeshletStream* meshlets, const PartClusters& partDone) {
+    // Above meshoptimizer's count on small meshes, at the balanced level, an explicit budget climbs
+    // from the count one cluster at a time: each step keeps the better in expectation of its own
+    // search and the step below with one cluster split (which never culls less), so one more
+    // cluster never culls less in expectation. Searched alone, one more cluster could land in a
+    // worse basin: CGAL's pinion 0.413 at 18 clusters, 0.346 at 19 (docs/benchmarks.md).
+    const size_t faceCount = mesh.faceCount();
+    if (targetClusters == 0 || effort != Effort::Balanced || faceCount > kClimbFacesAtMost || !meshoptTakesLimits(limits))
+        return buildAtBudget(mesh, faces, limits, targetClusters, progress, effort, meshlets, partDone);
+    const size_t count = defaultClusterBudget(mesh, limits);
+    if (targetClusters <= count || double(targetClusters) > kClimbAboveCount * double(count))
+        return buildAtBudget(mesh, faces, limits, targetClusters, progress, effort, meshlets, partDone);
+    Partition best = buildAtBudget(mesh, faces, limits, count, progress, effort, meshlets, {});
+    for (size_t k = count + 1; k <= targetClusters; ++k) {
+        Partition own = buildAtBudget(mesh, faces, limits, k, progress, effort, meshlets, {});
+        Partition stepped = splitToBudget(mesh, faces, limits, best, k);
+        best = betterAtBudget(mesh, faces, stepped, own, k) ? std::move(stepped) : std::move(own);
+    }
+    heardAsOnePart(partDone, faceCount, best);
+    return best;
 }
 
 }  // namespace conescope
