@@ -386,6 +386,16 @@ TEST(ClusterOptimizer, OneMoreClusterNeverCullsLessOnASmallMesh) {
         EXPECT_GE(rate, previous - 1e-12);
         previous = rate;
     }
+    // Progress runs once over the whole climb, not again over each step's build.
+    std::vector<double> seen;
+    buildOptimizedClusters(mesh, faces, limits, count + 3, [&](double fraction, const std::string&) {
+        seen.push_back(fraction);
+        return true;
+    });
+    ASSERT_FALSE(seen.empty());
+    EXPECT_LT(seen.front(), 0.5);
+    EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
+    EXPECT_DOUBLE_EQ(seen.back(), 1.0);
 }
 
 TEST(ClusterOptimizer, BeatsTheGreedyBuildersAtTheirClusterCount) {

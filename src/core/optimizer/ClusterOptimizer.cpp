@@ -478,9 +478,17 @@ Partition buildOptimizedClusters(const Mesh& mesh, const FaceGeometry& faces, co
     const size_t count = defaultClusterBudget(mesh, limits);
     if (targetClusters <= count || double(targetClusters) > kClimbAboveCount * double(count))
         return buildAtBudget(mesh, faces, limits, targetClusters, progress, effort, meshlets, partDone);
-    Partition best = buildAtBudget(mesh, faces, limits, count, progress, effort, meshlets, {});
+    // Progress runs once over the whole climb, each step's build a share of it.
+    const size_t steps = targetClusters - count + 1;
+    auto stepProgress = [&](size_t step) -> ProgressCallback {
+        if (!progress) return {};
+        return [&progress, step, steps](double fraction, const std::string& stage) {
+            return progress((double(step) + fraction) / double(steps), stage);
+        };
+    };
+    Partition best = buildAtBudget(mesh, faces, limits, count, stepProgress(0), effort, meshlets, {});
     for (size_t k = count + 1; k <= targetClusters; ++k) {
-        Partition own = buildAtBudget(mesh, faces, limits, k, progress, effort, meshlets, {});
+        Partition own = buildAtBudget(mesh, faces, limits, k, stepProgress(k - count), effort, meshlets, {});
         Partition stepped = splitToBudget(mesh, faces, limits, best, k);
         best = betterAtBudget(mesh, faces, stepped, own, k) ? std::move(stepped) : std::move(own);
     }
