@@ -164,7 +164,8 @@ std::vector<SettingField> makeFields() {
     row(f);
 
     f = describe("clusters_target", "clusters", "K",
-         "Number of clusters for kmeans (0 = triangles / max-tris) and the optimized builder's budget (0 = its default)",
+         "Number of clusters for kmeans (0 = triangles / max-tris) and the optimized builder's budget (0 = its "
+         "default, meshoptimizer's count; a budget given, even that count, is searched longer at the balanced effort)",
          SettingKind::Count, true, Stage::Clusters, {Builder::KMeans, Builder::Optimized});
     f.minimum = 0, f.maximum = double(std::numeric_limits<uint32_t>::max());
     f.value = [](const Settings& s) -> SettingValue { return s.clusterCount; };
