@@ -361,6 +361,13 @@ void heardAsOnePart(const PartClusters& partDone, size_t faceCount, const Partit
 
 bool sameLimits(const MeshletLimits& a, const MeshletLimits& b) { return a.maxVertices == b.maxVertices && a.maxTriangles == b.maxTriangles; }
 
+// The caller's meshlet stream when it is of this mesh at these limits, else one made here (held by `own`).
+MeshletStream& meshletsFor(const Mesh& mesh, const MeshletLimits& limits, MeshletStream* given, std::unique_ptr<MeshletStream>& own) {
+    if (given && &given->mesh() == &mesh && sameLimits(given->limits(), limits)) return *given;
+    own = std::make_unique<MeshletStream>(std::shared_ptr<const Mesh>(&mesh, [](const Mesh*) {}), limits, meshletPartsFor(mesh.faceCount()));
+    return *own;
+}
+
 }  // namespace
 
 namespace {
@@ -376,11 +383,7 @@ Partition buildNearBudget(const Mesh& mesh, const FaceGeometry& faces, const Mes
     // budget above it is grown instead.
     std::unique_ptr<MeshletStream> ownStream;
     if (startsFromMeshlets(plan)) {
-        if (!meshlets || &meshlets->mesh() != &mesh || !sameLimits(meshlets->limits(), limits)) {
-            ownStream = std::make_unique<MeshletStream>(std::shared_ptr<const Mesh>(&mesh, [](const Mesh*) {}), limits,
-                                                        meshletPartsFor(faceCount));
-            meshlets = ownStream.get();
-        }
+        meshlets = &meshletsFor(mesh, limits, meshlets, ownStream);
         if (targetClusters == 0 || targetClusters <= meshlets->meshletCount()) {
             // The default budget keeps the refined meshlets: as fast as meshoptimizer's own build.
             // At the balanced level an explicit budget also grows its own clusters and keeps what
@@ -475,7 +478,10 @@ Partition buildOptimizedClusters(const Mesh& mesh, const FaceGeometry& faces, co
     const size_t faceCount = mesh.faceCount();
     if (targetClusters == 0 || effort != Effort::Balanced || faceCount > kClimbFacesAtMost || !meshoptTakesLimits(limits))
         return buildAtBudget(mesh, faces, limits, targetClusters, progress, effort, meshlets, partDone);
-    const size_t count = defaultClusterBudget(mesh, limits);
+    // One stream of meshoptimizer's meshlets for every step: its count is the default budget.
+    std::unique_ptr<MeshletStream> ownStream;
+    meshlets = &meshletsFor(mesh, limits, meshlets, ownStream);
+    const size_t count = meshlets->meshletCount();
     if (targetClusters <= count || double(targetClusters) > kClimbAboveCount * double(count))
         return buildAtBudget(mesh, faces, limits, targetClusters, progress, effort, meshlets, partDone);
     // Progress runs once over the whole climb, each step's build a share of it.
