@@ -459,10 +459,9 @@ Partition buildAtBudget(const Mesh& mesh, const FaceGeometry& faces, const Meshl
     return kept;
 }
 
-// The climb costs a whole build per cluster above the count: it is made on meshes of at most this
-// many faces (at most 48 clusters at the count, a few tens of milliseconds a build) and up to
-// kClimbAboveCount times the count.
-constexpr size_t kClimbFacesAtMost = size_t(1) << 12;
+// The climb costs a whole build per step (about 0.1 s on 4,096 faces): it is made on meshes whose
+// faces times the steps up to kClimbAboveCount times the count stay within kClimbWork.
+constexpr size_t kClimbWork = size_t(1) << 17;
 constexpr double kClimbAboveCount = 1.25;
 
 }  // namespace
@@ -470,31 +469,41 @@ constexpr double kClimbAboveCount = 1.25;
 Partition buildOptimizedClusters(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits,
                                  size_t targetClusters, const ProgressCallback& progress, Effort effort,
                                  MeshletStream* meshlets, const PartClusters& partDone) {
-    // Above meshoptimizer's count on small meshes, at the balanced level, an explicit budget climbs
-    // from the count one cluster at a time: each step keeps the better in expectation of its own
-    // search and the step below with one cluster split (which never culls less), so one more
+    // On small meshes, at the balanced level, an explicit budget climbs from the fewest clusters
+    // the builder reaches one cluster at a time: each step keeps the better in expectation of its
+    // own search and the step below with one cluster split (which never culls less), so one more
     // cluster never culls less in expectation. Searched alone, one more cluster could land in a
-    // worse basin: CGAL's pinion 0.413 at 18 clusters, 0.346 at 19 (docs/benchmarks.md).
+    // worse basin: CGAL's pinion 0.413 at 18 clusters, 0.346 at 19; bones 0.0331 at 41, 0.0332 at
+    // 44 where 41 split to 44 gives 0.0509 (docs/benchmarks.md).
     const size_t faceCount = mesh.faceCount();
-    if (targetClusters == 0 || effort != Effort::Balanced || faceCount > kClimbFacesAtMost || !meshoptTakesLimits(limits))
+    if (targetClusters == 0 || effort != Effort::Balanced || !meshoptTakesLimits(limits))
         return buildAtBudget(mesh, faces, limits, targetClusters, progress, effort, meshlets, partDone);
     // One stream of meshoptimizer's meshlets for every step: its count is the default budget.
     std::unique_ptr<MeshletStream> ownStream;
     meshlets = &meshletsFor(mesh, limits, meshlets, ownStream);
-    const size_t count = meshlets->meshletCount();
-    if (targetClusters <= count || double(targetClusters) > kClimbAboveCount * double(count))
+    // A mesh climbs at every budget or at none (where the longest climb, from the count its base
+    // reaches, costs too much), so the budgets it climbs to never meet one searched alone above them.
+    // The base reaches the count or fewer: a mesh too large for a climb from there is not tried.
+    const size_t count = meshlets->meshletCount(), fewest = fewestClustersWithin(mesh, limits);
+    const size_t highest = size_t(kClimbAboveCount * double(count));
+    auto tooLong = [&](size_t from) { return faceCount * (highest - std::min(from, highest) + 2) > kClimbWork; };
+    if (targetClusters <= fewest || targetClusters > highest || tooLong(count))
         return buildAtBudget(mesh, faces, limits, targetClusters, progress, effort, meshlets, partDone);
-    // Progress runs once over the whole climb, each step's build a share of it.
-    const size_t steps = targetClusters - count + 1;
-    auto stepProgress = [&](size_t step) -> ProgressCallback {
+    // Progress runs once over the whole climb: the base a share as if every step were taken, the
+    // steps from the count it reached the rest.
+    const double baseShare = 1.0 / double(targetClusters - fewest + 2);
+    auto share = [&progress](double from, double to) -> ProgressCallback {
         if (!progress) return {};
-        return [&progress, step, steps](double fraction, const std::string& stage) {
-            return progress((double(step) + fraction) / double(steps), stage);
-        };
+        return [&progress, from, to](double fraction, const std::string& stage) { return progress(from + (to - from) * fraction, stage); };
     };
-    Partition best = buildAtBudget(mesh, faces, limits, count, stepProgress(0), effort, meshlets, {});
-    for (size_t k = count + 1; k <= targetClusters; ++k) {
-        Partition own = buildAtBudget(mesh, faces, limits, k, stepProgress(k - count), effort, meshlets, {});
+    // The base: the fewest clusters the limits allow, asked for; the count reached is where the climb starts.
+    Partition best = buildAtBudget(mesh, faces, limits, fewest, share(0.0, baseShare), effort, meshlets, {});
+    if (best.clusterCount > targetClusters || tooLong(best.clusterCount))
+        return buildAtBudget(mesh, faces, limits, targetClusters, share(baseShare, 1.0), effort, meshlets, partDone);
+    const size_t start = best.clusterCount, steps = targetClusters - start + 1;
+    for (size_t k = start; k <= targetClusters; ++k) {
+        const double from = baseShare + (1.0 - baseShare) * double(k - start) / double(steps);
+        Partition own = buildAtBudget(mesh, faces, limits, k, share(from, from + (1.0 - baseShare) / double(steps)), effort, meshlets, {});
         Partition stepped = splitToBudget(mesh, faces, limits, best, k);
         best = betterAtBudget(mesh, faces, stepped, own, k) ? std::move(stepped) : std::move(own);
     }
