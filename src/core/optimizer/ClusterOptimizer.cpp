@@ -459,10 +459,21 @@ Partition buildAtBudget(const Mesh& mesh, const FaceGeometry& faces, const Meshl
     return kept;
 }
 
-// The climb costs a whole build per step (about 0.1 s on 4,096 faces): it is made on meshes whose
-// faces times the steps up to kClimbAboveCount times the count stay within kClimbWork.
+// The climb's own searches cost a whole build each (about 0.1 s on 4,096 faces): faces times the
+// own searches stay within kClimbWork, one every stride budgets (at most kClimbStrideAtMost), up to
+// kClimbAboveCount times the count; the steps between are splits only (milliseconds each).
 constexpr size_t kClimbWork = size_t(1) << 17;
+constexpr size_t kClimbStrideAtMost = 8;
 constexpr double kClimbAboveCount = 1.25;
+
+// Every how many budgets the climb from `from` to `highest` searches on its own: 0 when even every
+// kClimbStrideAtMost-th budget costs too much.
+size_t climbStride(size_t faceCount, size_t from, size_t highest) {
+    const size_t steps = highest - std::min(from, highest) + 1;
+    for (size_t stride = 1; stride <= kClimbStrideAtMost; ++stride)
+        if (faceCount * ((steps + stride - 1) / stride + 1) <= kClimbWork) return stride;
+    return 0;
+}
 
 }  // namespace
 
@@ -470,27 +481,28 @@ Partition buildOptimizedClusters(const Mesh& mesh, const FaceGeometry& faces, co
                                  size_t targetClusters, const ProgressCallback& progress, Effort effort,
                                  MeshletStream* meshlets, const PartClusters& partDone) {
     // On small meshes, at the balanced level, an explicit budget climbs from the fewest clusters
-    // the builder reaches one cluster at a time: each step keeps the better in expectation of its
-    // own search and the step below with one cluster split (which never culls less), so one more
-    // cluster never culls less in expectation. Searched alone, one more cluster could land in a
-    // worse basin: CGAL's pinion 0.413 at 18 clusters, 0.346 at 19; bones 0.0331 at 41, 0.0332 at
-    // 44 where 41 split to 44 gives 0.0509 (docs/benchmarks.md).
+    // the builder reaches one cluster at a time: each step keeps the better in expectation of the
+    // step below with one cluster split (which never culls less) and its own search. Where every
+    // step is searched (stride 1) one more cluster never culls less in expectation; on larger
+    // meshes a search every stride steps keeps a budget at least at the chain below it. Searched
+    // alone, one more cluster could land in a worse basin: CGAL's pinion 0.413 at 18 clusters,
+    // 0.346 at 19; bones 0.0331 at 41, 0.0332 at 44 where 41 split to 44 gives 0.0509
+    // (docs/benchmarks.md).
     const size_t faceCount = mesh.faceCount();
     if (targetClusters == 0 || effort != Effort::Balanced || !meshoptTakesLimits(limits))
         return buildAtBudget(mesh, faces, limits, targetClusters, progress, effort, meshlets, partDone);
     // One stream of meshoptimizer's meshlets for every step: its count is the default budget.
     std::unique_ptr<MeshletStream> ownStream;
     meshlets = &meshletsFor(mesh, limits, meshlets, ownStream);
-    // A mesh climbs at every budget or at none (where the longest climb, from the count its base
-    // reaches, costs too much), so the budgets it climbs to never meet one searched alone above them.
-    // The base reaches the count or fewer: a mesh too large for a climb from there is not tried.
+    // Which budgets a mesh climbs to, and its stride, depend on the mesh and limits only, so a
+    // climbed budget never meets a budget above it searched alone or on another stride. The base
+    // reaches the count or fewer: a mesh too large for a climb from there is not tried.
     const size_t count = meshlets->meshletCount(), fewest = fewestClustersWithin(mesh, limits);
     const size_t highest = size_t(kClimbAboveCount * double(count));
-    auto tooLong = [&](size_t from) { return faceCount * (highest - std::min(from, highest) + 2) > kClimbWork; };
-    if (targetClusters <= fewest || targetClusters > highest || tooLong(count))
+    if (targetClusters <= fewest || targetClusters > highest || climbStride(faceCount, count, highest) == 0)
         return buildAtBudget(mesh, faces, limits, targetClusters, progress, effort, meshlets, partDone);
-    // Progress runs once over the whole climb: the base a share as if every step were taken, the
-    // steps from the count it reached the rest.
+    // Progress runs once over the whole climb: the base a share as if every budget were searched,
+    // the budgets from the count it reached the rest.
     const double baseShare = 1.0 / double(targetClusters - fewest + 2);
     auto share = [&progress](double from, double to) -> ProgressCallback {
         if (!progress) return {};
@@ -498,15 +510,25 @@ Partition buildOptimizedClusters(const Mesh& mesh, const FaceGeometry& faces, co
     };
     // The base: the fewest clusters the limits allow, asked for; the count reached is where the climb starts.
     Partition best = buildAtBudget(mesh, faces, limits, fewest, share(0.0, baseShare), effort, meshlets, {});
-    if (best.clusterCount > targetClusters || tooLong(best.clusterCount))
+    const size_t start = best.clusterCount, stride = climbStride(faceCount, start, highest);
+    if (start > targetClusters || stride == 0)
         return buildAtBudget(mesh, faces, limits, targetClusters, share(baseShare, 1.0), effort, meshlets, partDone);
-    const size_t start = best.clusterCount, steps = targetClusters - start + 1;
+    // Searched on its own: every stride-th budget, the count and the budget asked for (so a climb
+    // never culls less in expectation than the budget's own search).
+    auto searchedAt = [&](size_t k) { return (k - start) % stride == 0 || k == count || k == targetClusters; };
+    size_t searches = 0, searched = 0;
+    for (size_t k = start; k <= targetClusters; ++k) searches += searchedAt(k);
     for (size_t k = start; k <= targetClusters; ++k) {
-        const double from = baseShare + (1.0 - baseShare) * double(k - start) / double(steps);
-        Partition own = buildAtBudget(mesh, faces, limits, k, share(from, from + (1.0 - baseShare) / double(steps)), effort, meshlets, {});
-        Partition stepped = splitToBudget(mesh, faces, limits, best, k);
+        Partition stepped = splitToBudget(mesh, faces, limits, std::move(best), k);
+        if (!searchedAt(k)) {
+            best = std::move(stepped);
+            continue;
+        }
+        const double from = baseShare + (1.0 - baseShare) * double(searched++) / double(searches);
+        Partition own = buildAtBudget(mesh, faces, limits, k, share(from, from + (1.0 - baseShare) / double(searches)), effort, meshlets, {});
         best = betterAtBudget(mesh, faces, stepped, own, k) ? std::move(stepped) : std::move(own);
     }
+    if (progress && !progress(1.0, "clusters")) throw OperationCancelled();
     heardAsOnePart(partDone, faceCount, best);
     return best;
 }
