@@ -17,7 +17,7 @@ const std::vector<std::pair<ClusterSortKey, const char*>>& sortKeyNames() {
         {ClusterSortKey::HalfAngle, "half-angle"},     {ClusterSortKey::SphereRadius, "radius"},
         {ClusterSortKey::CullFraction, "cull-fraction"}, {ClusterSortKey::OracleFraction, "oracle-fraction"},
         {ClusterSortKey::Culled, "culled"},            {ClusterSortKey::FalseCulls, "false-culls"},
-        {ClusterSortKey::QuantisationLoss, "quantisation-loss"}};
+        {ClusterSortKey::QuantisationLoss, "quantisation-loss"}, {ClusterSortKey::MostCulled, "most-culled"}};
     return names;
 }
 
@@ -37,6 +37,7 @@ double badness(const ClusterStatistics& c, ClusterSortKey key) {
         case ClusterSortKey::Culled: return -double(c.timesCulled);
         case ClusterSortKey::FalseCulls: return double(c.falseCulls);
         case ClusterSortKey::QuantisationLoss: return double(c.quantisationLossTriangles);
+        case ClusterSortKey::MostCulled: return double(c.timesCulled);
     }
     return 0.0;
 }

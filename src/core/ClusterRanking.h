@@ -24,6 +24,7 @@ enum class ClusterSortKey {
     Culled,          // ascending: the clusters culled least often first
     FalseCulls,      // views from which an engine's record culled it holding a visible face
     QuantisationLoss,  // back faces the quantised record drew and its float original culls
+    MostCulled,      // the clusters culled most often first: a lesson's example of a cull
 };
 
 std::string toString(ClusterSortKey key);  // "test-loss", "partition-loss", "lost", "missed", ...

@@ -3,6 +3,7 @@
 #include <cctype>
 #include <cmath>
 
+#include "BatchCulling.h"
 #include "LessonSteps.h"
 #include "LessonText.h"
 
@@ -49,13 +50,13 @@ std::string viewInWords(const CullTestStatistics& view, size_t clusterCount) {
            std::to_string(view.partitionLossTriangles) + " to the partition (their cluster also holds a face turned to the eye).";
 }
 
-namespace {
-
-LessonOutcome outcomeOf(const CullExplanation& why) {
-    if (why.culled) return why.frontFaces > 0 ? LessonOutcome::FalseCull : LessonOutcome::Culled;
-    if (why.backFaces == 0) return LessonOutcome::Visible;
-    return why.frontFaces == 0 ? LessonOutcome::LostToTest : LessonOutcome::LostToPartition;
+LessonOutcome outcomeOf(bool culled, size_t frontFaces, size_t backFaces) {
+    if (culled) return frontFaces > 0 ? LessonOutcome::FalseCull : LessonOutcome::Culled;
+    if (backFaces == 0) return LessonOutcome::Visible;
+    return frontFaces == 0 ? LessonOutcome::LostToTest : LessonOutcome::LostToPartition;
 }
+
+namespace {
 
 std::string facesStep(const Lesson& lesson, const std::string& meshName) {
     const CullExplanation& why = lesson.why;
@@ -90,15 +91,8 @@ std::string gaussStep(const Lesson& lesson) {
 std::string coneStep(const Lesson& lesson) {
     const CullExplanation& why = lesson.why;
     const std::string shown = toString(lesson.coneMethod);
-    if (!why.cullable) {
-        std::string text = "A cone holds the normals when none is more than its half-angle \u03b1 away from its axis V1. "
-                           "No cone narrower than a half-sphere holds these: they point into more than half of all "
-                           "directions, so no cone test can ever cull this cluster, from any eye.";
-        if (lesson.minimalCone.cullable)
-            text += " (The narrowest cone would need \u03b1 = " + degrees(glm::degrees(lesson.minimalCone.halfAngle())) +
-                    "; the " + shown + " cone found none below 90\u00b0.)";
-        return text;
-    }
+    if (!why.cullable)
+        return "A cone holds the normals when none is more than its half-angle \u03b1 away from its axis V1. " + noConeSentence(lesson);
     std::string text = "A cone holds the normals when none is more than its half-angle \u03b1 away from its axis V1. The " +
                        shown + " cone the test uses has V1 = " + vector3(why.axis) + " and \u03b1 = " +
                        degrees(why.halfAngleDegrees) + ": the normal farthest from V1 has n\u00b7V1 = cos \u03b1 = " +
@@ -163,6 +157,73 @@ std::string verdictStep(const Lesson& lesson) {
            " of them, the most any test could reach with these faces.";
 }
 
+// "culled", "drawn (lost to the test)", ...
+std::string outcomeWords(bool culled, LessonOutcome outcome) {
+    if (culled) return outcome == LessonOutcome::FalseCull ? "culled (a false cull)" : "culled";
+    return outcome == LessonOutcome::Visible ? "drawn: its faces turn to the eye" : "drawn, " + toString(outcome);
+}
+
+// How far v is from the cluster's axis: what the two clusters' cones make of the same eye.
+std::string angleToAxis(const CullExplanation& why, uint32_t cluster) {
+    if (!why.cullable) return {};
+    return "cluster " + std::to_string(cluster) + "'s axis " + degrees(glm::degrees(std::acos(std::clamp(why.viewDotAxis, -1.0, 1.0)))) +
+           " from v (B = " + degrees(why.angleBDegrees) + ")";
+}
+
+std::string sideBySideStep(const Lesson& lesson) {
+    const std::string here = lesson.eye.orthographic ? "this direction" : "this eye";
+    if (!lesson.partner)
+        return "From " + here + " " + testInWords(lesson.test) + (lesson.why.culled ? " culls" : " draws") +
+               " every cluster alike: there is no cluster decided the other way to set beside cluster " + std::to_string(lesson.cluster) +
+               ". Move the eye, or choose a culled (or a drawn) cluster, to see one of each side by side.";
+    const LessonPartner& partner = *lesson.partner;
+    // The culled one first, as the slide shows it on the left.
+    const bool lessonFirst = lesson.why.culled;
+    const uint32_t first = lessonFirst ? lesson.cluster : partner.cluster, second = lessonFirst ? partner.cluster : lesson.cluster;
+    const CullExplanation& a = lessonFirst ? lesson.why : partner.why;
+    const CullExplanation& b = lessonFirst ? partner.why : lesson.why;
+    const LessonOutcome outcomeA = lessonFirst ? lesson.outcome : partner.outcome, outcomeB = lessonFirst ? partner.outcome : lesson.outcome;
+    std::string text = "The same eye, two clusters " + number(glm::distance(lesson.sphere.center, partner.sphere.center)) +
+                       " apart. Cluster " + std::to_string(first) + " is " + outcomeWords(a.culled, outcomeA) + ": " +
+                       decisionLine(a, lesson.test, lesson.eye.orthographic) + ". Cluster " + std::to_string(second) + " is " +
+                       outcomeWords(b.culled, outcomeB) + ": " + decisionLine(b, lesson.test, lesson.eye.orthographic) + ". ";
+    const std::string angleA = angleToAxis(a, first), angleB = angleToAxis(b, second);
+    if (!angleA.empty() && !angleB.empty())
+        text += "What differs is not the eye but each cone: " + angleA + ", " + angleB +
+                ". The test culls a cluster whose cone points away from the eye, within B of the view vector.";
+    else
+        text += "What differs is not the eye but the clusters: only one of them has a cone the test can use.";
+    return text;
+}
+
+// The nearest cluster (centre to centre) the test decides the other way from the lesson's eye, one
+// with a cone before one without: the clearest contrast the same eye offers.
+std::optional<LessonPartner> partnerOf(const CullingInput& input, const Lesson& lesson) {
+    const ClusterBounds& bounds = input.bounds;
+    const std::vector<uint8_t> culled = cullClusters(input, lesson.eye, lesson.test);
+    long best = -1;
+    bool bestCullable = false;
+    double bestDistance = 0.0;
+    for (uint32_t c = 0; c < bounds.count(); ++c) {
+        if (c == lesson.cluster || (culled[c] != 0) == lesson.why.culled) continue;
+        const bool cullable = bounds.cones[c].cullable;
+        const double distance = glm::distance(bounds.spheres[c].center, lesson.sphere.center);
+        if (best < 0 || (cullable && !bestCullable) || (cullable == bestCullable && distance < bestDistance)) {
+            best = long(c);
+            bestCullable = cullable;
+            bestDistance = distance;
+        }
+    }
+    if (best < 0) return std::nullopt;
+    LessonPartner partner;
+    partner.cluster = uint32_t(best);
+    partner.why = explainCull(input, partner.cluster, lesson.eye, lesson.test);
+    partner.outcome = outcomeOf(partner.why.culled, partner.why.frontFaces, partner.why.backFaces);
+    partner.sphere = bounds.spheres[partner.cluster];
+    partner.triangles = bounds.triangles[partner.cluster];
+    return partner;
+}
+
 }  // namespace
 
 Lesson makeLesson(const PreparedMesh& prepared, const ClusterSet& clusters, uint32_t cluster, const Eye& eye, CullTest test) {
@@ -172,7 +233,10 @@ Lesson makeLesson(const PreparedMesh& prepared, const ClusterSet& clusters, uint
     lesson.test = test;
     lesson.coneMethod = bounds.coneMethod;
     lesson.eye = eye;
-    const CullingInput input = cullingInput(prepared, clusters);
+    // One float batch for the lesson's decision and its partner's (explainCull would make one each).
+    const ClusterBatch batch = makeClusterBatch(bounds);
+    CullingInput input = cullingInput(prepared, clusters);
+    input.batch = &batch;
     lesson.why = explainCull(input, cluster, eye, test);
     const uint32_t* faces = bounds.faces.faces.data() + bounds.faces.starts[cluster];
     lesson.faces = bounds.faces.starts[cluster + 1] - bounds.faces.starts[cluster];
@@ -192,7 +256,8 @@ Lesson makeLesson(const PreparedMesh& prepared, const ClusterSet& clusters, uint
     lesson.minimalCone = clusterCone(prepared.mesh(), prepared.world, prepared.faces, faces, lesson.faces, ConeMethod::Minimal);
     lesson.cullFraction = testCullFraction(clusters.cullMap, input, cluster, test);  // a record's own share for its tests
     lesson.oracleFraction = clusters.cullMap.oracleFraction[cluster];
-    lesson.outcome = outcomeOf(lesson.why);
+    lesson.outcome = outcomeOf(lesson.why.culled, lesson.why.frontFaces, lesson.why.backFaces);
+    lesson.partner = partnerOf(input, lesson);
     lesson.steps = {
         {"The cluster and its face normals", facesStep(lesson, prepared.name)},
         {"The normals on the Gauss sphere", gaussStep(lesson)},
@@ -200,6 +265,7 @@ Lesson makeLesson(const PreparedMesh& prepared, const ClusterSet& clusters, uint
         {"The bound: where the faces are", boundStep(lesson)},
         {"The eye, the view vector and the test", testStep(lesson)},
         {"The verdict, and what the oracle says", verdictStep(lesson)},
+        {"Side by side: a culled and a drawn cluster, one eye", sideBySideStep(lesson)},
     };
     return lesson;
 }

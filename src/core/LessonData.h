@@ -1,9 +1,11 @@
 // What a lesson holds (Lesson.h makes one): its cluster, eye and test, every number the test compared,
-// the cluster's normals and bounds, and the six steps' words.
+// the cluster's normals and bounds, a neighbour the test decides the other way from the same eye, and
+// the seven steps' words.
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -14,7 +16,9 @@
 
 namespace conescope {
 
-constexpr int kLessonStepCount = 6;
+constexpr int kLessonStepCount = 7;
+// The step that sets the cluster beside its partner (Lesson::partner).
+constexpr int kSideBySideStep = 7;
 
 // What happened to the cluster from the eye, in the statistics' terms.
 enum class LessonOutcome {
@@ -23,6 +27,16 @@ enum class LessonOutcome {
     LostToPartition,  // drawn: it holds back faces and a face that faces the eye
     Visible,          // drawn: no face turns away
     FalseCull,        // culled although a face faces the eye (never, if the tests are right)
+};
+
+// The cluster nearest the lesson's (centre to centre) that the test decides the other way from the same
+// eye, one with a cone when there is one: what the side-by-side step compares it with.
+struct LessonPartner {
+    uint32_t cluster = 0;
+    CullExplanation why;  // explainCull from the lesson's eye with the lesson's test
+    LessonOutcome outcome = LessonOutcome::Visible;
+    Sphere sphere;
+    size_t triangles = 0;
 };
 
 struct LessonStep {
@@ -46,6 +60,7 @@ struct Lesson {
     double cullFraction = 0.0;           // share of far view directions the test culls from (CullMap)
     double oracleFraction = 0.0;         // share from which every face faces away
     LessonOutcome outcome = LessonOutcome::Visible;
+    std::optional<LessonPartner> partner;  // none when the test decides every cluster alike from this eye
     std::vector<LessonStep> steps;       // kLessonStepCount of them
 
     double alphaDegrees() const { return why.halfAngleDegrees; }

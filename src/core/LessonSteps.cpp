@@ -16,11 +16,22 @@ const std::string manyDirections =
     "The eye sees each face from a slightly different direction, so one view vector can stand for all of them "
     "only with some care. ";
 
+const std::string apexArgument =
+    " An eye that sees the apex from behind the cone sees every face from behind, so one view vector, from the eye "
+    "to the apex, stands for all of them.";
+
 std::string apexSentence(const Lesson& lesson) {
-    return "This test uses the apex, a point " + number(glm::distance(lesson.why.apex, lesson.sphere.center)) +
-           " from the cluster's centre along \u2212V1, behind the plane of every one of its faces. An eye that sees the "
-           "apex from behind the cone sees every face from behind, so one view vector, from the eye to the apex, "
-           "stands for all of them.";
+    if (!lesson.why.cullable)
+        return noConeSentence(lesson) + " Without a cone there is no apex either: the test has no point to look at.";
+    const double behind = glm::distance(lesson.why.apex, lesson.sphere.center);
+    // The apex is the centre moved back along -V1 until it is behind every face plane; a centre that
+    // already is (a patch hollow towards V1) stays where it is.
+    if (!(behind > 1e-9 * std::max(lesson.sphere.radius, 1e-300)))
+        return "This test uses the apex, a point behind the plane of every one of the cluster's faces, on the cone's "
+               "axis. For this cluster the centre of its bounding sphere already lies behind every face plane (the "
+               "patch is hollow on the side its normals point to), so the apex is that centre itself." + apexArgument;
+    return "This test uses the apex, a point " + number(behind) +
+           " from the cluster's centre along \u2212V1, behind the plane of every one of its faces." + apexArgument;
 }
 
 std::string holdsOrFails(double margin) { return margin > 0.0 ? "so the test holds" : "so the test fails"; }
@@ -109,9 +120,7 @@ std::string meshoptSphereTest(const Lesson& lesson) {
            holdsOrFails(why.margin) + ".";
 }
 
-}  // namespace
-
-std::string boundStep(const Lesson& lesson) {
+std::string boundWords(const Lesson& lesson) {
     switch (lesson.test) {
         case CullTest::Oracle:
             return "The oracle needs no bound: it checks every face at each of its corners q, n\u00b7(e \u2212 q) < 0. That is "
@@ -153,6 +162,47 @@ std::string boundStep(const Lesson& lesson) {
                    "point of every face.";
     }
     return {};
+}
+
+}  // namespace
+
+std::string noConeSentence(const Lesson& lesson) {
+    if (!lesson.minimalCone.cullable)
+        return "This cluster has no cone: its normals span more than a half-space, so no cone narrower than a "
+               "half-sphere holds them and no cone test can cull it, from any eye.";
+    return "The " + toString(lesson.coneMethod) + " cone of this cluster opens wider than 90\u00b0, so the test has no "
+           "cone to use and draws the cluster from every eye; the narrowest cone would need \u03b1 = " +
+           degrees(glm::degrees(lesson.minimalCone.halfAngle())) + ".";
+}
+
+std::string boundStep(const Lesson& lesson) {
+    if (lesson.why.cullable || readsOwnRecord(lesson.test) || lesson.test == CullTest::Oracle) return boundWords(lesson);
+    // Without a cone: no apex at all; the sphere, box and vertices exist, but nothing compares them.
+    if (lesson.test == CullTest::Apex || lesson.test == CullTest::Octagon) return manyDirections + apexSentence(lesson);
+    return boundWords(lesson) + " " + noConeSentence(lesson) + " The bound is drawn, but the test never gets to use it.";
+}
+
+std::string decisionLine(const CullExplanation& why, CullTest test, bool orthographic) {
+    if (test == CullTest::Oracle)
+        return count(why.backFaces, "face turns", "faces turn") + " away, " + count(why.frontFaces, "does", "do") + " not";
+    if (readsOwnRecord(test))
+        return why.margin > 0.0 ? "its record passes its threshold by " + amount(why.margin)
+                                : "its record falls short of its threshold by " + amount(-why.margin);
+    if (!why.cullable) return "it has no cone the test can use, so the test cannot cull it";
+    const std::string v = orthographic ? "d" : "v";
+    if (test == CullTest::Octagon)
+        return std::to_string(why.edgesBack) + " of the 8 edges g of its cone have g\u00b7" + v + " > 0";
+    if (!orthographic && (test == CullTest::Aabb || test == CullTest::AabbFast || test == CullTest::Vertices))
+        return std::to_string(why.pointsBack) + " of its " + std::to_string(why.pointsTested) + (test == CullTest::Vertices ? " vertices" : " corners") +
+               " have v\u00b7V1 > sin \u03b1 = " + dot(why.threshold);
+    if (!orthographic && test == CullTest::Sphere && why.eyeInsideSphere) return "the eye is inside its bounding sphere";
+    const double threshold = !orthographic && test == CullTest::MeshoptSphere && why.distance > 0.0 ? why.threshold + why.radius / why.distance
+                                                                                                    : why.threshold;
+    const std::string bound = orthographic || test == CullTest::Apex ? "sin \u03b1"
+                              : test == CullTest::Sphere             ? "cos(B \u2212 asin(r/d))"
+                                                                     : "sin \u03b1 + r/d";
+    return v + "\u00b7V1 = " + compared(why.viewDotAxis, threshold).first + (why.viewDotAxis > threshold ? " > " : " \u2264 ") + bound +
+           " = " + compared(why.viewDotAxis, threshold).second;
 }
 
 std::string testStep(const Lesson& lesson) {

@@ -209,27 +209,34 @@ CullTestStatistics measureOrbit(const PreparedMesh& prepared, const ClusterSet& 
     return statistics;
 }
 
-long viewMissingCluster(const PreparedMesh& prepared, const ClusterSet& clusters, const Settings& settings, uint32_t cluster) {
-    // The cluster's faces from each view and the product's decision (cullClusters, one float batch
-    // for all the views): the same verdicts the orbit statistics counted.
+std::vector<ClusterInView> clusterOverOrbit(const PreparedMesh& prepared, const ClusterSet& clusters, const Settings& settings,
+                                            uint32_t cluster) {
     const ClusterBatch batch = makeClusterBatch(clusters.bounds);
     const CullingInput input{prepared.mesh(), prepared.world, prepared.faces, clusters.bounds, &batch};
     const ClusterFaces& rows = clusters.bounds.faces;
-    const std::vector<Eye> views = orbitOf(settings, prepared.box);
-    long partitionLoss = -1;
-    for (size_t v = 0; v < views.size(); ++v) {
-        size_t front = 0, back = 0;
+    const CullTest test = displayedTest(settings);
+    std::vector<ClusterInView> seen;
+    for (const Eye& view : orbitOf(settings, prepared.box)) {
+        ClusterInView in;
         for (uint32_t i = rows.starts[cluster]; i < rows.starts[cluster + 1]; ++i) {
-            const Facing facing = classifyFace(prepared.mesh(), prepared.world, prepared.faces, rows.faces[i], views[v]);
-            front += facing == Facing::Front;
-            back += facing == Facing::Back;
+            const Facing facing = classifyFace(prepared.mesh(), prepared.world, prepared.faces, rows.faces[i], view);
+            in.frontFaces += facing == Facing::Front;
+            in.backFaces += facing == Facing::Back;
         }
-        const CullTest test = displayedTest(settings);
-        const bool culled = culledInBatch(views[v], test) ? cullClusters(input, views[v], test)[cluster] != 0
-                                                          : cullCluster(input, cluster, views[v], test);
-        if (culled && front > 0) return long(v);  // a false cull (an engine's record): the worst there is
-        if (back == 0 || culled) continue;
-        if (front == 0) return long(v);
+        in.culled = culledInBatch(view, test) ? cullClusters(input, view, test)[cluster] != 0 : cullCluster(input, cluster, view, test);
+        seen.push_back(in);
+    }
+    return seen;
+}
+
+long viewMissingCluster(const PreparedMesh& prepared, const ClusterSet& clusters, const Settings& settings, uint32_t cluster) {
+    const std::vector<ClusterInView> seen = clusterOverOrbit(prepared, clusters, settings, cluster);
+    long partitionLoss = -1;
+    for (size_t v = 0; v < seen.size(); ++v) {
+        const ClusterInView& in = seen[v];
+        if (in.culled && in.frontFaces > 0) return long(v);  // a false cull (an engine's record): the worst there is
+        if (in.backFaces == 0 || in.culled) continue;
+        if (in.frontFaces == 0) return long(v);
         if (partitionLoss < 0) partitionLoss = long(v);
     }
     return partitionLoss;

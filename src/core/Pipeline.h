@@ -122,6 +122,16 @@ glm::dvec3 startingEyePosition(const Aabb& worldBox, const Settings& settings);
 CullTestStatistics measureOrbit(const PreparedMesh& prepared, const ClusterSet& clusters, const Settings& settings,
                             const ProgressCallback& progress = {});
 
+// How the displayed test decided on one cluster from one eye, and how the cluster's faces faced it.
+struct ClusterInView {
+    bool culled = false;  // the product's decision (cullClusters)
+    size_t frontFaces = 0, backFaces = 0;
+};
+// The displayed test's decision on `cluster` and its faces' facing from every orbit view (one float
+// batch for all the views): the same verdicts the orbit statistics counted.
+std::vector<ClusterInView> clusterOverOrbit(const PreparedMesh& prepared, const ClusterSet& clusters, const Settings& settings,
+                                            uint32_t cluster);
+
 // The first orbit view from which the displayed test culls `cluster` holding a visible face (a
 // false cull, only an engine's record makes one) or draws it although every face faces away (a
 // miss: the test's loss), whichever comes first; else the first from which it is drawn holding back

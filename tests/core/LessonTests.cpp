@@ -155,7 +155,10 @@ TEST(Lesson, AClusterWithoutAConeIsNeverCulledAndSaysSo) {
     const Lesson lesson = makeLesson(prepared, clusters, 0, Eye::perspective({3.0, 2.0, 4.0}), CullTest::Apex);
     EXPECT_FALSE(lesson.why.cullable);
     EXPECT_EQ(lesson.verdict(), "drawn");
-    EXPECT_TRUE(contains(lesson.steps[2].text, "no cone test can ever cull this cluster"));
+    EXPECT_TRUE(contains(lesson.steps[2].text, "This cluster has no cone: its normals span more than a half-space")) << lesson.steps[2].text;
+    // No apex is described for a cluster without a cone.
+    EXPECT_TRUE(contains(lesson.steps[3].text, "no apex either")) << lesson.steps[3].text;
+    EXPECT_FALSE(contains(lesson.steps[3].text, "from the cluster's centre along")) << lesson.steps[3].text;
     EXPECT_TRUE(contains(lesson.steps[4].text, "Without a cone"));
     EXPECT_EQ(lesson.outcome, LessonOutcome::LostToPartition);
     EXPECT_FALSE(crossSectionOf(lesson).hasWedge());
