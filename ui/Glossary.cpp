@@ -134,6 +134,23 @@ QString explain(Builder builder) {
     return {};
 }
 
+QString explain(Effort effort) {
+    switch (effort) {
+        case Effort::Fast: return tr("Refines meshoptimizer's meshlets only: the quickest.");
+        case Effort::Balanced: return tr("Refines them and adds a few annealing sweeps (the default).");
+        case Effort::Best: return tr("Grows its own clusters and searches longest: the most culling, the slowest.");
+    }
+    return {};
+}
+
+QString explain(SphereMethod method) {
+    switch (method) {
+        case SphereMethod::Ritter: return tr("Ritter's sphere: quick, a little larger than it must be.");
+        case SphereMethod::Minimal: return tr("The smallest sphere that holds the cluster (Welzl's algorithm).");
+    }
+    return {};
+}
+
 QString explain(Layer layer) {
     switch (layer) {
         case Layer::Faces: return tr("The mesh's faces, coloured as View > Colour faces by says.");

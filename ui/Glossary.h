@@ -31,6 +31,8 @@ QString aboutHtml();
 QString explain(CullTest test);
 QString explain(ConeMethod method);
 QString explain(Builder builder);
+QString explain(Effort effort);
+QString explain(SphereMethod method);
 QString explain(Layer layer);
 QString explain(FaceColoring coloring);
 

@@ -201,7 +201,10 @@ void MainWindow::connectControls() {
     });
     connect(worstClusters_, &WorstClustersView::clusterChosen, this, &MainWindow::chooseCluster);
     connect(lessonView_, &LessonView::stepRequested, this, &MainWindow::showLessonStep);
-    connect(lessonView_, &LessonView::costliestClusterRequested, this, [this]() { chooseWorstCluster(ClusterSortKey::TestLoss); });
+    connect(lessonView_, &LessonView::exampleRequested, this, [this](LessonOutcome outcome) {
+        if (chooseExample(outcome) >= 0 && session_.lessonStep() == 0) showLessonStep(1);
+    });
+    connect(lessonView_, &LessonView::sweepRequested, this, [this]() { toggleEyeSweep(); });
     connect(plots_, &PlotsView::viewClicked, &session_, &Session::moveEyeToOrbitView);
     connect(view_, &ObserverView::cameraMoved, &session_, &Session::followCamera);
     connect(view_, &ObserverView::eyeHandleMoved, &session_, &Session::moveEyeSoon);
@@ -340,17 +343,19 @@ void MainWindow::clearPin() { session_.clearPin(); }
 
 void MainWindow::chooseCluster(int cluster) {
     session_.showClusterWhereItIsLost(cluster);
-    if (session_.pickedCluster() < 0) return;
-    // Seen from where its normals point (the cone's axis), the cluster shows its faces, not its back.
-    const size_t picked = size_t(session_.pickedCluster());
-    const ClusterBounds& bounds = session_.clusters()->bounds;
-    const glm::dvec3 center(bounds.boxes[picked].center());
-    view_->frameBox(bounds.boxes[picked], bounds.cones[picked].cullable ? center + bounds.cones[picked].axis : session_.eyePosition());
+    framePickedCluster();
 }
 
 void MainWindow::resetCamera() {
     if (!session_.scene()) return;
     view_->lookAtMesh(glm::dvec3(session_.preparedMesh()->box.center()), session_.eyePosition());
+    view_->placeEyeHandle(session_.eyePosition());
+    render();
+}
+
+void MainWindow::viewFromBehind() {
+    if (!session_.scene()) return;
+    view_->lookAtMesh(glm::dvec3(session_.preparedMesh()->box.center()), session_.eyePosition(), true);
     view_->placeEyeHandle(session_.eyePosition());
     render();
 }

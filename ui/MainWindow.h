@@ -9,6 +9,7 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <map>
 #include <optional>
 #include <vector>
@@ -19,10 +20,13 @@
 #include "EyeStepTimes.h"
 #include "Exports.h"
 #include "Session.h"
+#include "Slides.h"
 #include "core/ClusterRanking.h"
+#include "scene/LessonLayer.h"
 
 class QAction;
 class QDockWidget;
+class QTimer;
 class QVTKOpenGLNativeWidget;
 
 namespace conescope {
@@ -93,11 +97,13 @@ public:
     // errorShown when there is no picked cluster or the file cannot be written.
     bool saveCrossSection(const QString& path);
     bool exportExplanation(const QString& path);
-    // The six lesson steps as numbered slides in `folder` (slide-01.png ...): the 3D view as the step
-    // stages it, its title and words below; the step shown before comes back. False and errorShown on failure.
+    // The lesson's steps as 16:9 slides in `folder` (slide-01.png ..., 1920x1080, and all of them in
+    // slides.pdf; Slides.h): each step's title and words, the 3D view as the step stages it and the
+    // cross-section (side by side: both clusters'); the step shown before comes back. False and
+    // errorShown on failure.
     bool exportLessonSlides(const QString& folder);
-    // Up to eight orbit views, evenly spaced, as numbered slides: the 3D view (framed to take in the
-    // orbit) with the eye there and its statistics in words (viewInWords) below; the eye comes back. False and errorShown on failure.
+    // Up to eight orbit views, evenly spaced, as slides the same way: the mesh and the eye there, its
+    // statistics in words (viewInWords); the eye comes back. False and errorShown on failure.
     bool exportOrbitSlides(const QString& folder);
     // Plays a replay file (a ready-made lesson of File > Examples) in this window; false when it cannot be read.
     bool playReplayFile(const QString& path);
@@ -141,6 +147,26 @@ public:
     // chooseCluster for the orbit's worst cluster by `key` (the first row of `conescope-cli clusters
     // --sort KEY`); -1 (nothing chosen) before the orbit is measured.
     int chooseWorstCluster(ClusterSortKey key);
+    // A cluster that shows `outcome` (core findExample: culled, drawn, lost to the test or to the
+    // partition), picked and framed, the eye at the orbit view that shows it so. -1 (and a notice) when
+    // no cluster does or before the orbit is measured.
+    int chooseExample(LessonOutcome outcome);
+    // Sweeps the eye across the picked cluster's cull boundary (core sweepAcrossCull) in `frames`
+    // steps, the lesson at step 5 (its inequality) unless it shows 5 to 7, calling `eachFrame(k)` once
+    // each eye is measured and drawn; the eye stays at the last frame. False and errorShown when there
+    // is no picked cluster or it has no boundary.
+    bool sweepEye(size_t frames, const std::function<void(size_t)>& eachFrame = {});
+    // The sweep button: sweepEye animated, one frame every `milliseconds`, or stops one that runs.
+    void toggleEyeSweep(size_t frames = 36, int milliseconds = 110);
+    bool eyeSweepRunning() const;
+    // The lesson's step as a slide (Slides.h), rendered off screen at the slide's sizes; the step must
+    // be shown. Throws std::runtime_error without a lesson.
+    Slide lessonSlide(int step);
+    // Writes the slides as slide-01.png ... and slides.pdf in `folder`; false and errorShown on failure.
+    bool writeSlides(const std::vector<Slide>& slides, const QString& folder, const QString& title);
+    // The observer looks at the mesh from behind, the side turned away from the cull eye: where its
+    // culled clusters are (and where A and B differ).
+    void viewFromBehind();
     // --- The lesson -----------------------------------------------------------------------------------
     // Step 1 to kLessonStepCount: shows the layers the step talks about, frames them and raises the
     // lesson dock (the layers and colours before the lesson are kept); 0 ends the lesson and puts them
@@ -186,6 +212,11 @@ private:
     int pickDisplay(const QPoint& display);
     // The layers, colouring, framing, docks and caption of a lesson step (MainWindowLesson.cpp).
     void stageLessonStep(int step);
+    // chooseCluster's framing: the picked cluster from where its normals point.
+    void framePickedCluster();
+    // The 3D scene rendered off screen at `size` from `camera` (or the default observer camera framing
+    // the mesh and the eye), its legend fitted to that size.
+    QImage renderedView(const QSize& size, const std::optional<CameraPlacement>& camera);
 
     Session session_;
     ObserverView* view_ = nullptr;
@@ -208,6 +239,7 @@ private:
     std::optional<std::map<Layer, bool>> layersBeforeLesson_;
     FaceColoring coloringBeforeLesson_ = FaceColoring::CullDecision;
     std::vector<QDockWidget*> docksHiddenByLesson_;
+    int columnBeforeLesson_ = 0;  // the right column's width a lesson on a narrow window widened
     std::array<QDockWidget*, 4> sideDocks_{};  // settings, eye, statistics, picked cluster
     bool docksSized_ = false;
     StatusLine* statusLine_ = nullptr;
@@ -215,6 +247,8 @@ private:
     bool errorDialogs_ = true;
     QString lastError_;
     EyeStepTimes eyeStepTimes_;
+    QTimer* sweepTimer_ = nullptr;
+    std::vector<glm::dvec3> sweepFrames_;  // the animated sweep's eyes still to come
 };
 
 }  // namespace conescope

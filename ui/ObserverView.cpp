@@ -1,8 +1,10 @@
 #include "ObserverView.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <QHelpEvent>
+#include <QFontMetricsF>
 #include <QToolTip>
 
 #include <vtkCallbackCommand.h>
@@ -128,13 +130,20 @@ glm::dvec3 ObserverView::cameraPosition() const {
     return {position[0], position[1], position[2]};
 }
 
-void ObserverView::lookAtMesh(const glm::dvec3& center, const glm::dvec3& eye) {
-    vtkCamera* camera = renderer_->GetActiveCamera();
+glm::dvec3 observerDirection(const glm::dvec3& center, const glm::dvec3& eye, bool fromBehind) {
     glm::dvec3 direction = eye - center;
     if (!(glm::length(direction) > 0.0)) direction = {0.0, 0.0, 1.0};
     direction = glm::normalize(direction);
-    const glm::dvec3 side = glm::normalize(glm::cross(glm::dvec3(0.0, 1.0, 0.0), direction) + glm::dvec3(1e-9));
-    const glm::dvec3 from = center + glm::normalize(direction * 0.6 - side * 0.8 + glm::dvec3(0.0, 0.3, 0.0));
+    glm::dvec3 side = glm::cross(glm::dvec3(0.0, 1.0, 0.0), direction);
+    if (glm::length(side) < 1e-6) side = glm::cross(glm::dvec3(1.0, 0.0, 0.0), direction);
+    side = glm::normalize(side);
+    const double turn = glm::radians(fromBehind ? 160.0 : 110.0);
+    return glm::normalize(std::cos(turn) * direction - std::sin(turn) * side + glm::dvec3(0.0, 0.35, 0.0));
+}
+
+void ObserverView::lookAtMesh(const glm::dvec3& center, const glm::dvec3& eye, bool fromBehind) {
+    vtkCamera* camera = renderer_->GetActiveCamera();
+    const glm::dvec3 from = center + observerDirection(center, eye, fromBehind);
     camera->SetFocalPoint(center.x, center.y, center.z);
     camera->SetPosition(from.x, from.y, from.z);
     camera->SetViewUp(0.0, 1.0, 0.0);
@@ -206,6 +215,21 @@ void ObserverView::render() { renderWindow()->Render(); }
 void ObserverView::setCaption(const QString& text) {
     caption_->SetInput(text.toUtf8().constData());
     caption_->SetVisibility(!text.isEmpty());
+    fitCaption(width());
+}
+
+void ObserverView::fitCaption(int viewWidth) {
+    // As large as 20 points, smaller when the view is too narrow for the whole line.
+    constexpr int largest = 20, smallest = 10;
+    caption_->GetTextProperty()->SetFontSize(largest);
+    const char* input = caption_->GetInput();
+    if (!input || !*input || viewWidth <= 0) return;
+    // Its width at 20 points, from the font the caption is drawn in, in widget pixels.
+    QFont font(QStringLiteral("Arial"));
+    font.setPixelSize(largest);
+    const double textWidth = QFontMetricsF(font).horizontalAdvance(QString::fromUtf8(input)) + 8.0;
+    const double room = 0.94 * viewWidth;
+    if (textWidth > room) caption_->GetTextProperty()->SetFontSize(std::max(smallest, int(largest * room / textWidth)));
 }
 
 QString ObserverView::caption() const { return caption_->GetVisibility() ? QString::fromUtf8(caption_->GetInput()) : QString(); }
@@ -225,6 +249,7 @@ void ObserverView::resizeEvent(QResizeEvent* event) {
     // Before the base class: it draws the frame at the new size, which must have the legend fitted to
     // it (nothing draws again after a dock re-arrangement, so a stale legend would stay on screen).
     emit resized();
+    fitCaption(event->size().width());
     QVTKOpenGLNativeWidget::resizeEvent(event);
 }
 

@@ -27,6 +27,12 @@ namespace conescope {
 
 class ClusterScene;
 
+// Where the observer looks at a mesh from (a unit vector from its centre) for an eye at `eye`: turned
+// well past the eye's side (110 degrees from it, a little from above), so the culled clusters, which
+// face away from the eye, show beside the drawn ones; `fromBehind`: nearly opposite the eye (160
+// degrees), where the culled side faces the observer (and where A and B differ).
+glm::dvec3 observerDirection(const glm::dvec3& center, const glm::dvec3& eye, bool fromBehind);
+
 class ObserverView : public QVTKOpenGLNativeWidget {
     Q_OBJECT
 public:
@@ -44,9 +50,8 @@ public:
     void setFollowing(bool following);
 
     glm::dvec3 cameraPosition() const;
-    // Looks at the mesh centre from the side of the eye, a little turned, so the eye marker and
-    // both the culled and the drawn side are in the picture.
-    void lookAtMesh(const glm::dvec3& center, const glm::dvec3& eye);
+    // Looks at the mesh centre from observerDirection, the whole mesh and the eye in the picture.
+    void lookAtMesh(const glm::dvec3& center, const glm::dvec3& eye, bool fromBehind = false);
     // Looks at `box` from the side of `from`, the box in the middle with some of its surroundings:
     // how a chosen cluster is framed.
     void frameBox(const Aabb& box, const glm::dvec3& from);
@@ -82,6 +87,8 @@ protected:
     void resizeEvent(QResizeEvent* event) override;
 
 private:
+    // The caption's font size: the whole line within the view's width.
+    void fitCaption(int viewWidth);
     void onLeftButtonPress();
     void onLeftButtonRelease();
     void onCameraModified(vtkObject* caller, unsigned long event, void* data);

@@ -12,6 +12,7 @@
 #include "SettingsPanel.h"
 #include "core/ClusterRanking.h"
 #include "core/Lesson.h"
+#include "core/LessonExamples.h"
 #include "core/SettingsSchema.h"
 
 namespace conescope {
@@ -130,8 +131,9 @@ std::function<Action(const Json&, const QDir&)> exportStep(bool orbit) {
 
 // A lesson step, 0 (the end of the lesson) to kLessonStepCount.
 Action parseLessonStep(const Json& value, const QDir&) {
-    const long step = wholeNumber(value, 0, "a lesson step, 1 to 6, or 0 to end the lesson");
-    if (step > kLessonStepCount) throw std::invalid_argument("takes a lesson step, 1 to 6, or 0 to end the lesson");
+    const std::string takes = "a lesson step, 1 to " + std::to_string(kLessonStepCount) + ", or 0 to end the lesson";
+    const long step = wholeNumber(value, 0, takes.c_str());
+    if (step > kLessonStepCount) throw std::invalid_argument("takes " + takes);
     return [step](MainWindow& window) {
         shownClusters(window);
         window.showLessonStep(int(step));
@@ -155,6 +157,45 @@ Action parseChoose(const Json& value, const QDir&) {
         if (cluster >= long(count))
             throw std::runtime_error("the mesh has " + std::to_string(count) + " clusters (0 to " + std::to_string(count - 1) + ")");
         window.chooseCluster(int(cluster));
+    };
+}
+
+// An example of an outcome: the cluster and orbit view the lesson dock's buttons choose.
+Action parseExample(const Json& value, const QDir&) {
+    if (!value.is_string()) throw std::invalid_argument("takes one of: culled, drawn, test-loss, partition-loss");
+    const LessonOutcome outcome = conescope::parseExample(value.get<std::string>());
+    return [outcome](MainWindow& window) {
+        shownClusters(window);
+        if (!window.session().orbitStatistics()) throw std::runtime_error("the orbit has not been measured");
+        if (window.chooseExample(outcome) < 0)
+            throw std::runtime_error("no cluster is " + toString(outcome) + " from any orbit view with these settings");
+    };
+}
+
+// The eye swept across the picked cluster's cull boundary: N frames, or {"frames": N, "slides": FOLDER}
+// with a slide of the lesson step at every frame.
+Action parseSweep(const Json& value, const QDir& folder) {
+    const char* takes = "takes a number of frames (2 or more) or {\"frames\": N, \"slides\": FOLDER}";
+    long frames = 0;
+    QString slides;
+    if (value.is_object()) {
+        for (const auto& [key, item] : value.items())
+            if (key != "frames" && key != "slides") throw std::invalid_argument("unknown key '" + key + "' (expected frames, slides)");
+        if (!value.contains("frames")) throw std::invalid_argument(takes);
+        frames = wholeNumber(value["frames"], 2, "a number of frames");
+        if (value.contains("slides")) slides = pathIn(folder, value["slides"]);
+    } else {
+        frames = wholeNumber(value, 2, "a number of frames");
+    }
+    return [frames, slides](MainWindow& window) {
+        shownClusters(window);
+        std::vector<Slide> made;
+        const auto frame = [&](size_t) {
+            if (!slides.isEmpty()) made.push_back(window.lessonSlide(window.session().lessonStep()));
+        };
+        if (!window.sweepEye(size_t(frames), frame)) throw std::runtime_error(window.lastError().toStdString());
+        if (!slides.isEmpty() && !window.writeSlides(made, slides, QStringLiteral("Cannot write the sweep's slides")))
+            throw std::runtime_error(window.lastError().toStdString());
     };
 }
 
@@ -233,6 +274,8 @@ const std::vector<StepKind>& stepKinds() {
          }},
         {"choose", parseChoose},
         {"lesson-step", parseLessonStep},
+        {"example", parseExample},
+        {"sweep-eye", parseSweep},
         {"screenshot", writeStep(&MainWindow::saveScreenshot)},
         {"window-screenshot", writeStep(&MainWindow::saveWindowScreenshot)},
         {"cross-section", writeStep(&MainWindow::saveCrossSection)},

@@ -14,7 +14,7 @@ void Session::pinAsA() {
     requestOrbitComparison();
     setFaceColoring(FaceColoring::Comparison);
     emit comparisonChanged();
-    emit notice(tr("Pinned as A: change the settings to make B; X swaps them"), 6000);
+    emit notice(tr("Pinned as A: change the settings to make B; X swaps them; Shift+R shows the side where they cull"), 8000);
 }
 
 void Session::clearPin() {

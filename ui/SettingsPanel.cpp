@@ -196,6 +196,7 @@ void SettingsPanel::setSettings(const Settings& settings) {
     views_->setValue(int(settings.views));
     distance_->setValue(settings.distance);
     enableForBuilder();
+    for (QComboBox* box : {builder_, effort_, cone_, test_, sphere_, projection_}) describeChoice(box);
 }
 
 void SettingsPanel::emitChanged() {
@@ -249,14 +250,36 @@ void SettingsPanel::describeWidgets() {
     for (const auto& [key, widgets] : described) {
         const QString help = QString::fromStdString(settingHelp(settingField(key)));
         for (const auto& [widget, words] : widgets) {
+            // A box that takes one choice says what the chosen one means (describeChoice), not the
+            // command line's help for a list of them.
+            if (auto* box = qobject_cast<QComboBox*>(widget)) {
+                box->setProperty("about", words);
+                continue;
+            }
             widget->setToolTip(QStringLiteral("<p>%1</p><p><i>%2</i></p>").arg(words.toHtmlEscaped(), help.toHtmlEscaped()));
             widget->setWhatsThis(words + QStringLiteral("\n\n") + help);
         }
     }
     // Each choice says what it is.
     for (int i = 0; i < builder_->count(); ++i) builder_->setItemData(i, explain(Builder(builder_->itemData(i).toInt())), Qt::ToolTipRole);
+    for (int i = 0; i < effort_->count(); ++i) effort_->setItemData(i, explain(Effort(effort_->itemData(i).toInt())), Qt::ToolTipRole);
     for (int i = 0; i < cone_->count(); ++i) cone_->setItemData(i, explain(ConeMethod(cone_->itemData(i).toInt())), Qt::ToolTipRole);
     for (int i = 0; i < test_->count(); ++i) test_->setItemData(i, explain(CullTest(test_->itemData(i).toInt())), Qt::ToolTipRole);
+    for (int i = 0; i < sphere_->count(); ++i)
+        sphere_->setItemData(i, explain(SphereMethod(sphere_->itemData(i).toInt())), Qt::ToolTipRole);
+    projection_->setItemData(0, tr("The eye is a point: each face is seen from its own direction."), Qt::ToolTipRole);
+    projection_->setItemData(1, tr("The eye is infinitely far away: every face is seen from the same direction."), Qt::ToolTipRole);
+    for (QComboBox* box : {builder_, effort_, cone_, test_, sphere_, projection_}) {
+        connect(box, qOverload<int>(&QComboBox::currentIndexChanged), this, [this, box]() { describeChoice(box); });
+        describeChoice(box);
+    }
+}
+
+void SettingsPanel::describeChoice(QComboBox* box) {
+    const QString about = box->property("about").toString();
+    const QString chosen = box->currentText(), meaning = box->currentData(Qt::ToolTipRole).toString();
+    box->setToolTip(QStringLiteral("<p>%1</p><p><b>%2</b>: %3</p>").arg(about.toHtmlEscaped(), chosen.toHtmlEscaped(), meaning.toHtmlEscaped()));
+    box->setWhatsThis(about + QStringLiteral("\n\n") + tr("Chosen: %1. %2").arg(chosen, meaning));
 }
 
 void SettingsPanel::browseClusterFile() {

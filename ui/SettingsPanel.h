@@ -45,6 +45,8 @@ private:
     void enableForBuilder();
     // Tooltips and What's This for every control, from the settings schema and the glossary.
     void describeWidgets();
+    // A single-choice box's tooltip and What's This: what the box is for and what its chosen item means.
+    void describeChoice(QComboBox* box);
     void browseClusterFile();
 
     // Fields the panel does not edit (extra cones/tests, the eye) pass through unchanged.

@@ -2,9 +2,12 @@
 
 #include <algorithm>
 
+#include <QEvent>
 #include <QFormLayout>
 #include <QLabel>
 #include <QLocale>
+
+#include "Glossary.h"
 
 namespace conescope {
 
@@ -33,8 +36,9 @@ QString configuration(const Settings& settings) {
                        .arg(QString::fromStdString(toString(settings.effort)),
                             settings.clusterCount != 0 ? QStringLiteral("budget %1").arg(settings.clusterCount)
                                                        : QStringLiteral("default budget"));
-    return QStringLiteral("%1, %2 / %3, %4/%5")
-        .arg(builder, QString::fromStdString(toString(displayedCone(settings))), QString::fromStdString(toString(displayedTest(settings))))
+    // The cone and test first: what A and B most often differ in must not be the part that wraps away.
+    return QStringLiteral("%1 / %2, %3, %4/%5")
+        .arg(QString::fromStdString(toString(displayedCone(settings))), QString::fromStdString(toString(displayedTest(settings))), builder)
         .arg(settings.limits.maxVertices)
         .arg(settings.limits.maxTriangles);
 }
@@ -59,14 +63,106 @@ StatisticsPanel::StatisticsPanel(QWidget* parent) : QWidget(parent) {
     clear();
 }
 
+// Fits the values' heights to their new texts when a show function returns (however it returns).
+struct StatisticsPanel::FitHeightsAfter {
+    explicit FitHeightsAfter(StatisticsPanel& panel) : panel(panel) {}
+    ~FitHeightsAfter() { panel.fitHeights(); }
+    StatisticsPanel& panel;
+};
+
+namespace {
+
+// What each row says, for its tooltip and What's This.
+QString aboutRow(const QString& row) {
+    static const std::map<QString, QString> about = {
+        {"eye", QObject::tr("Where the cull eye is (or, orthographic, the direction it looks along): every number above the "
+                            "mesh's is for this eye.")},
+        {"clusters culled", QObject::tr("Clusters the test skips from this eye, of all clusters.")},
+        {"triangles culled", QObject::tr("Triangles in the culled clusters: what culling saves from this eye.")},
+        {"back-facing triangles", QObject::tr("Triangles whose face turns away from this eye (the oracle's count): the most any "
+                                              "culling could save.")},
+        {"efficiency", explain(QStringLiteral("efficiency"))},
+        {"false culls", explain(QStringLiteral("false cull")) + QObject::tr(" Always 0 for ConeScope's own tests.")},
+        {"missed clusters", explain(QStringLiteral("missed cull")) + QObject::tr(" The count from this eye.")},
+        {"time per test", QObject::tr("How long one cluster's test takes, measured over all clusters for this eye.")},
+        {"A (pinned)", QObject::tr("The settings pinned as A: cone / test first (what A and B most often differ in), then the "
+                                   "builder and the limits. The current settings are B.")},
+        {"A / B efficiency", QObject::tr("Efficiency from this eye with A's settings and with B's.")},
+        {"A / B culled", QObject::tr("Triangles culled from this eye by A only, by B only and by both (the colours of the faces).")},
+        {"A / B over the orbit", QObject::tr("Efficiency over the whole orbit with A's settings and with B's.")},
+        {"A / B culled over the orbit", QObject::tr("Triangles culled over the orbit by A only, by B only and by both.")},
+        {"A / B clusters", QObject::tr("How many clusters A and B have: compare partitions only at equal counts (within 5%), "
+                                       "smaller clusters cull more for free.")},
+        {"mesh", QObject::tr("The file shown.")},
+        {"faces", QObject::tr("Faces of the mesh as read (a polygon counts once).")},
+        {"triangles", QObject::tr("Triangles of the mesh: a polygon of n corners counts n - 2.")},
+        {"degenerate faces", QObject::tr("Faces without area, so without a normal: they never decide a cull.")},
+        {"mesh problems", QObject::tr("Open, non-manifold or inconsistently wound edges, inside-out pieces, duplicate and "
+                                      "double-sided faces: what can make a face's normal point the wrong way.")},
+        {"clusters", explain(QStringLiteral("cluster")) + QObject::tr(" How many the builder made.")},
+        {"uncullable clusters", QObject::tr("Clusters without a cone: their normals span more than a half-space, so no cone test "
+                                            "can cull them from any eye.")},
+        {"builder", QObject::tr("How the faces were grouped into clusters (Settings > Builder).")},
+        {"cone / test", QObject::tr("The cone of normals and the cull test the numbers are for.")},
+        {"build time", QObject::tr("How long making the clusters and their cones and bounds took.")},
+        {"orbit efficiency", QObject::tr("Efficiency over every orbit eye together (triangles culled / back-facing, summed), "
+                                         "and the views' efficiencies averaged.")},
+        {"lost over the orbit", explain(QStringLiteral("test loss")) + QStringLiteral(" ") + explain(QStringLiteral("partition loss"))},
+        {"expected efficiency", QObject::tr("What the cones promise from random far eyes: the sum of T (1 - sin alpha) / 2 over "
+                                            "the clusters, over half the triangles.")},
+        {"cull / oracle fraction", explain(QStringLiteral("cull fraction")) + QStringLiteral(" ") + explain(QStringLiteral("oracle fraction"))},
+        {"cluster fill", QObject::tr("How full the clusters are on average, against the limits (Max vertices, Max triangles).")},
+        {"sphere radius", QObject::tr("The clusters' bounding spheres: how far a cluster sprawls (what frustum and occlusion "
+                                      "culling see).")},
+    };
+    const auto found = about.find(row);
+    return found == about.end() ? QString() : found->second;
+}
+
+}  // namespace
+
 QLabel* StatisticsPanel::addRow(const QString& name) {
     auto* label = new QLabel(this);
     label->setTextInteractionFlags(Qt::TextSelectableByMouse);
     label->setWordWrap(true);
     label->setObjectName(name);
-    form_->addRow(name + QLatin1Char(':'), label);
+    auto* title = new QLabel(name + QLatin1Char(':'), this);
+    // The row's name and its value both say what it means.
+    for (QLabel* part : {title, label}) {
+        part->setToolTip(aboutRow(name));
+        part->setWhatsThis(aboutRow(name));
+    }
+    form_->addRow(title, label);
     values_[name] = label;
+    label->installEventFilter(this);
     return label;
+}
+
+bool StatisticsPanel::eventFilter(QObject* watched, QEvent* event) {
+    if (event->type() == QEvent::Resize) fitHeight(static_cast<QLabel*>(watched));
+    return QWidget::eventFilter(watched, event);
+}
+
+void StatisticsPanel::fitHeight(QLabel* label) {
+    // A form lays its rows out from their size hints, not from the height a wrapped text needs at the
+    // width it gets: each value asks for that height itself, or its last lines are cut away.
+    const int needed = label->heightForWidth(label->width());
+    if (needed > 0 && needed != label->minimumHeight()) label->setMinimumHeight(needed);
+}
+
+void StatisticsPanel::fitHeights() {
+    for (auto& [name, label] : values_) fitHeight(label);
+}
+
+QString StatisticsPanel::rowHelp(const QString& row) const {
+    const auto found = values_.find(row);
+    return found == values_.end() ? QString() : found->second->toolTip();
+}
+
+QStringList StatisticsPanel::rows() const {
+    QStringList names;
+    for (const auto& [name, label] : values_) names << name;
+    return names;
 }
 
 QString StatisticsPanel::value(const QString& row) const {
@@ -75,10 +171,12 @@ QString StatisticsPanel::value(const QString& row) const {
 }
 
 void StatisticsPanel::clear() {
+    const FitHeightsAfter fit(*this);
     for (auto& [name, label] : values_) label->setText(QStringLiteral("-"));
 }
 
 void StatisticsPanel::showClusters(const PreparedMesh& prepared, const ClusterSet& clusters, const Settings& settings) {
+    const FitHeightsAfter fit(*this);
     values_["mesh"]->setText(QString::fromStdString(prepared.name));
     values_["faces"]->setText(count(prepared.mesh().faceCount()));
     values_["triangles"]->setText(count(prepared.triangles));
@@ -102,6 +200,7 @@ void StatisticsPanel::showClusters(const PreparedMesh& prepared, const ClusterSe
 }
 
 void StatisticsPanel::showOrbit(const CullTestStatistics* orbit) {
+    const FitHeightsAfter fit(*this);
     const char* rows[] = {"orbit efficiency", "lost over the orbit", "expected efficiency", "cull / oracle fraction",
                           "cluster fill", "sphere radius"};
     if (!orbit) {
@@ -122,6 +221,7 @@ void StatisticsPanel::showOrbit(const CullTestStatistics* orbit) {
 }
 
 void StatisticsPanel::showEye(const EyeMeasurement& measurement) {
+    const FitHeightsAfter fit(*this);
     const ViewStatistics& view = measurement.view();
     // The test can change without new clusters: the row says what this measurement used.
     values_["cone / test"]->setText(QStringLiteral("%1 / %2").arg(QString::fromStdString(toString(measurement.statistics.cone)),
@@ -152,6 +252,7 @@ QStringList StatisticsPanel::comparisonRows() {
 }
 
 void StatisticsPanel::showComparison(const Settings* a, const Comparison* eye, const Comparison* orbit) {
+    const FitHeightsAfter fit(*this);
     for (const QString& row : comparisonRows()) {
         values_[row]->setVisible(a != nullptr);
         if (QWidget* label = form_->labelForField(values_[row])) label->setVisible(a != nullptr);
@@ -176,6 +277,7 @@ void StatisticsPanel::showComparison(const Settings* a, const Comparison* eye, c
 }
 
 void StatisticsPanel::showEyeError(const QString& message) {
+    const FitHeightsAfter fit(*this);
     values_["eye"]->setText(message);
     for (const char* name : {"clusters culled", "triangles culled", "back-facing triangles", "efficiency",
                              "missed clusters", "false culls", "time per test"})

@@ -32,9 +32,18 @@ public:
 
     // The label text of a row, by its name ("clusters culled", "false culls", ...), for tests.
     QString value(const QString& row) const;
+    // What a row means (its tooltip and What's This), and every row's name, for tests.
+    QString rowHelp(const QString& row) const;
+    QStringList rows() const;
+
+protected:
+    bool eventFilter(QObject* watched, QEvent* event) override;
 
 private:
+    struct FitHeightsAfter;
     QLabel* addRow(const QString& name);
+    void fitHeight(QLabel* label);
+    void fitHeights();
     static QStringList comparisonRows();
 
     QFormLayout* form_ = nullptr;

@@ -133,7 +133,11 @@ void WindowActions::createExamplesMenu(QMenu* examples) {
 
 void WindowActions::createViewMenu(QDockWidget* eyeViewDock, QDockWidget* plotsDock, QDockWidget* gaussMapDock) {
     QMenu* view = window_->menuBar()->addMenu(tr("&View"));
-    reset_ = add(view, tr("&Reset camera"), QKeySequence(tr("R")), [this]() { window_->resetCamera(); });
+    reset_ = add(view, tr("&Reset camera"), QKeySequence(tr("R")), [this]() { window_->resetCamera(); },
+                 tr("The first view: the whole mesh and the eye, turned past the eye's side so culled clusters show beside drawn ones"));
+    behind_ = add(view, tr("View from &behind (the culled side)"), QKeySequence(tr("Shift+R")), [this]() { window_->viewFromBehind(); },
+                  tr("Looks at the mesh from behind, the side turned away from the cull eye: where its culled clusters are, "
+                     "and where A and B differ"));
     QMenu* layers = view->addMenu(tr("&Layers"));
     int number = 1;
     for (Layer layer : allLayers()) {
@@ -259,6 +263,7 @@ void WindowActions::createToolBar() {
         {screenshot_, QStyle::SP_DesktopIcon, tr("Screenshot")},
         {nullptr, QStyle::SP_CustomBase, {}},
         {reset_, QStyle::SP_BrowserReload, tr("Reset camera")},
+        {behind_, QStyle::SP_CustomBase, tr("View from behind")},
         {look_, QStyle::SP_ArrowForward, tr("Eye at camera")},
         {followAction_, QStyle::SP_CustomBase, tr("Follow camera")},
         {animateAction_, QStyle::SP_MediaPlay, tr("Animate orbit")},

@@ -79,6 +79,7 @@ private:
     QAction* exportEye_ = nullptr;
     QAction* screenshot_ = nullptr;
     QAction* reset_ = nullptr;
+    QAction* behind_ = nullptr;
     QAction* eyeViewToggle_ = nullptr;
     QAction* look_ = nullptr;
     QAction* followAction_ = nullptr;

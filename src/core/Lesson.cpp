@@ -6,6 +6,7 @@
 #include "BatchCulling.h"
 #include "LessonSteps.h"
 #include "LessonText.h"
+#include "RecordTests.h"
 
 namespace conescope {
 
@@ -163,11 +164,20 @@ std::string outcomeWords(bool culled, LessonOutcome outcome) {
     return outcome == LessonOutcome::Visible ? "drawn: its faces turn to the eye" : "drawn, " + toString(outcome);
 }
 
-// How far v is from the cluster's axis: what the two clusters' cones make of the same eye.
-std::string angleToAxis(const CullExplanation& why, uint32_t cluster) {
-    if (!why.cullable) return {};
-    return "cluster " + std::to_string(cluster) + "'s axis " + degrees(glm::degrees(std::acos(std::clamp(why.viewDotAxis, -1.0, 1.0)))) +
-           " from v (B = " + degrees(why.angleBDegrees) + ")";
+// How far the view vector `v` is from a cluster's axis: what the two clusters' cones make of one eye.
+std::string angleToAxis(const CullExplanation& why, uint32_t cluster, const std::string& v) {
+    return v + " is " + degrees(glm::degrees(std::acos(std::clamp(why.viewDotAxis, -1.0, 1.0)))) + " from cluster " +
+           std::to_string(cluster) + "'s axis (its B = " + degrees(why.angleBDegrees) + ")";
+}
+
+// The rule the angles obey, for the tests whose rule is an angle to the axis.
+std::string angleRule(CullTest test, bool orthographic, const std::string& v) {
+    if (orthographic && test != CullTest::Octagon && !readsOwnRecord(test))
+        return " The test culls a cluster when " + v + " lies within B of its axis.";
+    if (test == CullTest::Apex) return " The test culls a cluster when v, to its apex, lies within B of its axis.";
+    if (test == CullTest::Sphere)
+        return " The test culls a cluster when v lies within B \u2212 asin(r/d) of its axis: the sphere takes its share off B.";
+    return {};
 }
 
 std::string sideBySideStep(const Lesson& lesson) {
@@ -187,13 +197,11 @@ std::string sideBySideStep(const Lesson& lesson) {
                        " apart. Cluster " + std::to_string(first) + " is " + outcomeWords(a.culled, outcomeA) + ": " +
                        decisionLine(a, lesson.test, lesson.eye.orthographic) + ". Cluster " + std::to_string(second) + " is " +
                        outcomeWords(b.culled, outcomeB) + ": " + decisionLine(b, lesson.test, lesson.eye.orthographic) + ". ";
-    const std::string angleA = angleToAxis(a, first), angleB = angleToAxis(b, second);
-    if (!angleA.empty() && !angleB.empty())
-        text += "What differs is not the eye but each cone: " + angleA + ", " + angleB +
-                ". The test culls a cluster whose cone points away from the eye, within B of the view vector.";
-    else
-        text += "What differs is not the eye but the clusters: only one of them has a cone the test can use.";
-    return text;
+    const std::string v = lesson.eye.orthographic ? "d" : "v";
+    if (a.cullable && b.cullable)
+        return text + "What differs is not the eye but each cone: " + angleToAxis(a, first, v) + ", " + angleToAxis(b, second, v) + "." +
+               angleRule(lesson.test, lesson.eye.orthographic, v);
+    return text + "What differs is not the eye but the clusters: only one of them has a cone the test can use.";
 }
 
 // The nearest cluster (centre to centre) the test decides the other way from the lesson's eye, one

@@ -28,8 +28,8 @@ std::string apexSentence(const Lesson& lesson) {
     // already is (a patch hollow towards V1) stays where it is.
     if (!(behind > 1e-9 * std::max(lesson.sphere.radius, 1e-300)))
         return "This test uses the apex, a point behind the plane of every one of the cluster's faces, on the cone's "
-               "axis. For this cluster the centre of its bounding sphere already lies behind every face plane (the "
-               "patch is hollow on the side its normals point to), so the apex is that centre itself." + apexArgument;
+               "axis. For this cluster the centre of its bounding sphere already lies behind every face plane, so the "
+               "apex is that centre itself." + apexArgument;
     return "This test uses the apex, a point " + number(behind) +
            " from the cluster's centre along \u2212V1, behind the plane of every one of its faces." + apexArgument;
 }

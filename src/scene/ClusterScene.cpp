@@ -225,7 +225,7 @@ const SceneLegend& ClusterScene::legend() const {
 
 void ClusterScene::fitLegend(int viewHeight, double pixelRatio) {
     impl_->updateStaleLegend();
-    impl_->legend.setScale(legendScaleFor(viewHeight), pixelRatio);
+    impl_->legend.fitTo(viewHeight, pixelRatio);
 }
 
 vtkActor* ClusterScene::actor(Layer layer) const {

@@ -172,7 +172,7 @@ void CullTestLayer::addLegendEntries(FaceColoring, std::vector<LegendEntry>& ent
     const std::string test = toString(drawing_.test);
     if (!drawing_.region.empty()) entries.push_back({"eyes " + test + " culls from", {regionColour}});
     entries.push_back({"view vector v", {SceneColours::viewVector}});
-    entries.push_back({"cone axis V1", {axisColour}});
+    if (drawing_.why.cullable) entries.push_back({"cone axis V1", {axisColour}});
     if (!drawing_.why.vertices.empty() || drawing_.test == CullTest::Aabb || drawing_.test == CullTest::AabbFast)
         entries.push_back({"point sees back / may face", {pointBack, pointFront}});
 }
@@ -196,7 +196,9 @@ void CullTestLayer::setDrawing(const CullTestDrawing& drawing) {
     setInput(region_, polyDataFrom(surface, CellKind::Polygons));
     setInput(regionOutline_, polyDataFrom(regionOutline(surface, drawing.region.distances.size(), ringSegments(drawing.region)),
                                           CellKind::Lines));
-    setInput(axis_, polyDataFrom(segment(sphere.center, sphere.center + drawing.why.axis * length, c), CellKind::Lines));
+    // A cluster without a cone has no axis V1 to draw.
+    setInput(axis_, drawing.why.cullable ? polyDataFrom(segment(sphere.center, sphere.center + drawing.why.axis * length, c), CellKind::Lines)
+                                         : emptyPolyData());
     const glm::dvec3 target = testViewTarget(drawing, sphere);
     const glm::dvec3 from = drawing.eye.orthographic ? target - drawing.eye.direction * (4.0 * length) : drawing.eye.position;
     setInput(view_, polyDataFrom(segment(from, target, c), CellKind::Lines));

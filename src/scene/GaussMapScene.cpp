@@ -245,7 +245,7 @@ void GaussMapScene::placeCamera(vtkCamera* camera) const {
 const SceneLegend& GaussMapScene::legend() const { return impl_->legend; }
 
 void GaussMapScene::fitLegend(int viewHeight, double pixelRatio) {
-    impl_->legend.setScale(legendScaleFor(viewHeight), pixelRatio);
+    impl_->legend.fitTo(viewHeight, pixelRatio);
 }
 
 vtkSmartPointer<vtkImageData> renderGaussMapToImage(const GaussMapScene& scene, int width, int height) {

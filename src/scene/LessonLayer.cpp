@@ -113,6 +113,38 @@ CameraPlacement lookAt(const glm::dvec3& focus, double radius, const glm::dvec3&
     return camera;
 }
 
+// Where the view vector of a cluster's test aims: the apex for a perspective apex or octagon test
+// (a cluster without a cone has none), else the sphere's centre.
+glm::dvec3 viewTarget(const CullExplanation& why, CullTest test, const Sphere& sphere, const Eye& eye) {
+    const bool apexTest = test == CullTest::Apex || test == CullTest::Octagon || test == CullTest::OctagonCompact;
+    return apexTest && why.cullable && !eye.orthographic ? why.apex : sphere.center;
+}
+
+// Both clusters and the eye, seen across the line from the eye to their middle, raised towards V1.
+CameraPlacement sideBySideCamera(const Lesson& lesson, double viewAngleDegrees) {
+    const Sphere& a = lesson.sphere;
+    const Sphere& b = lesson.partner->sphere;
+    const glm::dvec3 middle = 0.5 * (a.center + b.center);
+    const double r = std::max(0.5 * glm::distance(a.center, b.center) + std::max(a.radius, b.radius), 1e-9);
+    const glm::dvec3 up = upOf(lesson);
+    glm::dvec3 towardsEye = lesson.eye.orthographic ? -lesson.eye.direction : lesson.eye.position - middle;
+    if (!(glm::length(towardsEye) > 0.0)) towardsEye = up;
+    // The clusters fill the picture; the view vectors come in from the eye's side, the eye itself in
+    // the picture only when it is near.
+    const double distance = std::min(lesson.eye.orthographic ? 1.6 * r : glm::length(towardsEye), 1.6 * r);
+    const glm::dvec3 towards = glm::normalize(towardsEye);
+    glm::dvec3 across = glm::cross(towards, up);
+    if (glm::length(across) < 1e-6) across = glm::cross(towards, glm::dvec3(1.0, 0.0, 0.0));
+    if (glm::length(across) < 1e-6) across = glm::dvec3(0.0, 1.0, 0.0);
+    // From outside the surface, where both clusters show their faces (the axes' mean), turned to the
+    // side so the view vectors are seen along their length.
+    glm::dvec3 outside = up;
+    if (lesson.partner->why.cullable) outside += glm::normalize(lesson.partner->why.axis);
+    if (glm::length(outside) < 1e-6) outside = up;
+    const glm::dvec3 from = glm::normalize(outside) + 0.6 * glm::normalize(across);
+    return lookAt(middle + 0.3 * distance * towards, 1.3 * r, from, up, viewAngleDegrees);
+}
+
 }  // namespace
 
 double gaussSphereRadius(const Lesson& lesson) { return 0.8 * std::max(lesson.sphere.radius, 1e-9); }
@@ -128,10 +160,13 @@ std::map<Layer, bool> lessonLayers(int step) {
     // The apex lies behind the faces: the bound's step shows the cluster see-through, the mesh as borders.
     if (step == 4) layers[Layer::Faces] = false;
     if (step >= 5) layers[Layer::Eye] = layers[Layer::Test] = true;
+    // Side by side, the lesson layer draws both clusters' view vectors; one cluster's region would hide them.
+    if (step == kSideBySideStep) layers[Layer::Test] = false;
     return layers;
 }
 
 FaceColoring lessonColouring(int step) {
+    if (step == kSideBySideStep) return FaceColoring::CullDecision;
     return step >= 6 ? FaceColoring::Loss : step == 5 ? FaceColoring::CullDecision : FaceColoring::Cluster;
 }
 
@@ -143,6 +178,7 @@ CameraPlacement lessonCamera(const Lesson& lesson, int step, double viewAngleDeg
     // The faces from outside, where their normals point: the arrows (step 1), the faces coloured by
     // what happened to them (step 6).
     if (step <= 1) return lookAt(centre, 1.7 * r, side + 0.8 * up, up, viewAngleDegrees);
+    if (step == kSideBySideStep && lesson.partner) return sideBySideCamera(lesson, viewAngleDegrees);
     if (step >= 6) return lookAt(centre, 2.2 * r, side + 0.8 * up, up, viewAngleDegrees);
     if (step <= 3) {
         // The Gauss sphere fills the picture, the cluster's top below it.
@@ -175,7 +211,10 @@ LessonLayer::LessonLayer(const SceneData& data)
       tips_(pointsActor(tipColour, 7.0)), cone_(actorFor(plainMapper(emptyPolyData()))),
       coneRim_(lineActor(plainMapper(emptyPolyData()), 3.0)), otherRim_(lineActor(plainMapper(emptyPolyData()), 3.0)),
       axis_(lineActor(plainMapper(emptyPolyData()), 3.0)), bound_(lineActor(plainMapper(emptyPolyData()), 2.5)),
-      boundPoints_(pointsActor(SceneColours::highlight, 11.0)) {
+      boundPoints_(pointsActor(SceneColours::highlight, 11.0)), partnerOutline_(lineActor(plainMapper(emptyPolyData()), 3.5)),
+      views_(lineActor(plainMapper(emptyPolyData()), 2.5)) {
+    setColour(partnerOutline_, SceneColours::partner);
+    setColour(views_, SceneColours::viewVector);
     setColour(outline_, SceneColours::highlight);
     setColour(faces_, SceneColours::highlight);
     faces_->GetProperty()->SetOpacity(0.45);
@@ -192,12 +231,21 @@ LessonLayer::LessonLayer(const SceneData& data)
 }
 
 std::vector<vtkActor*> LessonLayer::actors() const {
-    return {outline_, faces_, faceArrows_, gaussSphere_, gaussArrows_, tips_, cone_, coneRim_, otherRim_, axis_, bound_, boundPoints_};
+    return {outline_,  faces_, faceArrows_, gaussSphere_,     gaussArrows_, tips_, cone_, coneRim_,
+            otherRim_, axis_,  bound_,      boundPoints_, partnerOutline_, views_};
 }
 
 void LessonLayer::addLegendEntries(FaceColoring, std::vector<LegendEntry>& entries) const {
     const Lesson& lesson = *drawing_.lesson;
     const int step = drawing_.step;
+    if (step == kSideBySideStep && lesson.partner) {
+        entries.push_back({"cluster " + std::to_string(lesson.cluster) + ", " + lesson.verdict(), {SceneColours::highlight}});
+        entries.push_back({"cluster " + std::to_string(lesson.partner->cluster) + ", " + (lesson.partner->why.culled ? "culled" : "drawn"),
+                           {SceneColours::partner}});
+        entries.push_back({"view vector v", {SceneColours::viewVector}});
+        if (lesson.why.cullable || lesson.partner->why.cullable) entries.push_back({"cone axis V1", {axisColour}});
+        return;
+    }
     entries.push_back({"cluster " + std::to_string(lesson.cluster), {SceneColours::highlight}});
     if (step == 1) entries.push_back({"its face normals", {SceneColours::lessonNormal}});
     if (step == 2 || step == 3) entries.push_back({"normals from one point: the Gauss sphere", {SceneColours::lessonNormal, gaussColour}});
@@ -207,13 +255,15 @@ void LessonLayer::addLegendEntries(FaceColoring, std::vector<LegendEntry>& entri
                            {coneMethodColour(lesson.coneMethod)}});
         if (other.cullable)
             entries.push_back({toString(otherMethod(lesson)) + " cone, alpha " + degreesText(other.halfAngle()), {coneMethodColour(otherMethod(lesson))}});
-        entries.push_back({"cone axis V1", {axisColour}});
+        if (lesson.why.cullable) entries.push_back({"cone axis V1", {axisColour}});
     }
     if (step >= 4) {
         switch (lesson.test) {
             case CullTest::Apex:
             case CullTest::Octagon:
-            case CullTest::OctagonCompact: entries.push_back({"apex, behind every face plane", {SceneColours::highlight}}); break;
+            case CullTest::OctagonCompact:
+                if (lesson.why.cullable) entries.push_back({"apex, behind every face plane", {SceneColours::highlight}});
+                break;
             case CullTest::Sphere:
             case CullTest::MeshoptSphere: entries.push_back({"bounding sphere", {SceneColours::highlight}}); break;
             case CullTest::Aabb:
@@ -243,7 +293,8 @@ void LessonLayer::setDrawing(const LessonDrawing& drawing) {
         if (drawing.step == 1) setInput(faceArrows_, arrows(lesson.centroids, lesson.normals, arrowLength));
         if (drawing.step == 2 || drawing.step == 3) drawGaussSphere(lesson, drawing.step == 3);
         if (drawing.step == 4) setInput(faces_, polyDataFrom(clusterFaces(data_.mesh, faces, count, int(lesson.cluster)), CellKind::Polygons, data_.points));
-        if (drawing.step >= 4) drawBound(lesson);
+        if (drawing.step == kSideBySideStep && lesson.partner) drawSideBySide(lesson);
+        else if (drawing.step >= 4) drawBound(lesson);
     }
     applyVisibility();
 }
@@ -264,7 +315,8 @@ void LessonLayer::drawGaussSphere(const Lesson& lesson, bool withCones) {
     setInput(tips_, pointPolyData(tips));
     if (!withCones) return;
     const glm::dvec3 up = upOf(lesson);
-    setInput(axis_, polyDataFrom(segment(centre, centre + 1.5 * radius * up), CellKind::Lines));
+    // A cluster without a cone has no axis to draw.
+    if (lesson.why.cullable) setInput(axis_, polyDataFrom(segment(centre, centre + 1.5 * radius * up), CellKind::Lines));
     const double slant = 1.15 * radius;
     if (lesson.why.cullable) {
         ConeOfNormals shown;
@@ -295,6 +347,7 @@ void LessonLayer::drawBound(const Lesson& lesson) {
         case CullTest::Apex:
         case CullTest::Octagon:
         case CullTest::OctagonCompact: {
+            if (!lesson.why.cullable) break;  // no cone, no apex
             // Lines from the apex to the cluster's outline: every face lies in front of it.
             const uint32_t* faces = bounds.faces.faces.data() + bounds.faces.starts[c];
             const GlyphGeometry outline = clusterOutline(data_.mesh, faces, bounds.faces.starts[c + 1] - bounds.faces.starts[c], int(c));
@@ -332,6 +385,31 @@ void LessonLayer::drawBound(const Lesson& lesson) {
     }
     if (!lines.points.empty()) setInput(bound_, polyDataFrom(lines, CellKind::Lines));
     if (!points.empty()) setInput(boundPoints_, pointPolyData(points));
+}
+
+void LessonLayer::drawSideBySide(const Lesson& lesson) {
+    const ClusterBounds& bounds = data_.bounds;
+    const LessonPartner& partner = *lesson.partner;
+    const uint32_t c = partner.cluster;
+    const uint32_t* faces = bounds.faces.faces.data() + bounds.faces.starts[c];
+    setInput(partnerOutline_, polyDataFrom(clusterOutline(data_.mesh, faces, bounds.faces.starts[c + 1] - bounds.faces.starts[c], int(c)),
+                                           CellKind::Lines, data_.points));
+    GlyphGeometry views, axes;
+    const std::pair<const CullExplanation*, const Sphere*> sides[] = {{&lesson.why, &lesson.sphere}, {&partner.why, &partner.sphere}};
+    for (const auto& [why, sphere] : sides) {
+        const glm::dvec3 target = viewTarget(*why, lesson.test, *sphere, lesson.eye);
+        const double length = 1.5 * std::max(sphere->radius, 1e-9);
+        const glm::dvec3 from = lesson.eye.orthographic ? target - lesson.eye.direction * (4.0 * length) : lesson.eye.position;
+        const GlyphGeometry view = segment(from, target);
+        views.points.insert(views.points.end(), view.points.begin(), view.points.end());
+        views.addCell({int64_t(views.points.size() - 2), int64_t(views.points.size() - 1)}, 0);
+        if (!why->cullable) continue;
+        axes.points.emplace_back(sphere->center);
+        axes.points.emplace_back(sphere->center + why->axis * length);
+        axes.addCell({int64_t(axes.points.size() - 2), int64_t(axes.points.size() - 1)}, 0);
+    }
+    setInput(views_, polyDataFrom(views, CellKind::Lines));
+    if (!axes.points.empty()) setInput(axis_, polyDataFrom(axes, CellKind::Lines));
 }
 
 }  // namespace conescope

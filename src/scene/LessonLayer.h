@@ -5,8 +5,10 @@
 //     (the average cone beside the minimal one, or the minimal beside any other);
 //   4 the bound the test uses: the apex and its lines to the cluster's outline, the bounding sphere,
 //     the box's corners or the vertices, over the cluster's faces drawn see-through;
-//   5, 6 the bound again (the test layer draws the eye, the view vector and the region).
-// Step 0 draws nothing. Also what each step shows besides (lessonLayers) and where it looks from
+//   5, 6 the bound again (the test layer draws the eye, the view vector and the region);
+//   7 the cluster and its partner (the nearest the same eye decides the other way), each outlined,
+//     with its axis V1 and its view vector from the eye.
+// A cluster without a cone gets no axis and no apex. Step 0 draws nothing. Also what each step shows besides (lessonLayers) and where it looks from
 // (lessonCamera), for the window and the headless pictures alike.
 #pragma once
 
@@ -58,9 +60,10 @@ public:
 private:
     void drawGaussSphere(const Lesson& lesson, bool withCones);
     void drawBound(const Lesson& lesson);
+    void drawSideBySide(const Lesson& lesson);
 
     vtkSmartPointer<vtkActor> outline_, faces_, faceArrows_, gaussSphere_, gaussArrows_, tips_, cone_, coneRim_, otherRim_, axis_,
-        bound_, boundPoints_;
+        bound_, boundPoints_, partnerOutline_, views_;
     LessonDrawing drawing_;
 };
 

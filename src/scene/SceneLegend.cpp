@@ -96,6 +96,21 @@ void addRectangle(vtkPolyData* data, const SceneLegend::Rectangle& r, const Rgb&
 
 double legendScaleFor(int height) { return std::clamp(double(height) / 600.0, 0.75, 1.0); }
 
+double legendScaleFor(int height, size_t rows) {
+    const double natural = 2.0 * (legendMargin + legendPadding) + double(rows) * rowHeight;
+    return std::min(legendScaleFor(height), std::max(0.7, 0.25 * double(height) / natural));
+}
+
+namespace {
+
+size_t rowsOf(const std::vector<LegendEntry>& entries) {
+    size_t rows = 0;
+    for (const LegendEntry& entry : entries) rows += entry.scale ? 2 : 1;
+    return rows;
+}
+
+}  // namespace
+
 SceneLegend::SceneLegend()
     : assembly_(vtkSmartPointer<vtkPropAssembly>::New()), backgroundData_(emptyColoured()), colourData_(emptyColoured()) {
     background_ = actorOf(backgroundData_);
@@ -138,6 +153,7 @@ void SceneLegend::show(const std::vector<LegendEntry>& entries) {
     // An eye step sets several layers; each asks again for the same legend. Laying out measures
     // every text with FreeType: done only when something in it changed.
     if (laidOut_ && entries == entries_) return;
+    if (viewHeight_ > 0) scale_ = legendScaleFor(viewHeight_, rowsOf(entries));
     layOut(entries);
 }
 
@@ -149,8 +165,7 @@ void SceneLegend::layOut(const std::vector<LegendEntry>& entries) {
     texts_.clear();
     swatches_.clear();
     colourData_->ShallowCopy(emptyColoured());
-    size_t rows = 0;
-    for (const LegendEntry& entry : entries) rows += entry.scale ? 2 : 1;
+    const size_t rows = rowsOf(entries);
     const double k = scale_ * pixelRatio_, margin = k * legendMargin, padding = k * legendPadding, row = k * rowHeight;
     const double left = margin + padding;
     const double top = margin + 2.0 * padding + double(rows) * row;
@@ -189,6 +204,11 @@ void SceneLegend::setScale(double scale, double pixelRatio) {
     scale_ = scale;
     pixelRatio_ = pixelRatio;
     layOut(std::vector<LegendEntry>(entries_));
+}
+
+void SceneLegend::fitTo(int viewHeight, double pixelRatio) {
+    viewHeight_ = viewHeight;
+    setScale(legendScaleFor(viewHeight, rowsOf(entries_)), pixelRatio);
 }
 
 void SceneLegend::setVisible(bool visible) {

@@ -22,6 +22,9 @@ namespace conescope {
 
 // The legend's scale for a view `height` pixels high: full size from 600 pixels up, down to 3/4.
 double legendScaleFor(int height);
+// The same for a legend of `rows` rows, smaller still (down to 0.7) where it would take more than a
+// quarter of the view's height: a long legend must not cover the picture it explains.
+double legendScaleFor(int height, size_t rows);
 
 class SceneLegend {
 public:
@@ -34,6 +37,8 @@ public:
     // `pixelRatio` is the view's device pixels per widget pixel: VTK draws the text at 72 dpi times it
     // (HiDPI), so the box, rows and swatches are laid out that much larger too.
     void setScale(double scale, double pixelRatio = 1.0);
+    // setScale(legendScaleFor(viewHeight, rows)) now and whenever the entries change.
+    void fitTo(int viewHeight, double pixelRatio = 1.0);
     double scale() const { return scale_; }
     double pixelRatio() const { return pixelRatio_; }
     void setVisible(bool visible);
@@ -65,6 +70,7 @@ private:
     bool visible_ = false;
     double scale_ = 1.0;
     double pixelRatio_ = 1.0;
+    int viewHeight_ = 0;  // fitTo's, 0 before
     vtkSmartPointer<vtkPropAssembly> assembly_;
     vtkSmartPointer<vtkActor2D> background_, colours_;
     vtkSmartPointer<vtkPolyData> backgroundData_, colourData_;

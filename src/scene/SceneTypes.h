@@ -77,6 +77,7 @@ struct SceneColours {
     static constexpr Rgb eye{0.95, 0.10, 0.85};         // magenta: the cull eye, and nothing else
     static constexpr Rgb viewVector{0.00, 1.00, 0.70};  // turquoise: v, from the eye (and on the Gauss map)
     static constexpr Rgb highlight{1.00, 0.95, 0.15};
+    static constexpr Rgb partner{0.55, 1.00, 0.25};          // lime: the cluster a lesson sets beside the picked one
     static constexpr Rgb uncullable{0.45, 0.12, 0.40};       // no cone: never culled, whatever the eye
     // The loss classes: a back face drawn because of the test, because of the partition.
     static constexpr Rgb testLoss{1.00, 0.55, 0.05};

@@ -160,9 +160,10 @@ private slots:
         QVERIFY(window_->statisticsPanel()->value(QStringLiteral("A / B culled over the orbit"))
                     .contains(QLocale().toString(qulonglong(expected.trianglesCulledOnlyA))));
         QVERIFY(window_->statisticsPanel()->findChild<QLabel*>(QStringLiteral("A (pinned)"))->isVisibleTo(window_->statisticsPanel()));
-        // A's summary says its effort and budget: an explicit budget is searched longer.
+        // A's summary says its cone and test first (what A and B differ in), then its effort and budget:
+        // an explicit budget is searched longer.
         QCOMPARE(window_->statisticsPanel()->value(QStringLiteral("A (pinned)")),
-                 QStringLiteral("optimized (balanced, default budget), minimal / octagon, 64/124"));
+                 QStringLiteral("minimal / octagon, optimized (balanced, default budget), 64/124"));
         // The picked cluster is shown under A too.
         window_->pickCluster(0);
         QVERIFY(window_->clusterReportHtml().contains(QStringLiteral("Under A (pinned): cluster %1").arg(window_->session().pinnedClusterOf(0))));

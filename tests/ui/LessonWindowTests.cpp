@@ -2,6 +2,8 @@
 // the layers it talks about and the core's words, the words follow the eye, the end puts the window
 // back; and words everywhere: every control has a tooltip and What's This, every legend entry and
 // glossary term an explanation.
+#include <set>
+
 #include <QAbstractButton>
 #include <QAction>
 #include <QCheckBox>
@@ -286,7 +288,8 @@ private slots:
     }
 
     // File > Examples: the four teaching meshes open, and every ready-made lesson plays to its first step
-    // on the cluster its ranking names, with the core's words.
+    // on the cluster its ranking names, with the core's words; among them a culled cluster for the box,
+    // the sphere and the apex test each.
     void examplesOpenAndTheReadyMadeLessonsPlay() {
         for (const auto& [label, file] : exampleMeshes()) {
             QAction* open = actionNamed(window_.get(), label);
@@ -296,7 +299,8 @@ private slots:
             QCOMPARE(QString::fromStdString(window_->preparedMesh()->name), file);
         }
         const QStringList lessons = lessonFiles();
-        QVERIFY(lessons.size() >= 4);
+        QVERIFY(lessons.size() >= 7);
+        std::set<CullTest> culledBy;  // the tests a ready-made lesson shows culling its cluster
         for (const QString& path : lessons) {
             QVERIFY2(actionNamed(window_.get(), QStringLiteral("Lesson: ") + QFileInfo(path).completeBaseName().replace('-', ' ')),
                      qPrintable(path));
@@ -307,55 +311,14 @@ private slots:
             QCOMPARE(window_->session().lessonStep(), 1);
             QVERIFY(window_->pickedCluster() >= 0);
             QCOMPARE(window_->lessonView()->text(), QString::fromStdString(coreLesson(*window_).steps[0].text));
+            if (coreLesson(*window_).outcome == LessonOutcome::Culled) culledBy.insert(displayedTest(window_->settings()));
         }
+        // A culled cluster for each of seed 000's tests: the box, the sphere and the apex.
+        for (CullTest test : {CullTest::Aabb, CullTest::Sphere, CullTest::Apex})
+            QVERIFY2(culledBy.count(test), toString(test).c_str());
         window_->showLessonStep(0);
         window_->setSettings(Settings{});
         window_->waitUntilIdle();
-    }
-
-    // Lesson > Export the lesson as slides: six numbered pictures, each the view with its words below, all
-    // different; the step shown before comes back.
-    void theLessonExportsAsSlides() {
-        QVERIFY(window_->openMeshBlocking(datasetPath("torus.off")));
-        window_->pickCluster(5);
-        QVERIFY(window_->showLessonStep(3));
-        const QString folder = temporary_.filePath(QStringLiteral("slides"));
-        QVERIFY(window_->exportLessonSlides(folder));
-        QCOMPARE(window_->session().lessonStep(), 3);
-        QVERIFY(dynamic_cast<ObserverView*>(window_->observerView())->caption().startsWith(QStringLiteral("Lesson 3/6")));
-        std::vector<QImage> slides;
-        for (int step = 1; step <= kLessonStepCount; ++step) {
-            slides.emplace_back(QDir(folder).filePath(slideFileName(step)));
-            QVERIFY(!slides.back().isNull());
-            QVERIFY(slides.back().height() > window_->observerView()->height() + 40);
-            QCOMPARE(slides.back().width(), window_->observerView()->grabFramebuffer().width());
-        }
-        for (size_t a = 0; a < slides.size(); ++a)
-            for (size_t b = a + 1; b < slides.size(); ++b) QVERIFY(slides[a] != slides[b]);
-        QCOMPARE(QDir(folder).entryList({QStringLiteral("*.png")}, QDir::Files).size(), kLessonStepCount);
-        // The band below the picture holds the words: dark text on white.
-        const int pictureHeight = window_->observerView()->grabFramebuffer().height();
-        int ink = 0;
-        for (int y = pictureHeight; y < slides[4].height(); ++y)
-            for (int x = 0; x < slides[4].width(); ++x) ink += qGray(slides[4].pixel(x, y)) < 100;
-        QVERIFY2(ink > 500, qPrintable(QString::number(ink)));
-        window_->showLessonStep(0);
-        QVERIFY(!window_->exportLessonSlides(QStringLiteral("/proc/no/such/folder")));
-    }
-
-    // Lesson > Export the orbit as slides: eight views, the eye moving round, each with its words; the
-    // eye comes back.
-    void theOrbitExportsAsSlides() {
-        QVERIFY(window_->openMeshBlocking(datasetPath("torus.off")));
-        window_->setEyePosition({0.3, 2.5, 0.4});
-        window_->waitUntilIdle();
-        const QString folder = temporary_.filePath(QStringLiteral("orbit"));
-        QVERIFY(window_->exportOrbitSlides(folder));
-        QCOMPARE(window_->session().eyePosition(), glm::dvec3(0.3, 2.5, 0.4));
-        QCOMPARE(QDir(folder).entryList({QStringLiteral("*.png")}, QDir::Files).size(), 8);
-        const QImage first(QDir(folder).filePath(slideFileName(1))), last(QDir(folder).filePath(slideFileName(8)));
-        QVERIFY(!first.isNull() && first.height() > window_->observerView()->height() + 40);
-        QVERIFY(first != last);
     }
 };
 

@@ -81,7 +81,12 @@ private slots:
         QVERIFY(refusal("[{\"swap\": false}]").contains(QStringLiteral("takes true")));
         QVERIFY(refusal("[{\"open\": \"a.off\", \"pin\": \"A\"}]").contains(QStringLiteral("one member")));
         QVERIFY(refusal("[{\"caption\": 3}]").contains(QStringLiteral("takes a text")));
-        QVERIFY(refusal("[{\"lesson-step\": 7}]").contains(QStringLiteral("takes a lesson step")));
+        QVERIFY(refusal("[{\"lesson-step\": 8}]").contains(QStringLiteral("takes a lesson step, 1 to 7")));
+        QVERIFY(refusal("[{\"example\": \"visible\"}]").contains(QStringLiteral("culled, drawn, test-loss, partition-loss")));
+        QVERIFY(refusal("[{\"example\": 3}]").contains(QStringLiteral("'example' takes one of")));
+        QVERIFY(refusal("[{\"sweep-eye\": 1}]").contains(QStringLiteral("a number of frames")));
+        QVERIFY(refusal("[{\"sweep-eye\": {\"frame\": 4}}]").contains(QStringLiteral("unknown key 'frame'")));
+        QVERIFY(refusal("[{\"sweep-eye\": {\"slides\": \"s\"}}]").contains(QStringLiteral("takes a number of frames")));
         QVERIFY(refusal("[{\"lesson-step\": -1}]").contains(QStringLiteral("takes a lesson step")));
         QVERIFY(refusal("[{\"choose\": \"worst\"}]").contains(QStringLiteral("test-loss")));
         QVERIFY(refusal("[{\"cross-section\": \"\"}]").contains(QStringLiteral("takes a file path")));
@@ -98,9 +103,9 @@ private slots:
                 {"cancel-next-build": true}, {"screenshot": "a.png"}, {"window-screenshot": "b.png"}, {"export": "c.json"},
                 {"export-eye": "d.csv"}, {"caption": "text"}, {"choose": 3}, {"choose": "test-loss"}, {"lesson-step": 2},
                 {"cross-section": "e.png"}, {"export-explanation": "f.json"}, {"slides": "g"},
-                {"orbit-slides": "h"}])",
+                {"orbit-slides": "h"}, {"example": "culled"}, {"sweep-eye": 12}, {"sweep-eye": {"frames": 4, "slides": "i"}}])",
             QDir::tempPath());
-        QCOMPARE(steps.size(), replayStepNames().size() + 1);
+        QCOMPARE(steps.size(), replayStepNames().size() + 2);
     }
 
     void commandLineTakesAReplay() {
@@ -241,6 +246,47 @@ private slots:
         // The cluster was chosen where the test loses it: the words say so.
         QCOMPARE(explanation["outcome"].get<std::string>(), std::string("lost to the test"));
         QVERIFY(explanation["steps"][5]["text"].get<std::string>().find("lost to the test") != std::string::npos);
+    }
+
+    // Issue 41, done when: the lesson's slides are 1920x1080 PNGs and a PDF of 16:9 pages at
+    // QT_SCALE_FACTOR 1 and 2 alike (they are laid out and rendered in slide pixels, not the screen's),
+    // and the eye's sweep writes a slide at every frame.
+    void slidesAreFullHdAtScaleOneAndTwo() {
+        QDir folder(temporary_.path());
+        for (const char* scale : {"1", "2"}) {
+            const QString steps = QStringLiteral(R"([{"open": "%1"}, {"set": {"test": "apex"}}, {"example": "culled"},
+                {"slides": "scale%2/lesson"}, {"lesson-step": 5}, {"sweep-eye": {"frames": 4, "slides": "scale%2/sweep"}}])")
+                                      .arg(datasetPath("torus.off"), QString::fromLatin1(scale));
+            qputenv("QT_SCALE_FACTOR", scale);
+            QString errors;
+            const int code = replay(QStringLiteral("slides-%1.json").arg(QString::fromLatin1(scale)), steps.toUtf8(), &errors);
+            qunsetenv("QT_SCALE_FACTOR");
+            QVERIFY2(code == 0, qPrintable(errors));
+        }
+        for (const auto& [kind, count] : {std::pair<QString, int>{QStringLiteral("lesson"), kLessonStepCount}, {QStringLiteral("sweep"), 4}}) {
+            for (int n = 1; n <= count; ++n) {
+                const QImage one(folder.filePath(QStringLiteral("scale1/%1/slide-%2.png").arg(kind).arg(n, 2, 10, QLatin1Char('0'))));
+                const QImage two(folder.filePath(QStringLiteral("scale2/%1/slide-%2.png").arg(kind).arg(n, 2, 10, QLatin1Char('0'))));
+                QCOMPARE(one.size(), QSize(1920, 1080));
+                QCOMPARE(two.size(), QSize(1920, 1080));
+                // The same slide: at most a sliver of pixels differs (text hinting).
+                qint64 differing = 0;
+                for (int y = 0; y < one.height(); ++y)
+                    for (int x = 0; x < one.width(); ++x) {
+                        const QRgb a = one.pixel(x, y), b = two.pixel(x, y);
+                        differing += std::abs(qRed(a) - qRed(b)) + std::abs(qGreen(a) - qGreen(b)) + std::abs(qBlue(a) - qBlue(b)) > 48;
+                    }
+                QVERIFY2(differing < 1920 * 1080 / 100, qPrintable(QStringLiteral("%1 %2: %3 pixels differ").arg(kind).arg(n).arg(differing)));
+            }
+            for (const char* scale : {"1", "2"}) {
+                QFile pdf(folder.filePath(QStringLiteral("scale%1/%2/slides.pdf").arg(QString::fromLatin1(scale), kind)));
+                QVERIFY(pdf.open(QIODevice::ReadOnly));
+                const QByteArray text = pdf.readAll();
+                QVERIFY(text.startsWith("%PDF"));
+                QVERIFY(text.contains(QStringLiteral("/Count %1").arg(count).toLatin1()));
+                QCOMPARE(text.count("/MediaBox [0 0 960.000000 540.000000]"), count);
+            }
+        }
     }
 };
 
