@@ -218,7 +218,7 @@ void WindowActions::createCullingMenu() {
 void WindowActions::createLessonMenu() {
     QMenu* lesson = window_->menuBar()->addMenu(tr("&Lesson"));
     add(lesson, tr("Start or end the &lesson"), QKeySequence(tr("L")), [this]() { window_->toggleLesson(); },
-        tr("Six steps through the picked cluster's cull decision, in words, with its numbers"));
+        tr("Seven steps through the picked cluster's cull decision, in words, with its numbers"));
     add(lesson, tr("&Next lesson step"), QKeySequence(Qt::Key_PageDown), [this]() {
         if (session_->lessonStep() > 0) window_->showLessonStep(std::min(session_->lessonStep() + 1, kLessonStepCount));
     });
@@ -238,11 +238,11 @@ void WindowActions::createLessonMenu() {
     add(lesson, tr("Export the lesson as &slides..."), {}, [this]() {
         const QString folder = QFileDialog::getExistingDirectory(window_, tr("Folder for the lesson slides"));
         if (!folder.isEmpty()) window_->exportLessonSlides(folder);
-    }, tr("The six steps as numbered pictures with their words below (slide-01.png ...)"));
+    }, tr("The seven steps as 1920x1080 slides (slide-01.png ...) and slides.pdf: title, 3D view, cross-section, words"));
     add(lesson, tr("Export the &orbit as slides..."), {}, [this]() {
         const QString folder = QFileDialog::getExistingDirectory(window_, tr("Folder for the orbit slides"));
         if (!folder.isEmpty()) window_->exportOrbitSlides(folder);
-    }, tr("Eight orbit views as numbered pictures, each with that eye's statistics in words below"));
+    }, tr("Eight orbit views as 1920x1080 slides and slides.pdf, each with that eye's statistics in words"));
 }
 
 void WindowActions::writeWithDialog(const QString& title, const QString& name, const QString& filter,
