@@ -249,6 +249,8 @@ private:
     EyeStepTimes eyeStepTimes_;
     QTimer* sweepTimer_ = nullptr;
     std::vector<glm::dvec3> sweepFrames_;  // the animated sweep's eyes still to come
+    int sweptCluster_ = -1;                // what they sweep across
+    const ClusterScene* sweptScene_ = nullptr;
 };
 
 }  // namespace conescope

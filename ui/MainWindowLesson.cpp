@@ -1,28 +1,21 @@
 // The window's lesson: what each step shows (scene/LessonLayer.h says which layers, colours and
-// camera), the docks it raises, and the layers and colours put back when it ends.
+// camera), the docks it raises, and the layers and colours put back when it ends; its examples of each
+// outcome and the eye's sweep across the cull boundary.
 #include <algorithm>
-#include <cmath>
 #include <stdexcept>
 
 #include <QApplication>
-#include <QDir>
 #include <QDockWidget>
 #include <QStatusBar>
 #include <QTimer>
-
-#include <vtkImageData.h>
 
 #include "CrossSectionView.h"
 #include "LessonView.h"
 #include "MainWindow.h"
 #include "ObserverView.h"
 #include "ReplayPlayer.h"
-#include "Slides.h"
-#include "core/CrossSection.h"
 #include "core/EyeSweep.h"
 #include "core/LessonExamples.h"
-#include "scene/CrossSectionScene.h"
-#include "scene/SceneRendering.h"
 
 namespace conescope {
 
@@ -163,6 +156,8 @@ void MainWindow::toggleEyeSweep(size_t frames, int milliseconds) {
     if (!sweepTimer_) {
         sweepTimer_ = new QTimer(this);
         connect(sweepTimer_, &QTimer::timeout, this, [this]() {
+            // Another cluster or another scene: the sweep's eyes were for the one before.
+            if (session_.pickedCluster() != sweptCluster_ || session_.scene() != sweptScene_) sweepFrames_.clear();
             if (sweepFrames_.empty()) {
                 sweepTimer_->stop();
                 lessonView_->showSweeping(false);
@@ -188,167 +183,13 @@ void MainWindow::toggleEyeSweep(size_t frames, int milliseconds) {
         return;
     }
     if (session_.lessonStep() < 5) showLessonStep(5);
+    sweptCluster_ = session_.pickedCluster();
+    sweptScene_ = session_.scene();
     lessonView_->showSweeping(true);
     sweepTimer_->start(milliseconds);
 }
 
 bool MainWindow::eyeSweepRunning() const { return sweepTimer_ && sweepTimer_->isActive(); }
-
-// --- Slides -----------------------------------------------------------------------------------------
-
-QImage MainWindow::renderedView(const QSize& size, const std::optional<CameraPlacement>& camera) {
-    RenderOptions options;
-    options.width = size.width();
-    options.height = size.height();
-    if (camera) {
-        options.cameraPosition = camera->position;
-        options.focalPoint = camera->focalPoint;
-        options.viewUp = camera->viewUp;
-    } else {
-        // The mesh and the eye, from where the window's first view looks.
-        const Aabb box = session_.preparedMesh()->box;
-        const glm::dvec3 eye = session_.eyePosition();
-        const Aabb both = session_.settings().orthographic ? box : computeAabb({box.min, box.max, glm::vec3(eye)});
-        const glm::dvec3 centre(both.center());
-        options.focalPoint = centre;
-        options.cameraPosition = centre + observerDirection(glm::dvec3(box.center()), eye, false) *
-                                              (std::max(double(both.halfDiagonal()), 1e-9) / std::sin(glm::radians(options.viewAngleDegrees / 2.0)));
-    }
-    // Text half as large again as on a screen (the legend, the test's labels), read from the back of a
-    // room; the legend sized for the picture, then for the view again.
-    constexpr double slideTextRatio = 1.5;
-    options.dpi = int(72.0 * slideTextRatio);
-    session_.fitLegend(int(size.height() / slideTextRatio), slideTextRatio);
-    const vtkSmartPointer<vtkImageData> image = renderToImage(*session_.scene(), options);
-    session_.fitLegend(view_->height(), view_->devicePixelRatioF());
-    return imageOf(image);
-}
-
-Slide MainWindow::lessonSlide(int step) {
-    const Lesson* shown = session_.lesson();
-    if (!shown || step < 1 || step > kLessonStepCount) throw std::runtime_error("no lesson step to make a slide of");
-    const Lesson lesson = *shown;
-    Slide slide;
-    slide.words.title = tr("%1/%2  %3").arg(step).arg(kLessonStepCount).arg(QString::fromStdString(lesson.steps[size_t(step - 1)].title));
-    slide.words.subtitle = tr("%1, cluster %2, %3, %4 cone")
-                               .arg(QString::fromStdString(session_.preparedMesh()->name))
-                               .arg(lesson.cluster)
-                               .arg(QString::fromStdString(testInWords(lesson.test)), QString::fromStdString(toString(lesson.coneMethod)));
-    slide.words.text = QString::fromStdString(lesson.steps[size_t(step - 1)].text);
-    // Side by side, both clusters' figures: the culled one first, as the words tell them.
-    std::vector<Lesson> sections{lesson};
-    if (step == kSideBySideStep && lesson.partner) {
-        Lesson partner = makeLesson(*session_.preparedMesh(), *session_.clusters(), lesson.partner->cluster, lesson.eye, lesson.test);
-        if (partner.why.culled) sections.insert(sections.begin(), std::move(partner));
-        else sections.push_back(std::move(partner));
-    }
-    slide.layout = layoutSlide(slide.words, int(sections.size()));
-    RenderOptions angle;
-    slide.picture = renderedView(slide.layout.picture.size(), lessonCamera(lesson, step, angle.viewAngleDegrees));
-    for (size_t i = 0; i < sections.size(); ++i) {
-        CrossSectionScene figure;
-        figure.show(crossSectionOf(sections[i]));
-        const QSize size = slide.layout.figures[i].size();
-        slide.figures.push_back(imageOf(renderCrossSectionToImage(figure, size.width(), size.height())));
-    }
-    return slide;
-}
-
-bool MainWindow::writeSlides(const std::vector<Slide>& slides, const QString& folder, const QString& title) {
-    if (!QDir().mkpath(folder)) {
-        showError(title, tr("%1: cannot make the folder").arg(folder));
-        return false;
-    }
-    for (size_t i = 0; i < slides.size(); ++i) {
-        const QString path = QDir(folder).filePath(slideFileName(int(i + 1)));
-        if (!slideImage(slides[i]).save(path, "PNG")) {
-            showError(title, tr("%1: cannot write the PNG").arg(path));
-            return false;
-        }
-    }
-    try {
-        writeSlidesPdf(slides, QDir(folder).filePath(slidesPdfName()));
-    } catch (const std::exception& error) {
-        showError(title, QString::fromStdString(error.what()));
-        return false;
-    }
-    statusBar()->showMessage(tr("Wrote %1 slides and %2 to %3").arg(slides.size()).arg(slidesPdfName(), folder), 6000);
-    return true;
-}
-
-bool MainWindow::exportLessonSlides(const QString& folder) {
-    const QString title = tr("Cannot export the lesson slides");
-    if (!QDir().mkpath(folder)) {
-        showError(title, tr("%1: cannot make the folder").arg(folder));
-        return false;
-    }
-    const int before = session_.lessonStep();
-    std::vector<Slide> slides;
-    QString failure;
-    for (int step = 1; step <= kLessonStepCount && failure.isEmpty(); ++step) {
-        if (!showLessonStep(step) || !session_.lesson()) {
-            failure = tr("Pick a cluster first (or open a mesh): a lesson is about one cluster.");
-            break;
-        }
-        QApplication::processEvents();
-        try {
-            slides.push_back(lessonSlide(step));
-        } catch (const std::exception& error) {
-            failure = QString::fromStdString(error.what());
-        }
-    }
-    showLessonStep(before);
-    stageLessonStep(session_.lessonStep());
-    if (!failure.isEmpty()) {
-        showError(title, failure);
-        return false;
-    }
-    return writeSlides(slides, folder, title);
-}
-
-bool MainWindow::exportOrbitSlides(const QString& folder) {
-    const QString title = tr("Cannot export the orbit slides");
-    if (!session_.clusters() || !session_.preparedMesh()) {
-        showError(title, tr("Open a mesh first."));
-        return false;
-    }
-    if (!QDir().mkpath(folder)) {
-        showError(title, tr("%1: cannot make the folder").arg(folder));
-        return false;
-    }
-    const glm::dvec3 eyeBefore = session_.eyePosition();
-    const long stepBefore = session_.orbitStep();
-    const long views = long(session_.settings().views);
-    const long count = std::min(views, 8L);
-    std::vector<Slide> slides;
-    QString failure;
-    for (long i = 0; i < count; ++i) {
-        const long view = i * views / count;
-        session_.moveEyeToOrbitView(view);
-        waitUntilIdle();
-        const EyeMeasurement* measured = session_.measurement();
-        if (!measured) {
-            failure = session_.eyeError();
-            break;
-        }
-        Slide slide;
-        slide.words.title = tr("Orbit view %1 of %2").arg(view + 1).arg(views);
-        slide.words.subtitle = tr("%1, %2 clusters, %3")
-                                   .arg(QString::fromStdString(session_.preparedMesh()->name))
-                                   .arg(session_.clusters()->bounds.count())
-                                   .arg(QString::fromStdString(testInWords(measured->statistics.test)));
-        slide.words.text = QString::fromStdString(viewInWords(measured->statistics, session_.clusters()->bounds.count()));
-        slide.layout = layoutSlide(slide.words, 0);
-        slide.picture = renderedView(slide.layout.picture.size(), std::nullopt);
-        slides.push_back(std::move(slide));
-    }
-    session_.moveEye(eyeBefore, stepBefore);
-    if (!failure.isEmpty()) {
-        showError(title, failure);
-        return false;
-    }
-    return writeSlides(slides, folder, title);
-}
 
 bool MainWindow::playReplayFile(const QString& path) {
     std::vector<ReplayStep> steps;
