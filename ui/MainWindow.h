@@ -238,8 +238,7 @@ private:
     // What the window showed before the lesson, put back when it ends.
     std::optional<std::map<Layer, bool>> layersBeforeLesson_;
     FaceColoring coloringBeforeLesson_ = FaceColoring::CullDecision;
-    std::vector<QDockWidget*> docksHiddenByLesson_;
-    int columnBeforeLesson_ = 0;  // the right column's width a lesson on a narrow window widened
+    QByteArray docksBeforeLesson_;  // saveState(): which docks were shown, where, how large
     std::array<QDockWidget*, 4> sideDocks_{};  // settings, eye, statistics, picked cluster
     bool docksSized_ = false;
     StatusLine* statusLine_ = nullptr;

@@ -51,11 +51,8 @@ void MainWindow::stageLessonStep(int step) {
         if (layersBeforeLesson_) {
             for (const auto& [layer, shown] : *layersBeforeLesson_) setLayerVisible(layer, shown);
             session_.setFaceColoring(coloringBeforeLesson_);
-            for (QDockWidget* dock : docksHiddenByLesson_) dock->show();
-            if (columnBeforeLesson_ > 0) resizeDocks({lessonDock_}, {columnBeforeLesson_}, Qt::Horizontal);
-            columnBeforeLesson_ = 0;
-            if (!docksHiddenByLesson_.empty()) plotsDock_->raise();
-            docksHiddenByLesson_.clear();
+            // The docks where they were, as large as they were.
+            restoreState(docksBeforeLesson_);
             layersBeforeLesson_.reset();
         }
         showCaption({});
@@ -66,18 +63,13 @@ void MainWindow::stageLessonStep(int step) {
         // The plots and the eye's view make room for the lesson's words and figures (a small screen has
         // none to spare); on a window narrower than a full-HD screen the settings and the eye panel too,
         // and the words get a wider column. All come back when it ends.
+        docksBeforeLesson_ = saveState();
         const bool narrow = width() < 1600;
         for (QDockWidget* dock : findChildren<QDockWidget*>()) {
             const Qt::DockWidgetArea area = dockWidgetArea(dock);
-            if (!dock->isHidden() && (area == Qt::BottomDockWidgetArea || (narrow && area == Qt::LeftDockWidgetArea))) {
-                docksHiddenByLesson_.push_back(dock);
-                dock->hide();
-            }
+            if (area == Qt::BottomDockWidgetArea || (narrow && area == Qt::LeftDockWidgetArea)) dock->hide();
         }
-        if (narrow) {
-            columnBeforeLesson_ = lessonDock_->width();
-            resizeDocks({lessonDock_}, {std::max(400, width() * 2 / 5)}, Qt::Horizontal);
-        }
+        if (narrow) resizeDocks({lessonDock_}, {std::max(400, width() * 2 / 5)}, Qt::Horizontal);
         layersBeforeLesson_.emplace();
         for (Layer layer : allLayers()) (*layersBeforeLesson_)[layer] = layerVisible(layer);
         coloringBeforeLesson_ = session_.faceColoring();

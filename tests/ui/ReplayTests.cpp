@@ -248,7 +248,7 @@ private slots:
         QVERIFY(explanation["steps"][5]["text"].get<std::string>().find("lost to the test") != std::string::npos);
     }
 
-    // Issue 41, done when: the lesson's slides are 1920x1080 PNGs and a PDF of 16:9 pages at
+    // The lesson's slides are 1920x1080 PNGs and a PDF of 16:9 pages at
     // QT_SCALE_FACTOR 1 and 2 alike (they are laid out and rendered in slide pixels, not the screen's),
     // and the eye's sweep writes a slide at every frame.
     void slidesAreFullHdAtScaleOneAndTwo() {

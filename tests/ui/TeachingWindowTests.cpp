@@ -1,4 +1,4 @@
-// Teaching with the window (issue 41): examples of each outcome in one click, the eye swept across the
+// Teaching with the window: examples of each outcome in one click, the eye swept across the
 // cull boundary with the words following it, slides a class can project (1920x1080 PNGs and a 16:9
 // PDF), a lesson that fits a 1280x720 projector with Next and Back standing still, a first view that
 // shows culled clusters, and words for every choice and every statistics row; the README's keys are
