@@ -33,6 +33,12 @@ CrossSectionView::CrossSectionView(QWidget* parent) : QWidget(parent) {
     view_->installEventFilter(this);
     scene_.setCaptionVisible(false);
     scene_.addTo(renderer_);
+    // The title and the caption as words around the picture, which then holds only the figure.
+    title_ = new QLabel(this);
+    title_->setWordWrap(true);
+    QFont bold = title_->font();
+    bold.setBold(true);
+    title_->setFont(bold);
     caption_ = new QLabel(this);
     caption_->setWordWrap(true);
     caption_->setTextInteractionFlags(Qt::TextSelectableByMouse);
@@ -51,6 +57,7 @@ CrossSectionView::CrossSectionView(QWidget* parent) : QWidget(parent) {
     caption_->setWhatsThis(help);
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(2, 2, 2, 2);
+    layout->addWidget(title_);
     layout->addWidget(view_, 1);
     layout->addWidget(caption_);
 }
@@ -65,10 +72,12 @@ CrossSection crossSectionOf(const Session& session) {
 void CrossSectionView::showLesson(const Session& session) {
     if (!session.lesson()) {
         scene_.show(std::nullopt);
+        title_->clear();
         caption_->setText(tr("Pick a cluster to see its normals, its cone and the view vector in one plane."));
     } else {
         const CrossSection section = crossSectionOf(session);
         scene_.show(section);
+        title_->setText(QString::fromStdString(section.title));
         caption_->setText(QString::fromStdString(section.caption));
     }
     render();

@@ -1,6 +1,6 @@
 // The cross-section dock: seed 000's figure for the picked cluster and the current eye, in the plane
 // of the cone axis V1 and the view vector v, true to the shown test (core crossSectionOf of the
-// session's lesson, drawn by scene/CrossSectionScene), its caption as text below it. Also writes the
+// session's lesson, drawn by scene/CrossSectionScene), its title and caption as text around it. Also writes the
 // figure as a PNG with a JSON of what it drew beside it.
 #pragma once
 
@@ -37,6 +37,7 @@ private:
     void fit();
 
     QVTKOpenGLNativeWidget* view_ = nullptr;
+    QLabel* title_ = nullptr;
     QLabel* caption_ = nullptr;
     vtkSmartPointer<vtkRenderer> renderer_;
     CrossSectionScene scene_;

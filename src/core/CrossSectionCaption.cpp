@@ -97,9 +97,13 @@ std::string regionSentence(const Lesson& lesson, const CrossSection& section) {
             const std::string where = section.orthographic ? "asked for every direction d in the page"
                                                            : "asked from eyes on the circle through the eye around the cluster's centre, d = " +
                                                                  number(lesson.why.distance) + " away";
+            std::string spans;
+            for (const AngleRange& range : section.cullRegion)
+                spans += (spans.empty() ? " (" : ", ") + angle(range[0]) + " to " + angle(range[1]);
+            if (!spans.empty()) spans += " from V1)";
             if (lesson.test == CullTest::Oracle)
-                return "Blue band: the directions " + v + " to the centre from which every face turns away, " + where + ". ";
-            return "Blue band: where the record's own rule culls (" + ownRecordRule(lesson.test) + "), " + where +
+                return "Blue band: the directions " + v + " to the centre from which every face turns away" + spans + ", " + where + ". ";
+            return "Blue band: where the record's own rule culls" + spans + ", " + where + "; its rule: " + ownRecordRule(lesson.test) +
                    ". The green cone is the one the other tests use; the record stores its own. ";
         }
     }

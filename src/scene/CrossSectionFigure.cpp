@@ -34,7 +34,7 @@ constexpr double viewTip = 1.44;                   // v and the corner vectors c
 constexpr double arcRadius = 1.52, outerArcRadius = 1.62;
 constexpr double axisTip = 1.72;
 constexpr double alphaRadius = 0.42;
-constexpr double halfWidth = 1.95, top = 1.85;     // with room for labels around
+constexpr double halfWidth = 1.75, top = 1.82;     // with room for labels around
 
 glm::dvec2 direction(double angle) { return {std::sin(angle), std::cos(angle)}; }
 std::string angleText(double radians) { return lessontext::degrees(glm::degrees(radians)); }
@@ -91,7 +91,7 @@ struct Pen {
         const glm::dvec2 base = b - along * std::min(head, 0.6 * glm::length(b - a));
         const std::vector<glm::dvec2> shaft{a, base + along * (0.3 * head)};
         if (dashedShaft)
-            Pen{figure, {0.0, 0.0}, 1.0, unit}.dashed(shaft, colour, width);
+            Pen{figure, {0.0, 0.0}, 1.0, unit, std::nullopt}.dashed(shaft, colour, width);
         else
             figure.shapes.push_back({shaft, false, colour, width * unit});
         figure.shapes.push_back({{b, base + across * wing, base - across * wing}, true, colour, 1.0});
@@ -106,8 +106,9 @@ struct Pen {
         }
         figure.shapes.push_back({std::move(corners), true, colour, 1.0});
     }
+    std::optional<PixelBox> frame;  // labels stay in it if they can
     void label(const std::string& text, const glm::dvec2& anchor, const glm::dvec2& toward, const Rgb& colour) const {
-        figure.labels.push_back({text, at(anchor), toward, colour});
+        figure.labels.push_back({text, at(anchor), toward, colour, frame});
     }
 };
 
@@ -215,11 +216,12 @@ void diagram(const Pen& pen, const CrossSection& section, double bottom) {
     }
     if (cone)
         for (double side : {-1.0, 1.0}) pen.line({{0.0, 0.0}, (barsTo + 0.04) * direction(side * section.alpha)}, coneGreen, 3.0);
-    // V1 (dashed, so that normals along it still show), the normals, the octagon's edges.
+    // V1 (dashed, so that normals along it still show), the normals.
     pen.arrow({0.0, 0.0}, {0.0, axisTip}, darkRed, 2.0, true);
-    if (section.rule == CullRegionRule::Octagon && section.hasRegion())
-        for (int k = 0; k < 2; ++k) pen.arrow({0.0, 0.0}, 0.8 * direction(section.boundingEdgeAngles[k]), gold, 2.0);
     for (double a : section.normalAngles) pen.line({{0.0, 0.0}, direction(a)}, SceneColours::lessonNormal, 1.5);
+    // The two edges over the normals: the bars outside the circle still show every normal.
+    if (section.rule == CullRegionRule::Octagon && section.hasRegion())
+        for (int k = 0; k < 2; ++k) pen.arrow({0.0, 0.0}, 0.8 * direction(section.boundingEdgeAngles[k]), gold, 2.5);
     if (cone) pen.line(arc(alphaRadius, -section.alpha, 0.0), coneGreen, 2.5);
     // The view vectors: the corners' (or vertices') with the tightest as v, else v alone.
     if (!section.pointAngles.empty()) {
@@ -299,7 +301,7 @@ void inset(const Pen& pen, const CrossSection& section, const PixelBox& frame) {
         for (size_t k = 1; k + 1 < inside.size(); ++k) eyes.insert(eyes.end(), {inside[0], inside[k], inside[k + 1]});
     }
     if (!eyes.empty()) pen.figure.shapes.push_back({eyes, true, paleBlue, 1.0, true});
-    const Pen screen{pen.figure, {0.0, 0.0}, 1.0, pen.unit};
+    const Pen screen{pen.figure, {0.0, 0.0}, 1.0, pen.unit, std::nullopt};
     screen.line({{frame.x0, frame.y0}, {frame.x1, frame.y0}, {frame.x1, frame.y1}, {frame.x0, frame.y1}, {frame.x0, frame.y0}}, frameGrey, 1.0);
     const double toPixels = pen.scale;
     if (place.sectionRadius * toPixels > 1.0) pen.line(arc(place.sectionRadius, -pi, pi, place.centre), sphereGrey, 1.5);
@@ -323,7 +325,7 @@ void inset(const Pen& pen, const CrossSection& section, const PixelBox& frame) {
             const double arcLength = std::max(0.3 * d, 28.0 * pen.unit / toPixels);
             const double base = std::atan2(along.x, along.y);
             pen.line(arc(arcLength, base, base - place.spread, place.eye), blueInk, 2.0);
-            pen.label("asin(r/d) = " + angleText(place.spread), place.eye + arcLength * direction(base - 0.5 * place.spread),
+            pen.label("asin(r/d)", place.eye + arcLength * direction(base - 0.5 * place.spread),
                       direction(base - 0.5 * place.spread - pi / 2), blueInk);
         }
     }
@@ -350,8 +352,8 @@ CrossSectionFigure drawCrossSection(const CrossSection& section, const PixelBox&
     const bool withInset = section.place.shown;
     const InsetContent content = withInset ? insetBounds(section.place) : InsetContent{};
     const glm::dvec2 contentSize = glm::max(content.high - content.low, glm::dvec2(1e-12));
-    const double aspect = std::clamp(contentSize.x / contentSize.y, 0.7, 1.5);
-    const double insetHeight = 0.8 * std::min(diagramHeight, 3.0), insetWidth = aspect * insetHeight, gap = 0.2;
+    const double aspect = std::clamp(contentSize.x / contentSize.y, 0.7, 1.3);
+    const double insetHeight = 0.65 * std::min(diagramHeight, 3.0), insetWidth = aspect * insetHeight, gap = 0.15;
     // Side by side or one above the other, whichever draws the diagram larger.
     const double byWidth = withInset ? std::min(area.width() / (diagramWidth + gap + insetWidth), area.height() / std::max(diagramHeight, insetHeight))
                                      : std::min(area.width() / diagramWidth, area.height() / diagramHeight);
@@ -365,7 +367,7 @@ CrossSectionFigure drawCrossSection(const CrossSection& section, const PixelBox&
     // The diagram's origin (the Gauss sphere's centre) in pixels.
     glm::dvec2 diagramCorner = corner + (sideBySide ? glm::dvec2(0.0, 0.5 * scale * (total.y - diagramHeight))
                                                     : glm::dvec2(0.5 * scale * (total.x - diagramWidth), scale * (total.y - diagramHeight)));
-    const Pen pen{figure, diagramCorner + scale * glm::dvec2(halfWidth, -bottom), scale, unit};
+    const Pen pen{figure, diagramCorner + scale * glm::dvec2(halfWidth, -bottom), scale, unit, std::nullopt};
     diagram(pen, section, bottom);
     if (withInset) {
         const glm::dvec2 insetCorner = corner + (sideBySide ? glm::dvec2(scale * (diagramWidth + gap), 0.5 * scale * (total.y - insetHeight))
@@ -375,7 +377,7 @@ CrossSectionFigure drawCrossSection(const CrossSection& section, const PixelBox&
         const double fit = 0.84 * std::min(frame.width() / contentSize.x, frame.height() / contentSize.y);
         const glm::dvec2 middle = 0.5 * (content.low + content.high);
         const glm::dvec2 frameMiddle(0.5 * (frame.x0 + frame.x1), 0.5 * (frame.y0 + frame.y1));
-        inset(Pen{figure, frameMiddle - fit * middle, fit, unit}, section, frame);
+        inset(Pen{figure, frameMiddle - fit * middle, fit, unit, frame}, section, frame);
     }
     return figure;
 }

@@ -6,6 +6,7 @@
 // into actors and places the labels (LabelPlacement.h) where nothing is drawn.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,7 @@ struct FigureLabel {
     glm::dvec2 anchor{0.0};          // the point it names
     glm::dvec2 toward{0.0, 1.0};     // the side it would rather be on
     Rgb colour{0.0, 0.0, 0.0};
+    std::optional<PixelBox> within;  // where it should stay if it can (the small figure's frame)
 };
 
 struct CrossSectionFigure {

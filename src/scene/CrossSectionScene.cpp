@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include <vtkActor.h>
@@ -209,18 +210,21 @@ void CrossSectionScene::Impl::layOut(int dpi) {
     const double unit = ratio * std::clamp(shortSide / 480.0, 1.0, 2.0);
     const double margin = std::round(0.02 * std::min(width, height) + 4.0 * ratio);
     // The title along the top.
-    vtkSmartPointer<vtkTextProperty> property = fontOf(18.0 * textScale, ink, true);
-    const std::string title = section ? section->title : "Pick a cluster: its normals, cone and view vector appear here, in the plane of V1 and v.";
-    const std::string titleLines = wrapped(property, title, width - 2.0 * margin, dpi);
-    const std::array<int, 4> titleInk = inkBox(property, titleLines, dpi);
-    const double titleBottom = height - margin - (titleInk[3] - titleInk[2]);
-    addText(title, titleLines, property, {margin, titleBottom}, dpi);
+    double titleBottom = height - margin;
+    if (captionVisible || !section) {
+        const vtkSmartPointer<vtkTextProperty> property = fontOf(18.0 * textScale, ink, true);
+        const std::string title = section ? section->title : "Pick a cluster: its normals, cone and view vector appear here, in the plane of V1 and v.";
+        const std::string lines = wrapped(property, title, width - 2.0 * margin, dpi);
+        const std::array<int, 4> box = inkBox(property, lines, dpi);
+        titleBottom = height - margin - (box[3] - box[2]);
+        addText(title, lines, property, {margin, titleBottom}, dpi);
+    }
     if (!section) return;
     // The caption along the bottom.
     double captionTop = margin;
     std::optional<PixelBox> captionBox;
     if (captionVisible) {
-        property = fontOf(14.0 * textScale, ink, false);
+        const vtkSmartPointer<vtkTextProperty> property = fontOf(14.0 * textScale, ink, false);
         const std::string lines = wrapped(property, section->caption, width - 2.0 * margin, dpi);
         const std::array<int, 4> box = inkBox(property, lines, dpi);
         addText(section->caption, lines, property, {margin, margin}, dpi);
@@ -245,11 +249,19 @@ void CrossSectionScene::Impl::layOut(int dpi) {
     for (const FigureLabel& label : figure.labels) {
         bool placed = false;
         // Near what it names at full size first; smaller, or farther away on a leader, only when it must.
-        for (const auto& [shrink, reach] : std::vector<std::pair<double, double>>{{1.0, 0.12}, {0.85, 0.12}, {1.0, 0.25}, {0.85, 0.25}, {0.72, 0.25}, {1.0, 0.5}, {0.72, 0.5}}) {
-            property = fontOf(15.0 * textScale * shrink, label.colour, true);
+        // The small figure's labels inside its frame if they can be.
+        std::vector<std::tuple<double, double, bool>> tries;
+        for (bool framed : {true, false}) {
+            if (framed && !label.within) continue;
+            for (const auto& [shrink, reach] : std::vector<std::pair<double, double>>{{1.0, 0.12}, {0.85, 0.12}, {1.0, 0.25}, {0.85, 0.25}, {0.72, 0.25}, {1.0, 0.5}, {0.72, 0.5}})
+                tries.emplace_back(shrink, reach, framed);
+        }
+        for (const auto& [shrink, reach, framed] : tries) {
+            const vtkSmartPointer<vtkTextProperty> property = fontOf(15.0 * textScale * shrink, label.colour, true);
             const std::array<int, 4> box = inkBox(property, label.text, dpi);
             const glm::dvec2 size(box[1] - box[0], box[3] - box[2]);
-            const std::optional<LabelSpot> spot = placer.place(label.anchor, label.toward, size, reach * std::min(width, height));
+            const std::optional<LabelSpot> spot =
+                placer.place(label.anchor, label.toward, size, reach * std::min(width, height), framed ? label.within : std::nullopt);
             if (!spot) continue;
             addText(label.text, label.text, property, {spot->box.x0, spot->box.y0}, dpi);
             if (spot->leader) leaders.push_back({{spot->leaderFrom, spot->leaderTo}, false, label.colour, std::max(1.0, 0.75 * unit)});

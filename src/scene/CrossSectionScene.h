@@ -31,7 +31,7 @@ public:
     // Lays the picture out for width x height pixels at `dpi` (72 times the screen's pixel ratio:
     // text and lines that much larger): the figure, the caption wrapped to the width, the labels placed.
     void fitTo(int widthPixels, int heightPixels, int dpi = 72);
-    // Hidden where the caption is shown as words beside the picture.
+    // Without the title and the caption, where they are shown as words beside the picture.
     void setCaptionVisible(bool visible);
     // Without any text: the shapes alone (to check that no label lies on one).
     void setTextVisible(bool visible);

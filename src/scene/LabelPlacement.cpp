@@ -85,8 +85,8 @@ void LabelPlacer::refresh() const {
     stale_ = false;
 }
 
-bool LabelPlacer::free(const PixelBox& box) const {
-    if (box.x0 < bounds_.x0 || box.y0 < bounds_.y0 || box.x1 > bounds_.x1 || box.y1 > bounds_.y1) return false;
+bool LabelPlacer::free(const PixelBox& box, const PixelBox& bounds) const {
+    if (box.x0 < bounds.x0 || box.y0 < bounds.y0 || box.x1 > bounds.x1 || box.y1 > bounds.y1) return false;
     refresh();
     const int x0 = std::clamp(int(std::floor(box.x0 - padding_)), 0, width_), x1 = std::clamp(int(std::ceil(box.x1 + padding_)), 0, width_);
     const int y0 = std::clamp(int(std::floor(box.y0 - padding_)), 0, height_), y1 = std::clamp(int(std::ceil(box.y1 + padding_)), 0, height_);
@@ -108,7 +108,11 @@ bool LabelPlacer::leaderClear(const glm::dvec2& from, const glm::dvec2& to) cons
     return true;
 }
 
-std::optional<LabelSpot> LabelPlacer::place(const glm::dvec2& anchor, const glm::dvec2& toward, const glm::dvec2& size, double reach) {
+std::optional<LabelSpot> LabelPlacer::place(const glm::dvec2& anchor, const glm::dvec2& toward, const glm::dvec2& size, double reach,
+                                            const std::optional<PixelBox>& within) {
+    PixelBox bounds = bounds_;
+    if (within)
+        bounds = {std::max(bounds.x0, within->x0), std::max(bounds.y0, within->y0), std::min(bounds.x1, within->x1), std::min(bounds.y1, within->y1)};
     // 24 sides, the preferred one first, then the ones nearest to it.
     const double preferred = glm::length(toward) > 0.0 ? std::atan2(toward.y, toward.x) : pi / 2.0;
     std::vector<glm::dvec2> sides;
@@ -125,7 +129,7 @@ std::optional<LabelSpot> LabelPlacer::place(const glm::dvec2& anchor, const glm:
             const double big = std::max(std::abs(side.x), std::abs(side.y));
             const glm::dvec2 centre = anchor + side * gap + glm::dvec2(0.5 * size.x * side.x / big, 0.5 * size.y * side.y / big);
             const PixelBox box{centre.x - 0.5 * size.x, centre.y - 0.5 * size.y, centre.x + 0.5 * size.x, centre.y + 0.5 * size.y};
-            if (!free(box)) continue;
+            if (!free(box, bounds)) continue;
             LabelSpot spot;
             spot.box = box;
             const glm::dvec2 nearest(std::clamp(anchor.x, box.x0, box.x1), std::clamp(anchor.y, box.y0, box.y1));

@@ -38,11 +38,13 @@ public:
     void blockBox(const PixelBox& box);
 
     // The first free spot for a box of `size` near `anchor`, on the side `toward` first, no farther
-    // than `reach` pixels; the spot (and its leader) is then blocked. Nothing when none is free.
-    std::optional<LabelSpot> place(const glm::dvec2& anchor, const glm::dvec2& toward, const glm::dvec2& size, double reach);
+    // than `reach` pixels and inside `within` if given; the spot (and its leader) is then blocked.
+    // Nothing when none is free.
+    std::optional<LabelSpot> place(const glm::dvec2& anchor, const glm::dvec2& toward, const glm::dvec2& size, double reach,
+                                   const std::optional<PixelBox>& within = std::nullopt);
 
 private:
-    bool free(const PixelBox& box) const;
+    bool free(const PixelBox& box, const PixelBox& bounds) const;
     bool leaderClear(const glm::dvec2& from, const glm::dvec2& to) const;
     void mark(int x, int y);
     void markDisc(const glm::dvec2& centre, double radius);

@@ -12,6 +12,7 @@
 #include "TestMeshes.h"
 #include "core/CrossSection.h"
 #include "core/Lesson.h"
+#include "core/LessonText.h"
 #include "core/RecordTests.h"
 
 using namespace conescope;
@@ -230,4 +231,46 @@ TEST(CrossSection, ThePlaceHoldsTheEyeAndThePointVRunsTo) {
         }
         if (std::abs(lesson.why.margin) > 1e-3) EXPECT_EQ(among, lesson.why.culled) << toString(test);
     }
+}
+
+// The caption and the lesson's steps say the same: alpha, B, asin(r/d), the corners that pass, v's
+// angle and whether the test holds, in the same words and digits.
+TEST(CrossSection, TheCaptionSaysWhatTheLessonSays) {
+    using lessontext::degrees;
+    const Clusters torus = clustersOf(testmesh::torus(1.0, 0.35, 48, 24), "torus", Builder::Meshlet, 24);
+    const CullingInput input = cullingInput(torus.mesh, torus.clusters);
+    std::mt19937_64 random(9);
+    size_t checked = 0;
+    for (int trial = 0; trial < 8; ++trial) {
+        const Eye eye = trial % 4 == 3 ? Eye::orthographicAlong(randomUnit(random)) : Eye::perspective(randomUnit(random) * (1.5 + trial));
+        for (uint32_t c = 0; c < torus.clusters.bounds.count(); c += 6)
+            for (CullTest test : {CullTest::Apex, CullTest::Sphere, CullTest::Aabb, CullTest::Octagon}) {
+                const Lesson lesson = makeLesson(torus.mesh, torus.clusters, c, eye, test);
+                if (!lesson.why.cullable || std::isnan(lesson.why.margin)) continue;
+                const CrossSection s = crossSectionOf(lesson, input);
+                const std::string& caption = s.caption;
+                const std::string& step3 = lesson.steps[2].text;
+                const std::string& step5 = lesson.steps[4].text;
+                auto both = [&](const std::string& words, const std::string& step) {
+                    EXPECT_NE(caption.find(words), std::string::npos) << words << " | " << caption;
+                    EXPECT_NE(step.find(words), std::string::npos) << words << " | " << step;
+                };
+                const std::string verdict = lesson.why.margin > 0.0 ? "so the test holds" : "so the test fails";
+                if (s.inRegion(s.viewAngle) == lesson.why.culled) both(verdict, step5);
+                both("\u03b1 = " + degrees(lesson.why.halfAngleDegrees), step3);
+                both(degrees(lesson.why.angleBDegrees), step3);
+                if (test == CullTest::Apex && !eye.orthographic) {
+                    both(degrees(lesson.why.angleBDegrees) + " of V1", step5);
+                    both("v is " + degrees(glm::degrees(std::acos(lesson.why.viewDotAxis))) + " from V1", step5);
+                }
+                if (test == CullTest::Sphere && !eye.orthographic) both(" = " + degrees(lesson.why.sphereAngleDegrees), step5);
+                if (test == CullTest::Aabb && !eye.orthographic) {
+                    EXPECT_NE(step5.find("Here " + std::to_string(lesson.why.pointsBack) + " of 8 pass"), std::string::npos) << step5;
+                    const std::string passing = lesson.why.pointsBack == 8 ? "All 8 do" : std::to_string(lesson.why.pointsBack) + " of 8 do";
+                    EXPECT_NE(caption.find(passing), std::string::npos) << caption;
+                }
+                ++checked;
+            }
+    }
+    EXPECT_GT(checked, 40u);
 }

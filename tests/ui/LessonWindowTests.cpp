@@ -100,6 +100,15 @@ private slots:
             saveWindowPicture(QStringLiteral("lesson-step%1.png").arg(step));
         }
         QVERIFY(window_->crossSectionView()->isVisible());
+        // The dock's figure as drawn: labels that each have a place of their own.
+        const std::vector<CrossSectionLabel>& drawn = window_->crossSectionView()->drawnLabels();
+        QVERIFY(drawn.size() >= 3);
+        for (size_t a = 0; a < drawn.size(); ++a)
+            for (size_t b = a + 1; b < drawn.size(); ++b) {
+                const auto& p = drawn[a].box;
+                const auto& q = drawn[b].box;
+                QVERIFY2(!(p[0] < q[2] && q[0] < p[2] && p[1] < q[3] && q[1] < p[3]), (drawn[a].text + " / " + drawn[b].text).c_str());
+            }
         QCOMPARE(window_->crossSectionView()->caption(), 
                  QString::fromStdString(crossSectionOf(coreLesson(*window_), cullingInput(*window_->preparedMesh(), *window_->clusters())).caption));
         QTest::keyClick(window_.get(), Qt::Key_PageDown);  // past the last step: stays
