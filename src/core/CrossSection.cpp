@@ -167,7 +167,7 @@ void pointsOf(const Lesson& lesson, CrossSection& section) {
     if (section.test == CullTest::Vertices) points = why.vertices;
     double lowest = 2.0;
     for (size_t i = 0; i < points.size(); ++i) {
-        const glm::dvec3 view = lesson.eye.orthographic ? lesson.eye.direction : points[i] - lesson.eye.position;
+        const glm::dvec3 view = points[i] - lesson.eye.position;
         const double length = glm::length(view);
         const double along = length > 0.0 ? glm::dot(view, why.axis) / length : 0.0;
         section.pointAngles.push_back(length > 0.0 ? turnedAngle(view, section.up, section.right) : 0.0);
@@ -203,7 +203,8 @@ CrossSection crossSectionOf(const Lesson& lesson, const CullingInput& input) {
     section.viewAngle = glm::length(why.view) > 0.0 ? turnedAngle(why.view, section.up, section.right) : 0.0;
     section.culls = why.culled;
     const CullTest test = lesson.test;
-    if (test == CullTest::Aabb || test == CullTest::AabbFast || test == CullTest::Vertices) pointsOf(lesson, section);
+    // From a far eye every point's view vector is d: the box and vertex tests are d's alone.
+    if ((test == CullTest::Aabb || test == CullTest::AabbFast || test == CullTest::Vertices) && !lesson.eye.orthographic) pointsOf(lesson, section);
     if (test == CullTest::Oracle || readsOwnRecord(test)) {
         // The rule is the record's (or every face's): ask it from eyes on the circle through this one.
         section.rule = CullRegionRule::Asked;

@@ -57,8 +57,8 @@ struct CrossSection {
     bool cone = false;                // a cone narrower than a half-sphere holds the normals
     double alpha = 0.0, angleB = 0.0;
     double viewAngle = 0.0;           // v's angle from V1 (>= 0; for the box and vertex tests the tightest point's)
-    // The box and vertex tests: each point's view vector (turned into the page like the normals) and
-    // the one with the lowest v.V1, which the verdict turns on.
+    // The box and vertex tests from a near eye: each point's view vector (turned into the page like
+    // the normals) and the one with the lowest v.V1, which the verdict turns on.
     std::vector<double> pointAngles;
     size_t tightestPoint = 0;
     // The view vectors in the page from which the test culls, and how they are known.

@@ -237,7 +237,7 @@ void diagram(const Pen& pen, const CrossSection& section, double bottom) {
     // Labels, the most needed first.
     pen.label(cone ? "V1" : "axis", {0.0, axisTip}, {0.0, 1.0}, darkRed);
     const std::string lowest = section.test == CullTest::Vertices ? ": lowest vertex" : ": lowest corner";
-    pen.label(v + (section.pointAngles.empty() || section.orthographic ? "" : lowest), viewTip * direction(section.viewAngle),
+    pen.label(v + (section.pointAngles.empty() ? "" : lowest), viewTip * direction(section.viewAngle),
               direction(section.viewAngle), tightFails ? failing : darkRed);
     if (cone) pen.label("\u03b1 = " + angleText(section.alpha), alphaRadius * direction(-section.alpha), direction(-section.alpha - pi / 2), coneGreen);
     if (section.rule == CullRegionRule::Octagon && section.hasRegion())
