@@ -234,7 +234,7 @@ void WindowActions::createLessonMenu() {
         tr("The lesson's steps and numbers as JSON"));
     add(lesson, tr("Save the &cross-section..."), {}, [this]() { writeWithDialog(tr("Save the cross-section"), QStringLiteral("cross-section.png"),
                                                                                 tr("PNG (*.png)"), &MainWindow::saveCrossSection); },
-        tr("Seed 000's figure of the picked cluster as a picture"));
+        tr("Seed 000's figure of the picked cluster as a picture, and beside it (X.json) what it drew"));
     add(lesson, tr("Export the lesson as &slides..."), {}, [this]() {
         const QString folder = QFileDialog::getExistingDirectory(window_, tr("Folder for the lesson slides"));
         if (!folder.isEmpty()) window_->exportLessonSlides(folder);

@@ -1,5 +1,6 @@
 #include "io/JsonWriter.h"
 
+#include <fstream>
 #include <stdexcept>
 
 namespace conescope {
@@ -88,6 +89,14 @@ void JsonWriter::key(std::string_view name) {
 void JsonWriter::value(const nlohmann::json& any) {
     beforeValue();
     serializer_.dump(any, true, false, kIndent, kIndent * unsigned(levels_.size()));
+}
+
+void writeJsonFile(const nlohmann::json& document, const std::string& path) {
+    std::ofstream out(path, std::ios::binary);
+    if (!out) throw std::runtime_error(path + ": cannot open for writing");
+    out << document.dump(2) << '\n';
+    out.close();
+    if (!out) throw std::runtime_error(path + ": write failed");
 }
 
 }  // namespace conescope

@@ -48,4 +48,8 @@ private:
     std::vector<Level> levels_;
 };
 
+// `document`.dump(2) and a newline into the file at `path`; throws std::runtime_error naming the
+// path when it cannot be written.
+void writeJsonFile(const nlohmann::json& document, const std::string& path);
+
 }  // namespace conescope

@@ -1,8 +1,8 @@
 #include "io/LessonIO.h"
 
+#include "io/JsonWriter.h"
+
 #include <cmath>
-#include <fstream>
-#include <stdexcept>
 
 namespace conescope {
 
@@ -32,12 +32,6 @@ nlohmann::json lessonToJson(const Lesson& lesson) {
             {"steps", steps}};
 }
 
-void writeLessonJson(const Lesson& lesson, const std::string& path) {
-    std::ofstream out(path, std::ios::binary);
-    if (!out) throw std::runtime_error(path + ": cannot open for writing");
-    out << lessonToJson(lesson).dump(2) << '\n';
-    out.close();
-    if (!out) throw std::runtime_error(path + ": write failed");
-}
+void writeLessonJson(const Lesson& lesson, const std::string& path) { writeJsonFile(lessonToJson(lesson), path); }
 
 }  // namespace conescope

@@ -5,102 +5,44 @@
 #include <filesystem>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include <vtkActor.h>
 #include <vtkCamera.h>
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
 #include <vtkCoordinate.h>
 #include <vtkImageData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
 #include <vtkRenderer.h>
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
+#include <vtkTextRenderer.h>
+#include <vtkUnsignedCharArray.h>
 
-#include "scene/SceneGeometry.h"
-#include "scene/SceneLayer.h"
+#include "scene/CrossSectionFigure.h"
+#include "scene/LabelPlacement.h"
 #include "scene/SceneRendering.h"
 
 namespace conescope {
 
 namespace {
 
-// Seed 000's figure: normals red, boundaries green, axis and view vector dark red, the perpendicular dark blue.
-constexpr Rgb boundaryGreen{0.05, 0.60, 0.10};
-constexpr Rgb darkRed{0.55, 0.00, 0.05};
-constexpr Rgb darkBlue{0.05, 0.10, 0.55};
-constexpr Rgb circleGrey{0.80, 0.80, 0.82};
-constexpr Rgb wedgeGreen{0.80, 0.94, 0.78};
-constexpr Rgb octagonGold{0.85, 0.60, 0.00};
 constexpr Rgb ink{0.10, 0.10, 0.12};
-// The figure's extent in the plane: the unit circle and the lines drawn a little past it.
-constexpr double figureLow = -1.30, figureHigh = 1.50, figureHalfWidth = 1.45;
-// Share of the picture's height the figure takes; the caption goes below.
-constexpr double figureShare = 0.72;
-
-glm::vec3 at(const glm::dvec2& p, double z = 0.0) { return glm::vec3(float(p.x), float(p.y), float(z)); }
-glm::dvec2 direction(double angle) { return {std::sin(angle), std::cos(angle)}; }
-
-GlyphGeometry lines(const std::vector<std::pair<glm::dvec2, glm::dvec2>>& segments) {
-    GlyphGeometry geometry;
-    for (const auto& [from, to] : segments) {
-        const int64_t first = int64_t(geometry.points.size());
-        geometry.points.push_back(at(from));
-        geometry.points.push_back(at(to));
-        geometry.addCell({first, first + 1}, 0);
-    }
-    return geometry;
-}
-
-// An arc of radius `radius` from angle `from` to `to` (angles from V1, clockwise to the right).
-GlyphGeometry arc(double radius, double from, double to) {
-    GlyphGeometry geometry;
-    constexpr int steps = 32;
-    for (int i = 0; i <= steps; ++i) geometry.points.push_back(at(radius * direction(from + (to - from) * i / steps)));
-    for (int i = 0; i < steps; ++i) geometry.addCell({i, i + 1}, 0);
-    return geometry;
-}
-
-// A filled sector from the origin, behind the lines.
-GlyphGeometry sector(double radius, double from, double to) {
-    GlyphGeometry geometry;
-    constexpr int steps = 48;
-    geometry.points.push_back(at({0.0, 0.0}, -0.02));
-    for (int i = 0; i <= steps; ++i) geometry.points.push_back(at(radius * direction(from + (to - from) * i / steps), -0.02));
-    for (int i = 1; i <= steps; ++i) geometry.addCell({0, i, i + 1}, 0);
-    return geometry;
-}
-
-// A filled arrowhead at `tip` pointing along `along`.
-GlyphGeometry arrowHead(const glm::dvec2& tip, const glm::dvec2& along) {
-    const glm::dvec2 d = glm::normalize(along), n(-d.y, d.x);
-    GlyphGeometry geometry;
-    geometry.points = {at(tip, 0.01), at(tip - 0.09 * d + 0.035 * n, 0.01), at(tip - 0.09 * d - 0.035 * n, 0.01)};
-    geometry.addCell({0, 1, 2}, 0);
-    return geometry;
-}
-
-vtkSmartPointer<vtkActor> flatActor(const Rgb& colour) {
-    auto actor = actorFor(plainMapper(emptyPolyData()));
-    setColour(actor, colour);
-    actor->GetProperty()->LightingOff();
-    return actor;
-}
-
-vtkSmartPointer<vtkActor> strokeActor(const Rgb& colour, double width) {
-    auto actor = lineActor(plainMapper(emptyPolyData()), width);
-    setColour(actor, colour);
-    return actor;
-}
-
 // VTK's own Arial has no Greek letters; Debian's DejaVu Sans (fonts-dejavu-core) has.
 const char* const greekFont = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
 const char* const greekBoldFont = "/usr/share/fonts/truetype/dejavu/DejaVuSans-Bold.ttf";
 
-vtkSmartPointer<vtkTextActor> textActor(int size, const Rgb& colour, bool bold = false) {
-    auto text = vtkSmartPointer<vtkTextActor>::New();
-    vtkTextProperty* property = text->GetTextProperty();
-    property->SetFontSize(size);
+// A new property for every text: VTK's font cache keeps the property it first met for a look
+// (vtkFreeTypeTools' lookup) and loads faces from it later, so one changed afterwards gives a text
+// another's font.
+vtkSmartPointer<vtkTextProperty> fontOf(double points, const Rgb& colour, bool bold) {
+    auto property = vtkSmartPointer<vtkTextProperty>::New();
+    property->SetFontSize(std::max(6, int(std::lround(points))));
     const char* font = bold ? greekBoldFont : greekFont;
     if (std::filesystem::exists(font)) {
         property->SetFontFamily(VTK_FONT_FILE);
@@ -108,189 +50,273 @@ vtkSmartPointer<vtkTextActor> textActor(int size, const Rgb& colour, bool bold =
     } else {
         property->SetFontFamilyToArial();
     }
-    property->SetColor(colour[0], colour[1], colour[2]);
     property->SetBold(bold);
-    text->PickableOff();
-    return text;
+    property->SetColor(colour[0], colour[1], colour[2]);
+    property->SetJustificationToLeft();
+    property->SetVerticalJustificationToBottom();
+    property->SetLineSpacing(1.1);
+    return property;
 }
 
-void placeLabel(vtkTextActor* label, const std::string& text, const glm::dvec2& where) {
-    label->SetInput(text.c_str());
-    label->GetPositionCoordinate()->SetCoordinateSystemToWorld();
-    label->GetPositionCoordinate()->SetValue(where.x, where.y, 0.05);
-    label->SetVisibility(!text.empty());
+// The ink's box of `text` drawn at (0, 0): x0, x1, y0, y1 in pixels.
+std::array<int, 4> inkBox(vtkTextProperty* property, const std::string& text, int dpi) {
+    std::array<int, 4> box{0, 0, 0, 0};
+    if (!text.empty()) vtkTextRenderer::GetInstance()->GetBoundingBox(property, text, box.data(), dpi);
+    return box;
 }
 
-std::string degreesText(double radians) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.1f\u00b0", glm::degrees(radians));
-    return text;
-}
-
-// Words broken into lines of at most `width` characters (UTF-8 continuation bytes not counted).
-std::string wrapped(const std::string& text, size_t width) {
+// Words broken into lines no wider than `width` pixels.
+std::string wrapped(vtkTextProperty* property, const std::string& text, double width, int dpi) {
     std::istringstream words(text);
     std::string word, line, result;
-    auto length = [](const std::string& s) {
-        size_t n = 0;
-        for (unsigned char c : s) n += (c & 0xC0) != 0x80;
-        return n;
-    };
     while (words >> word) {
-        if (!line.empty() && length(line) + 1 + length(word) > width) {
+        const std::string longer = line.empty() ? word : line + " " + word;
+        const std::array<int, 4> box = inkBox(property, longer, dpi);
+        if (!line.empty() && box[1] - box[0] > width) {
             result += line + "\n";
-            line.clear();
+            line = word;
+        } else {
+            line = longer;
         }
-        line += (line.empty() ? "" : " ") + word;
     }
     return result + line;
+}
+
+// Shapes as cells of one polydata, each cell its colour, each shape a little above the one before.
+vtkSmartPointer<vtkPolyData> cellsOf(const std::vector<const FigureShape*>& shapes, size_t firstDepth) {
+    auto points = vtkSmartPointer<vtkPoints>::New();
+    auto cells = vtkSmartPointer<vtkCellArray>::New();
+    auto colours = vtkSmartPointer<vtkUnsignedCharArray>::New();
+    colours->SetNumberOfComponents(3);
+    auto addColour = [&colours](const Rgb& c) {
+        const unsigned char rgb[3] = {static_cast<unsigned char>(std::lround(255 * c[0])), static_cast<unsigned char>(std::lround(255 * c[1])),
+                                      static_cast<unsigned char>(std::lround(255 * c[2]))};
+        colours->InsertNextTypedTuple(rgb);
+    };
+    for (size_t s = 0; s < shapes.size(); ++s) {
+        const FigureShape& shape = *shapes[s];
+        const double z = 1e-3 * double(firstDepth + s);
+        const vtkIdType first = points->GetNumberOfPoints();
+        for (const glm::dvec2& p : shape.points) points->InsertNextPoint(p.x, p.y, z);
+        if (shape.filled) {
+            for (size_t t = 0; t + 2 < shape.points.size(); t += 3) {
+                const vtkIdType ids[3] = {first + vtkIdType(t), first + vtkIdType(t) + 1, first + vtkIdType(t) + 2};
+                cells->InsertNextCell(3, ids);
+                addColour(shape.colour);
+            }
+        } else {
+            cells->InsertNextCell(vtkIdType(shape.points.size()));
+            for (size_t i = 0; i < shape.points.size(); ++i) cells->InsertCellPoint(first + vtkIdType(i));
+            addColour(shape.colour);
+        }
+    }
+    auto data = vtkSmartPointer<vtkPolyData>::New();
+    data->SetPoints(points);
+    if (!shapes.empty() && shapes.front()->filled)
+        data->SetPolys(cells);
+    else
+        data->SetLines(cells);
+    data->GetCellData()->SetScalars(colours);
+    return data;
+}
+
+vtkSmartPointer<vtkActor> actorOf(vtkPolyData* data, double width) {
+    auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+    mapper->SetInputData(data);
+    mapper->SetScalarModeToUseCellData();
+    mapper->SetColorModeToDirectScalars();
+    mapper->ScalarVisibilityOn();
+    auto actor = vtkSmartPointer<vtkActor>::New();
+    actor->SetMapper(mapper);
+    actor->GetProperty()->LightingOff();
+    actor->GetProperty()->SetLineWidth(float(width));
+    actor->PickableOff();
+    return actor;
 }
 
 }  // namespace
 
 struct CrossSectionScene::Impl {
-    vtkSmartPointer<vtkActor> wedge = flatActor(wedgeGreen);
-    vtkSmartPointer<vtkActor> circle = strokeActor(circleGrey, 1.5);
-    vtkSmartPointer<vtkActor> perpendicular = strokeActor(darkBlue, 2.5);
-    vtkSmartPointer<vtkActor> normals = strokeActor(SceneColours::lessonNormal, 1.5);
-    vtkSmartPointer<vtkActor> boundaries = strokeActor(boundaryGreen, 3.0);
-    vtkSmartPointer<vtkActor> octagon = strokeActor(octagonGold, 2.5);
-    vtkSmartPointer<vtkActor> alphaArc = strokeActor(boundaryGreen, 1.5);
-    vtkSmartPointer<vtkActor> angleBArc = strokeActor(darkBlue, 1.5);
-    vtkSmartPointer<vtkActor> axis = strokeActor(darkRed, 3.0);
-    vtkSmartPointer<vtkActor> view = strokeActor(darkRed, 3.5);
-    vtkSmartPointer<vtkActor> heads = flatActor(darkRed);
-    vtkSmartPointer<vtkTextActor> title = textActor(18, ink, true);
-    vtkSmartPointer<vtkTextActor> caption = textActor(14, ink);
-    std::vector<vtkSmartPointer<vtkTextActor>> labels;  // V1, v, alpha, B, perpendicular, wedge, octagon
     std::optional<CrossSection> section;
-    size_t captionWidth = 84;  // characters per line
+    bool captionVisible = true, textVisible = true;
+    std::vector<vtkRenderer*> renderers;
+    std::vector<vtkSmartPointer<vtkActor>> actors;
+    std::vector<vtkSmartPointer<vtkTextActor>> texts;
+    std::vector<CrossSectionLabel> labels;
+    std::vector<std::string> leftOut;
+    int width = 0, height = 0;
 
-    std::vector<vtkActor*> actors() const {
-        return {wedge, circle, perpendicular, normals, boundaries, octagon, alphaArc, angleBArc, axis, view, heads};
+    void detach() {
+        for (vtkRenderer* renderer : renderers) {
+            for (const auto& actor : actors) renderer->RemoveActor(actor);
+            for (const auto& text : texts) renderer->RemoveViewProp(text);
+        }
     }
-    std::vector<vtkTextActor*> texts() const {
-        std::vector<vtkTextActor*> all = {title, caption};
-        for (const auto& label : labels) all.push_back(label);
-        return all;
+    void attach() {
+        for (vtkRenderer* renderer : renderers) {
+            for (const auto& actor : actors) renderer->AddActor(actor);
+            for (const auto& text : texts) renderer->AddViewProp(text);
+        }
     }
+    // A text whose ink's lower-left corner is at `corner`; its box is recorded for the JSON.
+    void addText(const std::string& text, const std::string& shown, vtkTextProperty* property, const glm::dvec2& corner, int dpi) {
+        auto actor = vtkSmartPointer<vtkTextActor>::New();
+        actor->SetTextProperty(property);
+        actor->SetInput(shown.c_str());
+        const std::array<int, 4> box = inkBox(property, shown, dpi);
+        actor->GetPositionCoordinate()->SetCoordinateSystemToDisplay();
+        actor->SetPosition(corner.x - box[0], corner.y - box[2]);
+        actor->PickableOff();
+        actor->SetVisibility(textVisible);
+        texts.push_back(actor);
+        const double x1 = corner.x + (box[1] - box[0]), y1 = corner.y + (box[3] - box[2]);
+        labels.push_back({text, {corner.x, double(height) - y1, x1, double(height) - corner.y}});
+    }
+    void layOut(int dpi);
 };
 
-CrossSectionScene::CrossSectionScene() : impl_(std::make_unique<Impl>()) {
-    for (const Rgb& colour : {darkRed, darkRed, boundaryGreen, darkBlue, darkBlue, boundaryGreen, octagonGold})
-        impl_->labels.push_back(textActor(15, colour, true));
-    for (vtkTextActor* text : {impl_->title.Get(), impl_->caption.Get()}) text->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
-    impl_->title->GetPositionCoordinate()->SetValue(0.03, 0.95);
-    impl_->title->GetTextProperty()->SetVerticalJustificationToTop();
-    impl_->caption->GetPositionCoordinate()->SetValue(0.03, 0.02);
-    impl_->caption->GetTextProperty()->SetVerticalJustificationToBottom();
-    impl_->caption->GetTextProperty()->SetLineSpacing(1.1);
-    show(std::nullopt);
-}
+CrossSectionScene::CrossSectionScene() : impl_(std::make_unique<Impl>()) {}
 
-CrossSectionScene::~CrossSectionScene() = default;
+CrossSectionScene::~CrossSectionScene() { impl_->detach(); }
 
 bool CrossSectionScene::hasSection() const { return impl_->section.has_value(); }
 
-void CrossSectionScene::show(const std::optional<CrossSection>& section) {
-    Impl& scene = *impl_;
-    scene.section = section;
-    for (vtkActor* actor : scene.actors()) actor->SetVisibility(section.has_value());
-    for (const auto& label : scene.labels) label->SetVisibility(false);
-    if (!section) {
-        scene.title->SetInput("Pick a cluster: its normals, cone and view vector appear here, in the plane of V1 and v.");
-        scene.caption->SetInput("");
-        return;
+void CrossSectionScene::show(const std::optional<CrossSection>& section) { impl_->section = section; }
+
+void CrossSectionScene::setCaptionVisible(bool visible) { impl_->captionVisible = visible; }
+
+void CrossSectionScene::setTextVisible(bool visible) {
+    impl_->textVisible = visible;
+    for (const auto& text : impl_->texts) text->SetVisibility(visible);
+}
+
+void CrossSectionScene::fitTo(int widthPixels, int heightPixels, int dpi) {
+    impl_->width = std::max(widthPixels, 1);
+    impl_->height = std::max(heightPixels, 1);
+    impl_->detach();
+    impl_->layOut(std::max(dpi, 1));
+    impl_->attach();
+}
+
+void CrossSectionScene::Impl::layOut(int dpi) {
+    actors.clear();
+    texts.clear();
+    labels.clear();
+    leftOut.clear();
+    const double ratio = dpi / 72.0;
+    // Text in points sized for the picture as the reader sees it (device pixels / ratio).
+    const double shortSide = std::min(width, height) / ratio;
+    const double textScale = std::clamp(shortSide / 480.0, 0.75, 2.25);
+    const double unit = ratio * std::clamp(shortSide / 480.0, 1.0, 2.0);
+    const double margin = std::round(0.02 * std::min(width, height) + 4.0 * ratio);
+    // The title along the top.
+    double titleBottom = height - margin;
+    if (captionVisible || !section) {
+        const vtkSmartPointer<vtkTextProperty> property = fontOf(18.0 * textScale, ink, true);
+        const std::string title = section ? section->title : "Pick a cluster: its normals, cone and view vector appear here, in the plane of V1 and v.";
+        const std::string lines = wrapped(property, title, width - 2.0 * margin, dpi);
+        const std::array<int, 4> box = inkBox(property, lines, dpi);
+        titleBottom = height - margin - (box[3] - box[2]);
+        addText(title, lines, property, {margin, titleBottom}, dpi);
     }
-    const CrossSection& s = *section;
-    scene.title->SetInput(s.title.c_str());
-    scene.caption->SetInput(wrapped(s.caption, scene.captionWidth).c_str());
-    setInput(scene.circle, polyDataFrom(arc(1.0, -M_PI, M_PI), CellKind::Lines));
-    setInput(scene.perpendicular, polyDataFrom(lines({{{-1.3, 0.0}, {1.3, 0.0}}}), CellKind::Lines));
-    std::vector<std::pair<glm::dvec2, glm::dvec2>> normals;
-    for (const glm::dvec2& n : s.normals) normals.push_back({{0.0, 0.0}, n});
-    setInput(scene.normals, polyDataFrom(lines(normals), CellKind::Lines));
-    const glm::dvec2 axisTip = 1.35 * s.axis, viewTip = 1.2 * s.view;
-    setInput(scene.axis, polyDataFrom(lines({{{0.0, 0.0}, axisTip}}), CellKind::Lines));
-    setInput(scene.view, polyDataFrom(lines({{{0.0, 0.0}, viewTip}}), CellKind::Lines));
-    GlyphGeometry heads = arrowHead(axisTip, s.axis);
-    const GlyphGeometry viewHead = arrowHead(viewTip, s.view);
-    for (size_t i = 0; i < viewHead.points.size(); ++i) heads.points.push_back(viewHead.points[i]);
-    heads.addCell({3, 4, 5}, 0);
-    setInput(scene.heads, polyDataFrom(heads, CellKind::Polygons));
-    placeLabel(scene.labels[0], "V1", axisTip + glm::dvec2(0.06, -0.02));
-    placeLabel(scene.labels[1], "v", viewTip + 0.08 * s.view + glm::dvec2(0.02, -0.03));
-    scene.boundaries->SetVisibility(s.cone);
-    scene.alphaArc->SetVisibility(s.cone);
-    scene.angleBArc->SetVisibility(s.cone);
-    if (s.cone) {
-        setInput(scene.boundaries, polyDataFrom(lines({{{0.0, 0.0}, 1.3 * s.boundaries[0]}, {{0.0, 0.0}, 1.3 * s.boundaries[1]}}), CellKind::Lines));
-        // alpha outside the normals (which reach the unit circle), B inside them.
-        setInput(scene.alphaArc, polyDataFrom(arc(1.1, 0.0, s.alpha), CellKind::Lines));
-        setInput(scene.angleBArc, polyDataFrom(arc(0.6, s.alpha, M_PI / 2.0), CellKind::Lines));
-        placeLabel(scene.labels[2], "\u03b1 = " + degreesText(s.alpha), 1.16 * direction(0.5 * s.alpha) + glm::dvec2(0.03, 0.0));
-        placeLabel(scene.labels[3], "B = " + degreesText(s.angleB), 0.66 * direction(0.5 * (s.alpha + M_PI / 2.0)));
+    if (!section) return;
+    // The caption along the bottom.
+    double captionTop = margin;
+    std::optional<PixelBox> captionBox;
+    if (captionVisible) {
+        const vtkSmartPointer<vtkTextProperty> property = fontOf(14.0 * textScale, ink, false);
+        const std::string lines = wrapped(property, section->caption, width - 2.0 * margin, dpi);
+        const std::array<int, 4> box = inkBox(property, lines, dpi);
+        addText(section->caption, lines, property, {margin, margin}, dpi);
+        captionTop = margin + (box[3] - box[2]);
+        captionBox = PixelBox{margin, margin, margin + (box[1] - box[0]), captionTop};
     }
-    placeLabel(scene.labels[4], "perpendicular to V1", {-1.3, -0.12});
-    scene.wedge->SetVisibility(s.hasWedge());
-    if (s.hasWedge()) {
-        setInput(scene.wedge, polyDataFrom(sector(1.25, s.cullingAngles[0], s.cullingAngles[1]), CellKind::Polygons));
-        placeLabel(scene.labels[5], "v culls here", 1.27 * direction(s.cullingAngles[0]) + glm::dvec2(-0.42, 0.0));
+    const double gap = std::round(6.0 * ratio);
+    const PixelBox area{margin, captionTop + gap, width - margin, titleBottom - gap};
+    const CrossSectionFigure figure = drawCrossSection(*section, area, unit);
+    // The labels, each where nothing else is.
+    LabelPlacer placer(width, height, {margin * 0.5, captionTop + 1.0, width - margin * 0.5, titleBottom - 1.0}, 2.0 * ratio, 10.0 * unit);
+    for (const FigureShape& shape : figure.shapes) {
+        if (shape.underLabels) continue;
+        if (shape.filled)
+            placer.blockTriangles(shape.points);
+        else
+            placer.blockLine(shape.points, shape.width);
     }
-    scene.octagon->SetVisibility(s.octagon);
-    if (s.octagon) {
-        setInput(scene.octagon, polyDataFrom(lines({{{0.0, 0.0}, 1.12 * s.octagonBoundaries[0]}, {{0.0, 0.0}, 1.12 * s.octagonBoundaries[1]}}),
-                                             CellKind::Lines));
-        placeLabel(scene.labels[6], "octagon", 1.14 * s.octagonBoundaries[1] + glm::dvec2(0.03, 0.0));
+    placer.blockBox({margin, titleBottom, double(width), double(height)});
+    if (captionBox) placer.blockBox(*captionBox);
+    std::vector<FigureShape> leaders;
+    for (const FigureLabel& label : figure.labels) {
+        bool placed = false;
+        // Near what it names at full size first; smaller, or farther away on a leader, only when it must.
+        // The small figure's labels inside its frame if they can be.
+        std::vector<std::tuple<double, double, bool>> tries;
+        for (bool framed : {true, false}) {
+            if (framed && !label.within) continue;
+            for (const auto& [shrink, reach] : std::vector<std::pair<double, double>>{{1.0, 0.12}, {0.85, 0.12}, {1.0, 0.25}, {0.85, 0.25}, {0.72, 0.25}, {1.0, 0.5}, {0.72, 0.5}})
+                tries.emplace_back(shrink, reach, framed);
+        }
+        for (const auto& [shrink, reach, framed] : tries) {
+            const vtkSmartPointer<vtkTextProperty> property = fontOf(15.0 * textScale * shrink, label.colour, true);
+            const std::array<int, 4> box = inkBox(property, label.text, dpi);
+            const glm::dvec2 size(box[1] - box[0], box[3] - box[2]);
+            const std::optional<LabelSpot> spot =
+                placer.place(label.anchor, label.toward, size, reach * std::min(width, height), framed ? label.within : std::nullopt);
+            if (!spot) continue;
+            addText(label.text, label.text, property, {spot->box.x0, spot->box.y0}, dpi);
+            if (spot->leader) leaders.push_back({{spot->leaderFrom, spot->leaderTo}, false, label.colour, std::max(1.0, 0.75 * unit)});
+            placed = true;
+            break;
+        }
+        if (!placed) leftOut.push_back(label.text);
+    }
+    // The shapes in order, one actor for each run of the same kind and width.
+    std::vector<const FigureShape*> all;
+    for (const FigureShape& shape : figure.shapes) all.push_back(&shape);
+    for (const FigureShape& shape : leaders) all.push_back(&shape);
+    for (size_t start = 0; start < all.size();) {
+        size_t end = start + 1;
+        while (end < all.size() && all[end]->filled == all[start]->filled && all[end]->width == all[start]->width) ++end;
+        actors.push_back(actorOf(cellsOf({all.begin() + long(start), all.begin() + long(end)}, start), all[start]->width));
+        start = end;
     }
 }
 
-void CrossSectionScene::fitTo(int widthPixels, int heightPixels) {
-    // Sized for a 480-pixel picture; the caption has about 7.5 pixels a character at 14 points.
-    const double scale = std::clamp(std::min(widthPixels, heightPixels) / 480.0, 0.6, 1.5);
-    impl_->title->GetTextProperty()->SetFontSize(int(std::lround(18 * scale)));
-    impl_->caption->GetTextProperty()->SetFontSize(int(std::lround(14 * scale)));
-    for (const auto& label : impl_->labels) label->GetTextProperty()->SetFontSize(int(std::lround(15 * scale)));
-    impl_->captionWidth = size_t(std::max(24, int((widthPixels - 20) / (7.5 * scale))));
-    if (impl_->section) impl_->caption->SetInput(wrapped(impl_->section->caption, impl_->captionWidth).c_str());
+void CrossSectionScene::addTo(vtkRenderer* renderer) {
+    if (std::find(impl_->renderers.begin(), impl_->renderers.end(), renderer) != impl_->renderers.end()) return;
+    impl_->renderers.push_back(renderer);
+    for (const auto& actor : impl_->actors) renderer->AddActor(actor);
+    for (const auto& text : impl_->texts) renderer->AddViewProp(text);
 }
 
-void CrossSectionScene::setCaptionVisible(bool visible) { impl_->caption->SetVisibility(visible); }
-
-void CrossSectionScene::addTo(vtkRenderer* renderer) const {
-    for (vtkActor* actor : impl_->actors()) renderer->AddActor(actor);
-    for (vtkTextActor* text : impl_->texts()) renderer->AddViewProp(text);
+void CrossSectionScene::removeFrom(vtkRenderer* renderer) {
+    for (const auto& actor : impl_->actors) renderer->RemoveActor(actor);
+    for (const auto& text : impl_->texts) renderer->RemoveViewProp(text);
+    impl_->renderers.erase(std::remove(impl_->renderers.begin(), impl_->renderers.end(), renderer), impl_->renderers.end());
 }
 
-void CrossSectionScene::removeFrom(vtkRenderer* renderer) const {
-    for (vtkActor* actor : impl_->actors()) renderer->RemoveActor(actor);
-    for (vtkTextActor* text : impl_->texts()) renderer->RemoveViewProp(text);
-}
-
-void CrossSectionScene::placeCamera(vtkCamera* camera, double aspect) const {
-    // The figure fills the top share of the height (and fits the width); the caption the rest.
-    const double figureHeight = figureHigh - figureLow;
-    // Without the caption (shown as text beside it) the figure takes nearly the whole height.
-    double visibleHeight = figureHeight / (impl_->caption->GetVisibility() ? figureShare : 0.9);
-    if (aspect > 0.0 && visibleHeight * aspect < 2.0 * figureHalfWidth) visibleHeight = 2.0 * figureHalfWidth / aspect;
-    const double bottom = figureHigh - visibleHeight + 0.1 * figureHeight;
-    const double centreY = bottom + visibleHeight / 2.0;
+void CrossSectionScene::placeCamera(vtkCamera* camera) const {
+    const double w = impl_->width, h = impl_->height;
     camera->ParallelProjectionOn();
-    camera->SetParallelScale(visibleHeight / 2.0);
-    camera->SetFocalPoint(0.0, centreY, 0.0);
-    camera->SetPosition(0.0, centreY, 10.0);
+    camera->SetParallelScale(0.5 * h);
+    camera->SetFocalPoint(0.5 * w, 0.5 * h, 0.0);
+    camera->SetPosition(0.5 * w, 0.5 * h, 10.0);
     camera->SetViewUp(0.0, 1.0, 0.0);
     camera->SetClippingRange(1.0, 20.0);
 }
 
-vtkSmartPointer<vtkImageData> renderCrossSectionToImage(CrossSectionScene& scene, int width, int height) {
+const std::vector<CrossSectionLabel>& CrossSectionScene::labels() const { return impl_->labels; }
+
+const std::vector<std::string>& CrossSectionScene::leftOut() const { return impl_->leftOut; }
+
+vtkSmartPointer<vtkImageData> renderCrossSectionToImage(CrossSectionScene& scene, int width, int height, int dpi) {
     requireDisplay();
-    scene.fitTo(width, height);
+    scene.fitTo(width, height, dpi);
     auto renderer = vtkSmartPointer<vtkRenderer>::New();
     renderer->SetBackground(1.0, 1.0, 1.0);
     scene.addTo(renderer);
-    scene.placeCamera(renderer->GetActiveCamera(), double(width) / double(height));
-    vtkSmartPointer<vtkImageData> image = renderOffScreen(renderer, width, height);
+    scene.placeCamera(renderer->GetActiveCamera());
+    vtkSmartPointer<vtkImageData> image = renderOffScreen(renderer, width, height, dpi);
     scene.removeFrom(renderer);
     return image;
 }

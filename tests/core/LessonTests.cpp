@@ -1,6 +1,5 @@
-// The lesson's words and the textbook cross-section: the numbers in the sentences are the ones the
-// test compared, the verdict and the oracle's outcome are the decision's, and the figure's wedge
-// holds the view vector exactly when the test culls.
+// The lesson's words: the numbers in the sentences are the ones the test compared, the verdict and
+// the oracle's outcome are the decision's (the cross-section's figure: CrossSectionTests.cpp).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,7 +8,6 @@
 #include <random>
 
 #include "TestMeshes.h"
-#include "core/CrossSection.h"
 #include "core/Lesson.h"
 #include "core/LessonText.h"
 #include "core/RecordTests.h"
@@ -132,9 +130,6 @@ TEST(Lesson, ARecordsTestIsToldByItsRuleAndItsOwnDecision) {
                 EXPECT_TRUE(contains(lesson.steps[4].text, why.margin > 0.0 ? "so the test holds" : "so the test fails"));
                 if (why.culled && why.frontFaces > 0) EXPECT_EQ(lesson.outcome, LessonOutcome::FalseCull);
                 EXPECT_DOUBLE_EQ(lesson.cullFraction, testCullFraction(p.clusters.cullMap, input, c, test));
-                // The cross-section draws the displayed cone, and says the record may decide otherwise.
-                const CrossSection section = crossSectionOf(lesson);
-                if (section.hasWedge()) EXPECT_TRUE(contains(section.caption, "its verdict can differ")) << section.caption;
                 ++verdicts[why.culled];
             }
         }
@@ -161,49 +156,6 @@ TEST(Lesson, AClusterWithoutAConeIsNeverCulledAndSaysSo) {
     EXPECT_FALSE(contains(lesson.steps[3].text, "from the cluster's centre along")) << lesson.steps[3].text;
     EXPECT_TRUE(contains(lesson.steps[4].text, "Without a cone"));
     EXPECT_EQ(lesson.outcome, LessonOutcome::LostToPartition);
-    EXPECT_FALSE(crossSectionOf(lesson).hasWedge());
-}
-
-// Seed 000's figure: the normals between the boundary lines, v of unit length at its true angle from
-// V1, and v in the wedge exactly when the test culls (away from the threshold's rounding).
-TEST(CrossSection, NormalsInsideTheConeAndTheViewInTheWedgeExactlyWhenCulled) {
-    for (ConeMethod method : {ConeMethod::Minimal, ConeMethod::Average}) {
-        const Prepared p(method);
-        std::mt19937_64 random(5);
-        size_t culled = 0, drawn = 0;
-        for (int trial = 0; trial < 30; ++trial) {
-            Eye eye = Eye::perspective(randomUnit(random) * (1.2 + trial % 6));
-            if (trial % 5 == 4) eye = Eye::orthographicAlong(randomUnit(random));
-            for (uint32_t c = 0; c < p.clusters.bounds.count(); c += 4) {
-                for (CullTest test : {CullTest::Apex, CullTest::Sphere, CullTest::MeshoptSphere, CullTest::Octagon}) {
-                    const Lesson lesson = makeLesson(p.mesh, p.clusters, c, eye, test);
-                    const CrossSection section = crossSectionOf(lesson);
-                    ASSERT_EQ(section.normals.size(), lesson.normals.size());
-                    EXPECT_NEAR(glm::length(section.view), 1.0, 1e-9);
-                    EXPECT_NEAR(section.view.y, lesson.why.viewDotAxis, 1e-9);
-                    if (!section.cone) continue;
-                    for (const glm::dvec2& n : section.normals) {
-                        EXPECT_NEAR(glm::length(n), 1.0, 1e-9);
-                        EXPECT_LE(std::abs(std::atan2(n.x, n.y)), section.alpha + 1e-9);
-                    }
-                    EXPECT_NEAR(section.alpha + section.angleB, M_PI / 2.0, 1e-9);
-                    if (std::isnan(lesson.why.margin) || std::abs(lesson.why.margin) < 1e-7) continue;
-                    const double angle = std::atan2(section.view.x, section.view.y);
-                    const bool inWedge = section.cullingAngles[0] < angle && angle < section.cullingAngles[1];
-                    EXPECT_EQ(inWedge, lesson.why.margin > 0.0) << toString(test) << " cluster " << c;
-                    (lesson.why.margin > 0.0 ? culled : drawn) += 1;
-                    if (test == CullTest::Octagon) {
-                        EXPECT_TRUE(section.octagon);
-                        for (const glm::dvec2& edge : section.octagonBoundaries) EXPECT_NEAR(glm::length(edge), 1.0, 1e-9);
-                        EXPECT_LT(section.octagonBoundaries[0].x, 0.0);
-                        EXPECT_GT(section.octagonBoundaries[1].x, 0.0);
-                    }
-                }
-            }
-        }
-        EXPECT_GT(culled, 20u);
-        EXPECT_GT(drawn, 20u);
-    }
 }
 
 // An orbit slide's words are one eye's statistics: the same counts, the efficiency as a percentage.

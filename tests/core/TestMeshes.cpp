@@ -75,6 +75,29 @@ Mesh quadCube() {
     return mesh;
 }
 
+Mesh roof(int sides, double height) {
+    Mesh mesh;
+    mesh.positions.emplace_back(0.f, 0.f, float(height));
+    for (int i = 0; i < sides; ++i) {
+        const double angle = 2.0 * M_PI * i / sides;
+        mesh.positions.emplace_back(float(std::cos(angle)), float(std::sin(angle)), 0.f);
+    }
+    for (int i = 0; i < sides; ++i) mesh.addFace({0, uint32_t(1 + i), uint32_t(1 + (i + 1) % sides)});
+    return mesh;
+}
+
+Mesh flatPatch(int cells) {
+    Mesh mesh;
+    for (int i = 0; i <= cells; ++i)
+        for (int j = 0; j <= cells; ++j) mesh.positions.emplace_back(float(i) / float(cells), float(j) / float(cells), 0.f);
+    for (int i = 0; i < cells; ++i)
+        for (int j = 0; j < cells; ++j) {
+            const uint32_t a = uint32_t(i * (cells + 1) + j);
+            mesh.addFace({a, a + uint32_t(cells + 1), a + uint32_t(cells + 2), a + 1});
+        }
+    return mesh;
+}
+
 void addBox(Mesh& mesh, const glm::dvec3& low, const glm::dvec3& extent, int cells, bool triangles) {
     // Each side: a (cells + 1)^2 grid of corners over two axes, wound outwards.
     for (int axis = 0; axis < 3; ++axis)

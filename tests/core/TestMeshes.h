@@ -16,6 +16,11 @@ Mesh icosphere(int subdivisions);
 Mesh torus(double majorRadius, double minorRadius, int majorSegments, int minorSegments);
 // Unit cube as six quads (polygon faces).
 Mesh quadCube();
+// A roof of `sides` triangles from a unit circle in z = 0 up to (0, 0, height): every normal at the
+// same angle from +z.
+Mesh roof(int sides, double height);
+// A flat unit square of cells x cells quads in z = 0, facing +z.
+Mesh flatPatch(int cells);
 // A uniformly random unit vector.
 glm::dvec3 randomUnit(std::mt19937_64& random);
 // A random height-field patch: a bumpy grid whose normals spread up to about maxTiltDegrees.

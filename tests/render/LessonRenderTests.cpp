@@ -131,7 +131,7 @@ TEST_F(LessonPictures, EveryStepADifferentPictureMatchingItsBaseline) {
 TEST_F(LessonPictures, CrossSectionMatchesItsBaseline) {
     ASSERT_TRUE(lesson_);
     CrossSectionScene scene;
-    scene.show(crossSectionOf(*lesson_));
+    scene.show(crossSectionOf(*lesson_, cullingInput(*prepared_, *clusters_)));
     EXPECT_TRUE(scene.hasSection());
     const std::string failure = rendertest::checkAgainstBaseline(renderCrossSectionToImage(scene, 480, 480), "cross_section");
     EXPECT_TRUE(failure.empty()) << failure;

@@ -102,7 +102,17 @@ private slots:
             saveWindowPicture(QStringLiteral("lesson-step%1.png").arg(step));
         }
         QVERIFY(window_->crossSectionView()->isVisible());
-        QCOMPARE(window_->crossSectionView()->caption(), QString::fromStdString(crossSectionOf(coreLesson(*window_)).caption));
+        // The dock's figure as drawn: labels that each have a place of their own.
+        const std::vector<CrossSectionLabel>& drawn = window_->crossSectionView()->drawnLabels();
+        QVERIFY(drawn.size() >= 3);
+        for (size_t a = 0; a < drawn.size(); ++a)
+            for (size_t b = a + 1; b < drawn.size(); ++b) {
+                const auto& p = drawn[a].box;
+                const auto& q = drawn[b].box;
+                QVERIFY2(!(p[0] < q[2] && q[0] < p[2] && p[1] < q[3] && q[1] < p[3]), (drawn[a].text + " / " + drawn[b].text).c_str());
+            }
+        QCOMPARE(window_->crossSectionView()->caption(), 
+                 QString::fromStdString(crossSectionOf(coreLesson(*window_), cullingInput(*window_->preparedMesh(), *window_->clusters())).caption));
         QTest::keyClick(window_.get(), Qt::Key_PageDown);  // past the last step: stays
         QCOMPARE(window_->session().lessonStep(), kLessonStepCount);
         QTest::keyClick(window_.get(), Qt::Key_PageUp);
@@ -181,7 +191,7 @@ private slots:
         QCOMPARE(readJsonFile(path), lessonToJson(coreLesson(*window_)));
         const QString png = temporary_.filePath(QStringLiteral("cross-section.png"));
         QVERIFY(window_->saveCrossSection(png));
-        QCOMPARE(QImage(png).size(), QSize(640, 640));
+        QCOMPARE(QImage(png).size(), QSize(960, 720));
     }
 
     void everyControlHasATooltipAndWhatsThis() {

@@ -233,8 +233,14 @@ private slots:
         }
         for (size_t a = 0; a < pictures.size(); ++a)
             for (size_t b = a + 1; b < pictures.size(); ++b) QVERIFY2(pictures[a] != pictures[b], qPrintable(QStringLiteral("%1 %2").arg(a + 1).arg(b + 1)));
-        QCOMPARE(QImage(folder.filePath(QStringLiteral("lesson/cross-section.png"))).size(), QSize(640, 640));
+        QCOMPARE(QImage(folder.filePath(QStringLiteral("lesson/cross-section.png"))).size(), QSize(960, 720));
         const nlohmann::json explanation = readJsonFile(folder.filePath(QStringLiteral("lesson/explanation.json")));
+        // Beside the picture, what it drew: the same cluster, cone and verdict as the explanation.
+        const nlohmann::json drawn = readJsonFile(folder.filePath(QStringLiteral("lesson/cross-section.json")));
+        QCOMPARE(drawn["cluster"].get<int>(), cluster);
+        QCOMPARE(drawn["culls"].get<bool>(), explanation["verdict"] == "culled");
+        QCOMPARE(drawn["half_angle_deg"].get<double>(), explanation["alpha_degrees"].get<double>());
+        QVERIFY(drawn["labels"].size() >= 3 && drawn["labels_left_out"].empty());
         QCOMPARE(explanation["cluster"].get<int>(), cluster);
         QVERIFY2(std::abs(explanation["alpha_degrees"].get<double>() - worst["half_angle_deg"].get<double>()) < 0.05,
                  qPrintable(QString::fromStdString(explanation.dump())));
