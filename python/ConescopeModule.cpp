@@ -83,13 +83,18 @@ auto withoutGil(Work&& work) {
 }
 
 // A mesh from arrays: n x 3 positions, faces as an m x k integer array or a sequence of sequences,
-// optional per-face cluster ids; then the checks and merging every file's mesh gets.
-Mesh meshFromPython(py::array_t<float, py::array::c_style | py::array::forcecast> vertices, const py::object& faces,
-                    const py::object& clusterIds, const std::string& name) {
+// optional per-face cluster ids; then the checks and merging every file's mesh gets. Positions come
+// as float64, so positions that only rounding to float32 merges are told (`notes`).
+Mesh meshFromPython(py::array_t<double, py::array::c_style | py::array::forcecast> vertices, const py::object& faces,
+                    const py::object& clusterIds, const std::string& name, std::vector<std::string>& notes) {
     if (vertices.ndim() != 2 || vertices.shape(1) != 3) throw std::invalid_argument("vertices must be an n x 3 array");
     Mesh mesh;
+    std::vector<glm::dvec3> exact;
     const auto v = vertices.unchecked<2>();
-    for (py::ssize_t k = 0; k < v.shape(0); ++k) mesh.positions.emplace_back(v(k, 0), v(k, 1), v(k, 2));
+    for (py::ssize_t k = 0; k < v.shape(0); ++k) {
+        exact.emplace_back(v(k, 0), v(k, 1), v(k, 2));
+        mesh.positions.emplace_back(exact.back());
+    }
     std::vector<uint32_t> corners;
     size_t index = 0;
     for (const py::handle face : faces) {
@@ -110,7 +115,9 @@ Mesh meshFromPython(py::array_t<float, py::array::c_style | py::array::forcecast
             throw std::invalid_argument("cluster_ids must hold one id per face (" + std::to_string(mesh.faceCount()) + ")");
         mesh.faceArrays["cluster_id"].assign(ids.data(), ids.data() + ids.shape(0));
     }
-    return meshFromArrays(std::move(mesh), name).mesh;
+    MeshFile file = meshFromArrays(std::move(mesh), name, exact);
+    notes.insert(notes.end(), file.notes.begin(), file.notes.end());
+    return std::move(file.mesh);
 }
 
 // A mesh read as the CLI reads it, with the file builder's cluster files of `settings`; the reader's
@@ -221,20 +228,24 @@ PYBIND11_MODULE(_conescope, m) {
         const Mesh mesh = readMeshForPython(path, notes, {settingsFrom(pairs)});
         return statsDocument(mesh, std::filesystem::path(path).filename().string(), pairs, perView, perCluster, notes);
     });
-    m.def("stats_arrays", [](py::array_t<float, py::array::c_style | py::array::forcecast> vertices, const py::object& faces,
+    m.def("stats_arrays", [](py::array_t<double, py::array::c_style | py::array::forcecast> vertices, const py::object& faces,
                              const py::object& clusterIds, const std::string& name, const SettingPairs& pairs, bool perView,
                              bool perCluster) {
-        return statsDocument(meshFromPython(vertices, faces, clusterIds, name), name, pairs, perView, perCluster, {});
+        std::vector<std::string> notes;
+        const Mesh mesh = meshFromPython(vertices, faces, clusterIds, name, notes);
+        return statsDocument(mesh, name, pairs, perView, perCluster, notes);
     });
     m.def("clusters", [](const std::string& path, const SettingPairs& pairs, const std::string& sort, size_t top) {
         std::vector<std::string> notes;
         const Mesh mesh = readMeshForPython(path, notes, {settingsFrom(pairs)});
         return clustersDocument(mesh, std::filesystem::path(path).filename().string(), pairs, sort, top, notes);
     });
-    m.def("clusters_arrays", [](py::array_t<float, py::array::c_style | py::array::forcecast> vertices, const py::object& faces,
+    m.def("clusters_arrays", [](py::array_t<double, py::array::c_style | py::array::forcecast> vertices, const py::object& faces,
                                 const py::object& clusterIds, const std::string& name, const SettingPairs& pairs,
                                 const std::string& sort, size_t top) {
-        return clustersDocument(meshFromPython(vertices, faces, clusterIds, name), name, pairs, sort, top, {});
+        std::vector<std::string> notes;
+        const Mesh mesh = meshFromPython(vertices, faces, clusterIds, name, notes);
+        return clustersDocument(mesh, name, pairs, sort, top, notes);
     });
     m.def("compare", [](const std::string& path, const std::string& a, const std::string& b, const SettingPairs& pairs,
                         bool perView, bool perCluster) {
@@ -243,10 +254,12 @@ PYBIND11_MODULE(_conescope, m) {
         const Mesh mesh = readMeshForPython(path, notes, {parseConfiguration(a, base), parseConfiguration(b, base)});
         return compareDocument(mesh, path, a, b, pairs, perView, perCluster, notes);
     });
-    m.def("compare_arrays", [](py::array_t<float, py::array::c_style | py::array::forcecast> vertices, const py::object& faces,
+    m.def("compare_arrays", [](py::array_t<double, py::array::c_style | py::array::forcecast> vertices, const py::object& faces,
                                const py::object& clusterIds, const std::string& name, const std::string& a, const std::string& b,
                                const SettingPairs& pairs, bool perView, bool perCluster) {
-        return compareDocument(meshFromPython(vertices, faces, clusterIds, name), name, a, b, pairs, perView, perCluster, {});
+        std::vector<std::string> notes;
+        const Mesh mesh = meshFromPython(vertices, faces, clusterIds, name, notes);
+        return compareDocument(mesh, name, a, b, pairs, perView, perCluster, notes);
     });
     m.def("find_meshes", &findMeshes);
     m.def("batch_columns", &batchColumns);

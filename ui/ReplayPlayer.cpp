@@ -46,15 +46,24 @@ void ReplayPlayer::playNext() {
         return;
     }
     stepError_.clear();
+    // A step after "cancel-at-stage" must show that stage.
+    const bool cancelArmed = window_.session().cancelStageArmed();
     try {
         steps_[next_].play(window_);
     } catch (const std::exception& error) {
         fail(error.what());
         return;
     }
-    whenIdle([this]() {
+    whenIdle([this, cancelArmed]() {
         if (!stepError_.isEmpty()) {
             fail(stepError_.toStdString());
+            return;
+        }
+        if (cancelArmed && window_.session().cancelStageArmed()) {
+            const QString seen = window_.session().stagesSeen().join(QStringLiteral("\", \""));
+            window_.session().cancelAtStage({});
+            fail("the progress never showed the stage to cancel at" +
+                 (seen.isEmpty() ? std::string(" (it showed none)") : " (it showed \"" + seen.toStdString() + "\")"));
             return;
         }
         emit stepFinished(steps_[next_].number);

@@ -272,6 +272,13 @@ const std::vector<StepKind>& stepKinds() {
              requireTrue(value);
              return [](MainWindow& window) { window.session().cancelNextBuild(); };
          }},
+        {"cancel-at-stage",
+         [](const Json& value, const QDir&) -> Action {
+             if (!value.is_string() || value.get<std::string>().empty())
+                 throw std::invalid_argument("takes the name of a stage the progress shows (\"scene\", \"orbit statistics\", ...)");
+             const QString stage = QString::fromStdString(value.get<std::string>());
+             return [stage](MainWindow& window) { window.session().cancelAtStage(stage); };
+         }},
         {"choose", parseChoose},
         {"lesson-step", parseLessonStep},
         {"example", parseExample},

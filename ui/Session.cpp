@@ -16,13 +16,6 @@ namespace {
 
 constexpr int animationIntervalMs = 150;
 
-// Maps a stage's progress into [from, to] of the whole task.
-ProgressCallback scaled(const ProgressCallback& progress, double from, double to) {
-    return [progress, from, to](double fraction, const std::string& stage) {
-        return progress(from + (to - from) * fraction, stage);
-    };
-}
-
 // The settings with the default builder instead of a file builder whose ids could not be used, so
 // a bad id file does not stick and raise its error again at every change.
 Settings withoutClusterFile(Settings settings) {
@@ -39,13 +32,50 @@ std::string budgetMissedIn(const Snapshot& shown) {
     return budgetMissed(settings, shown.clusters->partition.clusterCount, fewest);
 }
 
+// Whether the progress's stage is the one named: the same text, or the name and a space before the rest.
+bool stageNamed(const QString& stage, const QString& name) {
+    return stage == name || (stage.startsWith(name) && stage.size() > name.size() && stage[name.size()] == QLatin1Char(' '));
+}
+
 }  // namespace
+
+const CullTestStatistics* Snapshot::orbitStatistics() const {
+    return orbit && !firstStaleStage(orbit->settings, settings) ? &orbit->statistics : nullptr;
+}
+
+std::optional<Session::OrbitComparison> Session::measureSnapshot(Snapshot& b, const std::optional<Snapshot>& pin,
+                                                                 const ProgressCallback& progress) {
+    const bool compare = pin && pin->prepared == b.prepared;
+    if (!b.orbitStatistics()) {
+        auto orbit = std::make_shared<OrbitMeasurement>();
+        orbit->settings = b.settings;
+        orbit->statistics = measureOrbit(*b.prepared, *b.clusters, b.settings, progressWithin(progress, 0.0, compare ? 0.5 : 1.0));
+        b.orbit = std::move(orbit);
+    }
+    if (!compare) return std::nullopt;
+    OrbitComparison result{*pin, b, {}};
+    result.a.settings = withSharedOptions(pin->settings, b.settings);
+    result.comparison = compareClusterSets(*b.prepared, result.a.configuration(), b.configuration(), orbitOf(b.settings, b.prepared->box),
+                                           progressWithin(progress, 0.5, 1.0, "comparing A and B"));
+    return result;
+}
 
 Session::Session(QObject* parent) : QObject(parent), layers_(firstLookLayers()) {
     animationTimer_.setInterval(animationIntervalMs);
     connect(&animationTimer_, &QTimer::timeout, this, [this]() { stepOrbit(1); });
-    connect(&runner_, &TaskRunner::taskStarted, this, &Session::taskStarted);
-    connect(&runner_, &TaskRunner::progressChanged, this, &Session::progressChanged);
+    connect(&runner_, &TaskRunner::taskStarted, this, [this](const QString& title) {
+        emit taskStarted(title);
+        stageShown(title);
+    });
+    connect(&runner_, &TaskRunner::progressChanged, this, [this](double fraction, const QString& stage) {
+        emit progressChanged(fraction, stage);
+        stageShown(stage);
+    });
+    // The task is cancelled already, where it showed the stage: the rest of Cancel's work.
+    connect(&runner_, &TaskRunner::stageCancelled, this, [this]() {
+        cancelStage_.clear();
+        cancel();
+    });
     connect(&runner_, &TaskRunner::idle, this, &Session::idle);
 }
 
@@ -66,22 +96,23 @@ void Session::openMesh(const QString& path) {
         [file, settings](const ProgressCallback& progress) {
             SceneResult result;
             std::shared_ptr<MeshletStream> meshlets;  // built while the mesh is prepared, when the builder starts there
-            auto prepared = std::make_shared<PreparedMesh>(loadMesh(file, settings, scaled(progress, 0.0, 0.4), &meshlets));
+            auto prepared = std::make_shared<PreparedMesh>(loadMesh(file, settings, progressWithin(progress, 0.0, 0.4), &meshlets));
             // An id file is read here, so the builder is chosen knowing whether it could be.
             Settings chosen = builderForMesh(withClusterIds(settings), prepared->mesh(), result.builderNote);
             std::shared_ptr<ClusterSet> clusters;
             try {
-                clusters = std::make_shared<ClusterSet>(buildClusters(*prepared, chosen, nullptr, scaled(progress, 0.4, 0.9), meshlets.get()));
+                clusters = std::make_shared<ClusterSet>(buildClusters(*prepared, chosen, nullptr, progressWithin(progress, 0.4, 0.9), meshlets.get()));
             } catch (const std::exception& error) {
                 if (chosen.builder != Builder::File) throw;
                 // A mesh that cannot be read by the file builder can still be looked at.
                 result.builderNote = std::string(error.what()) + ": clusters from the " + toString(Settings{}.builder) + " builder instead";
                 chosen = withoutClusterFile(chosen);
-                clusters = std::make_shared<ClusterSet>(buildClusters(*prepared, chosen, nullptr, scaled(progress, 0.4, 0.9)));
+                clusters = std::make_shared<ClusterSet>(buildClusters(*prepared, chosen, nullptr, progressWithin(progress, 0.4, 0.9)));
             }
-            progress(0.9, "scene");
+            progress(0.85, "scene");
             result.scene = makeScene(*prepared, *clusters);
-            result.snapshot = Snapshot{chosen, prepared, clusters};
+            result.snapshot = Snapshot{chosen, prepared, clusters, nullptr};
+            measureSnapshot(result.snapshot, std::nullopt, progressWithin(progress, 0.9, 1.0));  // a new mesh drops A
             return result;
         },
         [this, path](SceneResult& result) {
@@ -131,16 +162,15 @@ void Session::reconcile() {
     }
     // Back to what is built, or nothing to build: a queued build is not needed any more.
     runner_.cancel(taskgroups::clusters);
-    const Settings before = shown_.settings;
-    setShownSettings(asked_);
-    const bool eyeChanged = displayedTest(before) != displayedTest(asked_) || before.orthographic != asked_.orthographic;
-    const bool orbitChanged = eyeChanged || before.views != asked_.views || before.distance != asked_.distance;
-    if (eyeChanged) updateEye();
-    // A build asked for and given up may have cancelled the snapshot's orbit: measured again.
-    if (orbitChanged || (!orbit_ && !runner_.busy(taskgroups::orbit))) {
-        clearOrbit();
-        requestOrbit();
+    Snapshot asked = shown_;
+    asked.settings = asked_;
+    if (asked.orbitStatistics() && (!pin_ || orbitComparison_)) {
+        // Nothing the orbit or the comparison depends on: shown at once.
+        runner_.cancel(taskgroups::orbit);
+        setShownSettings(asked_);
+        return;
     }
+    requestOrbit();
 }
 
 void Session::setShownSettings(const Settings& settings) {
@@ -157,17 +187,19 @@ void Session::requestClusters() {
     const Settings settings = asked_;
     // Another winding repair, or a meshlet file the mesh was not read with (it may cut polygons).
     const bool reprepare = from.prepared->fixWindingAsked != settings.fixWinding || needsClusterFile(*from.prepared, settings);
+    const std::optional<Snapshot> pin = pin_;
     runner_.run<SceneResult>(
         taskgroups::clusters, tr("Building clusters"),
-        [from, settings, reprepare](const ProgressCallback& progress) {
+        [from, settings, reprepare, pin](const ProgressCallback& progress) {
             std::shared_ptr<const PreparedMesh> prepared = from.prepared;
-            if (reprepare) prepared = std::make_shared<PreparedMesh>(reprepareMesh(*prepared, settings, scaled(progress, 0.0, 0.3)));
-            auto clusters = std::make_shared<ClusterSet>(
-                buildClusters(*prepared, withClusterIds(settings), reprepare ? nullptr : from.clusters.get(), scaled(progress, reprepare ? 0.3 : 0.0, 0.9)));
-            progress(0.9, "scene");
+            if (reprepare) prepared = std::make_shared<PreparedMesh>(reprepareMesh(*prepared, settings, progressWithin(progress, 0.0, 0.3)));
+            auto clusters = std::make_shared<ClusterSet>(buildClusters(*prepared, withClusterIds(settings), reprepare ? nullptr : from.clusters.get(),
+                                                                       progressWithin(progress, reprepare ? 0.3 : 0.0, 0.8)));
+            progress(0.8, "scene");
             SceneResult result;
             result.scene = makeScene(*prepared, *clusters);
-            result.snapshot = Snapshot{settings, prepared, clusters};
+            result.snapshot = Snapshot{settings, prepared, clusters, nullptr};
+            result.comparison = measureSnapshot(result.snapshot, pin, progressWithin(progress, 0.85, 1.0));
             return result;
         },
         [this](SceneResult& result) {
@@ -201,9 +233,28 @@ void Session::buildFailed(const QString& error) {
 }
 
 void Session::cancel() {
+    const bool working = runner_.busy();
     runner_.cancelAll();
     revertToSnapshot();
-    emit notice(tr("Cancelled: the mesh, clusters and settings shown before stay"), 5000);
+    if (!working) {
+        // Pressed as the last task ended: what it made is shown whole.
+        emit notice(tr("Nothing to cancel: what is shown was already finished"), 5000);
+        return;
+    }
+    // A pinned while new clusters were built is compared only once they are shown: without its
+    // comparison, it is unpinned (the window never shows A without A against B).
+    if (pin_ && !orbitComparison_) clearPin();
+    emit notice(tr("Cancelled: the mesh, clusters, settings and orbit shown before stay"), 5000);
+}
+
+void Session::cancelAtStage(const QString& stage) {
+    cancelStage_ = stage;
+    stagesSeen_.clear();
+    runner_.cancelAtStage(stage, [stage](const QString& shown) { return stageNamed(shown, stage); });
+}
+
+void Session::stageShown(const QString& stage) {
+    if (!cancelStage_.isEmpty() && !stagesSeen_.contains(stage)) stagesSeen_.push_back(stage);
 }
 
 void Session::revertToSnapshot() {
@@ -215,21 +266,46 @@ void Session::revertToSnapshot() {
 void Session::requestOrbit() {
     if (!shown_.clusters) return;
     runner_.cancel(taskgroups::orbit);
-    const Snapshot snapshot = shown_;
-    runner_.run<CullTestStatistics>(
+    Snapshot asked = shown_;
+    asked.settings = asked_;
+    const std::optional<Snapshot> pin = pin_;
+    using Measured = std::pair<Snapshot, std::optional<OrbitComparison>>;
+    runner_.run<Measured>(
         taskgroups::orbit, tr("Orbit statistics"),
-        [snapshot](const ProgressCallback& progress) {
-            return measureOrbit(*snapshot.prepared, *snapshot.clusters, snapshot.settings, progress);
+        [asked, pin](const ProgressCallback& progress) {
+            Snapshot measured = asked;
+            std::optional<OrbitComparison> comparison = measureSnapshot(measured, pin, progress);
+            return Measured{measured, comparison};
         },
-        [this, snapshot](CullTestStatistics& orbit) {
-            // Made for other clusters meanwhile: their own orbit follows. (A change of test, views or
-            // projection asks for a new orbit, which cancels this one.)
-            if (snapshot.clusters != shown_.clusters) return;
-            orbit_ = std::move(orbit);
+        [this, pin](Measured& measured) {
+            // Other clusters shown meanwhile, or other settings asked: those asked for their own.
+            if (measured.first.clusters != shown_.clusters || !sameSettings(measured.first.settings, asked_)) return;
+            const Settings before = shown_.settings;
+            setShownSettings(measured.first.settings);
+            shown_.orbit = measured.first.orbit;
+            adoptComparison(measured.second);
+            if (displayedTest(before) != displayedTest(shown_.settings) || before.orthographic != shown_.settings.orthographic) updateEye();
             emit orbitChanged();
+            emit comparisonChanged();
+            if (!pin || !pin_ || pin->clusters != pin_->clusters) completeComparison();  // A pinned meanwhile
         },
-        [this](const QString& error) { emit errorOccurred(tr("Cannot measure the orbit"), error); });
-    requestOrbitComparison();
+        [this](const QString& error) {
+            emit errorOccurred(tr("Cannot measure the orbit"), error + tr("\n\nThe settings and orbit shown before stay."));
+            revertToSnapshot();
+        });
+}
+
+void Session::adoptComparison(const std::optional<OrbitComparison>& comparison) {
+    orbitComparison_.reset();
+    if (!pin_ || !comparison || comparison->a.clusters != pin_->clusters || comparison->b.clusters != shown_.clusters) return;
+    if (!sameSettings(comparison->a.settings, pin_->settings) || !sameSettings(comparison->b.settings, shown_.settings)) return;
+    orbitComparison_ = comparison;
+}
+
+void Session::completeComparison() {
+    if (pin_ && !orbitComparison_ && pin_->prepared == shown_.prepared && !runner_.busy(taskgroups::load) &&
+        !runner_.busy(taskgroups::clusters))
+        requestOrbit();
 }
 
 void Session::showSceneResult(SceneResult& result, bool newMesh) {
@@ -244,13 +320,10 @@ void Session::showSceneResult(SceneResult& result, bool newMesh) {
     if (legendViewHeight_ > 0) scene_->fitLegend(legendViewHeight_, legendPixelRatio_);
     if (!samePartition || picked_ >= int(shown_.clusters->partition.clusterCount)) picked_ = -1;
     scene_->setHighlightedCluster(picked_);
-    orbit_.reset();
-    orbitComparison_.reset();
     if (newMesh) dropPin();
     else dropStalePin();
-    // What was asked meanwhile and needs no other stages is shown with these at once.
-    const bool stale = needsBuild();
-    setShownSettings(stale ? shown_.settings : asked_);
+    setShownSettings(shown_.settings);  // A is seen from these eyes
+    adoptComparison(result.comparison);
     if (newMesh) {
         if (!eyeGiven_) eyePosition_ = startingEyePosition(shown_.prepared->box, shown_.settings);
         eyeGiven_ = false;
@@ -260,13 +333,10 @@ void Session::showSceneResult(SceneResult& result, bool newMesh) {
     emit sceneReplaced(previous.get(), newMesh);
     emit eyeMoved();
     emit eyeMeasured();
-    if (stale) requestClusters();
-    else requestOrbit();
-}
-
-void Session::clearOrbit() {
-    orbit_.reset();
     emit orbitChanged();
+    emit comparisonChanged();
+    // What was asked meanwhile (other clusters, another test or views) or A pinned meanwhile follows.
+    reconcile();
 }
 
 // --- Exports ---------------------------------------------------------------------------------------

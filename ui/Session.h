@@ -1,9 +1,13 @@
 // What the window shows, without any widget: one snapshot of the settings and the stages built with
-// them (prepared mesh, clusters), the scene of those clusters, the cull eye's measurement, the orbit's
-// rows, the cull eye and the picked cluster. Everything the window shows or exports is made from the
-// snapshot (and from A's while one is pinned); the settings widgets show its settings. The slow stages
-// run through a TaskRunner; every number comes from core/Pipeline.h. Signals say what is new, and the
-// views (ObserverView, the docks) show it.
+// them (prepared mesh, clusters, the orbit's statistics), the scene of those clusters, the cull eye's
+// measurement, the cull eye and the picked cluster. Everything the window shows or exports is made
+// from the snapshot (and from A's while one is pinned); the settings widgets show its settings. The
+// slow stages run through a TaskRunner; every number comes from core/Pipeline.h. Signals say what is
+// new, and the views (ObserverView, the docks) show it.
+//
+// A snapshot is shown whole: new clusters come with their scene, their orbit and (with A pinned) A
+// against them; other settings of the test or views come with their orbit. So a Cancel at any stage
+// drops what was being made and everything shown stays as it was, made with the settings shown.
 //
 // The public functions under "Actions" are what a click, a key or a replayed step (ReplayPlayer) does:
 // both go through them.
@@ -17,6 +21,7 @@
 
 #include <QObject>
 #include <QString>
+#include <QStringList>
 #include <QTimer>
 
 #include "Exports.h"
@@ -28,12 +33,21 @@
 
 namespace conescope {
 
+// The displayed test over the orbit (measureOrbit) and the settings it was measured with.
+struct OrbitMeasurement {
+    Settings settings;
+    CullTestStatistics statistics;
+};
+
 // Settings and the stages built with them: what is shown, or what is pinned as A.
 struct Snapshot {
     Settings settings;
     std::shared_ptr<const PreparedMesh> prepared;
     std::shared_ptr<const ClusterSet> clusters;
+    std::shared_ptr<const OrbitMeasurement> orbit;
     ClusterConfiguration configuration() const { return {*clusters, settings}; }
+    // The orbit's statistics when they were measured with these settings, else null.
+    const CullTestStatistics* orbitStatistics() const;
 };
 
 class Session : public QObject {
@@ -51,11 +65,18 @@ public:
     // the widgets; a cancelled or failed build puts the snapshot's settings back.
     void applySettings(const Settings& settings);
     // Cancels every background task, as the status bar's Cancel button: the snapshot stays, and so
-    // do its settings (settingsChanged() when the widgets showed others).
+    // do its settings (settingsChanged() when the widgets showed others), orbit and comparison.
     void cancel();
     // The next build (a load or new clusters) is cancelled as soon as it starts, as if Cancel were
     // pressed while it runs.
     void cancelNextBuild() { cancelNextBuild_ = true; }
+    // Cancel is pressed when the progress next shows this stage: a task's title ("Building clusters")
+    // or a stage of it ("scene", "orbit statistics"; a name also matches a stage it starts, followed
+    // by a space: "bounds" matches "bounds (minimal)"). Empty disarms. cancelStageArmed() stays true
+    // until the stage came; stagesSeen() lists the stages shown meanwhile.
+    void cancelAtStage(const QString& stage);
+    bool cancelStageArmed() const { return !cancelStage_.isEmpty(); }
+    const QStringList& stagesSeen() const { return stagesSeen_; }
     void moveEye(const glm::dvec3& position, long orbitStep = -1);
     // The eye to orbit view `view` (0-based); false when the orbit has no such view.
     bool moveEyeToOrbitView(long view);
@@ -66,11 +87,13 @@ public:
     // A cluster index, or -1 for none (also for an index the clusters do not have).
     void pickCluster(int cluster);
     // Pins the snapshot as A; the settings from then on are B. The faces are coloured by the
-    // comparison (FaceColoring::Comparison) and the orbit is compared too.
+    // comparison (FaceColoring::Comparison) and the orbit is compared too: A is pinned when that
+    // comparison is measured (a Cancel meanwhile pins nothing).
     void pinAsA();
     // Drops A; faces coloured by the comparison go back to the cull decision.
     void clearPin();
-    // A's snapshot becomes the shown one and the shown one A: nothing is rebuilt.
+    // A's snapshot becomes the shown one and the shown one A: no clusters are built; shown when the
+    // comparison the other way round (and A's orbit, when measured with other views) is measured.
     void swapAB();
     // Statistics in the CLI's format for the current eye or the orbit, in the background; `finished`
     // says whether the file was written. While A is pinned, the document `conescope-cli compare`
@@ -104,8 +127,8 @@ public:
     QString eyeError() const { return eyeError_; }
     double eyeSeconds() const { return eyeSeconds_; }
     const std::vector<ViewStatistics>& orbitRows() const;
-    // The displayed test over the orbit with every cluster's counts and fractions; null until measured.
-    const CullTestStatistics* orbitStatistics() const { return orbit_ ? &*orbit_ : nullptr; }
+    // The displayed test over the orbit with every cluster's counts and fractions; null before a mesh.
+    const CullTestStatistics* orbitStatistics() const { return shown_.orbitStatistics(); }
 
     // --- The cull eye -----------------------------------------------------------------------------
     glm::dvec3 eyePosition() const { return eyePosition_; }
@@ -148,7 +171,7 @@ public:
     // A against B from the current eye; null without a pin or a measured eye.
     const Comparison* eyeComparison() const { return eyeComparison_ ? &*eyeComparison_ : nullptr; }
     // A against B over the orbit; null until measured.
-    const Comparison* orbitComparison() const { return orbitComparison_ ? &*orbitComparison_ : nullptr; }
+    const Comparison* orbitComparison() const { return orbitComparison_ ? &orbitComparison_->comparison : nullptr; }
     // A's cluster holding the first face of the current partition's `cluster`; -1 without a pin.
     int pinnedClusterOf(int cluster) const;
 
@@ -182,16 +205,27 @@ signals:
     void idle();
 
 private:
-    // What the clusters stage delivers to the UI thread.
+    // A against B over B's orbit, with A and B as they were compared (their clusters and settings).
+    struct OrbitComparison {
+        Snapshot a, b;
+        Comparison comparison;
+    };
+    // Completes `b` in the background: its orbit (kept when measured with its settings) and, with
+    // `pin` on its prepared mesh, A against it over the same views.
+    static std::optional<OrbitComparison> measureSnapshot(Snapshot& b, const std::optional<Snapshot>& pin, const ProgressCallback& progress);
+    // What a build delivers to the UI thread: the snapshot with its orbit, its scene and, with A
+    // pinned, A against it.
     struct SceneResult {
         Snapshot snapshot;
         std::unique_ptr<ClusterScene> scene;
+        std::optional<OrbitComparison> comparison;
         std::string builderNote;  // why the clusters came from another builder than the settings said
     };
 
     // Whether the asked settings need stages other than the snapshot's.
     bool needsBuild() const;
-    // The snapshot to the asked settings: a build when they need one, else at once.
+    // The snapshot to the asked settings: a build when they need one, another orbit when the test or
+    // views change (shown when measured), else at once.
     void reconcile();
     void requestClusters();
     void buildStarted();
@@ -199,16 +233,21 @@ private:
     // The widgets back to the snapshot's settings.
     void revertToSnapshot();
     void setShownSettings(const Settings& settings);
+    // The asked settings on the shown clusters, with their orbit and A's comparison, shown together.
     void requestOrbit();
+    // A's comparison when it was made for A as pinned and B as shown, else none.
+    void adoptComparison(const std::optional<OrbitComparison>& comparison);
+    // A pinned without its comparison asks for one, unless new clusters are on their way (they bring it).
+    void completeComparison();
     void showSceneResult(SceneResult& result, bool newMesh);
-    void clearOrbit();
+    // A task's title or stage shown: kept in stagesSeen() while a Cancel stage is armed.
+    void stageShown(const QString& stage);
     void updateEye();
     void measureCurrentEye();
     // The picked cluster's lesson from the measured eye, and the lesson layer's drawing of it.
     void updateLesson();
     // A against B from the measured eye, its per-face diff in the scene (or none without a pin).
     void measurePinnedEye();
-    void requestOrbitComparison();
     // Drops A without touching the colouring: a new mesh, or A made for another prepared mesh.
     void dropPin();
     void dropStalePin();
@@ -217,11 +256,12 @@ private:
     Snapshot shown_;
     Settings asked_;
     bool cancelNextBuild_ = false;
+    QString cancelStage_;
+    QStringList stagesSeen_;
     std::unique_ptr<ClusterScene> scene_;
     std::optional<EyeMeasurement> measurement_;
     QString eyeError_;
     double eyeSeconds_ = 0.0;
-    std::optional<CullTestStatistics> orbit_;
     glm::dvec3 eyePosition_{0.0, 0.0, 3.0};
     bool eyeGiven_ = false;  // the next mesh keeps eyePosition_ instead of the starting position
     long orbitStep_ = -1;
@@ -236,7 +276,7 @@ private:
     std::optional<Lesson> lesson_;
     std::optional<Snapshot> pin_;
     std::optional<Comparison> eyeComparison_;
-    std::optional<Comparison> orbitComparison_;
+    std::optional<OrbitComparison> orbitComparison_;
 };
 
 }  // namespace conescope

@@ -9,12 +9,28 @@ namespace conescope {
 
 void Session::pinAsA() {
     if (!shown_.clusters) return;
-    pin_ = shown_;
-    measurePinnedEye();
-    requestOrbitComparison();
-    setFaceColoring(FaceColoring::Comparison);
-    emit comparisonChanged();
-    emit notice(tr("Pinned as A: change the settings to make B; X swaps them; Shift+R shows the side where they cull"), 8000);
+    runner_.cancel(taskgroups::comparison);
+    const Snapshot a = shown_;
+    // Pinned with A against B over the orbit: a Cancel meanwhile leaves nothing pinned.
+    runner_.run<std::optional<OrbitComparison>>(
+        taskgroups::comparison, tr("Comparing A and B over the orbit"),
+        [a](const ProgressCallback& progress) {
+            Snapshot b = a;
+            return measureSnapshot(b, a, progress);
+        },
+        [this, a](std::optional<OrbitComparison>& comparison) {
+            pin_ = a;
+            dropStalePin();                      // another winding repair shown meanwhile
+            if (!pin_) return;
+            setShownSettings(shown_.settings);  // A is seen from B's eyes
+            adoptComparison(comparison);         // none when other clusters were shown meanwhile
+            measurePinnedEye();
+            setFaceColoring(FaceColoring::Comparison);
+            emit comparisonChanged();
+            emit notice(tr("Pinned as A: change the settings to make B; X swaps them; Shift+R shows the side where they cull"), 8000);
+            completeComparison();
+        },
+        [this](const QString& error) { emit errorOccurred(tr("Cannot compare A and B"), error); });
 }
 
 void Session::clearPin() {
@@ -35,14 +51,27 @@ void Session::dropPin() {
 void Session::swapAB() {
     if (!pin_ || !shown_.clusters || pin_->prepared != shown_.prepared) return;
     runner_.cancel(taskgroups::clusters);
-    const Snapshot previous = shown_;
-    SceneResult result;
-    result.snapshot = *pin_;
-    result.scene = makeScene(*shown_.prepared, *pin_->clusters);
-    pin_ = previous;
-    asked_ = result.snapshot.settings;
-    emit settingsChanged(asked_);
-    showSceneResult(result, false);
+    runner_.cancel(taskgroups::comparison);
+    const Snapshot a = shown_, b = *pin_;
+    // Shown with its scene, its orbit (when A's was measured with other views) and the comparison
+    // the other way round; a Cancel meanwhile leaves A and B as they were.
+    runner_.run<SceneResult>(
+        taskgroups::comparison, tr("Swapping A and B"),
+        [a, b](const ProgressCallback& progress) {
+            SceneResult result;
+            result.snapshot = b;
+            result.scene = makeScene(*b.prepared, *b.clusters);
+            result.comparison = measureSnapshot(result.snapshot, a, progress);
+            return result;
+        },
+        [this, a, b](SceneResult& result) {
+            if (!pin_ || pin_->clusters != b.clusters || shown_.clusters != a.clusters) return;  // changed meanwhile
+            pin_ = shown_;
+            asked_ = result.snapshot.settings;
+            emit settingsChanged(asked_);
+            showSceneResult(result, false);
+        },
+        [this](const QString& error) { emit errorOccurred(tr("Cannot swap A and B"), error); });
 }
 
 int Session::pinnedClusterOf(int cluster) const {
@@ -68,25 +97,5 @@ void Session::measurePinnedEye() {
     eyeComparison_ = showComparison(*scene_, *shown_.prepared, pin_->configuration(), shown_.configuration(), *measurement_);
 }
 
-void Session::requestOrbitComparison() {
-    runner_.cancel(taskgroups::comparison);
-    orbitComparison_.reset();
-    if (!pin_ || !shown_.clusters) return;
-    const Snapshot a = *pin_, b = shown_;
-    const std::vector<Eye> views = orbitOf(b.settings, b.prepared->box);
-    runner_.run<Comparison>(
-        taskgroups::comparison, tr("Comparing A and B over the orbit"),
-        [a, b, views](const ProgressCallback& progress) {
-            return compareClusterSets(*b.prepared, a.configuration(), b.configuration(), views, progress);
-        },
-        [this, a, b](Comparison& comparison) {
-            // Other clusters meanwhile: their own comparison follows. (Other tests or views ask for a
-            // new comparison, which cancels this one.)
-            if (!pin_ || pin_->clusters != a.clusters || shown_.clusters != b.clusters) return;
-            orbitComparison_ = std::move(comparison);
-            emit comparisonChanged();
-        },
-        [this](const QString& error) { emit errorOccurred(tr("Cannot compare A and B"), error); });
-}
 
 }  // namespace conescope

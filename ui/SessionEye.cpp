@@ -171,7 +171,8 @@ bool Session::exportExplanation(const QString& path) {
 
 const std::vector<ViewStatistics>& Session::orbitRows() const {
     static const std::vector<ViewStatistics> none;
-    return orbit_ ? orbit_->views : none;
+    const CullTestStatistics* orbit = orbitStatistics();
+    return orbit ? orbit->views : none;
 }
 
 void Session::showClusterWhereItIsLost(int cluster) {

@@ -52,12 +52,12 @@ void TaskRunner::submit(const QString& group, const QString& title, std::functio
         const auto cancelled = task->cancelled;
         if (*cancelled) return;
         QMetaObject::invokeMethod(this, [this, title = task->title]() { emit taskStarted(title); }, Qt::QueuedConnection);
+        if (cancelledAt(task->title, *cancelled)) return;
         const ProgressCallback progress = [this, cancelled](double fraction, const std::string& stage) {
             if (*cancelled) return false;
-            QMetaObject::invokeMethod(
-                this, [this, fraction, stage = QString::fromStdString(stage)]() { emit progressChanged(fraction, stage); },
-                Qt::QueuedConnection);
-            return true;
+            const QString shown = QString::fromStdString(stage);
+            QMetaObject::invokeMethod(this, [this, fraction, shown]() { emit progressChanged(fraction, shown); }, Qt::QueuedConnection);
+            return !cancelledAt(shown, *cancelled);
         };
         try {
             task->work(progress);
@@ -73,7 +73,10 @@ void TaskRunner::submit(const QString& group, const QString& title, std::functio
 }
 
 void TaskRunner::finish(const std::shared_ptr<Task>& task) {
+    // No longer running while it delivers: busy() then says whether other work is left (a Cancel
+    // pressed meanwhile has nothing of this task's to cancel).
     queued_.erase(std::remove(queued_.begin(), queued_.end(), task), queued_.end());
+    --pending_;
     // A cancelled task (flag set, or OperationCancelled thrown) delivers nothing.
     if (!*task->cancelled) {
         if (task->succeeded)
@@ -81,7 +84,24 @@ void TaskRunner::finish(const std::shared_ptr<Task>& task) {
         else if (!task->error.isEmpty())
             task->failed(task->error);
     }
-    if (--pending_ == 0) emit idle();
+    if (pending_ == 0) emit idle();
+}
+
+void TaskRunner::cancelAtStage(const QString& stage, std::function<bool(const QString&)> matches) {
+    std::lock_guard<std::mutex> lock(stageMutex_);
+    cancelStage_ = stage;
+    stageMatches_ = std::move(matches);
+}
+
+bool TaskRunner::cancelledAt(const QString& stage, std::atomic<bool>& cancelled) {
+    {
+        std::lock_guard<std::mutex> lock(stageMutex_);
+        if (cancelStage_.isEmpty() || !stageMatches_(stage)) return false;
+        cancelStage_.clear();
+    }
+    cancelled = true;
+    QMetaObject::invokeMethod(this, [this, stage]() { emit stageCancelled(stage); }, Qt::QueuedConnection);
+    return true;
 }
 
 void TaskRunner::cancel(const QString& group) {

@@ -7,6 +7,7 @@
 #include <atomic>
 #include <functional>
 #include <memory>
+#include <mutex>
 #include <optional>
 
 #include <QObject>
@@ -37,6 +38,10 @@ public:
     // Cancels the running and queued tasks of one group, or of all groups.
     void cancel(const QString& group);
     void cancelAll();
+    // The task that next shows this stage (its title, or a stage its work reports: `matches` says)
+    // is cancelled right there, on its own thread, as if Cancel were pressed that instant; then
+    // stageCancelled(). An empty stage disarms.
+    void cancelAtStage(const QString& stage, std::function<bool(const QString&)> matches);
     bool busy() const { return pending_ > 0; }
     bool busy(const QString& group) const;
     // Blocks (running the event loop) until no task is queued or running.
@@ -45,10 +50,14 @@ public:
 signals:
     void taskStarted(const QString& title);
     void progressChanged(double fraction, const QString& stage);
+    void stageCancelled(const QString& stage);
     void idle();
 
 private:
     struct Task;
+    // On the worker: whether `stage` is the armed one (then disarmed, the task cancelled and
+    // stageCancelled() on its way).
+    bool cancelledAt(const QString& stage, std::atomic<bool>& cancelled);
     void submit(const QString& group, const QString& title, std::function<void(const ProgressCallback&)> work,
                 std::function<void()> done, std::function<void(const QString&)> failed);
     void finish(const std::shared_ptr<Task>& task);
@@ -56,6 +65,9 @@ private:
     QThreadPool pool_;
     std::vector<std::shared_ptr<Task>> queued_;
     int pending_ = 0;
+    std::mutex stageMutex_;
+    QString cancelStage_;
+    std::function<bool(const QString&)> stageMatches_;
 };
 
 }  // namespace conescope

@@ -117,3 +117,17 @@ def test_what_the_cli_warns_of_is_a_python_warning(tmp_path):
     faces[5] = list(reversed(faces[5]))  # one face wound the other way
     with pytest.warns(UserWarning, match="repair with --fix-winding"):
         conescope.stats_arrays(vertices, faces, views=4)
+
+
+def test_float64_positions_that_float32_merges_are_a_warning(tmp_path):
+    # fandisk moved by 1e6: float32 (the core's) has steps of 0.0625 there and merges 5,877 positions.
+    vertices, faces = read_off(DATASETS / "fandisk.off")
+    far = vertices.astype(np.float64) + 1e6
+    with pytest.warns(UserWarning, match=r"6475 vertices read, 598 kept: float32, which ConeScope computes in, merged 5877 positions the file holds apart"):
+        document = conescope.stats_arrays(far, faces, name="far.off", views=4)
+    assert document["mesh"]["vertices"] == 598
+    path = tmp_path / "far.off"
+    path.write_text(f"OFF\n{len(far)} {len(faces)} 0\n" + "".join(f"{float(x)!r} {float(y)!r} {float(z)!r}\n" for x, y, z in far)
+                    + "".join(f"3 {a} {b} {c}\n" for a, b, c in faces))
+    with pytest.warns(UserWarning, match="merged 5877 positions the file holds apart"):
+        conescope.stats(path, views=4)

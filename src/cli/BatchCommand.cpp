@@ -63,6 +63,27 @@ void note(bool quiet, const std::string& message) {
     if (!quiet) std::cerr << "conescope-cli: " << message << std::endl;
 }
 
+// DIR and DIR/meshes made when missing, or why not in the batch's words (std::filesystem's own text
+// names its call, not the folder's problem).
+void makeOutputFolder(const fs::path& folder) {
+    std::error_code error;
+    for (const fs::path& path : {folder, folder / "meshes"}) {
+        // The nearest part of the path that exists must be a folder.
+        fs::path existing = path;
+        while (!existing.empty() && !fs::exists(fs::symlink_status(existing, error)) && existing.has_parent_path() &&
+               existing.parent_path() != existing)
+            existing = existing.parent_path();
+        const fs::file_status status = fs::status(existing, error);
+        if (fs::exists(fs::symlink_status(existing, error)) && !fs::is_directory(status))
+            throw std::runtime_error(folder.string() + ": cannot be the output folder: " + existing.string() +
+                                     (fs::exists(status) ? " is a file, not a folder" : " is a link to nothing"));
+        fs::create_directories(path, error);
+        if (error) throw std::runtime_error(folder.string() + ": cannot make the output folder (" + error.message() + ")");
+    }
+    if (::access(folder.c_str(), W_OK | X_OK) != 0)
+        throw std::runtime_error(folder.string() + ": cannot write into the output folder (" + std::strerror(errno) + ")");
+}
+
 // One batch per folder at a time: a second would interleave rows. The lock goes with the process.
 int lockFolder(const fs::path& folder) {
     const std::string path = (folder / ".batch.lock").string();
@@ -187,6 +208,15 @@ BatchPlan planBatch(const BatchOptions& options, const BatchConfig& config, cons
         if (row.count("json")) byJson[row.at("json")] = &row;
     for (const BatchMesh& mesh : plan.meshes) {
         BatchRow start = batchRowStart(mesh, config);
+        if (!mesh.problem.empty()) {
+            // Its row now, and looked at again by every run: a path problem is fixed outside the batch.
+            start["content_hash"] = "";
+            for (const auto& [key, value] : errorCells("read", mesh.problem)) start[key] = value;
+            note(options.quiet, "error: " + mesh.problem);
+            plan.rows.push_back(start);
+            plan.done.push_back(true);
+            continue;
+        }
         const auto found = byJson.find(mesh.json);
         const bool keep = found != byJson.end() && reusable(*found->second, start, folder);
         plan.rows.push_back(keep ? *found->second : start);
@@ -315,7 +345,7 @@ int runBatch(const BatchOptions& options) {
     const BatchConfig config =
         batchConfig(options.run.toSettings(), options.compareMeshopt ? kMeshoptPipeline : options.compare, options.detail);
     const fs::path folder = options.output;
-    fs::create_directories(folder / "meshes");
+    makeOutputFolder(folder);
     const int lock = lockFolder(folder);
     removePartialFiles(folder);
     removePartialFiles(folder / "meshes");

@@ -29,25 +29,50 @@ BatchMesh batchMesh(const fs::path& path) {
     std::error_code error;
     fs::path canonical = fs::weakly_canonical(fs::absolute(path), error);
     if (error) canonical = fs::absolute(path);
-    BatchMesh mesh{path.string(), canonical.string(), batchJsonName(canonical.string()), 0};
+    BatchMesh mesh{path.string(), canonical.string(), batchJsonName(canonical.string()), 0, ""};
     const uintmax_t bytes = fs::file_size(canonical, error);
     mesh.bytes = error ? 0 : bytes;
     return mesh;
 }
 
+BatchMesh pathProblem(const fs::path& path, const std::string& problem) {
+    BatchMesh mesh = batchMesh(path);
+    mesh.problem = path.string() + ": " + problem;
+    return mesh;
+}
+
+// Why a path that is not a folder cannot be read as a mesh, in the reader's words; "" when it is a file.
+std::string fileProblem(const fs::path& path) {
+    std::error_code error;
+    const fs::file_status status = fs::status(path, error), link = fs::symlink_status(path, error);
+    if (fs::is_symlink(link) && !fs::exists(status)) {
+        const fs::path target = fs::read_symlink(path, error);
+        return "a link to " + target.string() + ", which does not exist";
+    }
+    if (!fs::exists(status)) return "no such file or folder";
+    if (fs::is_directory(status)) return "a folder named like a mesh file, not a mesh (its meshes are looked for inside it)";
+    if (!fs::is_regular_file(status)) return "not a regular file (a device, pipe or socket)";
+    return "";
+}
+
+// The folder's meshes and path problems, and those of the folders below it (hidden ones and links
+// to folders left out: a link may loop). A folder that cannot be listed is a problem of its own.
 void addFolder(const fs::path& folder, std::vector<BatchMesh>& meshes) {
     std::error_code error;
-    fs::recursive_directory_iterator entry(folder, fs::directory_options::skip_permission_denied, error), end;
-    if (error) throw std::runtime_error(folder.string() + ": cannot list (" + error.message() + ")");
+    fs::directory_iterator entry(folder, error), end;
     for (; !error && entry != end; entry.increment(error)) {
-        if (hidden(entry->path())) {
-            if (entry->is_directory(error)) entry.disable_recursion_pending();
-            continue;
+        const fs::path& path = entry->path();
+        if (hidden(path)) continue;
+        std::error_code ignored;
+        const bool folderBelow = entry->is_directory(ignored) && !entry->is_symlink(ignored);
+        if (hasSupportedMeshExtension(path.string())) {
+            const std::string problem = fileProblem(path);
+            if (problem.empty()) meshes.push_back(batchMesh(path));
+            else meshes.push_back(pathProblem(path, problem));
         }
-        if (entry->is_regular_file(error) && hasSupportedMeshExtension(entry->path().string()))
-            meshes.push_back(batchMesh(entry->path()));
+        if (folderBelow) addFolder(path, meshes);
     }
-    if (error) throw std::runtime_error(folder.string() + ": cannot list (" + error.message() + ")");
+    if (error) meshes.push_back(pathProblem(folder, "cannot list the folder (" + error.message() + ")"));
 }
 
 std::string hex(const void* bytes, size_t count) {
@@ -61,8 +86,10 @@ std::string hex(const void* bytes, size_t count) {
     return text;
 }
 
-// Feeds the file's bytes to the hash; false when it cannot be read.
+// Feeds the file's bytes to the hash; false when it cannot be read (a pipe would block the read).
 bool hashFile(const std::string& path, XXH3_state_t* state) {
+    std::error_code error;
+    if (!fs::is_regular_file(path, error)) return false;
     std::ifstream in(path, std::ios::binary);
     if (!in) return false;
     std::vector<char> buffer(1 << 20);
@@ -98,12 +125,13 @@ std::vector<BatchMesh> findBatchMeshes(const std::vector<std::string>& paths) {
     std::vector<BatchMesh> meshes;
     for (const std::string& path : paths) {
         std::error_code error;
-        const fs::file_status status = fs::status(path, error);
-        if (!fs::exists(status)) throw std::runtime_error(path + ": no such file or folder");
-        if (fs::is_directory(status))
+        if (fs::is_directory(fs::status(path, error))) {
             addFolder(path, meshes);
-        else
-            meshes.push_back(batchMesh(path));
+            continue;
+        }
+        // A file given is read whatever its extension: the reader names an unknown one.
+        const std::string problem = fileProblem(path);
+        meshes.push_back(problem.empty() ? batchMesh(path) : pathProblem(path, problem));
     }
     std::sort(meshes.begin(), meshes.end(), [](const BatchMesh& a, const BatchMesh& b) { return a.path < b.path; });
     std::set<std::string> seen;

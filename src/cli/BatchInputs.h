@@ -17,11 +17,15 @@ struct BatchMesh {
     std::string canonical;  // absolute with links resolved: one mesh however it was reached
     std::string json;       // its statistics file, relative to the output folder (batchJsonName)
     uintmax_t bytes = 0;    // its size, which weighs it in the ETA
+    // Why the path cannot be a mesh (it does not exist, a link to nothing, a folder named like a mesh,
+    // a folder that cannot be listed, not a file): its row is this error, no worker reads it.
+    std::string problem;
 };
 
 // Every file given, and every file below a folder given whose extension a reader takes (the readers'
-// one table, io/MeshReader.h), skipping hidden files and folders; sorted by path, each mesh once.
-// Throws std::runtime_error naming a path that does not exist.
+// one table, io/MeshReader.h), skipping hidden files and folders and not following links to folders;
+// sorted by path, each mesh once. A path given that is no mesh or folder, and an entry found with a
+// mesh's extension that is no file, come with their `problem`: a batch never stops for one path.
 std::vector<BatchMesh> findBatchMeshes(const std::vector<std::string>& paths);
 
 // "I/N" with 1 <= I <= N. Throws std::invalid_argument.

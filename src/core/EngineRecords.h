@@ -1,6 +1,6 @@
 // The per-cluster records the engine tests and the compact octagon read (RecordTests.h), kept with
 // the bounds they belong to and made on first use: meshoptimizer's meshopt_Bounds (meshopt/Meshopt.h;
-// a meshlet file's own when it stored them), cadscene's packed cone and box (CadsceneCones.h) and
+// a meshlet file's own, stored or made from its meshlets), cadscene's packed cone and box (CadsceneCones.h) and
 // the 16-byte octagon (CompactOctagons.h). Made once per kind under a lock, so the window's threads
 // may ask together; every caller passes the same stages the bounds were made from.
 #pragma once
@@ -30,7 +30,7 @@ struct RecordSource {
 
 class EngineRecords {
 public:
-    // meshoptimizer's bounds a meshlet file stored, one per cluster: used instead of the library's.
+    // A meshlet file's meshoptimizer bounds, one per cluster: used instead of the partition's.
     void useStoredMeshoptBounds(const std::vector<MeshletBounds>& stored);
     bool meshoptStored() const { return !stored_.empty(); }
 

@@ -23,7 +23,8 @@ Partition ownClusters(const Mesh& mesh);
 // Whether the mesh gives the file builder clusters without a cluster file.
 bool meshHasOwnClusters(const Mesh& mesh);
 
-// The bounds a meshlet file stored for this cluster file (meshopt_Bounds per cluster), or null.
+// The bounds of this meshlet file (meshopt_Bounds per cluster: stored, or computed on its own
+// meshlets when it stored none), or null.
 const std::vector<MeshletBounds>* storedMeshletBounds(const Mesh& mesh, const std::string& clusterFile);
 
 }  // namespace conescope

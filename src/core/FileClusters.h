@@ -24,7 +24,8 @@ struct MeshletBounds {
 struct FileClusters {
     std::vector<uint32_t> clusterOfFace;  // one per face of the mesh, ids as the file numbers them
     uint32_t clusterCount = 0;            // every id below it has a face
-    std::vector<MeshletBounds> bounds;    // per cluster when the file stored them, else empty
+    // Per cluster for a meshlet file: the ones it stored, else meshoptimizer's of its own meshlets.
+    std::vector<MeshletBounds> bounds;
 };
 
 }  // namespace conescope

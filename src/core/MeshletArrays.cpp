@@ -17,6 +17,14 @@ std::string meshletName(size_t m) { return "meshlet " + std::to_string(m); }
 
 std::string triangleName(size_t m, size_t t) { return meshletName(m) + ", triangle " + std::to_string(t); }
 
+// What a meshlet of these counts breaks of meshoptimizer's limits.
+std::string beyondLimits(size_t vertexCount, size_t triangleCount) {
+    const std::string limits = " (meshoptimizer's meshlets hold at most " + std::to_string(kMeshletMaxVertices) + " vertices and " +
+                               std::to_string(kMeshletMaxTriangles) + " triangles)";
+    if (vertexCount > kMeshletMaxVertices) return "vertex_count " + std::to_string(vertexCount) + " is above " + std::to_string(kMeshletMaxVertices) + limits;
+    return "triangle_count " + std::to_string(triangleCount) + " is above " + std::to_string(kMeshletMaxTriangles) + limits;
+}
+
 // Offsets, counts, vertex indices and local indices in range, before anything is looked up.
 void checkRanges(const MeshletArrays& arrays, size_t fileVertexCount) {
     if (!arrays.bounds.empty() && arrays.bounds.size() != arrays.meshlets.size())
@@ -26,6 +34,8 @@ void checkRanges(const MeshletArrays& arrays, size_t fileVertexCount) {
     for (size_t m = 0; m < arrays.meshlets.size(); ++m) {
         const auto [vertexOffset, triangleOffset, vertexCount, triangleCount] = arrays.meshlets[m];
         if (triangleCount == 0) throw MeshletError(meshletName(m) + " has no triangles");
+        if (vertexCount > kMeshletMaxVertices || triangleCount > kMeshletMaxTriangles)
+            throw MeshletError(meshletName(m) + ": " + beyondLimits(vertexCount, triangleCount));
         if (uint64_t(vertexOffset) + vertexCount > arrays.vertices.size())
             throw MeshletError(meshletName(m) + ": vertex_offset " + std::to_string(vertexOffset) + " + vertex_count " +
                                std::to_string(vertexCount) + " runs past meshlet_vertices (" + std::to_string(arrays.vertices.size()) +
@@ -334,9 +344,9 @@ MeshletArrays meshletsOfPartition(const Mesh& mesh, const Partition& partition) 
                 for (uint32_t v : {corners[0], corners[k], corners[k + 1]}) arrays.triangles.push_back(uint8_t(localOf[v]));
         }
         const uint32_t vertexCount = uint32_t(arrays.vertices.size()) - vertexOffset;
-        if (vertexCount > 256)
-            throw std::invalid_argument("cluster " + std::to_string(c) + " uses " + std::to_string(vertexCount) +
-                                        " vertices: a meshlet's triangles address at most 256 (one byte a local index)");
+        if (vertexCount > kMeshletMaxVertices || triangleCount > kMeshletMaxTriangles)
+            throw std::invalid_argument("cluster " + std::to_string(c) + ": " + beyondLimits(vertexCount, triangleCount) +
+                                        "; write .obj, .gltf or .txt, or build with --max-verts 255 --max-tris 512");
         for (uint32_t i = vertexOffset; i < arrays.vertices.size(); ++i) localOf[arrays.vertices[i]] = kNone;
         // Each meshlet's triangles start on a multiple of 4 bytes, as meshopt_buildMeshlets lays them out.
         arrays.triangles.resize((arrays.triangles.size() + 3) & ~size_t(3), 0);

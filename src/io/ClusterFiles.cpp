@@ -89,6 +89,8 @@ void readClusterFile(Mesh& mesh, const std::string& path, std::vector<std::strin
                                           "write the mesh without one");
         Mesh applied = mesh;
         AppliedMeshlets meshlets = applyMeshlets(applied, arrays);
+        // Without stored bounds, the engine's: meshoptimizer's of the file's own meshlets.
+        if (meshlets.clusters.bounds.empty()) meshlets.clusters.bounds = meshoptBoundsOfFileMeshlets(arrays, applied);
         applied.fileClusters[path] = std::move(meshlets.clusters);
         mesh = std::move(applied);
         if (meshlets.cutPolygons > 0)

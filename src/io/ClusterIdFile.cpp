@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "io/ClassicLocale.h"
+#include "io/FileChecks.h"
 #include "io/MeshletFiles.h"
 
 namespace conescope {
@@ -28,7 +29,7 @@ std::vector<double> readClusterIdFile(const std::string& path) {
             char* end = nullptr;
             const double value = std::strtod(word.c_str(), &end);
             if (end == word.c_str() || *end != '\0')
-                throw std::runtime_error(path + ":" + std::to_string(lineNumber) + ": '" + word + "' is not a number");
+                throw std::runtime_error(path + ":" + std::to_string(lineNumber) + ": " + quotedForMessage(word) + " is not a number");
             ids.push_back(value);
         }
     }

@@ -7,6 +7,7 @@
 // and MeshWriter.h are the interface.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -17,8 +18,9 @@ namespace conescope {
 
 struct VtkFormats {
     // A mesh from an .stl, .vtp or .vtk file, after the checks of HeaderChecks.h; throws
-    // MeshReadError naming the file.
-    Mesh (*read)(const std::string& path, const std::string& extension);
+    // MeshReadError naming the file. Points stored wider than float leave their keys in `exactKeys`
+    // (PositionMerging.h).
+    Mesh (*read)(const std::string& path, const std::string& extension, std::vector<uint64_t>& exactKeys);
     // Writes .vtp, .vtk or .ply; throws MeshWriteError naming the file.
     void (*write)(const Mesh& mesh, const std::string& path, const std::string& extension);
 };

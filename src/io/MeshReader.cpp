@@ -33,23 +33,27 @@ std::string supportedExtensionList() {
     return list;
 }
 
-// What a reader gets besides the path: where to leave notes and whom to tell its progress.
+// What a reader gets besides the path: where to leave notes, whom to tell its progress, and where to
+// keep the positions it read wider than float (PositionMerging.h).
 struct ReadContext {
     std::vector<std::string>& notes;
     const ProgressCallback& progress;
+    std::vector<uint64_t>& exactKeys;
 };
 
 Mesh readByExtension(const std::string& path, const std::string& extension, ReadContext& context) {
-    if (extension == ".off") return readOff(path);
-    if (extension == ".obj") return readObj(path, context.notes, context.progress);
-    if (extension == ".ply") return readPly(path, context.notes, context.progress);
+    if (extension == ".off") return readOff(path, &context.exactKeys);
+    if (extension == ".obj") return readObj(path, context.notes, context.progress, &context.exactKeys);
+    if (extension == ".ply") return readPly(path, context.notes, context.progress, &context.exactKeys);
+    // glTF positions are float32 already.
     if (extension == ".gltf" || extension == ".glb") return gltfFormat().read(path, context.notes, context.progress);
-    return vtkFormats().read(path, extension);
+    return vtkFormats().read(path, extension, context.exactKeys);
 }
 
 // What every mesh goes through after its reader: at least one face, validateMesh, and vertices at equal
-// positions merged. `cornersPerFace`: the format stores a corner per face, so merging is no news.
-void finishMesh(MeshFile& file, const std::string& path, bool cornersPerFace) {
+// positions merged. `cornersPerFace`: the format stores a corner per face, so merging is no news; a
+// position lost to rounding always is.
+void finishMesh(MeshFile& file, const std::string& path, bool cornersPerFace, const std::vector<uint64_t>& exactKeys) {
     Mesh& mesh = file.mesh;
     if (mesh.faceCount() == 0) throw MeshReadError(path + ": no faces");
     try {
@@ -60,10 +64,13 @@ void finishMesh(MeshFile& file, const std::string& path, bool cornersPerFace) {
     // Clusters never cross components, so vertices a file splits at one position (at normal or
     // texture seams, or a corner per face as STL and glTF store them) would cut the surface apart
     // and make every builder look perfect. Vertices are positions, as OBJ's `v` entries are.
-    const size_t merged = mergeEqualPositions(mesh);
-    if (merged > 0 && !cornersPerFace)
-        file.notes.push_back("merged " + std::to_string(merged) + " vertices into others at the same position (the file splits "
+    const size_t vertices = mesh.positions.size();
+    const MergedPositions merge = mergeEqualPositions(mesh, exactKeys);
+    const size_t sameInFile = merge.merged - merge.lostPositions;
+    if (sameInFile > 0 && !cornersPerFace)
+        file.notes.push_back("merged " + std::to_string(sameInFile) + " vertices into others at the same position (the file splits "
                              "them, e.g. at normal or texture seams), so faces meeting there are neighbours");
+    if (merge.lostPositions > 0) file.notes.push_back(lostPositionsWarning(mesh, vertices, merge));
 }
 
 }  // namespace
@@ -79,7 +86,8 @@ MeshFile readMeshFile(const std::string& path, const ProgressCallback& progress)
     requireReadableFile(path);
     MeshFile file;
     Mesh& mesh = file.mesh;
-    ReadContext context{file.notes, progress};
+    std::vector<uint64_t> exactKeys;
+    ReadContext context{file.notes, progress, exactKeys};
     try {
         mesh = readByExtension(path, extension, context);
     } catch (const MeshReadError&) {
@@ -91,13 +99,16 @@ MeshFile readMeshFile(const std::string& path, const ProgressCallback& progress)
     } catch (const std::exception& error) {
         throw MeshReadError(path + ": " + error.what());
     }
-    finishMesh(file, path, extension == ".stl" || extension == ".gltf" || extension == ".glb");
+    finishMesh(file, path, extension == ".stl" || extension == ".gltf" || extension == ".glb", exactKeys);
     return file;
 }
 
-MeshFile meshFromArrays(Mesh mesh, const std::string& name) {
+MeshFile meshFromArrays(Mesh mesh, const std::string& name, const std::vector<glm::dvec3>& exactPositions) {
+    std::vector<uint64_t> exactKeys;
+    if (exactPositions.size() == mesh.positions.size())
+        for (const glm::dvec3& position : exactPositions) addExactPosition(&exactKeys, position);
     MeshFile file{std::move(mesh), {}};
-    finishMesh(file, name, false);
+    finishMesh(file, name, false, exactKeys);
     return file;
 }
 

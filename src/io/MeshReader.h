@@ -28,7 +28,9 @@ public:
 Mesh readMesh(const std::string& path);
 
 // A mesh with what its reader noticed but did not refuse, for the user to see: parts that are not
-// faces (points, lines) and were skipped, encodings converted, and the like. One sentence each.
+// faces (points, lines) and were skipped, encodings converted, and the like; and, starting with
+// "Warning: ", positions the file holds apart that rounding to float32 merged (coordinates far from
+// the origin for the mesh's size). One sentence each.
 struct MeshFile {
     Mesh mesh;
     std::vector<std::string> notes;
@@ -40,8 +42,9 @@ MeshFile readMeshFile(const std::string& path, const ProgressCallback& progress 
 
 // A mesh made in memory (the Python module's arrays) checked and merged as readMeshFile does a file's
 // mesh after its reader, so the same faces give the same numbers. `name` starts the messages.
-// Throws MeshReadError.
-MeshFile meshFromArrays(Mesh mesh, const std::string& name);
+// `exactPositions`, the positions before they were rounded to float (one per vertex, when the caller
+// had float64), let the notes warn of positions that rounding merged. Throws MeshReadError.
+MeshFile meshFromArrays(Mesh mesh, const std::string& name, const std::vector<glm::dvec3>& exactPositions = {});
 
 // Lower-case extensions readMesh accepts, with the dot: {".off", ".ply", ...}.
 std::vector<std::string> supportedMeshExtensions();

@@ -1,5 +1,6 @@
 #include "io/MeshletFiles.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -110,6 +111,12 @@ void putF32(std::string& bytes, float value) {
 
 size_t paddedToFour(size_t count) { return (count + 3) & ~size_t(3); }
 
+// Whether the bytes start, after white space, as a JSON object does.
+bool startsAsJson(const std::string& bytes) {
+    const size_t first = bytes.find_first_not_of(" \t\r\n");
+    return first != std::string::npos && bytes[first] == '{';
+}
+
 }  // namespace
 
 bool isMeshletFile(const std::string& path) {
@@ -117,9 +124,12 @@ bool isMeshletFile(const std::string& path) {
     std::string start(64, '\0');
     in.read(start.data(), std::streamsize(start.size()));
     start.resize(size_t(in.gcount()));
-    if (start.compare(0, 8, kMagic, 8) == 0) return true;
-    const size_t first = start.find_first_not_of(" \t\r\n");
-    return first != std::string::npos && start[first] == '{';
+    if (startsAsJson(start) || lowerCaseExtension(path) == ".meshlets") return true;
+    // Bytes no text has (an id file is text): a binary meshlet file, whatever its first 8 bytes say.
+    return std::any_of(start.begin(), start.end(), [](char c) {
+        const auto byte = uint8_t(c);
+        return byte < 0x20 && byte != '\t' && byte != '\n' && byte != '\r' && byte != '\f' && byte != '\v';
+    }) || start.compare(0, 8, kMagic, 8) == 0;
 }
 
 MeshletArrays parseMeshletJson(const std::string& text, const std::string& source) {
@@ -163,8 +173,11 @@ MeshletArrays parseMeshletJson(const std::string& text, const std::string& sourc
 }
 
 MeshletArrays parseMeshletBinary(const std::string& bytes, const std::string& source) {
-    if (bytes.size() < kHeaderBytes || bytes.compare(0, 8, kMagic, 8) != 0)
-        throw MeshletFileError(source + ": not a binary meshlet file (it starts with \"MESHLETS\" and a 32-byte header)");
+    if (bytes.compare(0, 8, kMagic, 8) != 0)
+        throw MeshletFileError(source + ": not a meshlet file: a binary one starts with the 8 bytes 'MESHLETS', this one with " +
+                               quotedForMessage(bytes.substr(0, 8)) + " (and a JSON one with '{')");
+    if (bytes.size() < kHeaderBytes)
+        throw MeshletFileError(source + ": the file ends at byte " + std::to_string(bytes.size()) + ", inside the 32-byte header");
     const uint32_t version = u32At(bytes, 8), flags = u32At(bytes, 12);
     if (version != 1) throw MeshletFileError(source + ": byte 8: version " + std::to_string(version) + ", this reader knows version 1");
     if (flags > 1) throw MeshletFileError(source + ": byte 12: unknown flags " + std::to_string(flags) + " (only bit 0, bounds, is defined)");
@@ -215,8 +228,8 @@ MeshletArrays readMeshletFile(const std::string& path) {
     } catch (const std::exception& error) {
         throw MeshletFileError(error.what());
     }
-    if (bytes.compare(0, 8, kMagic, 8) == 0) return parseMeshletBinary(bytes, path);
-    return parseMeshletJson(bytes, path);
+    if (startsAsJson(bytes)) return parseMeshletJson(bytes, path);
+    return parseMeshletBinary(bytes, path);
 }
 
 // nlohmann's writer, in meshoptimizer's order: a float bound is written as the double it widens to,

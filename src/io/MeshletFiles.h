@@ -18,10 +18,12 @@ public:
     using std::runtime_error::runtime_error;
 };
 
-// Whether the file starts like a meshlet file (JSON object or the binary magic), by its content.
+// Whether the file is meant as a meshlet file rather than a text of cluster ids: it starts as a JSON
+// object or with the binary magic, holds bytes no text holds, or is named *.meshlets.
 bool isMeshletFile(const std::string& path);
 
-// Reads either form, told apart by the first bytes. Checks the structure only (types, counts, sizes);
+// Reads either form, told apart by the first bytes (a JSON object, else the binary form, whose
+// magic a file without it is refused for, naming what it should be). Checks the structure only (types, counts, sizes);
 // applyMeshlets (core/MeshletArrays.h) checks the arrays against a mesh. Throws MeshletFileError.
 MeshletArrays readMeshletFile(const std::string& path);
 MeshletArrays parseMeshletJson(const std::string& text, const std::string& sourceName);

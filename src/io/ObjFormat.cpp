@@ -13,6 +13,7 @@
 
 #include "io/FileChecks.h"
 #include "io/MeshReader.h"
+#include "io/PositionMerging.h"
 #include "io/TextEncoding.h"
 #include "io/TextScanning.h"
 
@@ -51,8 +52,8 @@ struct ForwardReference {
 
 class ObjParser {
 public:
-    ObjParser(std::string_view text, const std::string& sourceName, const ProgressCallback& progress)
-        : text_(text), sourceName_(sourceName), progress_(progress, text.size()) {}
+    ObjParser(std::string_view text, const std::string& sourceName, const ProgressCallback& progress, std::vector<uint64_t>* exactKeys)
+        : text_(text), sourceName_(sourceName), progress_(progress, text.size()), exactKeys_(exactKeys) {}
 
     Mesh parse(std::vector<std::string>& notes) {
         LineCursor lines(text_, 0, 0);
@@ -106,15 +107,15 @@ private:
         if (words_.size() < 4) fail(lineNumber, vertex() + " has fewer than 3 coordinates");
         if (defined_[Position] == std::numeric_limits<uint32_t>::max())
             fail(lineNumber, "more vertices than 32-bit indices can address");
-        glm::vec3 position;
+        glm::dvec3 position;
         for (int k = 0; k < 3; ++k) {
-            std::optional<float> coordinate = text::parseFiniteFloat(words_[k + 1]);
-            if (!coordinate)
+            if (!text::parseFiniteFloat(words_[k + 1]))
                 fail(lineNumber, vertex() + " has a coordinate that is not a finite number: " +
                                      quotedForMessage(std::string(words_[k + 1])));
-            position[k] = *coordinate;
+            position[k] = *text::parseNumber(words_[k + 1]);
         }
-        mesh_.positions.push_back(position);
+        addExactPosition(exactKeys_, position);
+        mesh_.positions.emplace_back(position);
         ++defined_[Position];
     }
 
@@ -156,7 +157,8 @@ private:
     }
 
     // A corner is v, v/vt, v//vn or v/vt/vn. Returns the 0-based position index, which may still
-    // refer forward (checkForwardReference settles it at the end).
+    // refer forward (checkForwardReference settles it at the end). Trailing slashes name nothing:
+    // slicers write `104/` and `1//` for the vertex alone, and assimp reads them so.
     int64_t readCorner(std::string_view corner, size_t lineNumber) {
         std::array<std::string_view, 3> parts;
         size_t count = 0, start = 0;
@@ -167,6 +169,7 @@ private:
             if (slash == std::string_view::npos) break;
             start = slash + 1;
         }
+        while (count > 1 && parts[count - 1].empty()) --count;
         const bool wellFormed = !parts[0].empty() && (count != 2 || !parts[1].empty()) && (count != 3 || !parts[2].empty());
         if (!wellFormed) fail(lineNumber, "malformed face corner " + quotedForMessage(std::string(corner)));
         const int64_t position = resolveIndex(parts[0], Position, corner, lineNumber);
@@ -223,6 +226,7 @@ private:
     std::string_view text_;
     const std::string& sourceName_;
     ReadProgress progress_;
+    std::vector<uint64_t>* exactKeys_;
     Mesh mesh_;
     std::vector<std::string_view> words_;
     std::array<int64_t, 3> defined_{};  // v, vt and vn statements read so far
@@ -240,14 +244,14 @@ private:
 }  // namespace
 
 Mesh parseObj(std::string_view text, const std::string& sourceName, std::vector<std::string>& notes,
-              const ProgressCallback& progress) {
-    return ObjParser(text, sourceName, progress).parse(notes);
+              const ProgressCallback& progress, std::vector<uint64_t>* exactKeys) {
+    return ObjParser(text, sourceName, progress, exactKeys).parse(notes);
 }
 
-Mesh readObj(const std::string& path, std::vector<std::string>& notes, const ProgressCallback& progress) {
+Mesh readObj(const std::string& path, std::vector<std::string>& notes, const ProgressCallback& progress, std::vector<uint64_t>* exactKeys) {
     Utf8Text text = utf8WithoutByteOrderMark(readFileBytes(path), path);
     if (!text.convertedFrom.empty()) notes.push_back(conversionNote(text));
-    return parseObj(text.text, path, notes, progress);
+    return parseObj(text.text, path, notes, progress, exactKeys);
 }
 
 }  // namespace conescope

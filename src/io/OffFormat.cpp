@@ -8,6 +8,7 @@
 
 #include "io/FileChecks.h"
 #include "io/MeshReader.h"
+#include "io/PositionMerging.h"
 
 namespace conescope {
 
@@ -123,7 +124,8 @@ struct OffCounts {
 
 class OffParser {
 public:
-    OffParser(std::string_view text, const std::string& sourceName) : lines_(text), sourceName_(sourceName) {}
+    OffParser(std::string_view text, const std::string& sourceName, std::vector<uint64_t>* exactKeys)
+        : lines_(text), sourceName_(sourceName), exactKeys_(exactKeys) {}
 
     Mesh parse() {
         OffCounts counts = parseHeader();
@@ -280,6 +282,7 @@ private:
         noteCrowdedLine(line, tokens, coordinateCount);
         if (coordinates[3] == 0.0) fail(line.number, vertexName + " has homogeneous coordinate w = 0");
         glm::dvec3 position = glm::dvec3(coordinates[0], coordinates[1], coordinates[2]) / coordinates[3];
+        addExactPosition(exactKeys_, position);
         glm::vec3 single(position);
         if (!std::isfinite(single.x) || !std::isfinite(single.y) || !std::isfinite(single.z))
             fail(line.number, vertexName + " has a coordinate beyond single-precision range");
@@ -316,18 +319,19 @@ private:
 
     OffLineReader lines_;
     const std::string& sourceName_;
+    std::vector<uint64_t>* exactKeys_;
     OffKeyword keyword_;
     size_t crowdedLine_ = 0, crowdedCount_ = 0;
 };
 
 }  // namespace
 
-Mesh parseOff(std::string_view text, const std::string& sourceName) {
-    return OffParser(text, sourceName).parse();
+Mesh parseOff(std::string_view text, const std::string& sourceName, std::vector<uint64_t>* exactKeys) {
+    return OffParser(text, sourceName, exactKeys).parse();
 }
 
-Mesh readOff(const std::string& path) {
-    return parseOff(readFileBytes(path), path);
+Mesh readOff(const std::string& path, std::vector<uint64_t>* exactKeys) {
+    return parseOff(readFileBytes(path), path, exactKeys);
 }
 
 }  // namespace conescope

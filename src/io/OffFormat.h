@@ -9,8 +9,10 @@
 // Not accepted: "OFF BINARY", nOFF with a dimension other than 3.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "core/Mesh.h"
 
@@ -19,10 +21,11 @@ namespace conescope {
 // Parses OFF text held in memory. sourceName only labels messages ("sourceName:line: what").
 // Throws MeshReadError on any malformed, truncated or inconsistent input, and on zero faces.
 // Counts in the header are never trusted for allocation: a forged count cannot reserve more
-// than the text could possibly hold. Does not run validateMesh (readMesh does).
-Mesh parseOff(std::string_view text, const std::string& sourceName);
+// than the text could possibly hold. Does not run validateMesh (readMesh does). `exactKeys`, when
+// given, gets each position as read before rounding to float (PositionMerging.h).
+Mesh parseOff(std::string_view text, const std::string& sourceName, std::vector<uint64_t>* exactKeys = nullptr);
 
 // Reads a whole file and parses it with parseOff. Throws MeshReadError.
-Mesh readOff(const std::string& path);
+Mesh readOff(const std::string& path, std::vector<uint64_t>* exactKeys = nullptr);
 
 }  // namespace conescope

@@ -12,6 +12,7 @@
 
 #include "io/FileChecks.h"
 #include "io/MeshReader.h"
+#include "io/PositionMerging.h"
 #include "io/TextEncoding.h"
 #include "io/TextScanning.h"
 
@@ -79,8 +80,9 @@ struct MeshProperties {
 class PlyParser {
 public:
     // `convertedFrom` names the encoding the text was converted from, if it was (TextEncoding.h).
-    PlyParser(const std::string& path, std::string_view text, const std::string& convertedFrom, const ProgressCallback& progress)
-        : path_(path), bytes_(text), convertedFrom_(convertedFrom), progress_(progress, text.size()) {}
+    PlyParser(const std::string& path, std::string_view text, const std::string& convertedFrom, const ProgressCallback& progress,
+              std::vector<uint64_t>* exactKeys)
+        : path_(path), bytes_(text), convertedFrom_(convertedFrom), progress_(progress, text.size()), exactKeys_(exactKeys) {}
 
     Mesh parse(std::vector<std::string>& notes) {
         header_ = parseHeader();
@@ -247,16 +249,19 @@ private:
                              std::to_string(vertexCount) + " vertices");
     }
 
-    // A coordinate as the float the mesh keeps: nan, inf and numbers beyond float range are errors.
-    float coordinate(double value, const std::string& shown, uint64_t vertex, size_t lineNumber) const {
+    // A coordinate the mesh can keep as a float: nan, inf and numbers beyond float range are errors.
+    double coordinate(double value, const std::string& shown, uint64_t vertex, size_t lineNumber) const {
         if (!std::isfinite(value) || std::abs(value) > double(std::numeric_limits<float>::max()))
             fail(lineNumber, "PLY vertex " + std::to_string(vertex) + " has a coordinate that is not a finite float: " + shown);
-        return float(value);
+        return value;
     }
 
     // Called after each element instance: a vertex's position or a face's corners join the mesh.
-    void finishElement(const PlyElement& element, uint64_t index, const glm::vec3& position, size_t lineNumber) {
-        if (&element == parts_.vertices) mesh_.positions.push_back(position);
+    void finishElement(const PlyElement& element, uint64_t index, const glm::dvec3& position, size_t lineNumber) {
+        if (&element == parts_.vertices) {
+            mesh_.positions.emplace_back(position);
+            addExactPosition(exactKeys_, position);
+        }
         if (&element != parts_.faces) return;
         const size_t corners = mesh_.faceVertices.size() - mesh_.faceStarts.back();
         if (corners < 3 && shortFace_.empty())
@@ -339,7 +344,7 @@ private:
 
     void readAsciiElement(const PlyElement& element, uint64_t elementIndex, const std::vector<std::string_view>& words,
                           size_t lineNumber) {
-        glm::vec3 position(0.0f);
+        glm::dvec3 position(0.0);
         size_t word = 0;
         for (const PlyProperty& property : element.properties) {
             if (word >= words.size()) fail(lineNumber, elementName(element, elementIndex) + " has too few values");
@@ -411,7 +416,7 @@ private:
         for (const PlyElement& element : header_.elements) {
             for (uint64_t i = 0; i < element.count; ++i) {
                 progress_.at(position);
-                glm::vec3 vertex(0.0f);
+                glm::dvec3 vertex(0.0);
                 for (const PlyProperty& property : element.properties) {
                     if (!property.isList) {
                         require(property.valueType.size, element, i);
@@ -451,6 +456,7 @@ private:
     MeshProperties parts_;
     Mesh mesh_;
     std::vector<double> clusterIds_;
+    std::vector<uint64_t>* exactKeys_;
     struct Problem {
         size_t lineNumber = 0;
         std::string what;
@@ -460,10 +466,10 @@ private:
 
 }  // namespace
 
-Mesh readPly(const std::string& path, std::vector<std::string>& notes, const ProgressCallback& progress) {
+Mesh readPly(const std::string& path, std::vector<std::string>& notes, const ProgressCallback& progress, std::vector<uint64_t>* exactKeys) {
     Utf8Text text = utf8WithoutByteOrderMark(readFileBytes(path), path);
     if (!text.convertedFrom.empty()) notes.push_back(conversionNote(text));
-    return PlyParser(path, text.text, text.convertedFrom, progress).parse(notes);
+    return PlyParser(path, text.text, text.convertedFrom, progress, exactKeys).parse(notes);
 }
 
 }  // namespace conescope

@@ -11,6 +11,7 @@
 // skipped; UTF-16 text is converted, with a note, when the format is ascii.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -24,7 +25,9 @@ namespace conescope {
 // indices of vertices the file does not have, coordinates that are not finite floats, a face of
 // fewer than 3 vertices, no face element. Never allocates from a count in the header. What was
 // read but is worth knowing goes to `notes`. Reports progress through `progress` (OperationCancelled
-// when it says stop). Does not run validateMesh (readMesh does).
-Mesh readPly(const std::string& path, std::vector<std::string>& notes, const ProgressCallback& progress = {});
+// when it says stop). Does not run validateMesh (readMesh does). `exactKeys`, when given, gets each
+// position as read before rounding to float (PositionMerging.h).
+Mesh readPly(const std::string& path, std::vector<std::string>& notes, const ProgressCallback& progress = {},
+             std::vector<uint64_t>* exactKeys = nullptr);
 
 }  // namespace conescope

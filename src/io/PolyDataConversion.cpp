@@ -17,6 +17,8 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 
+#include "io/PositionMerging.h"
+
 namespace conescope {
 
 namespace {
@@ -119,18 +121,22 @@ vtkSmartPointer<vtkDataArray> cellArrayFromValues(const std::string& name, const
 
 }  // namespace
 
-Mesh meshFromPolyData(vtkPolyData* polyData) {
+Mesh meshFromPolyData(vtkPolyData* polyData, std::vector<uint64_t>* exactKeys) {
     Mesh mesh;
     if (!polyData) return mesh;
     vtkPoints* points = polyData->GetPoints();
     vtkIdType pointCount = points ? points->GetNumberOfPoints() : 0;
     if (static_cast<uint64_t>(pointCount) > std::numeric_limits<uint32_t>::max())
         throw std::runtime_error(std::to_string(pointCount) + " points exceed the 32-bit index range");
+    // Float points lose nothing to rounding: only wider ones need their keys.
+    if (points && points->GetDataType() == VTK_FLOAT) exactKeys = nullptr;
     mesh.positions.resize(static_cast<size_t>(pointCount));
     for (vtkIdType i = 0; i < pointCount; ++i) {
         double point[3];
         points->GetPoint(i, point);
-        mesh.positions[static_cast<size_t>(i)] = glm::vec3(glm::dvec3(point[0], point[1], point[2]));
+        const glm::dvec3 position(point[0], point[1], point[2]);
+        mesh.positions[static_cast<size_t>(i)] = glm::vec3(position);
+        addExactPosition(exactKeys, position);
     }
     SourceCells sourceCells;
     appendPolygons(polyData, mesh, sourceCells);

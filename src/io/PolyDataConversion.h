@@ -1,7 +1,9 @@
 // Mesh <-> vtkPolyData. Separate from MeshReader.h so code that only reads files needs no VTK headers.
 #pragma once
 
+#include <cstdint>
 #include <string>
+#include <vector>
 
 #include <vtkSmartPointer.h>
 
@@ -20,8 +22,9 @@ inline const char* const modelMatrixArrayName = "model_matrix";
 // numeric cell-data array (e.g. "cluster_id") is copied into faceArrays, following the faces
 // (a strip's value goes to each of its triangles). Does not call validateMesh. Throws
 // std::runtime_error if a point id is negative or does not fit 32 bits. polyData may be null
-// (gives an empty mesh).
-Mesh meshFromPolyData(vtkPolyData* polyData);
+// (gives an empty mesh). Points wider than float leave a key each in `exactKeys` when given
+// (PositionMerging.h).
+Mesh meshFromPolyData(vtkPolyData* polyData, std::vector<uint64_t>* exactKeys = nullptr);
 
 // Float points, one polygon cell per face, every faceArray as cell data (integer-valued arrays as
 // vtkIntArray, so ParaView treats cluster ids as categories; others as vtkDoubleArray), and the model

@@ -62,7 +62,7 @@ std::string describeFailure(const VtkMessageCapture& capture, vtkAlgorithm* read
     return "the VTK reader failed without a message";
 }
 
-Mesh readWithVtk(const std::string& path, const std::string& extension) {
+Mesh readWithVtk(const std::string& path, const std::string& extension, std::vector<uint64_t>& exactKeys) {
     ScopedClassicNumericLocale classicNumbers;
     VtkMessageCapture capture;
     vtkSmartPointer<vtkAlgorithm> reader = makeVtkReader(path, extension);
@@ -81,7 +81,7 @@ Mesh readWithVtk(const std::string& path, const std::string& extension) {
         throw MeshReadError(path + ": no faces (" + std::to_string(polyData->GetNumberOfPoints()) + " points, " +
                             std::to_string(polyData->GetNumberOfLines()) + " lines, no polygons)");
     try {
-        return meshFromPolyData(polyData);
+        return meshFromPolyData(polyData, &exactKeys);
     } catch (const std::runtime_error& error) {
         throw MeshReadError(path + ": " + error.what());
     }

@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <signal.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <chrono>
 #include <filesystem>
@@ -315,9 +317,77 @@ TEST(CliBatch, BadArgumentsStopTheBatchBeforeAnyMeshRuns) {
     const std::string out = scratch.file("out");
     EXPECT_EQ(runBatch({dataset("cube.off"), "-o", out, "--shard", "3/2"}).run.exitCode, 2);
     EXPECT_EQ(runBatch({dataset("cube.off"), "-o", out, "--compare", "colour=red"}).run.exitCode, 2);
-    const TimedRun missing = runBatch({scratch.file("nothing-here"), "-o", out});
-    EXPECT_EQ(missing.run.exitCode, 1);
-    EXPECT_NE(missing.run.err.find("nothing-here: no such file or folder"), std::string::npos) << missing.run.err;
+}
+
+// Whatever is wrong with a path, given or found, is that path's error row; the other meshes run.
+TEST(CliBatch, EveryPathProblemIsAnErrorRowAndTheBatchGoesOn) {
+    ScratchDirectory scratch;
+    const fs::path library = scratch.path() / "library";
+    fs::create_directories(library / "model.obj");
+    fs::copy_file(dataset("cube.off"), library / "good.off");
+    fs::copy_file(dataset("cube.off"), library / "model.obj" / "inside.off");
+    fs::create_symlink("nowhere.obj", library / "gone.obj");
+    ASSERT_EQ(::mkfifo((library / "pipe.ply").c_str(), 0644), 0);
+    fs::create_symlink(scratch.file("nothing.stl"), scratch.path() / "given-link.stl");
+    const std::string out = scratch.file("out");
+    const TimedRun batch = runBatch({library.string(), scratch.file("missing.off"), scratch.file("given-link.stl"), "-o", out});
+    EXPECT_EQ(batch.run.exitCode, 3) << batch.run.err;
+    const std::vector<Row> rows = readResults(out + "/results.csv");
+    ASSERT_EQ(rows.size(), 7u) << batch.run.err;
+    for (const char* good : {"library/good.off", "model.obj/inside.off"}) EXPECT_EQ(rowEndingIn(rows, good).at("status"), "ok") << good;
+    const std::map<std::string, std::string> problems = {
+        {"library/gone.obj", "gone.obj: a link to nowhere.obj, which does not exist"},
+        {"library/model.obj", "model.obj: a folder named like a mesh file, not a mesh (its meshes are looked for inside it)"},
+        {"library/pipe.ply", "pipe.ply: not a regular file (a device, pipe or socket)"},
+        {"missing.off", "missing.off: no such file or folder"},
+        {"given-link.stl", "given-link.stl: a link to " + scratch.file("nothing.stl") + ", which does not exist"}};
+    for (const auto& [file, message] : problems) {
+        const Row& row = rowEndingIn(rows, file);
+        EXPECT_EQ(row.at("status"), "error") << file;
+        EXPECT_EQ(row.at("error_kind"), "read") << file;
+        EXPECT_NE(row.at("error").find(message), std::string::npos) << row.at("error");
+        EXPECT_NE(batch.run.err.find(message), std::string::npos) << batch.run.err;
+    }
+}
+
+// A file or folder nobody may read (run as a user other than root; root reads everything).
+TEST(CliBatch, UnreadableFilesAndFoldersAreErrorRows) {
+    if (::geteuid() == 0) GTEST_SKIP() << "root reads every file: run the tests as another user to check unreadable paths";
+    ScratchDirectory scratch;
+    const fs::path library = scratch.path() / "library";
+    fs::create_directories(library / "closed");
+    fs::copy_file(dataset("cube.off"), library / "good.off");
+    fs::copy_file(dataset("cube.off"), library / "secret.off");
+    fs::copy_file(dataset("cube.off"), library / "closed" / "hidden-inside.off");
+    fs::permissions(library / "secret.off", fs::perms::none);
+    fs::permissions(library / "closed", fs::perms::none);
+    const std::string out = scratch.file("out");
+    const TimedRun batch = runBatch({library.string(), "-o", out});
+    fs::permissions(library / "closed", fs::perms::owner_all);
+    EXPECT_EQ(batch.run.exitCode, 3) << batch.run.err;
+    const std::vector<Row> rows = readResults(out + "/results.csv");
+    ASSERT_EQ(rows.size(), 3u) << batch.run.err;
+    EXPECT_EQ(rowEndingIn(rows, "good.off").at("status"), "ok");
+    EXPECT_NE(rowEndingIn(rows, "secret.off").at("error").find("secret.off: cannot open file for reading (Permission denied)"), std::string::npos);
+    EXPECT_NE(rowEndingIn(rows, "library/closed").at("error").find("closed: cannot list the folder (Permission denied)"), std::string::npos);
+}
+
+// The output folder's problems in the batch's words, not std::filesystem's "filesystem error: ...".
+TEST(CliBatch, OutputFolderErrorsSayWhatIsWrong) {
+    ScratchDirectory scratch;
+    const std::string file = scratch.writeFile("taken.txt", "a file\n");
+    fs::create_symlink(scratch.file("nowhere"), scratch.path() / "dangling");
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {file, file + ": cannot be the output folder: " + file + " is a file, not a folder"},
+        {file + "/out", file + "/out: cannot be the output folder: " + file + " is a file, not a folder"},
+        {scratch.file("dangling"), scratch.file("dangling") + ": cannot be the output folder: " + scratch.file("dangling") + " is a link to nothing"},
+        {"/proc/conescope-out", "/proc/conescope-out: cannot make the output folder (No such file or directory)"}};
+    for (const auto& [folder, message] : cases) {
+        const TimedRun batch = runBatch({dataset("cube.off"), "-o", folder});
+        EXPECT_EQ(batch.run.exitCode, 1) << folder;
+        EXPECT_NE(batch.run.err.find("conescope-cli: error: " + message), std::string::npos) << batch.run.err;
+        EXPECT_EQ(batch.run.err.find("filesystem error"), std::string::npos) << batch.run.err;
+    }
 }
 
 }  // namespace

@@ -451,10 +451,13 @@ TEST(MalformedObj, TwoVertexFace) {
     EXPECT_READ_ERROR(scratch.writeFile("short.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2\n"), ": ");
 }
 
-TEST(MalformedObj, CornerWithEmptyTextureIndex) {
-    // "1/" crashed VTK 9.1's OBJ reader.
+TEST(MalformedObj, CornerWithoutAVertex) {
+    // "1/" crashed VTK 9.1's OBJ reader; a trailing slash is read now (ObjFile.TrailingSlashes...),
+    // a corner without its vertex is still refused.
     ScratchDirectory scratch;
-    EXPECT_READ_ERROR(scratch.writeFile("slash.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/ 2 3\n"), ":4: malformed face corner '1/'");
+    EXPECT_READ_ERROR(scratch.writeFile("slash.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf /1 2 3\n"), ":4: malformed face corner '/1'");
+    EXPECT_READ_ERROR(scratch.writeFile("slashes.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf // 2 3\n"), ":4: malformed face corner '//'");
+    EXPECT_READ_ERROR(scratch.writeFile("four.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/// 2 3\n"), ":4: malformed face corner '1///'");
 }
 
 TEST(MalformedObj, TextureAndNormalIndicesMustExist) {

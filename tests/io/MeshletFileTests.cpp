@@ -3,7 +3,10 @@
 #include <gtest/gtest.h>
 
 #include "IoTestSupport.h"
+#include "core/BuildPartition.h"
+#include "core/meshopt/Meshopt.h"
 #include "io/ClusterFiles.h"
+#include "io/MeshReader.h"
 #include "io/MeshletFiles.h"
 
 namespace conescope {
@@ -185,6 +188,64 @@ TEST(MeshletFiles, RefusesOffsetsAndCountsOutOfRange) {
     EXPECT_HAS(applyError(arrays), "bounds has 1 entries for 2 meshlets");
 }
 
+// meshopt_buildMeshlets allows at most 255 vertices and 512 triangles a meshlet, and
+// meshopt_computeMeshletBounds assumes so: a file beyond them is not an engine's meshlet file.
+TEST(MeshletFiles, RefusesAMeshletBeyondMeshoptimizersLimits) {
+    MeshletArrays arrays = gridMeshlets();
+    arrays.meshlets[1][2] = 300;
+    EXPECT_HAS(applyError(arrays), "meshlet 1: vertex_count 300 is above 255 (meshoptimizer's meshlets hold at most 255 vertices and 512 triangles)");
+    arrays = gridMeshlets();
+    arrays.meshlets[0][3] = 513;
+    EXPECT_HAS(applyError(arrays), "meshlet 0: triangle_count 513 is above 512");
+    // The writer refuses what the reader would: a cluster of 256 vertices (a 16 x 15 grid of squares).
+    Mesh big;
+    for (int y = 0; y < 16; ++y)
+        for (int x = 0; x < 16; ++x) big.positions.emplace_back(float(x), float(y), 0.0f);
+    for (uint32_t y = 0; y < 15; ++y)
+        for (uint32_t x = 0; x < 15; ++x) big.addFace({16 * y + x, 16 * y + x + 1, 16 * y + x + 17, 16 * y + x + 16});
+    Partition whole;
+    whole.clusterOfFace.assign(big.faceCount(), 0);
+    whole.clusterCount = 1;
+    EXPECT_HAS(errorOf<std::invalid_argument>([&] { meshletsOfPartition(big, whole); }), "cluster 0: vertex_count 256 is above 255");
+}
+
+// Without stored bounds, a file is scored with meshopt_computeMeshletBounds of its own meshlets, in
+// its own triangle order (the library's cone and sphere depend on it), not of the mesh's faces:
+// elephant's partition with each meshlet's triangles reversed changes the bounds of some meshlets.
+TEST(MeshletFiles, BoundsOfAFileWithoutThemComeFromItsOwnMeshlets) {
+    const std::string path = (testing::datasetsDir() / "elephant.off").string();
+    Mesh mesh = readMesh(path);
+    Settings settings;
+    settings.builder = Builder::Meshopt;
+    const Partition partition = buildPartition(mesh, computeFaceGeometry(mesh), settings);
+    MeshletArrays faceOrder = meshletsOfPartition(mesh, partition), reversed = faceOrder;
+    for (const auto& [vertexOffset, triangleOffset, vertexCount, triangleCount] : reversed.meshlets)
+        for (uint32_t t = 0; t < triangleCount; ++t)
+            for (int k = 0; k < 3; ++k)
+                reversed.triangles[triangleOffset + 3 * t + k] = faceOrder.triangles[triangleOffset + 3 * (triangleCount - 1 - t) + k];
+    const std::vector<glm::vec3> positions = mesh.positions;  // the file's vertices: elephant.off repeats none
+    ASSERT_TRUE(mesh.fileVertices.empty());
+    const std::vector<MeshletBounds> ownOrder = meshoptBoundsOfMeshlets(reversed, positions);
+    const std::vector<MeshletBounds> meshOrder = meshoptBoundsOfMeshlets(faceOrder, positions);
+    ScratchDirectory scratch;
+    const std::string file = scratch.writeFile("reversed.json", meshletJson(reversed));
+    std::vector<std::string> notes;
+    readClusterFile(mesh, file, notes);
+    const std::vector<MeshletBounds>& read = mesh.fileClusters.at(file).bounds;
+    ASSERT_EQ(read.size(), reversed.meshlets.size());
+    size_t differ = 0;
+    for (size_t m = 0; m < ownOrder.size(); ++m) {
+        EXPECT_EQ(read[m].coneAxis, ownOrder[m].coneAxis) << m;
+        EXPECT_EQ(read[m].coneApex, ownOrder[m].coneApex) << m;
+        EXPECT_EQ(read[m].center, ownOrder[m].center) << m;
+        EXPECT_EQ(read[m].radius, ownOrder[m].radius) << m;
+        EXPECT_EQ(read[m].coneCutoffS8, ownOrder[m].coneCutoffS8) << m;
+        differ += ownOrder[m].coneApex != meshOrder[m].coneApex || ownOrder[m].center != meshOrder[m].center ||
+                  ownOrder[m].coneAxis != meshOrder[m].coneAxis;
+    }
+    EXPECT_GT(differ, 0u) << "the order makes no difference here: the test shows nothing";
+}
+
 TEST(MeshletFiles, RefusesAVertexPastTheMesh) {
     MeshletArrays arrays = gridMeshlets();
     arrays.vertices[8] = 9;  // the grid has vertices 0..8
@@ -246,7 +307,9 @@ TEST(MeshletFiles, ReadErrorsNameThePlace) {
     auto binaryError = [](const std::string& bytes) { return errorOf<MeshletFileError>([&] { parseMeshletBinary(bytes, "m.meshlets"); }); };
     const std::string bytes = meshletBinary(gridMeshlets());
     EXPECT_HAS(binaryError(bytes.substr(0, bytes.size() - 4)), "but the file has 132");
-    EXPECT_HAS(binaryError("MESHLETX" + bytes.substr(8)), "not a binary meshlet file");
+    EXPECT_HAS(binaryError("MESHLETX" + bytes.substr(8)),
+               "m.meshlets: not a meshlet file: a binary one starts with the 8 bytes 'MESHLETS', this one with 'MESHLETX'");
+    EXPECT_HAS(binaryError(bytes.substr(0, 20)), "m.meshlets: the file ends at byte 20, inside the 32-byte header");
     std::string version = bytes;
     version[8] = 2;
     EXPECT_HAS(binaryError(version), "byte 8: version 2");
@@ -266,6 +329,27 @@ TEST(MeshletFiles, ClusterFileErrorsNameTheFile) {
         EXPECT_HAS(error.what(), path + ": meshlet 0, triangle 0");
     }
     EXPECT_TRUE(mesh.fileClusters.empty()) << "nothing is kept of a file that did not load";
+}
+
+// A binary file whose magic is wrong is a meshlet file that says what it should start with, not a
+// text of cluster ids refused with a message cut at its first NUL byte; whatever its name.
+TEST(MeshletFiles, AWrongMagicNamesTheRightOne) {
+    ScratchDirectory scratch;
+    std::string bytes = meshletBinary(gridMeshlets());
+    bytes[7] = 'X';
+    for (const char* name : {"grid.meshlets", "grid.bin", "grid.txt"}) {
+        const std::string path = scratch.writeFile(name, bytes);
+        EXPECT_TRUE(isMeshletFile(path)) << name;
+        Mesh mesh = grid();
+        std::vector<std::string> notes;
+        Settings settings;
+        settings.builder = Builder::File;
+        settings.clusterFile = path;
+        EXPECT_EQ(errorOf<ClusterFileError>([&] { readClusterFileOf(mesh, settings, notes); }),
+                  path + ": not a meshlet file: a binary one starts with the 8 bytes 'MESHLETS', this one with 'MESHLETX' (and a JSON one with '{')");
+    }
+    // A text of ids stays one.
+    EXPECT_FALSE(isMeshletFile(scratch.writeFile("ids.txt", "0\n1\n0\n")));
 }
 
 }  // namespace

@@ -53,6 +53,22 @@ TEST(ObjFile, EveryCornerFormGivesThePosition) {
     }
 }
 
+// Printer-bed files of a slicer end corners with a slash (`104/`, `1//`): the vertex alone, as assimp
+// reads them; a texture coordinate before the slash is still checked.
+TEST(ObjFile, TrailingSlashesNameTheVertexAlone) {
+    ScratchDirectory scratch;
+    const std::string vertices = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\n";
+    for (const char* face : {"f 1/ 2/ 3/ 4/", "f 1// 2// 3// 4//", "f 1/1/ 2/1/ 3/1/ 4/1/", "f 1/ 2// 3/1/ 4"}) {
+        SCOPED_TRACE(face);
+        const MeshFile file = readMeshFile(scratch.writeFile("slashes.obj", vertices + face + "\n"));
+        ASSERT_EQ(file.mesh.faceCount(), 1u);
+        EXPECT_EQ(faceVertices(file.mesh, 0), (std::vector<uint32_t>{0, 1, 2, 3}));
+        EXPECT_TRUE(file.notes.empty());
+    }
+    EXPECT_READ_ERROR(scratch.writeFile("texture.obj", vertices + "f 1/2/ 2/ 3/ 4/\n"),
+                      ":6: face corner '1/2/' uses texture coordinate 2 but the file has only 1");
+}
+
 // Negative indices count back from the elements defined so far, so each face below uses the four
 // positions just before it; positive indices may refer to positions defined later in the file.
 TEST(ObjFile, RelativeAndForwardIndices) {

@@ -328,5 +328,100 @@ TEST(VertexMerging, SplitSeamsAreJoinedWithANoteInEveryIndexedFormat) {
     EXPECT_EQ(computeFaceGeometry(zeros.mesh).degenerateCount, 2u);
 }
 
+// fandisk moved by 1e6 in float64: float32 steps of 0.0625 there merge 5,877 of its 6,475 positions,
+// and the numbers describe another mesh. Every reader of positions wider than float says so, with
+// the counts and why; the same mesh near the origin, or read from float32, says nothing.
+std::string shiftedText(const Mesh& mesh, const std::string& format, double shift) {
+    std::string text;
+    char line[128];
+    const auto point = [&](const glm::vec3& p, const char* pattern) {
+        std::snprintf(line, sizeof line, pattern, double(p.x) + shift, double(p.y) + shift, double(p.z) + shift);
+        text += line;
+    };
+    if (format == ".off") {
+        text = "OFF\n" + std::to_string(mesh.positions.size()) + " " + std::to_string(mesh.faceCount()) + " 0\n";
+        for (const glm::vec3& p : mesh.positions) point(p, "%.17g %.17g %.17g\n");
+    } else if (format == ".obj") {
+        for (const glm::vec3& p : mesh.positions) point(p, "v %.17g %.17g %.17g\n");
+    } else {  // legacy VTK, ASCII, double points
+        text = "# vtk DataFile Version 3.0\nshifted\nASCII\nDATASET POLYDATA\nPOINTS " + std::to_string(mesh.positions.size()) + " double\n";
+        for (const glm::vec3& p : mesh.positions) point(p, "%.17g %.17g %.17g\n");
+        text += "POLYGONS " + std::to_string(mesh.faceCount()) + " " + std::to_string(mesh.faceCount() * 4) + "\n";
+    }
+    for (size_t f = 0; f < mesh.faceCount(); ++f) {
+        const uint32_t* c = mesh.faceBegin(f);
+        if (format == ".obj") text += "f " + std::to_string(c[0] + 1) + " " + std::to_string(c[1] + 1) + " " + std::to_string(c[2] + 1) + "\n";
+        else text += "3 " + std::to_string(c[0]) + " " + std::to_string(c[1]) + " " + std::to_string(c[2]) + "\n";
+    }
+    return text;
+}
+
+std::string binaryPlyOfDoubles(const Mesh& mesh, double shift) {
+    std::string bytes = "ply\nformat binary_little_endian 1.0\nelement vertex " + std::to_string(mesh.positions.size()) +
+                        "\nproperty double x\nproperty double y\nproperty double z\nelement face " + std::to_string(mesh.faceCount()) +
+                        "\nproperty list uchar int vertex_indices\nend_header\n";
+    const auto append = [&](const void* data, size_t size) { bytes.append(static_cast<const char*>(data), size); };
+    for (const glm::vec3& p : mesh.positions)
+        for (int k = 0; k < 3; ++k) {
+            const double value = double(p[k]) + shift;
+            append(&value, 8);
+        }
+    for (size_t f = 0; f < mesh.faceCount(); ++f) {
+        const uint8_t three = 3;
+        append(&three, 1);
+        for (size_t k = 0; k < 3; ++k) {
+            const int32_t index = int32_t(mesh.faceBegin(f)[k]);
+            append(&index, 4);
+        }
+    }
+    return bytes;
+}
+
+TEST(VertexMerging, PositionsThatRoundingToFloatMergesAreAWarning) {
+    testing::ScratchDirectory scratch;
+    const Mesh fandisk = readMesh((testing::datasetsDir() / "fandisk.off").string());
+    ASSERT_EQ(fandisk.positions.size(), 6475u);
+    const std::string expected = "Warning: 6475 vertices read, 598 kept: float32, which ConeScope computes in, merged 5877 positions "
+                                 "the file holds apart (at coordinates up to 1e+06 float32 steps by 0.0625), so faces collapse";
+    for (const char* format : {".off", ".obj", ".vtk"}) {
+        SCOPED_TRACE(format);
+        const MeshFile far = readMeshFile(scratch.writeFile(std::string("far") + format, shiftedText(fandisk, format, 1e6)));
+        EXPECT_EQ(far.mesh.positions.size(), 598u);
+        ASSERT_EQ(far.notes.size(), 1u);
+        EXPECT_EQ(far.notes[0].rfind(expected, 0), 0u) << far.notes[0];
+        EXPECT_NE(far.notes[0].find("move the mesh near the origin"), std::string::npos);
+        const MeshFile near = readMeshFile(scratch.writeFile(std::string("near") + format, shiftedText(fandisk, format, 0.0)));
+        EXPECT_EQ(near.mesh.positions.size(), 6475u);
+        EXPECT_TRUE(near.notes.empty()) << near.notes.front();
+    }
+    const MeshFile ply = readMeshFile(scratch.writeFile("far.ply", binaryPlyOfDoubles(fandisk, 1e6)));
+    ASSERT_EQ(ply.notes.size(), 1u);
+    EXPECT_EQ(ply.notes[0].rfind(expected, 0), 0u) << ply.notes[0];
+    // Arrays given in float64 (the Python module's), and the same rounded to float32 first: nothing
+    // then tells the merged positions apart.
+    Mesh arrays = fandisk;
+    std::vector<glm::dvec3> exact;
+    for (glm::vec3& p : arrays.positions) {
+        exact.push_back(glm::dvec3(p) + 1e6);
+        p = glm::vec3(exact.back());
+    }
+    const MeshFile given = meshFromArrays(arrays, "arrays", exact);
+    ASSERT_EQ(given.notes.size(), 1u);
+    EXPECT_EQ(given.notes[0].rfind(expected, 0), 0u) << given.notes[0];
+    EXPECT_EQ(meshFromArrays(arrays, "arrays").notes.front().find("Warning"), std::string::npos);
+}
+
+// A seam stored twice is merged with its note; a position rounding merged beside it is counted apart.
+TEST(VertexMerging, SeamsAndRoundingAreCountedApart) {
+    testing::ScratchDirectory scratch;
+    const MeshFile file = readMeshFile(scratch.writeFile(
+        "both.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 0 0\nv 1 1 0\nv 0 1 0\nv 1.00000001 1 0\nf 1 2 3\nf 4 5 6\nf 2 7 6\n"));
+    EXPECT_EQ(file.mesh.positions.size(), 4u);
+    ASSERT_EQ(file.notes.size(), 2u);
+    EXPECT_NE(file.notes[0].find("merged 2 vertices into others at the same position"), std::string::npos) << file.notes[0];
+    EXPECT_EQ(file.notes[1].rfind("Warning: 7 vertices read, 4 kept", 0), 0u) << file.notes[1];
+    EXPECT_NE(file.notes[1].find("merged 1 position the file holds apart"), std::string::npos) << file.notes[1];
+}
+
 }  // namespace
 }  // namespace conescope

@@ -123,8 +123,9 @@ private slots:
         window_->setEyePosition({0.6, 0.3, 1.4});
         QVERIFY(!window_->session().hasPin());
         QVERIFY(!window_->statisticsPanel()->findChild<QLabel*>(QStringLiteral("A (pinned)"))->isVisibleTo(window_->statisticsPanel()));
-        // A: the default builder. B: meshoptimizer's builder.
+        // A: the default builder. B: meshoptimizer's builder. A is pinned with its comparison.
         QTest::keyClick(window_.get(), Qt::Key_A);
+        window_->waitUntilIdle();
         QVERIFY(window_->session().hasPin());
         QCOMPARE(int(window_->scene()->faceColoring()), int(FaceColoring::Comparison));
         Settings b = window_->settings();
@@ -190,6 +191,7 @@ private slots:
         window_->waitUntilIdle();
         QVERIFY(!window_->session().hasPin());
         QTest::keyClick(window_.get(), Qt::Key_A);
+        window_->waitUntilIdle();
         QVERIFY(window_->session().hasPin());
         // Shift+A clears the pin and goes back to the decision colours; a new mesh clears it too.
         QTest::keyClick(window_.get(), Qt::Key_A, Qt::ShiftModifier);
@@ -210,6 +212,7 @@ private slots:
         chooseInCombo(window_->settingsPanel()->testBox(), "apex");
         window_->waitUntilIdle();
         QTest::keyClick(window_.get(), Qt::Key_A);
+        window_->waitUntilIdle();
         QVERIFY(window_->session().hasPin());
         const Comparison* eye = window_->session().eyeComparison();
         QVERIFY(eye);

@@ -222,10 +222,13 @@ private slots:
                                                QLocale().toString(qulonglong(fromBehind.size()))));
 
         // Orthographic: the eye becomes a direction towards the centre; the core agrees.
+        // (shown with its orbit, once that is measured).
         chooseInCombo(window_->settingsPanel()->projectionBox(), "orthographic");
+        window_->waitUntilIdle();
         QVERIFY(window_->currentStatistics()->eye.orthographic);
         compareWithCore(*window_);
         QTest::keyClick(window_.get(), Qt::Key_O);
+        window_->waitUntilIdle();
         QVERIFY(!window_->settings().orthographic);
         QVERIFY(!window_->currentStatistics()->eye.orthographic);
         window_->waitUntilIdle();

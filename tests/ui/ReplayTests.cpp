@@ -90,6 +90,7 @@ private slots:
         QVERIFY(refusal("[{\"lesson-step\": -1}]").contains(QStringLiteral("takes a lesson step")));
         QVERIFY(refusal("[{\"choose\": \"worst\"}]").contains(QStringLiteral("test-loss")));
         QVERIFY(refusal("[{\"cross-section\": \"\"}]").contains(QStringLiteral("takes a file path")));
+        QVERIFY(refusal("[{\"cancel-at-stage\": true}]").contains(QStringLiteral("takes the name of a stage")));
         try {
             readReplayFile(temporary_.filePath(QStringLiteral("no-such-replay.json")));
             QFAIL("a missing file was read");
@@ -100,7 +101,7 @@ private slots:
         const std::vector<ReplayStep> steps = parseReplay(
             R"([{"open": "m.off"}, {"set": {"builder": "meshopt", "max-tris": 64, "test": ["apex", "sphere"], "ortho": true}},
                 {"eye": [1, 2, 3.5]}, {"orbit-view": 3}, {"pick": -1}, {"pin": "A"}, {"swap": true}, {"drop-pin": true},
-                {"cancel-next-build": true}, {"screenshot": "a.png"}, {"window-screenshot": "b.png"}, {"export": "c.json"},
+                {"cancel-next-build": true}, {"cancel-at-stage": "scene"}, {"screenshot": "a.png"}, {"window-screenshot": "b.png"}, {"export": "c.json"},
                 {"export-eye": "d.csv"}, {"caption": "text"}, {"choose": 3}, {"choose": "test-loss"}, {"lesson-step": 2},
                 {"cross-section": "e.png"}, {"export-explanation": "f.json"}, {"slides": "g"},
                 {"orbit-slides": "h"}, {"example": "culled"}, {"sweep-eye": 12}, {"sweep-eye": {"frames": 4, "slides": "i"}}])",

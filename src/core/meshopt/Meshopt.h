@@ -195,6 +195,10 @@ MeshoptClusterBounds meshoptClusterBounds(const Mesh& mesh, const std::vector<gl
 // The library's bounds of meshlet m of `arrays`, whose vertex ids index `positions`; of every meshlet.
 MeshletBounds meshoptMeshletBounds(const MeshletArrays& arrays, size_t meshlet, const std::vector<glm::vec3>& positions);
 std::vector<MeshletBounds> meshoptBoundsOfMeshlets(const MeshletArrays& arrays, const std::vector<glm::vec3>& positions);
+// Of a meshlet file's arrays read onto `mesh` (applyMeshlets), whose vertex ids are the file's vertices
+// (Mesh::fileVertices) at the mesh's world positions: the bounds an engine computes from the file's
+// own meshlets, in its triangle order (the library's cone and sphere depend on it).
+std::vector<MeshletBounds> meshoptBoundsOfFileMeshlets(const MeshletArrays& arrays, const Mesh& mesh);
 // The same for a cluster given as triangles (three indices each, into `positions`).
 MeshletBounds meshoptEngineBounds(const std::vector<uint32_t>& indices, const std::vector<glm::vec3>& positions);
 

@@ -35,6 +35,16 @@ std::vector<MeshletBounds> meshoptBoundsOfMeshlets(const MeshletArrays& arrays, 
     return bounds;
 }
 
+std::vector<MeshletBounds> meshoptBoundsOfFileMeshlets(const MeshletArrays& arrays, const Mesh& mesh) {
+    std::vector<glm::vec3> world = worldPositions(mesh);
+    if (!mesh.fileVertices.empty()) {
+        std::vector<glm::vec3> file(mesh.fileVertices.size());
+        for (size_t v = 0; v < file.size(); ++v) file[v] = world[mesh.fileVertices[v]];
+        world = std::move(file);
+    }
+    return meshoptBoundsOfMeshlets(arrays, world);
+}
+
 bool meshoptApexCulls(const MeshletBounds& b, const Eye& eye) {
     if (eye.orthographic)
         return dot3(Float3{float(eye.direction.x), float(eye.direction.y), float(eye.direction.z)}, b.coneAxis) >= b.coneCutoff;
