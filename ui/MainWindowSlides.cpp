@@ -14,6 +14,7 @@
 #include "ObserverView.h"
 #include "Slides.h"
 #include "core/CrossSection.h"
+#include "core/Pipeline.h"
 #include "scene/CrossSectionScene.h"
 #include "scene/SceneRendering.h"
 
@@ -70,9 +71,10 @@ Slide MainWindow::lessonSlide(int step) {
     slide.picture = renderedView(slide.layout.picture.size(), lessonCamera(lesson, step, angle.viewAngleDegrees));
     for (size_t i = 0; i < sections.size(); ++i) {
         CrossSectionScene figure;
-        figure.show(crossSectionOf(sections[i]));
+        figure.show(crossSectionOf(sections[i], cullingInput(*session_.preparedMesh(), *session_.clusters())));
         const QSize size = slide.layout.figures[i].size();
-        slide.figures.push_back(imageOf(renderCrossSectionToImage(figure, size.width(), size.height())));
+        // Its labels as large as the slide's legend, read from the back of the room.
+        slide.figures.push_back(imageOf(renderCrossSectionToImage(figure, size.width(), size.height(), 108)));
     }
     return slide;
 }
