@@ -109,6 +109,7 @@ class TeachingWindowTests : public QObject, private WindowFixture {
     void openTorusWithAPinned(CullTest b) {
         QVERIFY(window_->openMeshBlocking(datasetPath("torus.off")));
         window_->pinAsA();
+        window_->waitUntilIdle();  // A is pinned once its comparison over the orbit is measured
         showTest(b);
     }
 
@@ -327,10 +328,14 @@ private slots:
         window_->resetCamera();
         const ViewStatistics& seen = window_->currentStatistics()->view();
         QVERIFY(seen.trianglesCulled > 0);
-        QVERIFY(culledShareInView(*window_) >= 0.5 * double(seen.trianglesCulled) / double(window_->preparedMesh()->triangles));
+        // Culled clusters in view (the layout of A's rows moves the torus a little: no ratio here), and
+        // more of them from behind.
+        const double first = culledShareInView(*window_);
+        QVERIFY2(first > 0.03, qPrintable(QStringLiteral("A/B: %1 of the view").arg(first)));
         window_->viewFromBehind();
         QApplication::processEvents();
         saveWindowPicture(QStringLiteral("first-view-ab.png"));
+        QVERIFY(culledShareInView(*window_) > first);
         window_->clearPin();
         window_->setSettings(Settings{});
         window_->waitUntilIdle();
