@@ -14,7 +14,9 @@ CC=clang CXX=clang++ cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebI
   -DCONESCOPE_BUILD_GUI=OFF -DCONESCOPE_BUILD_TESTS=ON -DCONESCOPE_BUILD_BENCH=OFF >/dev/null
 cmake --build "$build" -j"$(nproc)"
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1}
-export LSAN_OPTIONS=${LSAN_OPTIONS:-suppressions=$root/fuzz/lsan-suppressions.txt}
+# use_tls=0: the leak checker's thread that walks the threads' dynamic TLS crashes ("Tracer caught
+# signal 11") once a VTK format module has been opened; without TLS as roots it can only report more.
+export LSAN_OPTIONS=${LSAN_OPTIONS:-suppressions=$root/fuzz/lsan-suppressions.txt:use_tls=0:print_suppressions=0}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
 (cd "$build" && ctest --output-on-failure -j2 -L 'core|io|cli')
 CONESCOPE_SANITIZE_BUILD_DIR=$build "$root/scripts/fuzz.sh" "$seconds"
