@@ -5,6 +5,7 @@
 #include <string>
 
 #include "cli/SettingsOptions.h"
+#include "core/lod/LodCut.h"
 #include "io/StatisticsIO.h"
 
 namespace conescope::cli {
@@ -54,6 +55,17 @@ struct PartitionOptions {
     bool quiet = false;
 };
 
+struct LodCommandOptions {
+    std::string mesh;
+    SettingsOptions run;
+    LodThreshold threshold;
+    size_t groupSize = 8;
+    bool perView = true;
+    std::string format;                // "json", "csv", "text" or empty: as for stats
+    std::string output;                // empty = stdout
+    bool quiet = false;
+};
+
 // Culling statistics for every requested (cone, test) as JSON, CSV or a short text summary.
 void runStats(const StatsOptions& options);
 
@@ -65,6 +77,9 @@ void runCompare(const CompareOptions& options);
 
 // Mesh problems as JSON on stdout; with fixWinding also the repaired mesh.
 void runCheck(const CheckOptions& options);
+
+// A cluster LOD hierarchy of the mesh: each level's culling and the cut's from every view.
+void runLod(const LodCommandOptions& options);
 
 // The mesh with a per-face "cluster_id" array, readable by the file builder.
 void runPartition(const PartitionOptions& options);

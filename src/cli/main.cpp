@@ -136,6 +136,26 @@ int main(int argc, char** argv) {
         ->check(meshOutputValidator({".json", ".meshlets", ".obj", ".gltf", ".txt", ".vtp", ".vtk"}));
     partitionCommand->add_flag("-q,--quiet", partition.quiet, "No progress messages on stderr");
 
+    LodCommandOptions lod;
+    CLI::App* lodCommand = app.add_subcommand(
+        "lod", "A cluster LOD hierarchy built from the mesh (groups simplified to half, split again): cone culling per level and of the cut an eye draws");
+    lodCommand->add_option("mesh", lod.mesh, meshFileHelp)->required();
+    addBuilderOptions(*lodCommand, lod.run);
+    addCullingOptions(*lodCommand, lod.run);
+    lodCommand->add_option("--threshold", lod.threshold.value, "Largest error the cut draws, in pixels (or world units with --world)")
+        ->capture_default_str();
+    lodCommand->add_flag("--world", lod.threshold.worldUnits, "The threshold in world units, the same from every eye");
+    lodCommand->add_option("--screen-height", lod.threshold.screenHeight, "Pixels of the screen's height, for a threshold in pixels")
+        ->capture_default_str();
+    lodCommand->add_option("--fov", lod.threshold.fovDegrees, "Vertical field of view in degrees, for a threshold in pixels")
+        ->capture_default_str();
+    lodCommand->add_option("--group-size", lod.groupSize, "Most clusters simplified together")->capture_default_str();
+    lodCommand->add_flag_callback("--no-per-view", [&lod] { lod.perView = false; }, "Leave the cut of each view out of the JSON");
+    lodCommand->add_option("--format", lod.format, "Output format (default: from the output's extension; on a terminal text, else json)")
+        ->check(CLI::IsMember({"json", "csv", "text"}));
+    lodCommand->add_option("-o,--output", lod.output, "Output file, replaced only when the run succeeds (default: stdout)");
+    lodCommand->add_flag("-q,--quiet", lod.quiet, "No progress messages on stderr");
+
     BatchOptions batch;
     BatchWorkerOptions batchWorker;
     const BatchCommands batchCommands = addBatchCommands(app, batch, batchWorker);
@@ -153,6 +173,7 @@ int main(int argc, char** argv) {
         if (compareCommand->parsed()) runCompare(compare);
         if (checkCommand->parsed()) runCheck(check);
         if (partitionCommand->parsed()) runPartition(partition);
+        if (lodCommand->parsed()) runLod(lod);
         if (batchCommands.batch->parsed()) return runBatch(batch);
         if (batchCommands.worker->parsed()) return runBatchWorker(batchWorker);
     } catch (const std::invalid_argument& error) {

@@ -20,9 +20,7 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 }
 
 // Calls the callback and turns a refusal into the core's cancellation exception, like runStatistics.
-void report(const ProgressCallback& progress, double fraction, const std::string& stage) {
-    if (progress && !progress(fraction, stage)) throw OperationCancelled();
-}
+void report(const ProgressCallback& progress, double fraction, const std::string& stage) { reportProgress(progress, fraction, stage); }
 
 // meshoptimizer's bounds a meshlet file stored for the file builder's cluster file: the meshopt
 // tests then test those (EngineRecords.h) instead of the library's.

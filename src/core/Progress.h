@@ -13,6 +13,11 @@ struct OperationCancelled : std::exception {
     const char* what() const noexcept override { return "operation cancelled"; }
 };
 
+// Reports progress; false from the callback cancels (throws OperationCancelled).
+inline void reportProgress(const ProgressCallback& progress, double fraction, const std::string& stage) {
+    if (progress && !progress(fraction, stage)) throw OperationCancelled();
+}
+
 // Reports `fraction` of [0, 1] as the same point of [begin, end] of the caller's progress, so a
 // step can report within its share of a longer run; under the caller's `stage` name when one is
 // given, else the step's own. Empty when `progress` is.

@@ -204,4 +204,18 @@ MeshletBounds meshoptEngineBounds(const std::vector<uint32_t>& indices, const st
     return fromLibrary(meshopt_computeClusterBounds(indices.data(), indices.size(), &positions[0].x, positions.size(), sizeof(glm::vec3)));
 }
 
+SimplifiedTriangles simplifyWithLockedBorder(const std::vector<glm::vec3>& positions, const std::vector<uint32_t>& indices,
+                                             size_t targetTriangles) {
+    SimplifiedTriangles simplified;
+    if (indices.empty() || positions.empty()) return simplified;
+    simplified.indices.resize(indices.size());
+    float relativeError = 0.0f;
+    const size_t count = meshopt_simplify(simplified.indices.data(), indices.data(), indices.size(), &positions[0].x, positions.size(),
+                                          sizeof(glm::vec3), targetTriangles * 3, std::numeric_limits<float>::max(),
+                                          meshopt_SimplifyLockBorder, &relativeError);
+    simplified.indices.resize(count);
+    simplified.error = double(relativeError) * double(meshopt_simplifyScale(&positions[0].x, positions.size(), sizeof(glm::vec3)));
+    return simplified;
+}
+
 }  // namespace conescope

@@ -6,6 +6,7 @@
 //   In parts         the meshlets handed over as they are made, on a thread of their own (MeshletStream)
 //   Bounds           meshopt_computeClusterBounds for one cluster of faces
 //   Engine records   meshopt_Bounds as engines ship them, tested as their shaders test them
+//   Simplification   meshopt_simplify with the border locked, for cluster LOD hierarchies
 // Only Library.cpp includes <meshoptimizer.h>, and a new call into the library goes there too,
 // declared here in its section; the reproduction (Reproduction.cpp, KdTree.h) and the stream
 // (MeshletStream.cpp, CoreAffinity.h) are ConeScope's own code. docs/architecture.md has the why.
@@ -213,5 +214,19 @@ double meshoptSphereS8Margin(const MeshletBounds& bounds, const Eye& eye);
 // Share of view directions (eye at infinity) each culls from: (1 - cutoff) / 2, 0 when cutoff >= 1.
 double meshoptApexCullShare(const MeshletBounds& bounds);
 double meshoptSphereS8CullShare(const MeshletBounds& bounds);
+
+// --- Simplification: meshopt_simplify for cluster LOD hierarchies ----------------------------------
+
+// Triangles simplified and the error that cost, in the positions' units.
+struct SimplifiedTriangles {
+    std::vector<uint32_t> indices;  // three per triangle, into the same positions
+    double error = 0.0;
+};
+// meshopt_simplify of `indices` (three per triangle, into `positions`) toward `targetTriangles`, with
+// every vertex on the triangles' open border locked (meshopt_SimplifyLockBorder), so that a group
+// simplified alone still meets its neighbours. No error bound: the target decides, and the error
+// reached is returned (the library's relative error times meshopt_simplifyScale).
+SimplifiedTriangles simplifyWithLockedBorder(const std::vector<glm::vec3>& positions, const std::vector<uint32_t>& indices,
+                                             size_t targetTriangles);
 
 }  // namespace conescope

@@ -1,0 +1,40 @@
+// conescope-cli lod: a cluster LOD hierarchy built from the mesh, cone culling at each level and of
+// the cut an eye draws.
+#include <sstream>
+
+#include "cli/CommandSupport.h"
+#include "cli/Commands.h"
+#include "core/lod/LodCut.h"
+#include "io/ClusterIdFile.h"
+#include "io/LodIO.h"
+
+namespace conescope::cli {
+
+void runLod(const LodCommandOptions& options) {
+    const Settings settings = withClusterIds(options.run.toSettings());
+    if (!(options.threshold.value >= 0.0)) throw std::invalid_argument("--threshold must be 0 or more");
+    if (!(options.threshold.screenHeight > 0.0)) throw std::invalid_argument("--screen-height must be above 0");
+    if (!(options.threshold.fovDegrees > 0.0 && options.threshold.fovDegrees < 180.0))
+        throw std::invalid_argument("--fov must be between 0 and 180 degrees");
+    if (options.groupSize < 2) throw std::invalid_argument("--group-size must be 2 or more");
+    const std::string format = outputFormat(options.format, options.output, "json");
+    const Mesh mesh = readMeshNoting(options.mesh, options.quiet, {settings});
+    const ProgressCallback progress = stderrProgress(options.quiet);
+    PreparedMesh prepared = prepareMesh(std::make_shared<const Mesh>(mesh), options.mesh, settings.fixWinding, progressWithin(progress, 0.0, 0.1));
+    prepared.name = fileName(options.mesh);
+    LodBuildOptions build;
+    build.groupSize = options.groupSize;
+    const ClusterHierarchy hierarchy = buildClusterHierarchy(prepared, settings, build, progressWithin(progress, 0.1, 0.6));
+    const LodStatistics statistics = measureHierarchy(hierarchy, settings, options.threshold, progressWithin(progress, 0.6, 1.0));
+    std::ostringstream text;
+    if (format == "csv")
+        writeLodCsv(statistics, text);
+    else if (format == "text")
+        writeLodText(statistics, settings, text);
+    else
+        text << lodStatisticsToJson(statistics, settings, options.perView).dump(2) << "\n";
+    writeText(options.output, text.str());
+    if (!options.output.empty()) note(options.quiet, "wrote " + options.output);
+}
+
+}  // namespace conescope::cli

@@ -1,0 +1,138 @@
+#include "io/LodIO.h"
+
+#include <functional>
+#include <iomanip>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "io/StatisticsIO.h"
+
+namespace conescope {
+
+namespace {
+
+// The level columns, once for JSON and CSV.
+struct LevelColumn {
+    const char* key;
+    std::function<nlohmann::json(const LodLevelStatistics&)> value;
+};
+const std::vector<LevelColumn>& levelColumns() {
+    static const std::vector<LevelColumn> columns{
+        {"level", [](const LodLevelStatistics& l) { return l.level; }},
+        {"clusters", [](const LodLevelStatistics& l) { return l.clusters; }},
+        {"triangles", [](const LodLevelStatistics& l) { return l.triangles; }},
+        {"groups", [](const LodLevelStatistics& l) { return l.groups; }},
+        {"efficiency", [](const LodLevelStatistics& l) { return l.culling.efficiency; }},
+        {"expected_efficiency", [](const LodLevelStatistics& l) { return l.culling.expectedEfficiency; }},
+        {"false_culls", [](const LodLevelStatistics& l) { return l.culling.falseCulls; }},
+        {"triangles_culled", [](const LodLevelStatistics& l) { return l.culling.trianglesCulled; }},
+        {"back_facing_triangles", [](const LodLevelStatistics& l) { return l.culling.backFacingTriangles; }},
+        {"uncullable_clusters", [](const LodLevelStatistics& l) { return l.culling.uncullableClusters; }},
+        {"mean_half_angle_deg", [](const LodLevelStatistics& l) { return l.meanHalfAngleDegrees; }},
+        {"max_half_angle_deg", [](const LodLevelStatistics& l) { return l.maxHalfAngleDegrees; }},
+        {"min_error", [](const LodLevelStatistics& l) { return l.minError; }},
+        {"max_error", [](const LodLevelStatistics& l) { return l.maxError; }},
+    };
+    return columns;
+}
+
+nlohmann::json thresholdToJson(const LodThreshold& threshold) {
+    nlohmann::json json{{"value", threshold.value}, {"unit", threshold.worldUnits ? "world" : "pixels"}};
+    if (!threshold.worldUnits) json["screen_height"] = threshold.screenHeight, json["fov_degrees"] = threshold.fovDegrees;
+    return json;
+}
+
+nlohmann::json cutViewToJson(const LodCutView& view) {
+    return {{"view", view.view},
+            {"eye", {view.eye.position.x, view.eye.position.y, view.eye.position.z}},
+            {"clusters", view.clusters},
+            {"triangles", view.triangles},
+            {"clusters_culled", view.clustersCulled},
+            {"triangles_culled", view.trianglesCulled},
+            {"back_facing_triangles", view.backFacingTriangles},
+            {"efficiency", view.efficiency},
+            {"false_culls", view.falseCulls},
+            {"clusters_per_level", view.clustersPerLevel}};
+}
+
+std::string csvCell(const nlohmann::json& value) {
+    if (value.is_number_float()) {
+        std::ostringstream text;
+        text << std::setprecision(17) << value.get<double>();
+        return text.str();
+    }
+    return value.dump();
+}
+
+}  // namespace
+
+nlohmann::json lodStatisticsToJson(const LodStatistics& statistics, const Settings& settings, bool perView) {
+    nlohmann::json json;
+    json["settings"] = settingsToJson(settings);
+    json["threshold"] = thresholdToJson(statistics.threshold);
+    json["build_seconds"] = statistics.buildSeconds;
+    json["views"] = statistics.cut.views.size();
+    nlohmann::json& levels = json["levels"] = nlohmann::json::array();
+    for (const LodLevelStatistics& level : statistics.levels) {
+        nlohmann::json& row = levels.emplace_back();
+        for (const LevelColumn& column : levelColumns()) row[column.key] = column.value(level);
+    }
+    const LodCutStatistics& cut = statistics.cut;
+    json["cut"] = {{"triangles", cut.meanTriangles},
+                   {"clusters", cut.meanClusters},
+                   {"triangles_culled", cut.trianglesCulled},
+                   {"back_facing_triangles", cut.backFacingTriangles},
+                   {"efficiency", cut.efficiency},
+                   {"false_culls", cut.falseCulls},
+                   {"levels_used", cut.levelsUsed}};
+    if (perView) {
+        nlohmann::json& views = json["cut"]["views"] = nlohmann::json::array();
+        for (const LodCutView& view : cut.views) views.push_back(cutViewToJson(view));
+    }
+    return json;
+}
+
+void writeLodCsv(const LodStatistics& statistics, std::ostream& out) {
+    const std::vector<LevelColumn>& columns = levelColumns();
+    for (size_t i = 0; i < columns.size(); ++i) out << (i ? "," : "") << columns[i].key;
+    out << "\n";
+    for (const LodLevelStatistics& level : statistics.levels) {
+        for (size_t i = 0; i < columns.size(); ++i) out << (i ? "," : "") << csvCell(columns[i].value(level));
+        out << "\n";
+    }
+    // The cut: its mean size over the views, its culling summed over them; no groups, cones or errors.
+    const LodCutStatistics& cut = statistics.cut;
+    const std::map<std::string, nlohmann::json> cells{{"level", "cut"},
+                                                      {"clusters", cut.meanClusters},
+                                                      {"triangles", cut.meanTriangles},
+                                                      {"efficiency", cut.efficiency},
+                                                      {"false_culls", cut.falseCulls},
+                                                      {"triangles_culled", cut.trianglesCulled},
+                                                      {"back_facing_triangles", cut.backFacingTriangles}};
+    for (size_t i = 0; i < columns.size(); ++i) {
+        const auto at = cells.find(columns[i].key);
+        out << (i ? "," : "") << (at == cells.end() ? "" : at->second.is_string() ? at->second.get<std::string>() : csvCell(at->second));
+    }
+    out << "\n";
+}
+
+void writeLodText(const LodStatistics& statistics, const Settings& settings, std::ostream& out) {
+    out << "LOD hierarchy: " << statistics.levels.size() << " levels, built in " << std::fixed << std::setprecision(2)
+        << statistics.buildSeconds << " s; " << toString(displayedCone(settings)) << " cone, " << toString(displayedTest(settings))
+        << " test, " << statistics.cut.views.size() << " views\n";
+    out << "level  clusters  triangles  mean alpha  efficiency  expected  false culls\n";
+    for (const LodLevelStatistics& level : statistics.levels)
+        out << std::setw(5) << level.level << std::setw(10) << level.clusters << std::setw(11) << level.triangles << std::setw(11)
+            << std::setprecision(1) << level.meanHalfAngleDegrees << "\u00b0" << std::setw(11) << std::setprecision(4)
+            << level.culling.efficiency << std::setw(10) << level.culling.expectedEfficiency << std::setw(13) << level.culling.falseCulls
+            << "\n";
+    const LodCutStatistics& cut = statistics.cut;
+    out << "cut at " << std::setprecision(2) << statistics.threshold.value << (statistics.threshold.worldUnits ? " world units" : " px")
+        << ": " << std::setprecision(0) << cut.meanTriangles << " triangles and " << cut.meanClusters << " clusters drawn per view from levels";
+    for (size_t level : cut.levelsUsed) out << " " << level;
+    out << "; efficiency " << std::setprecision(4) << cut.efficiency << ", false culls " << cut.falseCulls << "\n";
+}
+
+}  // namespace conescope

@@ -1,0 +1,83 @@
+// conescope-cli lod end to end: the JSON's levels and cut, threshold 0 as `stats`, the CSV's rows,
+// and bad thresholds as usage errors.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "CliTestSupport.h"
+
+namespace conescope {
+namespace {
+
+using clitest::CliRun;
+using clitest::dataset;
+using clitest::runCli;
+using clitest::runStatsJson;
+using clitest::splitLines;
+
+nlohmann::json runLodJson(const std::vector<std::string>& arguments) {
+    std::vector<std::string> command = {"lod", "--quiet", "--format", "json"};
+    command.insert(command.end(), arguments.begin(), arguments.end());
+    const CliRun run = runCli(command);
+    EXPECT_EQ(run.exitCode, 0) << run.err;
+    return run.exitCode == 0 ? nlohmann::json::parse(run.out) : nlohmann::json{};
+}
+
+TEST(CliLod, LevelsHalveAndTheCutIsConservative) {
+    const nlohmann::json lod = runLodJson({dataset("elephant.off"), "--views", "32", "--threshold", "2"});
+    const nlohmann::json& levels = lod["levels"];
+    ASSERT_GE(levels.size(), 4u);
+    for (size_t l = 0; l < levels.size(); ++l) {
+        EXPECT_EQ(levels[l]["level"], l);
+        EXPECT_EQ(levels[l]["false_culls"], 0);
+        for (const char* key : {"clusters", "triangles", "efficiency", "expected_efficiency", "mean_half_angle_deg", "max_error"})
+            EXPECT_TRUE(levels[l].contains(key)) << key;
+        if (l > 0) EXPECT_LT(levels[l]["triangles"].get<double>(), 0.85 * levels[l - 1]["triangles"].get<double>());
+    }
+    EXPECT_EQ(levels.back()["clusters"], 1);
+    const nlohmann::json& cut = lod["cut"];
+    EXPECT_EQ(cut["false_culls"], 0);
+    EXPECT_EQ(cut["views"].size(), 32u);
+    EXPECT_FALSE(cut["levels_used"].empty());
+    for (const char* key : {"triangles", "efficiency", "false_culls", "levels_used"}) EXPECT_TRUE(cut.contains(key)) << key;
+    EXPECT_EQ(lod["threshold"]["unit"], "pixels");
+}
+
+// At threshold 0 the cut is level 0 from every view: the numbers of `stats` with the same options.
+TEST(CliLod, ThresholdZeroIsStats) {
+    const std::vector<std::string> options{dataset("fandisk.off"), "--views", "24", "--test", "apex"};
+    std::vector<std::string> lodArguments = options;
+    lodArguments.insert(lodArguments.end(), {"--threshold", "0"});
+    const nlohmann::json lod = runLodJson(lodArguments);
+    const nlohmann::json stats = runStatsJson(options);
+    const nlohmann::json& flat = stats["results"][0];
+    EXPECT_EQ(lod["cut"]["levels_used"], nlohmann::json::array({0}));
+    EXPECT_EQ(lod["cut"]["triangles_culled"], flat["triangles_culled"]);
+    EXPECT_EQ(lod["cut"]["efficiency"], flat["efficiency"]);
+    EXPECT_EQ(lod["levels"][0]["clusters"], stats["clusters"]);
+    EXPECT_EQ(lod["levels"][0]["efficiency"], flat["efficiency"]);
+}
+
+TEST(CliLod, CsvHasALevelRowEachAndTheCut) {
+    const CliRun run = runCli({"lod", "--quiet", dataset("torus.off"), "--views", "8", "--format", "csv", "--world", "--threshold", "0.01"});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const std::vector<std::string> lines = splitLines(run.out);
+    ASSERT_GE(lines.size(), 3u);
+    EXPECT_EQ(lines[0].rfind("level,clusters,triangles,groups,efficiency,", 0), 0u) << lines[0];
+    EXPECT_EQ(lines[1].rfind("0,", 0), 0u);
+    EXPECT_EQ(lines.back().rfind("cut,", 0), 0u) << lines.back();
+}
+
+TEST(CliLod, BadThresholdsAreUsageErrors) {
+    for (const std::vector<std::string>& bad : {std::vector<std::string>{"--threshold", "-1"}, {"--fov", "180"}, {"--screen-height", "0"},
+                                                 {"--group-size", "1"}}) {
+        std::vector<std::string> command{"lod", "--quiet", dataset("torus.off")};
+        command.insert(command.end(), bad.begin(), bad.end());
+        const CliRun run = runCli(command);
+        EXPECT_EQ(run.exitCode, 2) << bad[0];
+        EXPECT_NE(run.err.find(bad[0]), std::string::npos) << run.err;
+    }
+}
+
+}  // namespace
+}  // namespace conescope
