@@ -60,6 +60,8 @@ struct LodCommandOptions {
     SettingsOptions run;
     LodThreshold threshold;
     size_t groupSize = 8;
+    std::string hierarchy;             // a hierarchy file to read instead of building one
+    std::string writeHierarchy;        // where to write the hierarchy measured
     bool perView = true;
     std::string format;                // "json", "csv", "text" or empty: as for stats
     std::string output;                // empty = stdout

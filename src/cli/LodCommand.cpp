@@ -5,7 +5,9 @@
 #include "cli/CommandSupport.h"
 #include "cli/Commands.h"
 #include "core/lod/LodCut.h"
+#include "io/ClusterFiles.h"
 #include "io/ClusterIdFile.h"
+#include "io/MeshletFiles.h"
 #include "io/LodIO.h"
 
 namespace conescope::cli {
@@ -22,9 +24,23 @@ void runLod(const LodCommandOptions& options) {
     const ProgressCallback progress = stderrProgress(options.quiet);
     PreparedMesh prepared = prepareMesh(std::make_shared<const Mesh>(mesh), options.mesh, settings.fixWinding, progressWithin(progress, 0.0, 0.1));
     prepared.name = fileName(options.mesh);
-    LodBuildOptions build;
-    build.groupSize = options.groupSize;
-    const ClusterHierarchy hierarchy = buildClusterHierarchy(prepared, settings, build, progressWithin(progress, 0.1, 0.6));
+    ClusterHierarchy hierarchy;
+    if (options.hierarchy.empty()) {
+        LodBuildOptions build;
+        build.groupSize = options.groupSize;
+        hierarchy = buildClusterHierarchy(prepared, settings, build, progressWithin(progress, 0.1, 0.6));
+    } else {
+        note(options.quiet, "reading " + options.hierarchy);
+        try {
+            hierarchy = hierarchyFromRecords(prepared, readHierarchyFile(options.hierarchy), settings);
+        } catch (const HierarchyError& error) {
+            throw std::runtime_error(options.hierarchy + ": " + error.what());
+        }
+    }
+    if (!options.writeHierarchy.empty()) {
+        writeText(options.writeHierarchy, hierarchyJson(hierarchyRecordsOf(hierarchy, firstFileVertices(mesh))));
+        note(options.quiet, "wrote " + options.writeHierarchy);
+    }
     const LodStatistics statistics = measureHierarchy(hierarchy, settings, options.threshold, progressWithin(progress, 0.6, 1.0));
     std::ostringstream text;
     if (format == "csv")

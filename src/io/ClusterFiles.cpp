@@ -17,20 +17,6 @@ namespace conescope {
 
 namespace {
 
-// The first vertex of the file at each of the mesh's vertices: what a meshlet file written for the
-// mesh file indexes.
-std::vector<uint32_t> firstFileVertices(const Mesh& mesh) {
-    std::vector<uint32_t> first(mesh.positions.size());
-    for (uint32_t v = 0; v < first.size(); ++v) first[v] = v;
-    if (mesh.fileVertices.empty()) return first;
-    std::vector<uint8_t> seen(first.size(), 0);
-    for (uint32_t fileVertex = 0; fileVertex < mesh.fileVertices.size(); ++fileVertex) {
-        const uint32_t v = mesh.fileVertices[fileVertex];
-        if (!seen[v]) seen[v] = 1, first[v] = fileVertex;
-    }
-    return first;
-}
-
 // The partition as meshlet arrays with meshoptimizer's bounds, indexing the file's vertices.
 MeshletArrays meshletsToWrite(const Mesh& mesh, const Partition& partition, const std::string& path) {
     MeshletArrays arrays;
@@ -80,6 +66,18 @@ void writeBytes(const std::string& path, const std::string& bytes) {
 }
 
 }  // namespace
+
+std::vector<uint32_t> firstFileVertices(const Mesh& mesh) {
+    std::vector<uint32_t> first(mesh.positions.size());
+    for (uint32_t v = 0; v < first.size(); ++v) first[v] = v;
+    if (mesh.fileVertices.empty()) return first;
+    std::vector<uint8_t> seen(first.size(), 0);
+    for (uint32_t fileVertex = 0; fileVertex < mesh.fileVertices.size(); ++fileVertex) {
+        const uint32_t v = mesh.fileVertices[fileVertex];
+        if (!seen[v]) seen[v] = 1, first[v] = fileVertex;
+    }
+    return first;
+}
 
 void readClusterFile(Mesh& mesh, const std::string& path, std::vector<std::string>& notes) {
     try {

@@ -44,4 +44,8 @@ std::vector<std::string> partitionFileExtensions();
 // Writes the partition of `mesh` by the extension of `path` (above). Throws MeshWriteError.
 void writePartitionFile(const Mesh& mesh, const Partition& partition, const std::string& path);
 
+// The first vertex of the file at each of the mesh's vertices: what a meshlet or hierarchy file
+// written for the mesh file indexes.
+std::vector<uint32_t> firstFileVertices(const Mesh& mesh);
+
 }  // namespace conescope

@@ -132,7 +132,10 @@ bool isMeshletFile(const std::string& path) {
     }) || start.compare(0, 8, kMagic, 8) == 0;
 }
 
-MeshletArrays parseMeshletJson(const std::string& text, const std::string& source) {
+namespace {
+
+// The document of a JSON file whose "format" is `format`.
+Json jsonDocument(const std::string& text, const std::string& source, const char* format) {
     Json document;
     try {
         document = Json::parse(text);
@@ -140,9 +143,14 @@ MeshletArrays parseMeshletJson(const std::string& text, const std::string& sourc
         throw MeshletFileError(source + ": not valid JSON (" + error.what() + ")");
     }
     if (!document.is_object()) failJson(source, "the document", "is not a JSON object");
-    const Json& format = member(document, "format", source);
-    if (!format.is_string() || format.get<std::string>() != "meshoptimizer-meshlets")
-        failJson(source, "\"format\"", "is " + format.dump() + ", not \"meshoptimizer-meshlets\"");
+    const Json& given = member(document, "format", source);
+    if (!given.is_string() || given.get<std::string>() != format)
+        failJson(source, "\"format\"", "is " + given.dump() + ", not \"" + format + "\"");
+    return document;
+}
+
+// meshoptimizer's three arrays and the optional bounds, as a meshlet file and a hierarchy file hold them.
+MeshletArrays meshletArraysOfJson(const Json& document, const std::string& source) {
     MeshletArrays arrays;
     const Json& meshlets = arrayMember(document, "meshlets", source);
     for (size_t m = 0; m < meshlets.size(); ++m) {
@@ -170,6 +178,12 @@ MeshletArrays parseMeshletJson(const std::string& text, const std::string& sourc
         for (size_t m = 0; m < bounds.size(); ++m) arrays.bounds.push_back(boundsFromJson(bounds[m], source, "bounds[" + std::to_string(m) + "]"));
     }
     return arrays;
+}
+
+}  // namespace
+
+MeshletArrays parseMeshletJson(const std::string& text, const std::string& source) {
+    return meshletArraysOfJson(jsonDocument(text, source, "meshoptimizer-meshlets"), source);
 }
 
 MeshletArrays parseMeshletBinary(const std::string& bytes, const std::string& source) {
@@ -273,6 +287,79 @@ std::string meshletBinary(const MeshletArrays& arrays) {
         bytes.push_back(char(b.coneCutoffS8));
     }
     return bytes;
+}
+
+namespace {
+
+// A finite number kept as the double it was written as (errors and spheres round-trip exactly).
+double finiteDouble(const Json& value, const std::string& source, const std::string& where) {
+    if (!value.is_number() || !std::isfinite(value.get<double>())) failJson(source, where, "is not a finite number");
+    return value.get<double>();
+}
+
+// A sphere and an error as a hierarchy file holds them, and the level.
+template <typename Record>
+Record boundRecord(const Json& entry, const std::string& source, const std::string& where, uint32_t levels) {
+    if (!entry.is_object()) failJson(source, where, "is not an object");
+    Record record;
+    record.level = uint32_t(wholeNumber(member(entry, "level", source, where), 0, levels, source, where + " \"level\""));
+    const auto center = fixedArray<3>(entry, "center", source, where, [&](const Json& value, const std::string& at) { return finiteDouble(value, source, at); });
+    record.sphere = {glm::dvec3(center[0], center[1], center[2]), finiteDouble(member(entry, "radius", source, where), source, where + " \"radius\"")};
+    record.error = finiteDouble(member(entry, "error", source, where), source, where + " \"error\"");
+    return record;
+}
+
+}  // namespace
+
+HierarchyRecords parseHierarchyJson(const std::string& text, const std::string& source) {
+    const Json document = jsonDocument(text, source, "conescope-cluster-lod");
+    const int64_t version = wholeNumber(member(document, "version", source), 0, std::numeric_limits<int32_t>::max(), source, "\"version\"");
+    if (version != 1) failJson(source, "\"version\"", std::to_string(version) + ", this reader knows version 1");
+    HierarchyRecords records;
+    records.arrays = meshletArraysOfJson(document, source);
+    const Json& clusters = arrayMember(document, "clusters", source);
+    const Json& groups = arrayMember(document, "groups", source);
+    const uint32_t most = uint32_t(std::min<size_t>(clusters.size(), std::numeric_limits<uint32_t>::max()));
+    for (size_t g = 0; g < groups.size(); ++g) records.groups.push_back(boundRecord<HierarchyGroupRecord>(groups[g], source, "groups[" + std::to_string(g) + "]", most));
+    for (size_t m = 0; m < clusters.size(); ++m) {
+        const std::string where = "clusters[" + std::to_string(m) + "]";
+        HierarchyClusterRecord record = boundRecord<HierarchyClusterRecord>(clusters[m], source, where, most);
+        const int64_t groupCount = int64_t(groups.size());
+        record.group = wholeNumber(member(clusters[m], "group", source, where), -1, groupCount - 1, source, where + " \"group\"");
+        record.refined = wholeNumber(member(clusters[m], "refined", source, where), -1, groupCount - 1, source, where + " \"refined\"");
+        records.clusters.push_back(record);
+    }
+    return records;
+}
+
+HierarchyRecords readHierarchyFile(const std::string& path) {
+    std::string bytes;
+    try {
+        bytes = readFileBytes(path);
+    } catch (const std::exception& error) {
+        throw MeshletFileError(error.what());
+    }
+    return parseHierarchyJson(bytes, path);
+}
+
+std::string hierarchyJson(const HierarchyRecords& records) {
+    nlohmann::ordered_json document = {{"format", "conescope-cluster-lod"},
+                                       {"version", 1},
+                                       {"meshlets", records.arrays.meshlets},
+                                       {"meshlet_vertices", records.arrays.vertices},
+                                       {"meshlet_triangles", records.arrays.triangles}};
+    const auto bound = [](uint32_t level, const Sphere& sphere, double error) {
+        return nlohmann::ordered_json{{"level", level}, {"center", {sphere.center.x, sphere.center.y, sphere.center.z}}, {"radius", sphere.radius}, {"error", error}};
+    };
+    nlohmann::ordered_json& clusters = document["clusters"] = nlohmann::ordered_json::array();
+    for (const HierarchyClusterRecord& c : records.clusters) {
+        nlohmann::ordered_json entry = bound(c.level, c.sphere, c.error);
+        entry["group"] = c.group, entry["refined"] = c.refined;
+        clusters.push_back(entry);
+    }
+    nlohmann::ordered_json& groups = document["groups"] = nlohmann::ordered_json::array();
+    for (const HierarchyGroupRecord& g : records.groups) groups.push_back(bound(g.level, g.sphere, g.error));
+    return document.dump() + "\n";
 }
 
 }  // namespace conescope

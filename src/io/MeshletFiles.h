@@ -8,6 +8,7 @@
 #include <string>
 
 #include "core/MeshletArrays.h"
+#include "core/lod/HierarchyRecords.h"
 
 namespace conescope {
 
@@ -32,5 +33,13 @@ MeshletArrays parseMeshletBinary(const std::string& bytes, const std::string& so
 // The arrays as JSON text (bounds when the arrays hold them) and as the binary form.
 std::string meshletJson(const MeshletArrays& arrays);
 std::string meshletBinary(const MeshletArrays& arrays);
+
+// A cluster LOD hierarchy's records as JSON: {"format": "conescope-cluster-lod", "version": 1, the
+// meshlet arrays of every level as above, "clusters": [{"level", "group", "refined", "center",
+// "radius", "error"}], "groups": [{"level", "center", "radius", "error"}]}. Reading checks the
+// structure (types, ranges); hierarchyFromRecords checks the rest. Throws MeshletFileError.
+HierarchyRecords readHierarchyFile(const std::string& path);
+HierarchyRecords parseHierarchyJson(const std::string& text, const std::string& sourceName);
+std::string hierarchyJson(const HierarchyRecords& records);
 
 }  // namespace conescope

@@ -2,6 +2,8 @@
 // and bad thresholds as usage errors.
 #include <gtest/gtest.h>
 
+#include <fstream>
+
 #include <nlohmann/json.hpp>
 
 #include "CliTestSupport.h"
@@ -66,6 +68,28 @@ TEST(CliLod, CsvHasALevelRowEachAndTheCut) {
     EXPECT_EQ(lines[0].rfind("level,clusters,triangles,groups,efficiency,", 0), 0u) << lines[0];
     EXPECT_EQ(lines[1].rfind("0,", 0), 0u);
     EXPECT_EQ(lines.back().rfind("cut,", 0), 0u) << lines.back();
+}
+
+// --write-hierarchy, then --hierarchy: the same numbers from the file; a spoiled file is refused
+// naming the cluster.
+TEST(CliLod, HierarchyFileRoundTrips) {
+    clitest::ScratchDirectory scratch;
+    const std::string file = scratch.file("h.json");
+    nlohmann::json built = runLodJson({dataset("elephant.off"), "--views", "16", "--write-hierarchy", file});
+    nlohmann::json read = runLodJson({dataset("elephant.off"), "--views", "16", "--hierarchy", file});
+    built.erase("build_seconds"), read.erase("build_seconds");
+    EXPECT_EQ(built, read);
+    nlohmann::json document = nlohmann::json::parse(clitest::readTextFile(file));
+    EXPECT_EQ(document["format"], "conescope-cluster-lod");
+    EXPECT_EQ(document["clusters"].size(), document["meshlets"].size());
+    document["clusters"][7]["error"] = 1e9;
+    std::ofstream(file) << document.dump();
+    const CliRun run = runCli({"lod", "--quiet", dataset("elephant.off"), "--hierarchy", file});
+    EXPECT_EQ(run.exitCode, 1);
+    EXPECT_NE(run.err.find("cluster 7"), std::string::npos) << run.err;
+    document["format"] = "meshoptimizer-meshlets";
+    std::ofstream(file) << document.dump();
+    EXPECT_NE(runCli({"lod", "--quiet", dataset("elephant.off"), "--hierarchy", file}).err.find("conescope-cluster-lod"), std::string::npos);
 }
 
 TEST(CliLod, BadThresholdsAreUsageErrors) {

@@ -5,10 +5,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <set>
 
 #include "TestMeshes.h"
+#include "core/lod/HierarchyRecords.h"
 #include "core/lod/LodCut.h"
 
 namespace conescope {
@@ -198,6 +200,53 @@ TEST_F(LodHierarchy, CoarseLevelsCullLessAndTheCutIsConservative) {
     EXPECT_LT(lod.cut.meanTriangles, double(sphere_->triangles));
     EXPECT_GT(lod.cut.levelsUsed.size(), 0u);
     EXPECT_NE(lod.cut.levelsUsed, std::vector<size_t>{0});
+}
+
+// The records give back the same hierarchy: every level's clusters, places and numbers.
+TEST_F(LodHierarchy, RecordsGiveTheSameHierarchyBack) {
+    const ClusterHierarchy back = hierarchyFromRecords(*sphere_, hierarchyRecordsOf(*hierarchy_, {}), Settings{});
+    ASSERT_EQ(back.levels.size(), hierarchy_->levels.size());
+    for (size_t l = 0; l < back.levels.size(); ++l) {
+        EXPECT_EQ(back.levels[l].clusters.partition.clusterCount, hierarchy_->levels[l].clusters.partition.clusterCount);
+        EXPECT_EQ(back.levels[l].triangles(), hierarchy_->levels[l].triangles());
+        EXPECT_EQ(back.levels[l].groups, hierarchy_->levels[l].groups);
+        for (size_t c = 0; c < back.levels[l].place.size(); ++c) {
+            EXPECT_EQ(back.levels[l].place[c].group, hierarchy_->levels[l].place[c].group);
+            EXPECT_EQ(back.levels[l].place[c].sourceGroup, hierarchy_->levels[l].place[c].sourceGroup);
+            EXPECT_EQ(back.levels[l].place[c].parentError, hierarchy_->levels[l].place[c].parentError);
+        }
+    }
+    Settings settings;
+    settings.views = 16;
+    const LodStatistics a = measureHierarchy(*hierarchy_, settings, {}), b = measureHierarchy(back, settings, {});
+    EXPECT_EQ(a.cut.trianglesCulled, b.cut.trianglesCulled);
+    EXPECT_EQ(a.cut.backFacingTriangles, b.cut.backFacingTriangles);
+    for (size_t l = 0; l < a.levels.size(); ++l) EXPECT_EQ(a.levels[l].culling.trianglesCulled, b.levels[l].culling.trianglesCulled);
+}
+
+// Every fault the cut cannot live with is refused, naming the cluster or group.
+TEST_F(LodHierarchy, FaultyRecordsAreRefusedNamingTheCluster) {
+    const HierarchyRecords good = hierarchyRecordsOf(*hierarchy_, {});
+    const size_t top = good.clusters.size() - 1, firstAbove = hierarchy_->levels[0].place.size();
+    const auto refused = [&](const std::function<void(HierarchyRecords&)>& spoil, const std::string& named) {
+        HierarchyRecords records = good;
+        spoil(records);
+        try {
+            hierarchyFromRecords(*sphere_, records, Settings{});
+            ADD_FAILURE() << "accepted: " << named;
+        } catch (const HierarchyError& error) {
+            EXPECT_NE(std::string(error.what()).find(named), std::string::npos) << error.what();
+        }
+    };
+    refused([](HierarchyRecords& r) { r.clusters[3].error = r.groups[size_t(r.clusters[3].group)].error * 2.0 + 1.0; }, "cluster 3");
+    refused([](HierarchyRecords& r) { r.clusters[5].sphere.radius *= 100.0; }, "cluster 5");
+    refused([&](HierarchyRecords& r) { r.clusters[firstAbove].group = 0; }, "cluster " + std::to_string(firstAbove));
+    refused([&](HierarchyRecords& r) { r.clusters[top].group = 0; }, "cluster " + std::to_string(top));
+    refused([](HierarchyRecords& r) { r.clusters[2].refined = 0; }, "cluster 2");
+    refused([](HierarchyRecords& r) { r.clusters[0].level = 1; }, "cluster 1");
+    refused([](HierarchyRecords& r) { r.groups[1].error = std::nan(""); }, "group 1");
+    refused([](HierarchyRecords& r) { r.clusters.pop_back(); }, "meshlets");
+    refused([](HierarchyRecords& r) { r.arrays.vertices[r.arrays.meshlets[4][0]] = 1u << 30; }, "cluster 4");
 }
 
 TEST(LodBuild, ReportsEachLevelAndCancels) {

@@ -144,6 +144,21 @@ NextLevel simplifyLevel(LodLevel& below, const Settings& settings, const LodBuil
 
 }  // namespace
 
+LodLevel lodLevelOf(const PreparedMesh& base, const std::vector<uint32_t>& triangles, const std::vector<uint32_t>& clusterOfTriangle,
+                    const Settings& settings) {
+    // The clusters read from the level's mesh: bounds as any partition gets them.
+    Settings fromIds = settings;
+    fromIds.builder = Builder::File;
+    fromIds.clusterFile.clear();
+    fromIds.clusterIds.reset();
+    fromIds.fixWinding = false;
+    LodLevel level;
+    level.prepared = prepareMesh(levelMesh(base.mesh(), triangles, clusterOfTriangle), base.path, false);
+    level.prepared.name = base.name;
+    level.clusters = buildClusters(level.prepared, fromIds);
+    return level;
+}
+
 Sphere sphereAroundSpheres(const std::vector<Sphere>& spheres) {
     Sphere around;
     if (spheres.empty()) return around;
@@ -203,12 +218,6 @@ ClusterHierarchy buildClusterHierarchy(const PreparedMesh& prepared, const Setti
     base.clusters = buildClusters(prepared, settings, nullptr, progressWithin(progress, 0.0, 0.3, "level 0"));
     base.place = basePlaces(base.clusters);
     hierarchy.levels.push_back(std::move(base));
-    // The levels above read their clusters from the mesh: bounds as any partition gets them.
-    Settings fromIds = settings;
-    fromIds.builder = Builder::File;
-    fromIds.clusterFile.clear();
-    fromIds.clusterIds.reset();
-    fromIds.fixWinding = false;
     // The least an error grows going up a level: a billionth of the mesh's size.
     const double step = 1e-9 * std::max(glm::length(glm::dvec3(prepared.box.max - prepared.box.min)), 1e-30);
     while (hierarchy.levels.size() < options.maxLevels && hierarchy.levels.back().clusters.partition.clusterCount > 1) {
@@ -227,11 +236,7 @@ ClusterHierarchy buildClusterHierarchy(const PreparedMesh& prepared, const Setti
             below.groups = 0;
             break;
         }
-        LodLevel level;
-        const std::shared_ptr<Mesh> mesh = levelMesh(prepared.mesh(), next.triangles, next.clusterOfTriangle);
-        level.prepared = prepareMesh(mesh, prepared.path, false);
-        level.prepared.name = prepared.name;
-        level.clusters = buildClusters(level.prepared, fromIds);
+        LodLevel level = lodLevelOf(prepared, next.triangles, next.clusterOfTriangle, settings);
         level.place = std::move(next.place);
         hierarchy.levels.push_back(std::move(level));
     }

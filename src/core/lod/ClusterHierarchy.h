@@ -62,6 +62,12 @@ struct LodBuildOptions {
 ClusterHierarchy buildClusterHierarchy(const PreparedMesh& prepared, const Settings& settings, const LodBuildOptions& options = {},
                                        const ProgressCallback& progress = {});
 
+// A level of `base`'s hierarchy from its triangles (three ids into base's positions) and their
+// clusters (numbered in order of first use), bounded with the cone and sphere of `settings`; its
+// places are left to the caller.
+LodLevel lodLevelOf(const PreparedMesh& base, const std::vector<uint32_t>& triangles, const std::vector<uint32_t>& clusterOfTriangle,
+                    const Settings& settings);
+
 // Groups of at most `groupSize` clusters, grown from the cluster with the fewest free neighbours by
 // the neighbour sharing the most border (edges) with the group: per cluster its group.
 // `clusterOfTriangle` and `triangles` (three vertex ids each) give the adjacency.
