@@ -20,7 +20,7 @@ for mesh in "$root"/datasets/cgal-all/*.off "$root"/datasets/cgal-all/*.ply "$ro
   if json=$("$cli" lod "$mesh" --views 64 --distance 3 --threshold 1 --no-per-view --format json -q 2>"$rows.err"); then
     python3 -c 'import json,sys; d=json.loads(sys.stdin.read()); d["mesh"]=sys.argv[1]; print(json.dumps(d))' "$(basename "$mesh")" <<< "$json" >> "$rows"
   else
-    python3 -c 'import json,sys; print(json.dumps({"mesh": sys.argv[1], "error": sys.argv[2]}))' "$(basename "$mesh")" "$(tail -1 "$rows.err")" >> "$rows"
+    python3 -c 'import json,sys; print(json.dumps({"mesh": sys.argv[1], "error": sys.argv[2]}))' "$(basename "$mesh")" "$(tail -1 "$rows.err" | sed "s|$root/||g")" >> "$rows"
   fi
 done
 rm -f "$rows.err"
