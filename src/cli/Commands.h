@@ -62,6 +62,7 @@ struct LodCommandOptions {
     size_t groupSize = 8;
     std::string hierarchy;             // a hierarchy file to read instead of building one
     std::string writeHierarchy;        // where to write the hierarchy measured
+    std::string writeLevels;           // a folder for each level and the cut as meshes with cluster_id
     bool perView = true;
     std::string format;                // "json", "csv", "text" or empty: as for stats
     std::string output;                // empty = stdout

@@ -1,5 +1,6 @@
 // conescope-cli lod: a cluster LOD hierarchy built from the mesh, cone culling at each level and of
 // the cut an eye draws.
+#include <filesystem>
 #include <sstream>
 
 #include "cli/CommandSupport.h"
@@ -7,10 +8,35 @@
 #include "core/lod/LodCut.h"
 #include "io/ClusterFiles.h"
 #include "io/ClusterIdFile.h"
+#include "io/MeshWriter.h"
 #include "io/MeshletFiles.h"
 #include "io/LodIO.h"
 
 namespace conescope::cli {
+
+namespace {
+
+// Each level, and the cut from the first view (the orbit's or --eye), as VTP meshes with their
+// clusters: for ParaView, or the window with --builder file.
+void writeLevelMeshes(const ClusterHierarchy& hierarchy, const Settings& settings, const LodCommandOptions& options) {
+    std::error_code error;
+    std::filesystem::create_directories(options.writeLevels, error);
+    if (error) throw std::runtime_error(options.writeLevels + ": cannot make the folder (" + error.message() + ")");
+    for (size_t l = 0; l < hierarchy.levels.size(); ++l) {
+        const LodLevel& level = hierarchy.levels[l];
+        std::vector<double> groups;
+        for (uint32_t c : level.clusters.partition.clusterOfFace)
+            groups.push_back(level.place[c].group == kNoGroup ? -1.0 : double(level.place[c].group));
+        const std::string name = std::string("level-") + (l < 10 ? "0" : "") + std::to_string(l) + ".vtp";
+        writePolyData(level.prepared.mesh(), (std::filesystem::path(options.writeLevels) / name).string(), {{"group_id", groups}});
+    }
+    const Eye eye = viewsFor(settings, hierarchy.levels.front().prepared.box).front();
+    writePolyData(meshOfCut(hierarchy, cutFrom(hierarchy, eye.position, options.threshold)),
+                  (std::filesystem::path(options.writeLevels) / "cut.vtp").string());
+    note(options.quiet, "wrote " + std::to_string(hierarchy.levels.size()) + " levels and the cut to " + options.writeLevels);
+}
+
+}  // namespace
 
 void runLod(const LodCommandOptions& options) {
     const Settings settings = withClusterIds(options.run.toSettings());
@@ -41,6 +67,7 @@ void runLod(const LodCommandOptions& options) {
         writeText(options.writeHierarchy, hierarchyJson(hierarchyRecordsOf(hierarchy, firstFileVertices(mesh))));
         note(options.quiet, "wrote " + options.writeHierarchy);
     }
+    if (!options.writeLevels.empty()) writeLevelMeshes(hierarchy, settings, options);
     const LodStatistics statistics = measureHierarchy(hierarchy, settings, options.threshold, progressWithin(progress, 0.6, 1.0));
     std::ostringstream text;
     if (format == "csv")

@@ -151,6 +151,7 @@ int main(int argc, char** argv) {
         ->capture_default_str();
     lodCommand->add_option("--group-size", lod.groupSize, "Most clusters simplified together")->capture_default_str();
     lodCommand->add_option("--hierarchy", lod.hierarchy, "Read the hierarchy from this file (conescope-cluster-lod JSON, made for MESH) instead of building one");
+    lodCommand->add_option("--write-levels", lod.writeLevels, "Write each level (level-NN.vtp) and the cut from the first view (cut.vtp) to this folder, with cluster_id and level per face");
     lodCommand->add_option("--write-hierarchy", lod.writeHierarchy, "Write the hierarchy measured to this file (conescope-cluster-lod JSON: meshoptimizer's meshlet arrays of every level, clusters and groups)");
     lodCommand->add_flag_callback("--no-per-view", [&lod] { lod.perView = false; }, "Leave the cut of each view out of the JSON");
     lodCommand->add_option("--format", lod.format, "Output format (default: from the output's extension; on a terminal text, else json)")

@@ -92,6 +92,20 @@ TEST(CliLod, HierarchyFileRoundTrips) {
     EXPECT_NE(runCli({"lod", "--quiet", dataset("elephant.off"), "--hierarchy", file}).err.find("conescope-cluster-lod"), std::string::npos);
 }
 
+// Each level written as a mesh is read back by the file builder with the level's clusters and
+// numbers; the cut's mesh holds the clusters the first view draws.
+TEST(CliLod, LevelMeshesReadBackWithTheirClusters) {
+    clitest::ScratchDirectory scratch;
+    const std::string folder = scratch.file("levels");
+    const nlohmann::json lod = runLodJson({dataset("torus.off"), "--views", "8", "--write-levels", folder});
+    const nlohmann::json level1 = runStatsJson({folder + "/level-01.vtp", "--builder", "file", "--views", "8"});
+    EXPECT_EQ(level1["clusters"], lod["levels"][1]["clusters"]);
+    EXPECT_EQ(level1["results"][0]["efficiency"], lod["levels"][1]["efficiency"]);
+    const nlohmann::json cut = runStatsJson({folder + "/cut.vtp", "--builder", "file", "--views", "8"});
+    EXPECT_EQ(cut["mesh"]["triangles"], lod["cut"]["views"][0]["triangles"]);
+    EXPECT_EQ(cut["clusters"], lod["cut"]["views"][0]["clusters"]);
+}
+
 TEST(CliLod, BadThresholdsAreUsageErrors) {
     for (const std::vector<std::string>& bad : {std::vector<std::string>{"--threshold", "-1"}, {"--fov", "180"}, {"--screen-height", "0"},
                                                  {"--group-size", "1"}}) {

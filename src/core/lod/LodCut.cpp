@@ -80,6 +80,28 @@ std::vector<std::vector<uint8_t>> cutFrom(const ClusterHierarchy& hierarchy, con
     return cut;
 }
 
+Mesh meshOfCut(const ClusterHierarchy& hierarchy, const std::vector<std::vector<uint8_t>>& drawn) {
+    Mesh cut;
+    if (hierarchy.levels.empty()) return cut;
+    cut.positions = hierarchy.levels.front().prepared.mesh().positions;
+    cut.model = hierarchy.levels.front().prepared.mesh().model;
+    std::vector<double>& ids = cut.faceArrays["cluster_id"];
+    std::vector<double>& levels = cut.faceArrays["level"];
+    double first = 0.0;
+    for (size_t l = 0; l < hierarchy.levels.size(); ++l) {
+        const Mesh& mesh = hierarchy.levels[l].prepared.mesh();
+        const std::vector<uint32_t>& clusterOf = hierarchy.levels[l].clusters.partition.clusterOfFace;
+        for (size_t f = 0; f < mesh.faceCount(); ++f) {
+            if (!drawn[l][clusterOf[f]]) continue;
+            cut.addFace(mesh.faceBegin(f), mesh.faceSize(f));
+            ids.push_back(first + clusterOf[f]);
+            levels.push_back(double(l));
+        }
+        first += double(drawn[l].size());
+    }
+    return cut;
+}
+
 LodStatistics measureHierarchy(const ClusterHierarchy& hierarchy, const Settings& settings, const LodThreshold& threshold,
                                const ProgressCallback& progress) {
     LodStatistics statistics;

@@ -28,6 +28,10 @@ double projectedError(double error, const Sphere& sphere, const glm::dvec3& eye,
 // surface is drawn by exactly one level's clusters.
 std::vector<std::vector<uint8_t>> cutFrom(const ClusterHierarchy& hierarchy, const glm::dvec3& eye, const LodThreshold& threshold);
 
+// The clusters a cut draws as one mesh over the original's positions: their faces, with the face
+// arrays "cluster_id" (numbered level after level) and "level".
+Mesh meshOfCut(const ClusterHierarchy& hierarchy, const std::vector<std::vector<uint8_t>>& drawn);
+
 // One level over the views: its size, how wide its cones are, and the displayed test's culling.
 struct LodLevelStatistics {
     size_t level = 0;
