@@ -3,12 +3,13 @@
 # and test) on every mesh of CGAL's demo data that reads: per level its clusters, triangles, mean cone
 # half-angle and efficiency over 64 orbit views at distance 3, and the cut at 1 pixel (1080 pixels
 # high, 60 degrees). Writes bench/results/lod-levels.csv (one row per mesh and level, and the cut)
-# and lod-levels.md (the table, how much of level 0's culling each level keeps).
+# and lod-levels.md (the table, how much of level 0's culling each level keeps), and lod-grouping.md
+# (the hierarchy's grouping against METIS's, bench/lod_grouping.cpp).
 #
 #   scripts/bench-lod.sh                        # fetches the meshes (datasets/cgal-all), builds, runs
 #   CONESCOPE_BENCH_BUILD_DIR=... CONESCOPE_BENCH_OUTPUT=... scripts/bench-lod.sh
 set -euo pipefail
-source "$(dirname "${BASH_SOURCE[0]}")/bench-setup.sh" conescope-cli
+source "$(dirname "${BASH_SOURCE[0]}")/bench-setup.sh" conescope-cli conescope-bench-lod-grouping
 cli="$build/src/cli/conescope-cli"
 
 rows="$output/lod-levels.json.tmp"
@@ -26,4 +27,6 @@ done
 rm -f "$rows.err"
 python3 "$root/bench/lod_table.py" "$rows" "$output/lod-levels.csv" "$output/lod-levels.md" "$(( $(date +%s) - start ))"
 rm -f "$rows"
-echo "bench-lod: wrote $output/lod-levels.{csv,md}" >&2
+# The grouping against METIS's on the same meshes.
+"$build/bench/conescope-bench-lod-grouping" --meshes "$root/datasets/cgal-all" --views 64 --output "$output/lod-grouping.md"
+echo "bench-lod: wrote $output/lod-levels.{csv,md} and lod-grouping.md" >&2

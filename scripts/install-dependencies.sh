@@ -9,6 +9,8 @@ packages=(
   # assimp decodes glTF for the reader (src/io) and counts triangles independently in the tests;
   # assimp-testmodels are files nobody here wrote (tests/io/AssimpModelsTests.cpp).
   libassimp-dev assimp-testmodels
+  # METIS partitions graphs: the LOD bench groups clusters with it to measure ConeScope's grouping
+  libmetis-dev
   # content hashes of meshes, so a batch run again skips what it has done (src/cli/BatchInputs.cpp)
   libxxhash-dev
   xvfb xauth clang libclang-rt-14-dev

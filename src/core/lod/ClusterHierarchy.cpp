@@ -90,7 +90,8 @@ NextLevel simplifyLevel(LodLevel& below, const Settings& settings, const LodBuil
     const Partition& partition = below.clusters.partition;
     std::vector<uint32_t> clusterOfTriangle(faceOfTriangle.size());
     for (size_t t = 0; t < faceOfTriangle.size(); ++t) clusterOfTriangle[t] = partition.clusterOfFace[faceOfTriangle[t]];
-    const std::vector<uint32_t> groupOf = groupAdjacentClusters(triangles, clusterOfTriangle, partition.clusterCount, options.groupSize);
+    const ClusterGrouping& grouping = options.grouping ? options.grouping : ClusterGrouping(groupAdjacentClusters);
+    const std::vector<uint32_t> groupOf = grouping(triangles, clusterOfTriangle, partition.clusterCount, options.groupSize);
     below.groups = groupOf.empty() ? 0 : size_t(*std::max_element(groupOf.begin(), groupOf.end())) + 1;
     std::vector<std::vector<uint32_t>> groupTriangles(below.groups), groupClusters(below.groups);
     for (size_t t = 0; t < clusterOfTriangle.size(); ++t) {

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <vector>
@@ -50,8 +51,14 @@ struct ClusterHierarchy {
 // How a hierarchy is built. Groups of up to `groupSize` adjacent clusters are simplified to
 // `reduction` of their triangles; building stops when one group is left, after `maxLevels`, or when a
 // level keeps more than `stallShare` of the triangles of the one below (simplification stalled).
+// Per cluster its group, from the level's triangles and their clusters: groupAdjacentClusters's
+// signature, so that another grouping (bench/lod_grouping.cpp: METIS) can be measured against it.
+using ClusterGrouping = std::function<std::vector<uint32_t>(const std::vector<uint32_t>& triangles, const std::vector<uint32_t>& clusterOfTriangle,
+                                                            size_t clusterCount, size_t groupSize)>;
+
 struct LodBuildOptions {
     size_t groupSize = 8;
+    ClusterGrouping grouping;  // empty: groupAdjacentClusters
     double reduction = 0.5;
     double stallShare = 0.85;
     size_t maxLevels = 24;
