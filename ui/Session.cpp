@@ -25,6 +25,13 @@ Settings withoutClusterFile(Settings settings) {
     return settings;
 }
 
+// What the window says when most of the shown clusters can never be culled (uncullableNote).
+std::string uncullableIn(const Snapshot& shown) {
+    size_t uncullable = 0;
+    for (const ConeOfNormals& cone : shown.clusters->bounds.cones) uncullable += !cone.cullable;
+    return uncullableNote(uncullable, shown.clusters->bounds.count());
+}
+
 // The budget warning for what the window shows, with the fewest clusters its limits allow.
 std::string budgetMissedIn(const Snapshot& shown) {
     const Settings& settings = shown.settings;
@@ -127,7 +134,7 @@ void Session::openMesh(const QString& path) {
             }
             showSceneResult(result, true);
             const std::string message = joinSentences(
-                {loadMessage(*shown_.prepared), builderNote, budgetMissedIn(shown_)});
+                {loadMessage(*shown_.prepared), builderNote, budgetMissedIn(shown_), uncullableIn(shown_)});
             emit meshShown(path, QString::fromStdString(message));
         },
         [this, path](const QString& error) {
@@ -204,8 +211,8 @@ void Session::requestClusters() {
         },
         [this](SceneResult& result) {
             showSceneResult(result, false);
-            const std::string missed = budgetMissedIn(shown_);
-            if (!missed.empty()) emit notice(QString::fromStdString(missed), 8000);
+            const std::string said = joinSentences({budgetMissedIn(shown_), uncullableIn(shown_)});
+            if (!said.empty()) emit notice(QString::fromStdString(said), 8000);
         },
         [this, settings](const QString& error) {
             if (settings.builder == Builder::File) {

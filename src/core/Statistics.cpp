@@ -46,6 +46,19 @@ ClusterTruth truthForView(const CullingInput& input, const std::vector<Facing>& 
 
 }  // namespace
 
+double uncullableShare(size_t uncullableClusters, size_t clusters) {
+    return clusters == 0 ? 0.0 : double(uncullableClusters) / double(clusters);
+}
+
+std::string uncullableNote(size_t uncullableClusters, size_t clusters) {
+    if (!(2 * uncullableClusters > clusters)) return {};
+    const long percent = std::lround(100.0 * uncullableShare(uncullableClusters, clusters));
+    return std::to_string(uncullableClusters) + " of " + std::to_string(clusters) + " clusters (" + std::to_string(percent) +
+           "%) can never be culled: each holds face normals over more than a hemisphere (a small closed part, or faces "
+           "turned every way), so no cone of normals narrower than a hemisphere holds them and no test culls them from any "
+           "eye. Only smaller clusters, or several cones per cluster, could cull there.";
+}
+
 double cullEfficiency(size_t trianglesCulled, size_t backFacingTriangles) {
     return backFacingTriangles == 0 ? 1.0 : double(trianglesCulled) / double(backFacingTriangles);
 }

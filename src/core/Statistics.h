@@ -98,6 +98,14 @@ struct RunStatistics {
 // Triangles culled / back-facing triangles; 1 when nothing faces away (nothing to cull, nothing lost).
 double cullEfficiency(size_t trianglesCulled, size_t backFacingTriangles);
 
+// The share of clusters whose normals fit in no cone narrower than a hemisphere: no test culls them
+// from any eye. 0 without clusters.
+double uncullableShare(size_t uncullableClusters, size_t clusters);
+
+// When most clusters (more than half) are such, a sentence for the user saying so, why and what
+// could help; empty otherwise. What the text summary, batch's report and the window say.
+std::string uncullableNote(size_t uncullableClusters, size_t clusters);
+
 // Statistics for one (cone, test) over the given views from prepared bounds. `progress` hears of
 // every 16th view and may cancel there (OperationCancelled).
 CullTestStatistics measureCulling(const CullingInput& input, const std::vector<Eye>& views, CullTest test,

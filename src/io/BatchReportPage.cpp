@@ -47,6 +47,7 @@ tr.selected td { background: #fff3bf; }
 <div id="subtitle" class="muted"></div>
 <noscript><p>This page draws its plots and tables with a script; results.csv holds the same rows.</p></noscript>
 <div id="totals"></div>
+<p id="uncullable-note" class="muted"></p>
 <h2>Plots</h2>
 <div id="plots"></div>
 <h2 id="errors-title">Errors</h2>
@@ -62,7 +63,8 @@ const data = JSON.parse(document.getElementById("batch-data").textContent);
 const NS = "http://www.w3.org/2000/svg";
 const numeric = new Set(["triangles", "clusters", "efficiency", "back_facing_triangles", "triangles_culled",
   "test_loss_triangles", "partition_loss_triangles", "false_culls", "cull_fraction", "oracle_fraction",
-  "mean_sphere_radius", "seconds", "a_clusters", "a_efficiency", "triangles_culled_only_a", "triangles_culled_only_b"]);
+  "mean_sphere_radius", "seconds", "a_clusters", "a_efficiency", "triangles_culled_only_a", "triangles_culled_only_b",
+  "uncullable_clusters", "uncullable_share"]);
 const rows = data.rows.map((cells) => {
   const row = {};
   data.columns.forEach((column, k) => { row[column] = numeric.has(column) && cells[k] !== "" ? Number(cells[k]) : cells[k]; });
@@ -112,12 +114,19 @@ function drawTotals() {
     ["clusters", count(sum(ok, "clusters"))], ["efficiency (all back faces)", percent(share("triangles_culled"))],
     ["lost to the test", percent(share("test_loss_triangles"))],
     ["lost to the partition", percent(share("partition_loss_triangles"))],
-    ["false culls", count(sum(ok, "false_culls"))]];
+    ["false culls", count(sum(ok, "false_culls"))],
+    ["meshes most of whose clusters can never be culled", count(ok.filter((row) => row.note !== "").length)]];
   if (compared) {
     const culledA = sum(ok, "triangles_culled_only_a") + sum(ok, "triangles_culled") - sum(ok, "triangles_culled_only_b");
     totals.push(["A's efficiency", percent(back > 0 ? culledA / back : 1)]);
     totals.push(["meshes where A culls more", count(ok.filter((row) => row.a_efficiency > row.efficiency).length)]);
   }
+  // Why many meshes cull little or nothing: say it once, above the plots.
+  const mostly = ok.filter((row) => row.note !== "");
+  document.getElementById("uncullable-note").textContent = mostly.length === 0 ? "" :
+    `${count(mostly.length)} of ${count(ok.length)} meshes cull little or nothing because most of their clusters can never be culled: ` +
+    "each such cluster holds face normals over more than a hemisphere, so no cone narrower than a hemisphere holds them and no test " +
+    "culls it from any eye (the column \u201cuncullable clusters\u201d and each mesh's note say how many).";
   const box = document.getElementById("totals");
   for (const [label, value] of totals) {
     const total = element("div", {class: "total", "data-total": label});
@@ -235,7 +244,8 @@ const tableColumns = [
   ...(compared ? [["A's efficiency", "a_efficiency", "percent"], ["A's clusters", "a_clusters", ""]] : []),
   ["test loss", "test_loss_share", "percent"], ["partition loss", "partition_loss_share", "percent"],
   ["cull fraction", "cull_fraction", "percent"], ["oracle fraction", "oracle_fraction", "percent"],
-  ["false culls", "false_culls", ""], ["seconds", "seconds", "seconds"], ["warnings", "warnings", "text"]];
+  ["uncullable clusters", "uncullable_share", "percent"],
+  ["false culls", "false_culls", ""], ["seconds", "seconds", "seconds"], ["warnings", "warnings", "text"], ["note", "note", "text"]];
 for (const row of ok) {
   row.test_loss_share = row.back_facing_triangles > 0 ? row.test_loss_triangles / row.back_facing_triangles : 0;
   row.partition_loss_share = row.back_facing_triangles > 0 ? row.partition_loss_triangles / row.back_facing_triangles : 0;

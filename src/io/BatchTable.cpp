@@ -16,7 +16,7 @@ namespace {
 // Columns the batch adds around the statistics: who, whether, where.
 const std::vector<std::string> identityColumns = {"file", "status", "error", "error_kind", "json", "compare_json"};
 const std::vector<std::string> meshColumns = {"vertices", "faces", "triangles", "warnings", "seconds", "content_hash",
-                                              "settings_hash"};
+                                              "settings_hash", "note"};
 const std::vector<std::string> comparisonColumns = {"triangles_culled_only_a", "triangles_culled_only_b",
                                                     "triangles_culled_both", "cluster_count_warning"};
 
@@ -94,6 +94,9 @@ void addRunCells(BatchRow& row, const RunStatistics& run, const std::vector<std:
     row["faces"] = std::to_string(run.faces);
     row["triangles"] = std::to_string(run.triangles);
     row["warnings"] = joined(warnings, " | ");
+    // Why a mesh culls little or nothing, when most of its clusters never can be.
+    const CullTestStatistics& shown = run.results.front();
+    row["note"] = uncullableNote(shown.uncullableClusters, shown.clusters.size());
 }
 
 void addSettingCells(BatchRow& row, const Settings& settings) {

@@ -74,6 +74,7 @@ const std::vector<Column<CullTestStatistics>>& laterTotalColumns() {
         {"bytes_per_cluster", [](const CullTestStatistics& r) -> Cell { return r.bytesPerCluster; }},
         {"engine_record", [](const CullTestStatistics& r) -> Cell { return r.engineRecord; }},
         {"quantisation_loss_triangles", [](const CullTestStatistics& r) -> Cell { return r.quantisationLossTriangles; }},
+        {"uncullable_share", [](const CullTestStatistics& r) -> Cell { return uncullableShare(r.uncullableClusters, r.clusters.size()); }},
     };
     return columns;
 }

@@ -60,6 +60,8 @@ void writeStatisticsText(const RunStatistics& run, std::ostream& out, size_t wor
         out << formatted("  clusters          %.1f triangles and %.1f vertices on average, sphere radius mean %.4g max %.4g, "
                          "%zu never cullable\n",
                          r.meanClusterTriangles, r.meanClusterVertices, r.meanSphereRadius, r.maxSphereRadius, r.uncullableClusters);
+        const std::string nothing = uncullableNote(r.uncullableClusters, r.clusters.size());
+        if (!nothing.empty()) out << "  most uncullable   " << nothing << '\n';
         if (worstClusters == 0 || r.clusters.empty()) continue;
         out << "  worst clusters by test loss (alpha* = never cullable):\n";
         writeClusterTableText(r, rankClusters(r, ClusterSortKey::TestLoss, worstClusters), out);

@@ -138,6 +138,22 @@ TEST(CliBatch, SixteenMeshesGiveSixteenRowsEqualToStats) {
     std::cout << "first batch of 16 meshes: " << batch.seconds << " s" << std::endl;
 }
 
+// A mesh whose clusters can never be culled gets a note and its share; one that culls, neither.
+TEST(CliBatch, MostlyUncullableMeshesAreNoted) {
+    ScratchDirectory scratch;
+    const std::string out = scratch.file("out");
+    const TimedRun batch = runBatch({dataset("cube.off"), dataset("torus.off"), "-o", out, "--views", "4", "--jobs", "1"});
+    ASSERT_EQ(batch.run.exitCode, 0) << batch.run.err;
+    const std::vector<Row> rows = readResults(out + "/results.csv");
+    const Row& cube = rowEndingIn(rows, "cube.off");
+    const Row& torus = rowEndingIn(rows, "torus.off");
+    EXPECT_NE(cube.at("note").find("can never be culled"), std::string::npos) << cube.at("note");
+    EXPECT_EQ(std::stod(cube.at("uncullable_share")), 1.0);
+    EXPECT_EQ(torus.at("note"), "");
+    EXPECT_LT(std::stod(torus.at("uncullable_share")), 0.5);
+    EXPECT_NE(readTextFile(out + "/report.html").find("uncullable-note"), std::string::npos);
+}
+
 TEST(CliBatch, ASecondRunSkipsEveryMeshAndRunsAChangedOneAgain) {
     ScratchDirectory scratch;
     clitest::makeMeshLibrary(scratch.path() / "library");

@@ -72,6 +72,16 @@ TEST(CliStats, LoadsVtkAndAssimpOnlyForFilesThatNeedThem) {
 
 // A real run, many clusters and views and two tests: the file, written without a tree, is nlohmann's
 // layout of the same document.
+// The text summary says when most clusters can never be culled, and only then.
+TEST(CliStats, TextSaysWhenMostClustersCanNeverBeCulled) {
+    const CliRun cube = runCli({"stats", dataset("cube.off"), "--quiet", "--views", "4", "--format", "text"});
+    ASSERT_EQ(cube.exitCode, 0) << cube.err;
+    EXPECT_NE(cube.out.find("can never be culled"), std::string::npos) << cube.out;
+    const CliRun torus = runCli({"stats", dataset("torus.off"), "--quiet", "--views", "4", "--format", "text"});
+    ASSERT_EQ(torus.exitCode, 0) << torus.err;
+    EXPECT_EQ(torus.out.find("can never be culled"), std::string::npos) << torus.out;
+}
+
 TEST(CliStats, JsonOfARealRunIsLaidOutAsItsTree) {
     Settings settings;
     settings.views = 4;

@@ -146,7 +146,7 @@ TEST(StatisticsJson, HasEveryKeyWithItsValue) {
                                                      "partition_loss_triangles", "mean_view_efficiency",
                                                      "mean_cluster_triangles", "mean_cluster_vertices", "mean_sphere_radius",
                                                      "max_sphere_radius", "cull_fraction", "oracle_fraction", "bytes_per_cluster",
-                                                     "engine_record", "quantisation_loss_triangles"}));
+                                                     "engine_record", "quantisation_loss_triangles", "uncullable_share"}));
     EXPECT_EQ(result["test_loss_triangles"], 3);
     EXPECT_EQ(result["bytes_per_cluster"], 36);
     EXPECT_EQ(result["engine_record"], false);
@@ -232,8 +232,8 @@ TEST(StatisticsCsv, ExactText) {
               "duplicate_faces,double_sided_faces,degenerate_faces,components,orientable,winding_fixed_faces,inside_out_components,"
               "test_loss_triangles,partition_loss_triangles,mean_view_efficiency,mean_cluster_triangles,mean_cluster_vertices,"
               "mean_sphere_radius,max_sphere_radius,cull_fraction,oracle_fraction,bytes_per_cluster,engine_record,"
-              "quantisation_loss_triangles\n"
-              "average,sphere,2,2,1,2,6,1,0,0.3333333333333333,0.25,1,12.5,5,0,4,0,0,0,1,1,3,0,3,1,0.5,1.5,3.5,0.75,1,0.25,0.375,36,0,0\n");
+              "quantisation_loss_triangles,uncullable_share\n"
+              "average,sphere,2,2,1,2,6,1,0,0.3333333333333333,0.25,1,12.5,5,0,4,0,0,0,1,1,3,0,3,1,0.5,1.5,3.5,0.75,1,0.25,0.375,36,0,0,0.5\n");
     EXPECT_EQ(csvText(smallRun(), CsvTable::Views),
               "cone,test,view,eye_x,eye_y,eye_z,direction_x,direction_y,direction_z,orthographic,clusters_culled,"
               "triangles_culled,back_facing_triangles,front_facing_triangles,back_facing_clusters,missed_clusters,false_culls,"

@@ -276,3 +276,20 @@ TEST(Statistics, RunKnowsTheFewestClustersItsLimitsAllow) {
     settings.clusterCount = 8;  // the bound itself: met, merging across the gaps
     EXPECT_EQ(measureRun(prepared, buildClusters(prepared, settings), settings).clusters, 8u);
 }
+
+// More than half the clusters without a cone: a sentence with the counts and why; half or fewer: none.
+TEST(Statistics, MostlyUncullableClustersAreSaidWithWhy) {
+    EXPECT_EQ(uncullableNote(5, 10), "");
+    EXPECT_EQ(uncullableNote(0, 0), "");
+    const std::string said = uncullableNote(6, 10);
+    EXPECT_NE(said.find("6 of 10 clusters (60%)"), std::string::npos) << said;
+    EXPECT_NE(said.find("hemisphere"), std::string::npos) << said;
+    EXPECT_DOUBLE_EQ(uncullableShare(6, 10), 0.6);
+    EXPECT_EQ(uncullableShare(0, 0), 0.0);
+    // A closed cube is one cluster of normals turned every way: the run says so.
+    Settings settings;
+    settings.views = 4;
+    const RunStatistics cube = runStatistics(testmesh::quadCube(), settings);
+    EXPECT_EQ(cube.results[0].uncullableClusters, cube.clusters);
+    EXPECT_NE(uncullableNote(cube.results[0].uncullableClusters, cube.results[0].clusters.size()), "");
+}
