@@ -243,13 +243,14 @@ void StatisticsPanel::showEye(const EyeMeasurement& measurement) {
     falseCulls->setStyleSheet(view.falseCulls ? QStringLiteral("color: white; background: #d00000; font-weight: bold;")
                                               : QStringLiteral("color: #207020;"));
     values_["time per test"]->setText(tr("%1 ns per cluster").arg(view.nanosecondsPerCluster, 0, 'f', 1));
-    // The share too, and why it matters when most clusters can never be culled (the note in its tooltip).
+    // The share too, and why it matters when most clusters can never be culled (the note as its tooltip).
     const CullTestStatistics& shown = measurement.statistics;
     QLabel* uncullable = values_["uncullable clusters"];
     uncullable->setText(tr("%1 of %2 (%3)").arg(count(shown.uncullableClusters), count(shown.clusters.size()),
                                                percent(uncullableShare(shown.uncullableClusters, shown.clusters.size()))));
     const QString note = QString::fromStdString(uncullableNote(shown.uncullableClusters, shown.clusters.size()));
-    uncullable->setToolTip(note);
+    const QString about = aboutRow(QStringLiteral("uncullable clusters"));
+    uncullable->setToolTip(note.isEmpty() ? about : about + QStringLiteral("\n\n") + note);
     uncullable->setStyleSheet(note.isEmpty() ? QString() : QStringLiteral("color: #a0400a; font-weight: bold;"));
 }
 
