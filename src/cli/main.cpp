@@ -11,6 +11,7 @@
 #include "core/ClusterRanking.h"
 #include "core/Comparison.h"
 #include "core/LargeArrays.h"
+#include "io/ClusterFiles.h"
 #include "io/MeshReader.h"
 #include "io/MeshWriter.h"
 
@@ -35,6 +36,13 @@ CLI::Validator meshOutputValidator(const std::vector<std::string>& extensions) {
             return "'" + path + "' must end in one of: " + joined(extensions);
         },
         "FILE");
+}
+
+// What `partition -o` writes: the partition files and the meshes that keep cluster_id.
+std::vector<std::string> partitionOutputExtensions() {
+    std::vector<std::string> extensions = conescope::partitionFileExtensions();
+    extensions.insert(extensions.end(), {".vtp", ".vtk"});
+    return extensions;
 }
 
 }  // namespace
@@ -133,7 +141,7 @@ int main(int argc, char** argv) {
     addBuilderOptions(*partitionCommand, partition.run);
     partitionCommand->add_option("-o,--output", partition.output, "Output by extension: .json or .meshlets (meshoptimizer's meshlet arrays and bounds), .obj (an object per cluster), .gltf (a primitive per cluster), .txt (ids), .vtp or .vtk (the mesh with cluster_id)")
         ->required()
-        ->check(meshOutputValidator({".json", ".meshlets", ".obj", ".gltf", ".txt", ".vtp", ".vtk"}));
+        ->check(meshOutputValidator(partitionOutputExtensions()));
     partitionCommand->add_flag("-q,--quiet", partition.quiet, "No progress messages on stderr");
 
     LodCommandOptions lod;

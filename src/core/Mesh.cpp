@@ -98,11 +98,6 @@ glm::dvec3 newellNormal(const glm::vec3* positions, const uint32_t* face, size_t
     return normal;
 }
 
-glm::dvec4 transformPlane(const glm::dvec4& plane, const glm::dmat4& model) {
-    glm::dvec4 transformed = glm::transpose(glm::inverse(model)) * plane;
-    return glm::determinant(model) < 0.0 ? -transformed : transformed;
-}
-
 FaceGeometry computeFaceGeometry(const Mesh& mesh) {
     const size_t faceCount = mesh.faceCount();
     FaceGeometry geometry;

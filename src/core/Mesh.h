@@ -70,11 +70,9 @@ struct FaceGeometry {
 // YZ, ZX and XY planes, times two. For a triangle it equals the cross product (b-a)x(c-a).
 glm::dvec3 newellNormal(const glm::vec3* positions, const uint32_t* face, size_t count);
 
-// Transforms a plane [n, d] by (M^-1)^T and flips it when det M < 0 (seed 003), so the normal keeps
-// pointing out of the surface as the winding of the transformed vertices defines it.
-glm::dvec4 transformPlane(const glm::dvec4& plane, const glm::dmat4& model);
-
-// Normals by Newell in model space, then planes carried to world space by transformPlane.
+// Normals by Newell in model space, then each face's plane [n, d] carried to world space by
+// (M^-1)^T and flipped when det M < 0 (seed 003), so the normal keeps pointing out of the surface as
+// the winding of the transformed vertices defines it.
 FaceGeometry computeFaceGeometry(const Mesh& mesh);
 
 struct Aabb {

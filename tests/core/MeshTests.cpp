@@ -98,16 +98,6 @@ TEST(Mesh, TransformedPlanesMatchTransformedVertices) {
     }
 }
 
-TEST(Mesh, TransformPlaneFlipsOnMirror) {
-    const glm::dvec4 plane(0, 0, 1, -2);  // z = 2, facing +z
-    const glm::dmat4 mirror = glm::scale(glm::dmat4(1.0), glm::dvec3(1, 1, -1));
-    const glm::dvec4 transformed = transformPlane(plane, mirror);
-    // The mirrored vertices keep their xy winding, so their normal stays +z on the plane z = -2:
-    // (M^-1)^T alone gives -z, and det M < 0 flips it back.
-    EXPECT_DOUBLE_EQ(transformed.z, 1.0);
-    EXPECT_DOUBLE_EQ(transformed.w, 2.0);
-}
-
 TEST(Mesh, FaceGeometryOfLargeMeshesIsComputedOnAllCoresTheSameAsFaceByFace) {
     // 163,840 triangles: enough for the arrays to be sized and filled on several threads (and
     // for huge-page hints). Every face must come out as it does in a mesh of its own, computed
