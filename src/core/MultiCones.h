@@ -1,0 +1,47 @@
+// Several cones per cluster: each cluster's faces split into K sub-groups stored contiguously (so a
+// record needs only K - 1 offsets), each sub-group with its own minimal cone and the cluster's
+// bounding sphere. A sub-group is culled when its cone and the shared sphere say every face in it
+// faces away: narrower cones cull more back faces of the same partition.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "ClusterBounds.h"
+#include "Views.h"
+
+namespace conescope {
+
+struct MultiCones {
+    uint32_t conesPerCluster = 1;        // K
+    std::vector<uint32_t> faces;         // each cluster's faces, sub-group after sub-group
+    std::vector<uint32_t> groupStarts;   // into faces: clusterCount * K + 1 entries (sub-groups may be empty)
+    std::vector<ConeOfNormals> cones;    // clusterCount * K, minimalCone of each sub-group
+    std::vector<uint32_t> groupTriangles;  // fan triangles of each sub-group
+
+    size_t groupCount() const { return cones.size(); }
+};
+
+// The expected culled share of one sub-group's cone over view directions, weighted by its
+// triangles: T (1 - sin alpha) / 2; zero for a cone that never culls.
+double expectedCulledTriangles(const ConeOfNormals& cone, size_t triangles);
+
+// Splits `count` faces (their unit normals, their triangles) into at most `groups` sub-groups
+// aiming at a large sum of expectedCulledTriangles: triangle-weighted Lloyd iterations on the normals
+// from farthest-point seeds, kept only when they beat one group. Returns each face's group.
+std::vector<uint8_t> splitForCones(const glm::dvec3* normals, const uint32_t* triangles, size_t count, uint32_t groups);
+
+// K sub-groups and their cones for every cluster of `bounds` (K = 1 gives the cluster's own faces).
+MultiCones computeMultiCones(const Mesh& mesh, const FaceGeometry& faces, const ClusterBounds& bounds, uint32_t conesPerCluster);
+
+// One sub-group from one eye: seed 000's sphere test on its cone and the cluster's sphere, or the
+// view direction alone for an orthographic eye. Conservative like every cluster test.
+bool subGroupSeesBack(const ConeOfNormals& cone, const Sphere& sphere, const Eye& eye);
+
+// Every sub-group from one eye: 1 = culled.
+std::vector<uint8_t> cullSubGroups(const ClusterBounds& bounds, const MultiCones& multi, const Eye& eye);
+
+// Triangles in culled sub-groups.
+size_t culledTriangles(const MultiCones& multi, const std::vector<uint8_t>& culledGroups);
+
+}  // namespace conescope

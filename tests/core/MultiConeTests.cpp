@@ -1,0 +1,100 @@
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "TestMeshes.h"
+#include "core/Culling.h"
+#include "core/MultiCones.h"
+
+using namespace conescope;
+
+namespace {
+
+// A mesh cut into clusters of `size` consecutive faces, with its bounds (minimal cones and spheres).
+struct Clustered {
+    Mesh mesh;
+    std::vector<glm::vec3> world;
+    FaceGeometry faces;
+    ClusterBounds bounds;
+    Clustered(Mesh m, uint32_t size) : mesh(std::move(m)) {
+        world = worldPositions(mesh);
+        faces = computeFaceGeometry(mesh);
+        Partition partition;
+        for (uint32_t f = 0; f < mesh.faceCount(); ++f) partition.clusterOfFace.push_back(f / size);
+        partition.clusterCount = uint32_t((mesh.faceCount() + size - 1) / size);
+        bounds = computeClusterBounds(mesh, world, faces, partition, ConeMethod::Minimal);
+    }
+};
+
+std::vector<Eye> someEyes(std::mt19937_64& random) {
+    std::vector<Eye> eyes;
+    for (int i = 0; i < 24; ++i) eyes.push_back(Eye::perspective(testmesh::randomUnit(random) * (1.2 + 3.0 * (i % 4))));
+    for (int i = 0; i < 8; ++i) eyes.push_back(Eye::orthographicAlong(testmesh::randomUnit(random)));
+    return eyes;
+}
+
+}  // namespace
+
+TEST(MultiCones, OneConeEqualsTheSphereTest) {
+    std::mt19937_64 random(7);
+    const Clustered c(testmesh::torus(1.0, 0.4, 24, 12), 32);
+    const MultiCones one = computeMultiCones(c.mesh, c.faces, c.bounds, 1);
+    const CullingInput input{c.mesh, c.world, c.faces, c.bounds};
+    for (const Eye& eye : someEyes(random))
+        EXPECT_EQ(cullSubGroups(c.bounds, one, eye), cullClustersExact(input, eye, CullTest::Sphere));
+}
+
+TEST(MultiCones, SubGroupsHoldEveryFaceOnce) {
+    const Clustered c(testmesh::icosphere(3), 40);
+    for (uint32_t k : {2u, 4u, 8u}) {
+        const MultiCones multi = computeMultiCones(c.mesh, c.faces, c.bounds, k);
+        ASSERT_EQ(multi.groupCount(), c.bounds.count() * k);
+        ASSERT_EQ(multi.groupStarts.size(), multi.groupCount() + 1);
+        for (size_t cl = 0; cl < c.bounds.count(); ++cl) {
+            std::vector<uint32_t> a(multi.faces.begin() + multi.groupStarts[cl * k], multi.faces.begin() + multi.groupStarts[(cl + 1) * k]);
+            std::vector<uint32_t> b(c.bounds.faces.faces.begin() + c.bounds.faces.starts[cl],
+                                    c.bounds.faces.faces.begin() + c.bounds.faces.starts[cl + 1]);
+            std::sort(a.begin(), a.end());
+            std::sort(b.begin(), b.end());
+            EXPECT_EQ(a, b) << "cluster " << cl << " K=" << k;
+        }
+    }
+}
+
+// The property: a culled sub-group's faces are all strictly back-facing, on meshes with wide and
+// narrow normal spreads, degenerate-free and not.
+TEST(MultiCones, NoFalseCullAndMoreCulledThanOneCone) {
+    std::mt19937_64 random(11);
+    const std::vector<Mesh> meshes = {testmesh::icosphere(3), testmesh::torus(1.0, 0.3, 32, 16),
+                                      testmesh::randomSoup(random, 600, 120.0), testmesh::randomPatch(random, 16, 60.0)};
+    for (const Mesh& m : meshes) {
+        const Clustered c(m, 64);
+        const std::vector<Eye> eyes = someEyes(random);
+        size_t culledOne = 0, culledFour = 0;
+        for (uint32_t k : {1u, 2u, 4u, 8u}) {
+            const MultiCones multi = computeMultiCones(c.mesh, c.faces, c.bounds, k);
+            for (const Eye& eye : eyes) {
+                const std::vector<Facing> facing = classifyFaces(c.mesh, c.world, c.faces, eye);
+                const std::vector<uint8_t> culled = cullSubGroups(c.bounds, multi, eye);
+                for (size_t g = 0; g < culled.size(); ++g) {
+                    if (!culled[g]) continue;
+                    for (uint32_t i = multi.groupStarts[g]; i < multi.groupStarts[g + 1]; ++i)
+                        ASSERT_EQ(facing[multi.faces[i]], Facing::Back) << "K=" << k << " group " << g;
+                }
+                if (k == 1) culledOne += culledTriangles(multi, culled);
+                if (k == 4) culledFour += culledTriangles(multi, culled);
+            }
+        }
+        EXPECT_GT(culledFour, culledOne);
+    }
+}
+
+TEST(MultiCones, SplitSeparatesTwoOpposedFans) {
+    // Two faces up, two faces down: one cone cannot cull, two cones of zero width can.
+    const std::vector<glm::dvec3> normals = {{0, 0, 1}, {0, 0, -1}, {0, 0, 1}, {0, 0, -1}};
+    const std::vector<uint32_t> tris = {1, 1, 1, 1};
+    const std::vector<uint8_t> group = splitForCones(normals.data(), tris.data(), normals.size(), 2);
+    EXPECT_EQ(group[0], group[2]);
+    EXPECT_EQ(group[1], group[3]);
+    EXPECT_NE(group[0], group[1]);
+}
