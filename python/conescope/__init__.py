@@ -7,20 +7,37 @@
 Settings are keyword arguments named as the command line's options, with underscores or dashes
 (``max_tris=64``, ``cone="minimal"``, ``test=["octagon", "apex"]``, ``eye=(0, 0, 5)``,
 ``fix_winding=True``); the settings schema checks them and a bad one raises ValueError with the
-command line's message. A file that cannot be read raises MeshReadError (an OSError) with the
-message ``conescope-cli`` prints. What the command line warns of on stderr (winding, a missed cluster
+command line's message. Every error raised on purpose is a ``conescope.Error``: a file that cannot
+be read raises MeshReadError (also an OSError) with the message ``conescope-cli`` prints, a refused
+setting SettingsError (a ValueError), arrays that are not a mesh MeshDataError (a ValueError) or
+ArgumentTypeError (a TypeError), naming the row. What the command line warns of on stderr (winding, a missed cluster
 budget, what the reader skipped) comes as a Python warning.
 """
 
 import json as _json
 import os as _os
+import sys as _sys
 import warnings as _warnings
 
-from . import _conescope
-from ._conescope import MeshReadError, __version__
+try:
+    from . import _conescope
+except ImportError as _error:
+    _built = sorted(name for name in _os.listdir(_os.path.dirname(__file__)) if name.startswith("_conescope"))
+    raise ImportError(
+        f"conescope's compiled part could not be loaded into Python {_sys.version.split()[0]} "
+        f"({_sys.executable}): {_error}. The package holds {_built or 'no compiled module'}; it must be "
+        "built for this interpreter: run `python -m pip install --no-build-isolation .` from the "
+        "ConeScope repository with this Python (on Debian: a venv made by `/usr/bin/python3 -m venv "
+        "--system-site-packages`), or use /usr/bin/python3 with PYTHONPATH=build/python.") from None
+
+from ._conescope import __version__
+from ._errors import ArgumentTypeError, BatchError, Error, MeshDataError, MeshReadError, SettingsError
+from ._errors import translated as _translated
+from ._arrays import mesh_arrays as _mesh_arrays
 
 __all__ = ["stats", "stats_arrays", "clusters", "clusters_arrays", "compare", "compare_arrays", "batch",
-           "MeshReadError", "extensions", "__version__"]
+           "Error", "MeshReadError", "SettingsError", "MeshDataError", "ArgumentTypeError", "BatchError",
+           "extensions", "__version__"]
 
 
 def extensions():
@@ -46,7 +63,8 @@ def _setting_text(value):
 def _setting_pairs(settings):
     # None is the default: as if the keyword were not given.
     pairs = [(name, _setting_text(value)) for name, value in settings.items() if value is not None]
-    _conescope.check_settings(pairs)
+    with _translated(SettingsError):
+        _conescope.check_settings(pairs)
     return pairs
 
 
@@ -55,14 +73,56 @@ def _configuration_text(configuration):
     if configuration is None:
         return ""
     if isinstance(configuration, dict):
+        if not all(isinstance(name, str) for name in configuration):
+            raise ArgumentTypeError("a comparison side's settings must be named by texts")
         return ",".join(f"{name.replace('_', '-')}={_setting_text(value)}" for name, value in configuration.items())
-    return str(configuration)
+    if not isinstance(configuration, str):
+        raise ArgumentTypeError(f"a comparison side must be a 'K=V,...' text or a dict, not {type(configuration).__name__}")
+    return configuration
+
+
+def _path(path):
+    if not isinstance(path, (str, _os.PathLike)):
+        raise ArgumentTypeError(f"path must be a text or a path, not {type(path).__name__}")
+    return _os.fspath(path)
+
+
+def _run(function, *arguments, value_error=SettingsError):
+    """A call of the compiled part: its errors as conescope's, its notes as warnings, its JSON read."""
+    with _translated(value_error):
+        return _document(function(*arguments))
+
+
+def _flags(per_view, per_cluster):
+    for name, value in (("per_view", per_view), ("per_cluster", per_cluster)):
+        if not isinstance(value, bool):
+            raise ArgumentTypeError(f"{name} must be True or False, not {value!r}")
+    return per_view, per_cluster
+
+
+def _sort_and_top(sort, top):
+    if not isinstance(sort, str):
+        raise ArgumentTypeError(f"sort must be a text, not {type(sort).__name__}")
+    if isinstance(top, bool) or not isinstance(top, int):
+        raise ArgumentTypeError(f"top must be an integer, not {top!r}")
+    if top < 0:
+        raise SettingsError(f"top must be 0 (all clusters) or more, not {top}")
+    return sort, top
+
+
+def _comparison(a, b, pairs):
+    """Both sides of a comparison as compare's texts, checked against the shared settings."""
+    sides = _configuration_text(a), _configuration_text(b)
+    with _translated(SettingsError):
+        for side in sides:
+            _conescope.check_compare(side, pairs)
+    return sides
 
 
 def _document(result):
     text, notes = result
     for note in notes:
-        _warnings.warn(note, stacklevel=3)
+        _warnings.warn(note, stacklevel=4)
     return _json.loads(text)
 
 
@@ -75,7 +135,7 @@ def _with_cluster_ids(cluster_ids, settings):
 
 def stats(path, per_view=True, per_cluster=True, **settings):
     """The statistics document `conescope-cli stats PATH` writes, as a dict."""
-    return _document(_conescope.stats(_os.fspath(path), _setting_pairs(settings), per_view, per_cluster))
+    return _run(_conescope.stats, _path(path), _setting_pairs(settings), *_flags(per_view, per_cluster))
 
 
 def stats_arrays(vertices, faces, cluster_ids=None, name="arrays", per_view=True, per_cluster=True, **settings):
@@ -86,19 +146,22 @@ def stats_arrays(vertices, faces, cluster_ids=None, name="arrays", per_view=True
     then). The mesh is checked and its equal positions merged as a file's are.
     """
     settings = _with_cluster_ids(cluster_ids, settings)
-    return _document(_conescope.stats_arrays(vertices, faces, cluster_ids, name, _setting_pairs(settings),
-                                             per_view, per_cluster))
+    pairs = _setting_pairs(settings)
+    return _run(_conescope.stats_arrays, *_mesh_arrays(vertices, faces, cluster_ids), str(name), pairs,
+                *_flags(per_view, per_cluster), value_error=MeshDataError)
 
 
 def clusters(path, sort="test-loss", top=20, **settings):
     """The worst clusters, as `conescope-cli clusters PATH --format json` writes them (top=0: all)."""
-    return _document(_conescope.clusters(_os.fspath(path), _setting_pairs(settings), sort, top))
+    return _run(_conescope.clusters, _path(path), _setting_pairs(settings), *_sort_and_top(sort, top))
 
 
 def clusters_arrays(vertices, faces, cluster_ids=None, name="arrays", sort="test-loss", top=20, **settings):
     """clusters() of a mesh given as arrays (see stats_arrays)."""
     settings = _with_cluster_ids(cluster_ids, settings)
-    return _document(_conescope.clusters_arrays(vertices, faces, cluster_ids, name, _setting_pairs(settings), sort, top))
+    pairs = _setting_pairs(settings)
+    return _run(_conescope.clusters_arrays, *_mesh_arrays(vertices, faces, cluster_ids), str(name), pairs,
+                *_sort_and_top(sort, top), value_error=MeshDataError)
 
 
 def compare(path, a, b=None, per_view=True, per_cluster=True, **settings):
@@ -107,15 +170,16 @@ def compare(path, a, b=None, per_view=True, per_cluster=True, **settings):
     a, b: "K=V,..." texts as compare's --a and --b take them, or dicts of settings; the keywords are
     the options both share (b=None: B is those alone).
     """
-    return _document(_conescope.compare(_os.fspath(path), _configuration_text(a), _configuration_text(b),
-                                        _setting_pairs(settings), per_view, per_cluster))
+    pairs = _setting_pairs(settings)
+    return _run(_conescope.compare, _path(path), *_comparison(a, b, pairs), pairs, *_flags(per_view, per_cluster))
 
 
 def compare_arrays(vertices, faces, a, b=None, cluster_ids=None, name="arrays", per_view=True, per_cluster=True,
                    **settings):
     """compare() of a mesh given as arrays (see stats_arrays)."""
-    return _document(_conescope.compare_arrays(vertices, faces, cluster_ids, name, _configuration_text(a),
-                                               _configuration_text(b), _setting_pairs(settings), per_view, per_cluster))
+    pairs = _setting_pairs(settings)
+    return _run(_conescope.compare_arrays, *_mesh_arrays(vertices, faces, cluster_ids), str(name),
+                *_comparison(a, b, pairs), pairs, *_flags(per_view, per_cluster), value_error=MeshDataError)
 
 
 from ._batch import batch  # noqa: E402  (uses the helpers above)

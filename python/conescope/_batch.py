@@ -8,14 +8,16 @@ import subprocess
 import tempfile
 
 from . import _conescope
-from . import _configuration_text, _setting_pairs
+from . import _comparison, _setting_pairs
+from ._errors import ArgumentTypeError, BatchError, SettingsError, translated
 
 MESHOPT_PIPELINE = "builder=meshopt,cone=meshopt,test=apex"
 
 
 def _cli():
-    """The conescope-cli the module was built with, unless CONESCOPE_CLI names another."""
-    return os.environ.get("CONESCOPE_CLI", _conescope.cli_path)
+    """CONESCOPE_CLI, else the conescope-cli installed in the package, else the one the module was built with."""
+    packaged = os.path.join(os.path.dirname(__file__), "conescope-cli")
+    return os.environ.get("CONESCOPE_CLI", packaged if os.access(packaged, os.X_OK) else _conescope.cli_path)
 
 
 def _read_results(text_or_path):
@@ -48,7 +50,7 @@ def _local_batch(paths, output_dir, pairs, compare, per_view, per_cluster, jobs,
         raise
     # 0: every mesh ok; 3: finished with error rows, which the table holds.
     if process.returncode not in (0, 3):
-        raise RuntimeError(errors.strip() or f"conescope-cli batch ended with exit code {process.returncode}")
+        raise BatchError(errors.strip() or f"conescope-cli batch ended with exit code {process.returncode}")
     return _read_results(os.path.join(output_dir, "results.csv"))
 
 
@@ -59,7 +61,9 @@ def _row_on_worker(path, folder, pairs, compare, per_view, per_cluster):
 
 
 def _dask_batch(client, paths, output_dir, pairs, compare, per_view, per_cluster, shard):
-    meshes = _conescope.find_meshes([os.fspath(path) for path in paths], shard or "")
+    # Absolute paths: the workers may run in another folder.
+    with translated(SettingsError):
+        meshes = [os.path.abspath(mesh) for mesh in _conescope.find_meshes(paths, shard or "")]
     folder = ""
     if output_dir is not None:
         folder = os.path.abspath(output_dir)  # the workers write here: shared storage on a real cluster
@@ -92,10 +96,22 @@ def batch(paths, client=None, output_dir=None, compare=None, compare_meshopt=Fal
     """
     if isinstance(paths, (str, os.PathLike)):
         paths = [paths]
+    if not all(isinstance(path, (str, os.PathLike)) for path in paths):
+        raise ArgumentTypeError("paths must be a path or a list of paths (files or folders)")
     paths = [os.fspath(path) for path in paths]
     pairs = _setting_pairs(settings)
-    compare = MESHOPT_PIPELINE if compare_meshopt else _configuration_text(compare)
-    _conescope.check_compare(compare, pairs)
+    if compare_meshopt and compare is not None:
+        raise SettingsError("compare and compare_meshopt=True both name side A: give one of them")
+    if client is not None:
+        ignored = [name for name, value in (("jobs", jobs), ("timeout", timeout), ("memory_limit", memory_limit))
+                   if value is not None]
+        if ignored:
+            raise SettingsError(f"{', '.join(ignored)} apply to the local batch only; a Dask client's workers "
+                                "set their own processes and limits")
+    for name, value in (("jobs", jobs), ("timeout", timeout), ("memory_limit", memory_limit)):
+        if value is not None and (isinstance(value, bool) or not isinstance(value, (int, float)) or value <= 0):
+            raise SettingsError(f"{name} must be a number above 0, not {value!r}")
+    compare = _comparison(MESHOPT_PIPELINE if compare_meshopt else compare, None, pairs)[0]
     if client is not None:
         frame = _dask_batch(client, paths, output_dir, pairs, compare, per_view, per_cluster, shard)
     elif output_dir is not None:
