@@ -16,7 +16,8 @@ packages=(
   xvfb xauth clang libclang-rt-14-dev
   time python3
   # The Python module (python/): pybind11 builds it against Debian's Python; numpy and pandas are
-  # its arrays and tables, dask and distributed run batches on many machines, pytest tests it; venv, pip and setuptools install it (pip install --no-build-isolation .).
+  # its arrays and tables, dask and distributed run batches on many machines, pytest tests it;
+  # venv, pip and setuptools install it as a package (pip install --no-build-isolation .).
   pybind11-dev python3-dev python3-numpy python3-pandas python3-dask python3-distributed python3-pytest
   python3-venv python3-pip python3-setuptools
   # The batch report's page test opens report.html in headless chromium.
