@@ -24,7 +24,9 @@ namespace conescope {
 //            normals too, and the better kept (the default);
 //  Best:     clusters grown from like normals and reduced to the budget, also started from
 //            meshoptimizer's meshlets where growth misses the budget or the mesh is small, and up
-//            to 100 annealing sweeps. Several times slower; culls the most.
+//            to 100 annealing sweeps; then the balanced search too, whose partition is kept where
+//            it is nearer the budget or culls more in expectation (best never below balanced).
+//            Several times slower; culls the most.
 // Fast and Balanced grow clusters too when the budget is above meshoptimizer's count.
 enum class Effort { Fast, Balanced, Best };
 
