@@ -373,7 +373,8 @@ size_t climbStride(size_t faceCount, size_t from, size_t highest) {
 }
 
 // The best level's search, then the balanced one's, and the better kept: nearer the budget (within
-// it first), then more culled in expectation. The best level's longer search from grown clusters
+// it first), then more culled in expectation, over far views and from the default orbit's distance
+// (the best level's larger clusters of like normals can cull less from up close). The best level's longer search from grown clusters
 // can end in a worse basin than the balanced one's from meshoptimizer's meshlets (a coconut tree
 // 0.068 against 0.362; a tree of 154k triangles 3 clusters above meshoptimizer's count); so it
 // never culls less in expectation nor makes more clusters than the default. The balanced run takes
@@ -387,7 +388,10 @@ Partition buildBest(const Mesh& mesh, const FaceGeometry& faces, const MeshletLi
     Partition best = buildAtBudget(mesh, faces, limits, targetClusters, share(0.0, 0.9), Effort::Best, meshlets, partDone);
     Partition balanced = buildOptimizedClusters(mesh, faces, limits, targetClusters, share(0.9, 1.0), Effort::Balanced, meshlets, {});
     const size_t target = targetClusters != 0 ? targetClusters : defaultClusterBudget(mesh, limits);
-    if (!betterAtBudget(mesh, faces, balanced, best, target)) return best;
+    const double distance = kOrbitDistance * double(computeAabb(mesh.positions).halfDiagonal());
+    if (!betterAtBudget(mesh, faces, balanced, best, target) &&
+        (best.clusterCount != balanced.clusterCount || cullsAsMuchFrom(mesh, faces, limits, best, balanced, distance)))
+        return best;
     heardAsOnePart(partDone, mesh.faceCount(), balanced);
     return balanced;
 }
