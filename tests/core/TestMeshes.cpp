@@ -203,6 +203,30 @@ Mesh randomSoup(std::mt19937_64& random, size_t triangles, double spreadDegrees)
     return mesh;
 }
 
+Mesh foliage(std::mt19937_64& random, int leaves) {
+    Mesh mesh;
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    for (int leaf = 0; leaf < leaves; ++leaf) {
+        glm::dvec3 centre;
+        do centre = glm::dvec3(unit(random), unit(random), unit(random));
+        while (glm::dot(centre, centre) > 1.0);
+        const glm::dvec3 n = randomUnit(random);
+        const glm::dvec3 u = glm::normalize(glm::cross(n, randomUnit(random))), v = glm::cross(n, u);
+        // The fold runs along v through the centre: the pentagon on the +u side lies flat, the quad
+        // on the -u side is turned 30 degrees about the fold.
+        const double size = 0.03, fold = glm::radians(30.0);
+        const glm::dvec3 back = -std::cos(fold) * u + std::sin(fold) * n;
+        const uint32_t base = uint32_t(mesh.positions.size());
+        const glm::dvec3 corners[] = {centre - size * v, centre + size * v,                                  // the fold
+                                      centre + size * (0.8 * u + v), centre + size * 1.2 * u, centre + size * (0.8 * u - v),
+                                      centre + size * (back - v), centre + size * (back + v)};
+        for (const glm::dvec3& p : corners) mesh.positions.emplace_back(p);
+        mesh.addFace({base, base + 4, base + 3, base + 2, base + 1});  // the pentagon, wound about n
+        mesh.addFace({base, base + 1, base + 6, base + 5});            // the quad
+    }
+    return mesh;
+}
+
 glm::dmat4 randomModel(std::mt19937_64& random, double scale) {
     std::uniform_real_distribution<double> unit(-1.0, 1.0), stretch(0.3, 3.0);
     glm::dmat4 model = glm::translate(glm::dmat4(1.0), scale * glm::dvec3(unit(random), unit(random), unit(random)));

@@ -34,6 +34,11 @@ glm::dmat4 randomModel(std::mt19937_64& random, double scale);
 // pieces, between which meshoptimizer's builder jumps through its k-d tree.
 Mesh scatteredSpheres(std::mt19937_64& random, int pieces);
 
+// Foliage: `leaves` leaves scattered in a ball of radius 1, each a pentagon and a quad folded along
+// their shared edge (about 30 degrees), turned every way, 0.06 across, with vertices of their own:
+// a mesh of thousands of small parts whose nearby faces face every way, as trees and plants are.
+Mesh foliage(std::mt19937_64& random, int leaves);
+
 // Furniture made of closed boxes (a desk top on legs, shelves, a door): `boxes` boxes of random
 // sizes side by side, each side a grid of cells x cells quads, as modelling tools export them.
 Mesh boxProp(std::mt19937_64& random, int boxes, int cells);

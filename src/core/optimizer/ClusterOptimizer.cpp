@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "Parts.h"
+#include "Runs.h"
 #include "State.h"
 #include "Steps.h"
 #include "core/Parallel.h"
@@ -25,30 +26,10 @@ namespace {
 // is 84 triangles, about what meshoptimizer's builder reaches at cone weight 1 (84-87 on the CGAL
 // meshes) and a budget the reduction reaches on all of them.
 constexpr double kDefaultFill = 0.68;
-// Growth stops a cluster at this multiple of the budget's mean size (or the triangle limit). At
-// exactly the mean, every cluster ends up the same size and the reduction can get stuck a few
-// clusters above the budget on regular meshes; the margin lets some grow larger instead.
-constexpr double kGrowthCap = 1.25;
-// How one effort level searches: where it starts, and its annealing. Sweeps go over all faces; a
-// level gets at most maxSweeps, and no more face visits than sweepFaceVisits (each visit costs well
-// under a microsecond). From a growth start fewer than minSweeps cool too fast to pay. From
-// meshoptimizer's meshlets the first sweeps pay most, and the second only on a mesh of one part, so
-// the balanced level takes two there and one on each part of a larger mesh (annealingSweepsFor).
-// docs/benchmarks.md ("Why the constants are what they are") has the figures.
-struct SearchPlan {
-    bool growthStart;  // false: start from meshoptimizer's meshlets where they are within the limits
-    size_t maxSweeps, minSweeps;
-    double sweepFaceVisits;
-    size_t sweepsPerPart;  // at most this many on each of meshoptimizer's meshlet parts, when more than one
-    // Whether meshoptimizer's builder takes the limits, so that its meshlets can be a start: asked
-    // of meshopt/ once per build (planAt), not again at every step that needs to know.
-    bool meshoptLimits = false;
-};
-
 SearchPlan planFor(Effort effort) {
     switch (effort) {
         case Effort::Fast: return {false, 0, 0, 0.0, 0};
-        case Effort::Balanced: return {false, 2, 2, std::numeric_limits<double>::infinity(), 1};
+        case Effort::Balanced: return {false, 2, 2, std::numeric_limits<double>::infinity(), 1, kGrowWhereUncullable, true, kOnePartSweepVisits};
         case Effort::Best: break;
     }
     return {true, 100, 8, 5.0e6, 100};
@@ -63,99 +44,6 @@ SearchPlan planAt(Effort effort, const MeshletLimits& limits) {
 // The fast levels start from meshoptimizer's meshlets where it takes the limits.
 bool startsFromMeshlets(const SearchPlan& plan) { return !plan.growthStart && plan.meshoptLimits; }
 
-// The annealing sweeps the plan buys for a mesh of this size; too few to cool slowly are not worth
-// their time (0).
-size_t annealingSweeps(const SearchPlan& plan, size_t faceCount) {
-    const double affordable = plan.sweepFaceVisits / double(std::max<size_t>(faceCount, 1));  // may be infinite
-    const size_t sweeps = affordable >= double(plan.maxSweeps) ? plan.maxSweeps : size_t(affordable);
-    return sweeps < plan.minSweeps ? 0 : sweeps;
-}
-
-// The sum of the objective over the clusters: which of two runs to keep at the same count.
-double objectiveOf(const optimizer::State& state) {
-    double value = 0.0;
-    for (const optimizer::Cluster& cluster : state.clusters)
-        if (!cluster.faces.empty()) value += optimizer::valueOf(cluster.triangles, cluster.cap);
-    return value;
-}
-
-bool withinLimits(const optimizer::State& state) {
-    for (const optimizer::Cluster& cluster : state.clusters)
-        if (cluster.triangles > state.limits.maxTriangles || cluster.vertices > state.limits.maxVertices) return false;
-    return true;
-}
-
-// Whether run `a` is the one to keep over run `b`: within the budget first, then the nearer count to
-// it (fewer clusters cull less, and only equal counts compare fairly), then the better objective.
-bool closerToTheBudget(const optimizer::State& a, const optimizer::State& b, size_t target) {
-    const bool aAbove = a.liveClusters > target, bAbove = b.liveClusters > target;
-    if (aAbove != bAbove) return !aAbove;
-    if (a.liveClusters != b.liveClusters) return aAbove ? a.liveClusters < b.liveClusters : a.liveClusters > b.liveClusters;
-    return objectiveOf(a) > objectiveOf(b);
-}
-
-// Reduction to the budget and local search from the clusters `state` holds.
-void reduceAndSearch(optimizer::State& state, size_t target, size_t sweeps) {
-    optimizer::reduceTo(state, target);
-    optimizer::refine(state);
-    // Annealing moves change only the clusters they touch: the refinement after it looks there.
-    if (sweeps > 0) optimizer::refineAround(state, optimizer::anneal(state, sweeps));
-}
-
-// Below this many faces the best effort also starts from meshoptimizer's meshlets every time: on
-// small meshes of few clusters growth can end below meshoptimizer's own objective (CGAL's patch-01,
-// dragknob, patch-13), and the second start costs little there.
-constexpr size_t kBothStartsBelowFaces = size_t(1) << 14;
-
-// meshoptimizer's meshlets searched at the budget, or those meshlets again where the search ended
-// lower in the objective at their count (annealing accepts losses): never worse than
-// meshoptimizer's own partition, in expectation over view directions. A polygon split across
-// meshlets joins one of them whole and can overfill it: such meshlets first pass faces to
-// neighbours with room, and those still over the limits keep their size, never growing past it
-// (the limits of meshoptimizer's own partition of these faces; whole polygons within the limits
-// need more clusters than its count on most polygon meshes). A meshlet's pieces stay together:
-// handing its smaller pieces to neighbours with room (measured on CGAL's cheese) widened those
-// neighbours' cones more than it saved.
-std::unique_ptr<optimizer::State> searchFromMeshlets(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits,
-                                                     const Partition& meshlets, size_t target, size_t sweeps) {
-    auto state = std::make_unique<optimizer::State>(mesh, faces, limits);
-    optimizer::assign(*state, meshlets);
-    const double startValue = objectiveOf(*state);
-    if (!withinLimits(*state)) optimizer::shedOverLimits(*state);
-    reduceAndSearch(*state, target, sweeps);
-    if (state->liveClusters >= meshlets.clusterCount && objectiveOf(*state) < startValue) optimizer::assign(*state, meshlets);
-    return state;
-}
-
-// One run of the whole optimisation on a mesh. The fast levels start from meshoptimizer's meshlets
-// (`meshlets`, given when the budget is at most their count) and keep that run when it reaches the
-// budget. Otherwise, and at the best level, clusters are grown and reduced; at the best level, where
-// that cannot get down to the budget (the limits bind: thin strips, many vertices per triangle), and
-// always on small meshes, meshoptimizer's start is searched too, and the run nearer the budget (then
-// the better objective) is kept.
-Partition optimizeClusters(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits, size_t target,
-                           const SearchPlan& plan, size_t sweeps, const Partition* meshlets) {
-    std::unique_ptr<optimizer::State> packed;
-    if (!plan.growthStart && meshlets) {
-        packed = searchFromMeshlets(mesh, faces, limits, *meshlets, target, sweeps);
-        if (packed->liveClusters <= target) return optimizer::result(*packed);
-    }
-    optimizer::State state(mesh, faces, limits);
-    const double triangles = double(triangleCount(mesh));
-    optimizer::grow(state, std::min(double(limits.maxTriangles), kGrowthCap * triangles / double(target)));
-    if (state.liveClusters < target) {  // a generous budget: grow again at its mean size
-        optimizer::clear(state);
-        optimizer::grow(state, std::min(double(limits.maxTriangles), triangles / double(target)));
-    }
-    reduceAndSearch(state, target, sweeps);
-    // The fast levels keep meshoptimizer's start when growth gets no nearer the budget: a budget
-    // the limits do not allow must not end above meshoptimizer's count.
-    if (packed && !closerToTheBudget(state, *packed, target)) return optimizer::result(*packed);
-    const bool small = mesh.faceCount() < kBothStartsBelowFaces;
-    if (!plan.growthStart || (state.liveClusters <= target && !small) || !plan.meshoptLimits) return optimizer::result(state);
-    packed = searchFromMeshlets(mesh, faces, limits, meshlets ? *meshlets : buildMeshoptMeshlets(mesh, limits, 1.0f), target, sweeps);
-    return optimizer::result(closerToTheBudget(*packed, state, target) ? *packed : state);
-}
 
 // defaultClusterBudget, with whether meshoptimizer takes the limits known.
 size_t defaultBudget(const Mesh& mesh, const MeshletLimits& limits, bool meshoptLimits) {
@@ -186,6 +74,8 @@ size_t fewestClustersWithin(const Mesh& mesh, const MeshletLimits& limits) {
 
 size_t annealingSweepsFor(Effort effort, size_t faceCount, size_t meshletParts) {
     const SearchPlan plan = planFor(effort);
+    if (meshletParts == 1 && plan.onePartSweepVisits > 0.0)
+        return std::clamp<size_t>(size_t(plan.onePartSweepVisits / double(std::max<size_t>(faceCount, 1))), plan.minSweeps, kOnePartSweepsAtMost);
     const size_t sweeps = annealingSweeps(plan, faceCount);
     return meshletParts > 1 ? std::min(sweeps, plan.sweepsPerPart) : sweeps;
 }
@@ -193,6 +83,9 @@ size_t annealingSweepsFor(Effort effort, size_t faceCount, size_t meshletParts) 
 bool startsFromMeshoptMeshlets(const MeshletLimits& limits, Effort effort) { return startsFromMeshlets(planAt(effort, limits)); }
 
 namespace {
+
+// The default orbit's distance in half-diagonals of the mesh's box (Settings::distance).
+constexpr double kOrbitDistance = 3.0;
 
 // The optimisation from meshoptimizer's meshlets, part by part as the stream makes them: this
 // thread takes parts in order as they come, and the stream's thread takes them too once its
@@ -202,6 +95,9 @@ Partition optimizeMeshletParts(const Mesh& mesh, const FaceGeometry& faces, cons
                                const SearchPlan& plan, size_t sweeps, MeshletStream& stream, const ProgressCallback& progress,
                                const PartClusters& partDone) {
     const size_t partCount = stream.partCount();
+    // A mesh of one part grows its own clusters too: milliseconds there.
+    SearchPlan partPlan = plan;
+    if (partCount == 1 && plan.growOnOnePart) partPlan.growWhereUncullable = 0.0;
     std::vector<size_t> targets(partCount, 0);
     if (target != 0) {
         std::vector<size_t> held(partCount);
@@ -221,7 +117,7 @@ Partition optimizeMeshletParts(const Mesh& mesh, const FaceGeometry& faces, cons
             if (!part.faces.empty()) {
                 const optimizer::MeshPart piece = optimizer::extractPart(mesh, faces, part.faces.data(), part.faces.size(), newIndex);
                 const size_t partTarget = target != 0 ? targets[i] : part.meshlets.clusterCount;
-                results[i] = optimizeClusters(piece.mesh, piece.faces, limits, partTarget, plan, sweeps, &part.meshlets);
+                results[i] = optimizeClusters(piece.mesh, piece.faces, limits, partTarget, partPlan, sweeps, &part.meshlets);
             }
             if (partDone) partDone(i, partCount, part.faces, results[i]);
             const size_t done = ++partsDone;
@@ -377,7 +273,8 @@ Partition buildNearBudget(const Mesh& mesh, const FaceGeometry& faces, const Mes
                           const ProgressCallback& progress, Effort effort, MeshletStream* meshlets, const PartClusters& partDone) {
     const size_t faceCount = mesh.faceCount();
     if (faceCount == 0) return {};
-    const SearchPlan plan = planAt(effort, limits);
+    SearchPlan plan = planAt(effort, limits);
+    plan.viewDistance = kOrbitDistance * double(computeAabb(mesh.positions).halfDiagonal());
     const size_t sweeps = annealingSweeps(plan, faceCount);
     // The fast levels start from meshoptimizer's meshlets, whose count is the default budget; a
     // budget above it is grown instead.
@@ -475,6 +372,30 @@ size_t climbStride(size_t faceCount, size_t from, size_t highest) {
     return 0;
 }
 
+// The best level's search, then the balanced one's, and the better kept: nearer the budget (within
+// it first), then more culled in expectation, over far views and from the default orbit's distance
+// (the best level's larger clusters of like normals can cull less from up close). The best level's longer search from grown clusters
+// can end in a worse basin than the balanced one's from meshoptimizer's meshlets (a coconut tree
+// 0.068 against 0.362; a tree of 154k triangles 3 clusters above meshoptimizer's count); so it
+// never culls less in expectation nor makes more clusters than the default. The balanced run takes
+// the last tenth of the progress; where it is kept it is heard as one part.
+Partition buildBest(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits, size_t targetClusters,
+                    const ProgressCallback& progress, MeshletStream* meshlets, const PartClusters& partDone) {
+    auto share = [&progress](double from, double to) -> ProgressCallback {
+        if (!progress) return {};
+        return [&progress, from, to](double fraction, const std::string& stage) { return progress(from + (to - from) * fraction, stage); };
+    };
+    Partition best = buildAtBudget(mesh, faces, limits, targetClusters, share(0.0, 0.9), Effort::Best, meshlets, partDone);
+    Partition balanced = buildOptimizedClusters(mesh, faces, limits, targetClusters, share(0.9, 1.0), Effort::Balanced, meshlets, {});
+    const size_t target = targetClusters != 0 ? targetClusters : defaultClusterBudget(mesh, limits);
+    const double distance = kOrbitDistance * double(computeAabb(mesh.positions).halfDiagonal());
+    if (!betterAtBudget(mesh, faces, balanced, best, target) &&
+        (best.clusterCount != balanced.clusterCount || cullsAsMuchFrom(mesh, faces, limits, best, balanced, distance)))
+        return best;
+    heardAsOnePart(partDone, mesh.faceCount(), balanced);
+    return balanced;
+}
+
 }  // namespace
 
 Partition buildOptimizedClusters(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits,
@@ -489,6 +410,7 @@ Partition buildOptimizedClusters(const Mesh& mesh, const FaceGeometry& faces, co
     // 0.346 at 19; bones 0.0331 at 41, 0.0332 at 44 where 41 split to 44 gives 0.0509
     // (docs/benchmarks.md).
     const size_t faceCount = mesh.faceCount();
+    if (effort == Effort::Best) return buildBest(mesh, faces, limits, targetClusters, progress, meshlets, partDone);
     if (targetClusters == 0 || effort != Effort::Balanced || !meshoptTakesLimits(limits))
         return buildAtBudget(mesh, faces, limits, targetClusters, progress, effort, meshlets, partDone);
     // One stream of meshoptimizer's meshlets for every step: its count is the default budget.

@@ -11,34 +11,15 @@
 #include <queue>
 #include <vector>
 
-#include "Steps.h"
+#include "Reduction.h"
 
 namespace conescope::optimizer {
 
 namespace {
 
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
 constexpr size_t kFailuresPerRemoval = 4;
 constexpr size_t kFailuresAtLeast = 32;
 
-// Which clusters each step changed, so that a step that failed on a cluster is tried again only
-// once a cluster it reads has changed: until then it fails the same way, since a failed step
-// leaves every cluster as it was, down to the order of its faces and its cap (the passes below
-// retry every cluster, and failures cost as much as successes).
-struct Changes {
-    std::vector<uint32_t> at;                          // per cluster: the commit that last changed it
-    std::vector<uint32_t> dissolveFailed, splitFailed;  // per cluster: commits at its last failure, or kNone
-    uint32_t commits = 0;
-    std::vector<uint32_t> ring, nextRing;  // scratch for unchangedSince
-
-    explicit Changes(size_t clusters) : at(clusters, 0), dissolveFailed(clusters, kNone), splitFailed(clusters, kNone) {}
-    template <typename Clusters>
-    void commit(const Clusters& clusters) {
-        ++commits;
-        for (uint32_t c : clusters) at[c] = commits;
-    }
-    void commit(std::initializer_list<uint32_t> clusters) { commit<std::initializer_list<uint32_t>>(clusters); }
-};
 
 // Whether no cluster within `rings` steps of `cluster` (over shared edges) changed after commit
 // `failed`: a dissolve reads two rings (its faces' new homes, and theirs when they make room), a
@@ -54,23 +35,6 @@ bool unchangedSince(const State& state, Changes& changes, uint32_t cluster, uint
             if (changes.at[m] > failed) return false;
     }
     return true;
-}
-
-// Live clusters, smallest first (ties by id): the order in which dissolving is tried.
-std::vector<uint32_t> clustersBySize(const State& state) {
-    std::vector<uint32_t> order;
-    for (uint32_t c = 0; c < state.clusters.size(); ++c)
-        if (!state.clusters[c].faces.empty()) order.push_back(c);
-    std::stable_sort(order.begin(), order.end(),
-                     [&](uint32_t a, uint32_t b) { return state.clusters[a].triangles < state.clusters[b].triangles; });
-    return order;
-}
-
-// The face moves on (recorded in state.undo) and the cluster it joins gets a cap that holds it
-// (grown, not exact: cheap, and recomputed once the step is done).
-void moveGrowingCap(State& state, uint32_t face, uint32_t to) {
-    moveRecorded(state, face, to);
-    if (state.usable[face]) state.clusters[to].cap = growCap(state.clusters[to].cap, state.geometry.normals[face]);
 }
 
 // The faces a cluster could pass on to a third cluster (not `from`) while a dissolve of `from`
@@ -158,25 +122,22 @@ bool makeRoom(State& state, uint32_t face, uint32_t cluster, uint32_t from, Hand
 
 }  // namespace
 
-uint32_t cheapestHome(const State& state, uint32_t face, const uint32_t* targets, size_t targetCount, double* gainOut) {
-    double bestGain = -kInfinity;
-    uint32_t bestTarget = kNone;
-    for (size_t k = 0; k < targetCount; ++k) {
-        const uint32_t to = targets[k];
-        if (!fits(state, face, to)) continue;
-        const Cluster& target = state.clusters[to];
-        const double sinAfter = state.usable[face]
-                                    ? sinAfterAdding(target.cap, glm::dot(state.geometry.normals[face], target.cap.axis))
-                                    : sinOf(target.cap);
-        const double gain = expectedCulledTriangles(double(target.triangles) + state.faceTriangles[face], sinAfter) -
-                            valueOf(target.triangles, target.cap);
-        if (gain > bestGain) bestGain = gain, bestTarget = to;
-    }
-    if (gainOut) *gainOut = bestGain;
-    return bestTarget;
+// Live clusters, smallest first (ties by id): the order in which dissolving is tried.
+std::vector<uint32_t> clustersBySize(const State& state) {
+    std::vector<uint32_t> order;
+    for (uint32_t c = 0; c < state.clusters.size(); ++c)
+        if (!state.clusters[c].faces.empty()) order.push_back(c);
+    std::stable_sort(order.begin(), order.end(),
+                     [&](uint32_t a, uint32_t b) { return state.clusters[a].triangles < state.clusters[b].triangles; });
+    return order;
 }
 
-namespace {
+// The face moves on (recorded in state.undo) and the cluster it joins gets a cap that holds it
+// (grown, not exact: cheap, and recomputed once the step is done).
+void moveGrowingCap(State& state, uint32_t face, uint32_t to) {
+    moveRecorded(state, face, to);
+    if (state.usable[face]) state.clusters[to].cap = growCap(state.clusters[to].cap, state.geometry.normals[face]);
+}
 
 // Exact caps for every cluster the moves in state.undo touched.
 void recomputeTouchedCaps(State& state) {
@@ -186,6 +147,35 @@ void recomputeTouchedCaps(State& state) {
     state.members.erase(std::unique(state.members.begin(), state.members.end()), state.members.end());
     for (uint32_t c : state.members) state.clusters[c].cap = state.clusters[c].faces.empty() ? Cap{} : exactCap(state, c);
 }
+
+
+uint32_t cheapestHome(const State& state, uint32_t face, const uint32_t* targets, size_t targetCount, double* gainOut) {
+    // Every target's gain first, then whether the face fits, best gain first (ties: the earlier
+    // target): the walk around the face's corners that `fits` takes costs more than a gain.
+    constexpr size_t kMostTargets = 128;
+    std::pair<double, uint32_t> byGain[kMostTargets];
+    size_t count = 0;
+    for (size_t k = 0; k < std::min(targetCount, kMostTargets); ++k) {
+        const Cluster& target = state.clusters[targets[k]];
+        if (target.triangles + state.faceTriangles[face] > std::max<size_t>(state.limits.maxTriangles, target.keptTriangles)) continue;
+        const double sinAfter = state.usable[face]
+                                    ? sinAfterAdding(target.cap, glm::dot(state.geometry.normals[face], target.cap.axis))
+                                    : sinOf(target.cap);
+        const double gain = expectedCulledTriangles(double(target.triangles) + state.faceTriangles[face], sinAfter) -
+                            valueOf(target.triangles, target.cap);
+        byGain[count++] = {-gain, uint32_t(k)};
+    }
+    std::sort(byGain, byGain + count);
+    for (size_t i = 0; i < count; ++i)
+        if (fits(state, face, targets[byGain[i].second])) {
+            if (gainOut) *gainOut = -byGain[i].first;
+            return targets[byGain[i].second];
+        }
+    if (gainOut) *gainOut = -kInfinity;
+    return kNone;
+}
+
+namespace {
 
 // Empties a cluster by handing each of its faces, from its border inwards, to the neighbouring
 // cluster where the objective loses least; a full neighbour first passes one of its own border
@@ -235,134 +225,6 @@ bool dissolve(State& state, uint32_t cluster, Handovers& handovers) {
     return true;
 }
 
-// The objective lost by merging two clusters, with the merged cap in *merged; infinity when the
-// merged cluster breaks a limit.
-double mergeLoss(State& state, uint32_t a, uint32_t b, Cap* merged) {
-    const Cluster& first = state.clusters[a];
-    const Cluster& second = state.clusters[b];
-    if (first.triangles + second.triangles > state.limits.maxTriangles) return kInfinity;
-    ++state.stamp;
-    uint32_t vertices = first.vertices;
-    for (uint32_t f : second.faces)
-        for (size_t k = 0; k < state.mesh.faceSize(f); ++k) {
-            const uint32_t v = state.mesh.faceBegin(f)[k];
-            if (state.vertexStamp[v] == state.stamp) continue;
-            state.vertexStamp[v] = state.stamp;
-            if (!clusterUsesVertex(state, a, v)) ++vertices;
-        }
-    if (vertices > state.limits.maxVertices) return kInfinity;
-    state.gathered.clear();
-    for (const Cluster* part : {&first, &second})
-        for (uint32_t f : part->faces)
-            if (state.usable[f]) state.gathered.push_back(state.geometry.normals[f]);
-    *merged = minimalCap(state.gathered.data(), state.gathered.size());
-    return valueOf(first.triangles, first.cap) + valueOf(second.triangles, second.cap) -
-           valueOf(double(first.triangles) + double(second.triangles), *merged);
-}
-
-void mergeInto(State& state, uint32_t into, uint32_t from, const Cap& merged) {
-    state.members = state.clusters[from].faces;
-    for (uint32_t f : state.members) move(state, f, into);
-    state.clusters[into].cap = merged;
-    state.clusters[from].cap = Cap{};
-    --state.liveClusters;
-}
-
-// How many of the nearest clusters (by centre) a cluster may merge with across a gap: near enough
-// that the merged cluster stays compact for frustum and occlusion culling. Where the limits stop
-// every such merge, farther ones are tried.
-constexpr size_t kNearestAcrossGaps[] = {6, 24, 96};
-
-constexpr double kSprawlWeight = 0.05;
-
-// The diagonal of the box around the face centroids: the scale distances are weighed against.
-double meshDiagonal(const State& state) {
-    glm::dvec3 low(std::numeric_limits<double>::max()), high(-std::numeric_limits<double>::max());
-    for (const glm::dvec3& c : state.geometry.centroids) low = glm::min(low, c), high = glm::max(high, c);
-    return state.faceCount ? glm::length(high - low) : 0.0;
-}
-
-// Triangle-weighted centre of each cluster's face centroids.
-glm::dvec3 clusterCentre(const State& state, uint32_t cluster) {
-    glm::dvec3 sum(0.0);
-    double weight = 0.0;
-    for (uint32_t f : state.clusters[cluster].faces) {
-        sum += double(state.faceTriangles[f]) * state.geometry.centroids[f];
-        weight += state.faceTriangles[f];
-    }
-    return weight > 0.0 ? sum / weight : sum;
-}
-
-// The `limit` live clusters nearest to `cluster` by centre, whether they touch it or not.
-void nearestClusters(const State& state, uint32_t cluster, const std::vector<glm::dvec3>& centres, size_t limit,
-                     std::vector<uint32_t>& out) {
-    std::vector<std::pair<double, uint32_t>> byDistance;
-    for (uint32_t c = 0; c < state.clusters.size(); ++c)
-        if (c != cluster && !state.clusters[c].faces.empty())
-            byDistance.emplace_back(glm::length(centres[c] - centres[cluster]), c);
-    const size_t kept = std::min(limit, byDistance.size());
-    std::partial_sort(byDistance.begin(), byDistance.begin() + long(kept), byDistance.end());
-    out.clear();
-    for (size_t i = 0; i < kept; ++i) out.push_back(byDistance[i].second);
-}
-
-// Whole-cluster merges, cheapest objective loss first (lazy heap: an entry is stale once either
-// cluster changed since it was pushed). Between clusters that share an edge (acrossGaps 0), or
-// between each cluster and its acrossGaps nearest: what lets a mesh of many pieces reach any budget.
-void mergeCheapest(State& state, size_t count, size_t acrossGaps, Changes& changes) {
-    struct MergeCandidate {
-        double loss;
-        uint32_t a, b, versionA, versionB;
-        bool operator<(const MergeCandidate& other) const {
-            if (loss != other.loss) return loss > other.loss;
-            if (a != other.a) return a > other.a;
-            return b > other.b;
-        }
-    };
-    std::vector<uint32_t> version(state.clusters.size(), 0);
-    std::priority_queue<MergeCandidate> heap;
-    std::vector<uint32_t> neighbours;
-    std::vector<glm::dvec3> centres(state.clusters.size());
-    if (acrossGaps)
-        for (uint32_t c = 0; c < state.clusters.size(); ++c) centres[c] = clusterCentre(state, c);
-    const double diagonal = std::max(meshDiagonal(state), 1e-300);
-    auto pushPairs = [&](uint32_t a) {
-        if (acrossGaps)
-            nearestClusters(state, a, centres, acrossGaps, neighbours);
-        else
-            clustersAround(state, a, std::numeric_limits<size_t>::max(), neighbours);
-        for (uint32_t b : neighbours) {
-            Cap merged;
-            double loss = mergeLoss(state, a, b, &merged);
-            // Across a gap the farther pair pays for its sprawl (what frustum and occlusion culling
-            // see): 5% of its triangles per mesh diagonal apart, so near pieces merge first.
-            if (acrossGaps)
-                loss += kSprawlWeight * double(state.clusters[a].triangles + state.clusters[b].triangles) *
-                        glm::length(centres[a] - centres[b]) / diagonal;
-            const uint32_t low = std::min(a, b), high = std::max(a, b);
-            if (std::isfinite(loss)) heap.push({loss, low, high, version[low], version[high]});
-        }
-    };
-    for (uint32_t a = 0; a < state.clusters.size(); ++a)
-        if (!state.clusters[a].faces.empty()) pushPairs(a);
-    size_t done = 0;
-    while (done < count && !heap.empty()) {
-        const MergeCandidate top = heap.top();
-        heap.pop();
-        if (version[top.a] != top.versionA || version[top.b] != top.versionB) continue;
-        if (state.clusters[top.a].faces.empty() || state.clusters[top.b].faces.empty()) continue;
-        Cap merged;
-        if (!std::isfinite(mergeLoss(state, top.a, top.b, &merged))) continue;  // the entry's loss was this one's
-        mergeInto(state, top.a, top.b, merged);
-        changes.commit({top.a, top.b});
-        ++version[top.a];
-        ++version[top.b];
-        ++done;
-        if (acrossGaps) centres[top.a] = clusterCentre(state, top.a);
-        pushPairs(top.a);
-    }
-}
-
 // Moves that save a vertex: a border face whose corners the neighbour already uses, and one of
 // which only it uses in its own cluster. Full clusters get room that way for the reduction.
 size_t compact(State& state, Changes& changes) {
@@ -387,29 +249,6 @@ size_t compact(State& state, Changes& changes) {
     for (uint32_t c = 0; c < state.clusters.size(); ++c)  // exact caps where faces moved
         if (changes.at[c] > committedBefore && !state.clusters[c].faces.empty()) state.clusters[c].cap = exactCap(state, c);
     return moves;
-}
-
-// Empties a cluster into the clusters nearest to it, touching or not, each face where the objective
-// loses least: when whole clusters are too full to merge, their faces still fit one by one.
-// Undone (false) if some face fits nowhere.
-bool dissolveAcrossGaps(State& state, uint32_t cluster, const std::vector<glm::dvec3>& centres, size_t nearest) {
-    std::vector<uint32_t> targets;
-    nearestClusters(state, cluster, centres, nearest, targets);
-    state.undo.clear();
-    state.members = state.clusters[cluster].faces;
-    for (uint32_t face : state.members) {
-        const uint32_t to = cheapestHome(state, face, targets.data(), targets.size());
-        if (to == kNone) {
-            recomputeTouchedCaps(state);
-            undoMoves(state);
-            for (uint32_t c : state.members) state.clusters[c].cap = state.clusters[c].faces.empty() ? Cap{} : exactCap(state, c);
-            return false;
-        }
-        moveGrowingCap(state, face, to);
-    }
-    recomputeTouchedCaps(state);
-    --state.liveClusters;
-    return true;
 }
 
 // Dissolving, smallest clusters first, while above the target. A failed try costs as much as a
@@ -461,18 +300,7 @@ void reduceTo(State& state, size_t target) {
         if (state.liveClusters > target) mergeCheapest(state, state.liveClusters - target, nearest, changes);
         if (state.liveClusters <= target) break;
         // No whole pair fits: the smallest clusters go face by face into their nearest ones.
-        std::vector<glm::dvec3> centres(state.clusters.size());
-        for (uint32_t c = 0; c < state.clusters.size(); ++c) centres[c] = clusterCentre(state, c);
-        for (uint32_t c : clustersBySize(state)) {
-            if (state.liveClusters <= target) break;
-            if (!dissolveAcrossGaps(state, c, centres, nearest)) continue;
-            // The clusters that took faces move their centres (each once).
-            state.members.clear();
-            for (const State::Moved& moved : state.undo) state.members.push_back(state.clusterOf[moved.face]);
-            std::sort(state.members.begin(), state.members.end());
-            state.members.erase(std::unique(state.members.begin(), state.members.end()), state.members.end());
-            for (uint32_t taker : state.members) centres[taker] = clusterCentre(state, taker);
-        }
+        dissolveSmallestAcrossGaps(state, target, nearest, [] { return true; });
     }
 }
 

@@ -29,6 +29,16 @@ void grow(State& state, double triangleCap);
 // `target` are left (or no step gets further).
 void reduceTo(State& state, size_t target);
 
+// Reduction.cpp: where reduceTo stopped above `target` (every merge breaks the limits), whole
+// clusters merge up to `allowed.limits`, at most `allowed.clusters` of them, so that the clusters
+// over the limits are no more and no larger than in meshoptimizer's partition of whole faces
+// (shedOverLimits). Each cluster left over the limits keeps its size (never grows past it).
+struct Overfill {
+    size_t clusters = 0;
+    MeshletLimits limits;
+};
+void overfillTo(State& state, size_t target, const Overfill& allowed);
+
 // ThreeIntoTwo.cpp: the cluster and the two of its neighbours whose faces, cut again into two
 // compact halves within the limits, score best by the objective become those two halves; false
 // (nothing changes) when no pair fits. On success state.members lists the three clusters.
