@@ -17,6 +17,8 @@
 #include "core/BatchCulling.h"
 #include "core/ClusterBounds.h"
 #include "core/Culling.h"
+#include "core/MultiCones.h"
+#include "core/Pipeline.h"
 #include "core/Settings.h"
 #include "core/Statistics.h"
 #include "io/MeshReader.h"
@@ -116,6 +118,47 @@ void cullMeshoptLoop(benchmark::State& state, bool large, bool apex) {
     countClusters(state, culled.size());
 }
 
+// One pass of the K-cone record's sub-group tests (float record, sphere test per sub-group): the
+// exact double test, and the batched float kernel at each SIMD level.
+void cullMultiCones(benchmark::State& state, bool large, uint32_t k) {
+    const Scene& s = scene(large);
+    const MultiCones multi = computeMultiCones(s.mesh, s.faces, s.bounds, k);
+    size_t view = 0;
+    for (auto _ : state) {
+        const std::vector<uint8_t> culled = cullSubGroups(s.bounds, multi, s.eyes[view++ % s.eyes.size()]);
+        benchmark::DoNotOptimize(culled.data());
+    }
+    countClusters(state, s.bounds.count());
+}
+
+void cullMultiConesBatched(benchmark::State& state, bool large, uint32_t k, SimdLevel level) {
+    const Scene& s = scene(large);
+    const MultiCones multi = computeMultiCones(s.mesh, s.faces, s.bounds, k);
+    const ClusterBatch batch = subGroupBatch(multi.cones, s.bounds.spheres, k);
+    std::vector<uint8_t> culled(batch.count);
+    size_t view = 0;
+    for (auto _ : state) {
+        cullSphereBatch(batch, s.eyes[view++ % s.eyes.size()].position, culled.data(), level);
+        benchmark::DoNotOptimize(culled.data());
+        benchmark::ClobberMemory();
+    }
+    countClusters(state, s.bounds.count());
+}
+
+// What the K-cone records add to a build: each cluster's faces split into K sub-groups with their
+// cones, against the default partition's own build (buildClusters with the default settings).
+void splitForKCones(benchmark::State& state, uint32_t k) {
+    const Scene& s = scene(false);
+    for (auto _ : state) benchmark::DoNotOptimize(computeMultiCones(s.mesh, s.faces, s.bounds, k).cones.data());
+    state.counters["clusters_split"] = double(s.bounds.count());
+}
+
+void defaultBuild(benchmark::State& state) {
+    const Scene& s = scene(false);
+    const PreparedMesh prepared = prepareMesh(std::make_shared<const Mesh>(s.mesh), "mesh", false);
+    for (auto _ : state) benchmark::DoNotOptimize(buildClusters(prepared, Settings{}).partition.clusterCount);
+}
+
 // Console output as usual, then one line per cull benchmark in plain nanoseconds per cluster.
 class PerClusterReporter : public benchmark::ConsoleReporter {
 public:
@@ -177,7 +220,17 @@ void registerBenchmarks() {
         }
         benchmark::RegisterBenchmark(("cull/meshoptimizer-loop/apex/" + size).c_str(), cullMeshoptLoop, large, true);
         benchmark::RegisterBenchmark(("cull/meshoptimizer-loop/meshopt-sphere/" + size).c_str(), cullMeshoptLoop, large, false);
+        for (uint32_t k : {2u, 4u, 8u}) {
+            benchmark::RegisterBenchmark(("cull/core-scalar/cones-" + std::to_string(k) + "/" + size).c_str(), cullMultiCones, large, k);
+            for (SimdLevel level : {SimdLevel::Scalar, SimdLevel::Sse2, SimdLevel::Avx2})
+                if (level <= bestSimdLevel())
+                    benchmark::RegisterBenchmark(("cull/batch-" + std::string(toString(level)) + "/cones-" + std::to_string(k) + "/" + size).c_str(),
+                                                 cullMultiConesBatched, large, k, level);
+        }
     }
+    for (uint32_t k : {2u, 4u, 8u})
+        benchmark::RegisterBenchmark(("build/cones-" + std::to_string(k) + "-split/mesh").c_str(), splitForKCones, k)->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark("build/default-partition/mesh", defaultBuild)->Unit(benchmark::kMillisecond);
 }
 
 }  // namespace

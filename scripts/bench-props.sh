@@ -14,22 +14,7 @@
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/bench-setup.sh" conescope-cli
 props="$root/datasets/props-debian"
-if [[ ! -f "$props/.complete" ]]; then
-  debs=${CONESCOPE_PROPS_DEBS:-$props/debs}
-  mkdir -p "$debs" "$props"
-  for package in sweethome3d-furniture trigger-rally-data; do
-    ls "$debs"/${package}_*.deb >/dev/null 2>&1 || (cd "$debs" && apt-get download "$package")
-    dpkg-deb -x "$(ls "$debs"/${package}_*.deb | head -1)" "$props/unpacked"
-  done
-  for sh3f in "$props"/unpacked/usr/share/sweethome3d/furniture/*.sh3f; do
-    mkdir -p "$props/sh3d/$(basename "$sh3f" .sh3f)"
-    unzip -o -q "$sh3f" '*.obj' -d "$props/sh3d/$(basename "$sh3f" .sh3f)"
-  done
-  mkdir -p "$props/trigger"
-  unzip -o -q "$props/unpacked/usr/share/games/trigger-rally/data.zip" 'vehicles/*.obj' -d "$props/trigger" || true
-  rm -rf "$props/unpacked"
-  touch "$props/.complete"
-fi
+"$root/scripts/fetch-props.sh"
 # Double-sided copies of the bundled meshes: each triangle followed by its reverse.
 doubled="$props/double-sided"
 mkdir -p "$doubled"

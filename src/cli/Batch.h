@@ -25,6 +25,7 @@ struct BatchOptions {
     SettingsOptions run;
     std::string compare;                 // "K=V,...": A against the batch's settings, as `compare --a`
     bool compareMeshopt = false;         // compare = meshoptimizer's own pipeline
+    bool granularity = false;            // also the finer records' columns (granularity's rows)
     StatisticsDetail detail;
     double timeoutSeconds = 0;           // per mesh; 0 = none
     long memoryLimitMiB = -1;            // per worker; -1 = physical memory / workers, 0 = none
@@ -34,6 +35,7 @@ struct BatchOptions {
 struct BatchWorkerOptions {
     SettingsOptions run;
     std::string compare;
+    bool granularity = false;
     StatisticsDetail detail;
     long memoryLimitMiB = 0;             // only to say it in an out-of-memory row
 };

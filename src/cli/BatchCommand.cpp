@@ -113,6 +113,7 @@ std::vector<std::string> workerCommand(const BatchConfig& config, long memoryLim
     std::vector<std::string> command = {workerExecutable(), "batch-worker"};
     for (const std::string& argument : settingArguments(config.settings)) command.push_back(argument);
     if (!config.compare.empty()) command.insert(command.end(), {"--compare", config.compare});
+    if (config.granularity) command.push_back("--granularity");
     if (!config.detail.views) command.push_back("--no-per-view");
     if (!config.detail.clusters) command.push_back("--no-per-cluster");
     command.insert(command.end(), {"--memory-limit", std::to_string(memoryLimitMiB)});
@@ -319,6 +320,8 @@ BatchCommands addBatchCommands(CLI::App& app, BatchOptions& batch, BatchWorkerOp
     command->add_flag("--compare-meshopt", batch.compareMeshopt,
                       std::string("Also compare each mesh with meshoptimizer's pipeline (") + kMeshoptPipeline + ")")
         ->excludes(compare);
+    command->add_flag("--granularity", batch.granularity,
+                      "Also each mesh's 2, 4 and 8 cones per cluster and per-triangle culling (granularity's rows) as columns, and their plot in the report");
     command->add_flag_callback("--no-per-view", [&batch] { batch.detail.views = false; }, "Leave the per-view tables out of the JSON");
     command->add_flag_callback("--no-per-cluster", [&batch] { batch.detail.clusters = false; },
                                "Leave the per-cluster tables out of the JSON");
@@ -335,6 +338,7 @@ BatchCommands addBatchCommands(CLI::App& app, BatchOptions& batch, BatchWorkerOp
     addBuilderOptions(*hidden, worker.run);
     addCullingOptions(*hidden, worker.run);
     hidden->add_option("--compare", worker.compare);
+    hidden->add_flag("--granularity", worker.granularity);
     hidden->add_flag_callback("--no-per-view", [&worker] { worker.detail.views = false; });
     hidden->add_flag_callback("--no-per-cluster", [&worker] { worker.detail.clusters = false; });
     hidden->add_option("--memory-limit", worker.memoryLimitMiB);
@@ -343,7 +347,8 @@ BatchCommands addBatchCommands(CLI::App& app, BatchOptions& batch, BatchWorkerOp
 
 int runBatch(const BatchOptions& options) {
     const BatchConfig config =
-        batchConfig(options.run.toSettings(), options.compareMeshopt ? kMeshoptPipeline : options.compare, options.detail);
+        batchConfig(options.run.toSettings(), options.compareMeshopt ? kMeshoptPipeline : options.compare, options.detail,
+                    options.granularity);
     const fs::path folder = options.output;
     makeOutputFolder(folder);
     const int lock = lockFolder(folder);

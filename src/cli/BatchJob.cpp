@@ -7,6 +7,7 @@
 #include "cli/MeshRuns.h"
 #include "cli/OutputFiles.h"
 #include "core/Comparison.h"
+#include "core/Granularity.h"
 #include "io/ClusterIdFile.h"
 #include "io/ComparisonIO.h"
 #include "io/ClusterFiles.h"
@@ -25,6 +26,14 @@ void writeStatisticsFile(const std::string& path, const RunStatistics& run, cons
 
 // The mesh as `stats` runs it: its totals, its warnings and its JSON.
 void runStatsJob(const BatchConfig& config, const BatchJob& job, const Mesh& mesh, BatchRow& row) {
+    if (config.granularity) {
+        // The same run as `stats`, with the finer records on its partition and views.
+        const GranularityReport report = runGranularity(mesh, withClusterIds(config.settings), fileNameOf(job.path));
+        writeStatisticsFile(job.json, report.run, config.detail);
+        addRunCells(row, report.run, runWarnings(report.run));
+        addGranularityCells(row, report);
+        return;
+    }
     const RunStatistics run = runStatistics(mesh, withClusterIds(config.settings), fileNameOf(job.path));
     writeStatisticsFile(job.json, run, config.detail);
     addRunCells(row, run, runWarnings(run));
@@ -54,9 +63,10 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 
 }  // namespace
 
-BatchConfig batchConfig(const Settings& settings, const std::string& compare, const StatisticsDetail& detail) {
+BatchConfig batchConfig(const Settings& settings, const std::string& compare, const StatisticsDetail& detail, bool granularity) {
     parseConfiguration(compare, settings);
-    return {settings, compare, detail};
+    if (granularity && !compare.empty()) throw std::invalid_argument("--granularity runs without a comparison (--compare, --compare-meshopt)");
+    return {settings, compare, detail, granularity};
 }
 
 BatchRow runBatchJob(const BatchConfig& config, const BatchJob& job, const std::function<void()>& testFault) {
@@ -94,7 +104,7 @@ BatchRow batchRowStart(const BatchMesh& mesh, const BatchConfig& config) {
     row["json"] = mesh.json;
     if (!config.compare.empty()) row["compare_json"] = batchJsonName(mesh.canonical, ".compare");
     row["content_hash"] = contentHash(mesh.path);
-    row["settings_hash"] = settingsHash(config.settings, config.compare, config.detail);
+    row["settings_hash"] = settingsHash(config.settings, config.compare, config.detail, config.granularity);
     addSettingCells(row, config.settings);
     row["a_options"] = config.compare;
     return row;

@@ -16,11 +16,13 @@ struct BatchConfig {
     Settings settings;          // each row's own totals: what `stats` with the batch's options computes
     std::string compare;        // "K=V,...": A of a comparison against the settings (B), or empty
     StatisticsDetail detail;    // the tables the statistics JSON keeps
+    bool granularity = false;   // also the granularity report's finer records (without a comparison)
 };
 
 // The configuration the option text makes: parseConfiguration checks `compare` before any mesh is
 // read. Throws std::invalid_argument.
-BatchConfig batchConfig(const Settings& settings, const std::string& compare, const StatisticsDetail& detail);
+BatchConfig batchConfig(const Settings& settings, const std::string& compare, const StatisticsDetail& detail,
+                        bool granularity = false);
 
 // Where a mesh's files go: absolute paths, empty = not written.
 struct BatchJob {

@@ -69,6 +69,14 @@ struct LodCommandOptions {
     bool quiet = false;
 };
 
+struct GranularityOptions {
+    std::string mesh;
+    SettingsOptions run;
+    std::string format;                // "json", "csv", "text" or empty: as for stats
+    std::string output;                // empty = stdout
+    bool quiet = false;
+};
+
 // Culling statistics for every requested (cone, test) as JSON, CSV or a short text summary.
 void runStats(const StatsOptions& options);
 
@@ -83,6 +91,10 @@ void runCheck(const CheckOptions& options);
 
 // A cluster LOD hierarchy of the mesh: each level's culling and the cut's from every view.
 void runLod(const LodCommandOptions& options);
+
+// Every record granularity's culling and cost on the mesh's partition (core/Granularity.h).
+void runGranularity(const GranularityOptions& options);
+CLI::App* addGranularityCommand(CLI::App& app, GranularityOptions& options, const std::string& meshFileHelp);
 
 // The mesh with a per-face "cluster_id" array, readable by the file builder.
 void runPartition(const PartitionOptions& options);

@@ -167,6 +167,9 @@ int main(int argc, char** argv) {
     lodCommand->add_option("-o,--output", lod.output, "Output file, replaced only when the run succeeds (default: stdout)");
     lodCommand->add_flag("-q,--quiet", lod.quiet, "No progress messages on stderr");
 
+    GranularityOptions granularity;
+    CLI::App* granularityCommand = addGranularityCommand(app, granularity, meshFileHelp);
+
     BatchOptions batch;
     BatchWorkerOptions batchWorker;
     const BatchCommands batchCommands = addBatchCommands(app, batch, batchWorker);
@@ -185,6 +188,7 @@ int main(int argc, char** argv) {
         if (checkCommand->parsed()) runCheck(check);
         if (partitionCommand->parsed()) runPartition(partition);
         if (lodCommand->parsed()) runLod(lod);
+        if (granularityCommand->parsed()) runGranularity(granularity);
         if (batchCommands.batch->parsed()) return runBatch(batch);
         if (batchCommands.worker->parsed()) return runBatchWorker(batchWorker);
     } catch (const std::invalid_argument& error) {

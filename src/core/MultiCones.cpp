@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 
 #include "Culling.h"
+#include "Parallel.h"
 
 namespace conescope {
 
@@ -14,19 +17,53 @@ double expectedCulledTriangles(const ConeOfNormals& cone, size_t triangles) {
 
 namespace {
 
-// Sum of expectedCulledTriangles over the groups of one assignment, cones from minimalCone.
-double splitValue(const glm::dvec3* normals, const uint32_t* triangles, size_t count, const std::vector<uint8_t>& group,
-                  uint32_t groups) {
+// One sub-group's members and cone during the split.
+struct SplitGroup {
+    std::vector<size_t> members;  // indices into the cluster's normals
+    size_t triangles = 0;
+    ConeOfNormals cone;
+    double value = 0.0;           // expectedCulledTriangles
+};
+
+void measureGroup(SplitGroup& group, const glm::dvec3* normals, const uint32_t* triangles) {
+    std::vector<glm::dvec3> tips;
+    group.triangles = 0;
+    for (size_t i : group.members) tips.push_back(normals[i]), group.triangles += triangles[i];
+    group.cone = tips.empty() ? ConeOfNormals{} : minimalCone(tips.data(), tips.size());
+    group.value = tips.empty() ? 0.0 : expectedCulledTriangles(group.cone, group.triangles);
+}
+
+std::vector<SplitGroup> groupsOf(const glm::dvec3* normals, const uint32_t* triangles, size_t count,
+                                 const std::vector<uint8_t>& group, uint32_t groups) {
+    std::vector<SplitGroup> split(groups);
+    for (size_t i = 0; i < count; ++i) split[group[i]].members.push_back(i);
+    for (SplitGroup& g : split) measureGroup(g, normals, triangles);
+    return split;
+}
+
+double totalValue(const std::vector<SplitGroup>& split) {
     double value = 0.0;
-    std::vector<glm::dvec3> members;
-    for (uint32_t g = 0; g < groups; ++g) {
-        members.clear();
-        size_t tris = 0;
-        for (size_t i = 0; i < count; ++i)
-            if (group[i] == g) members.push_back(normals[i]), tris += triangles[i];
-        if (!members.empty()) value += expectedCulledTriangles(minimalCone(members.data(), members.size()), tris);
-    }
+    for (const SplitGroup& g : split) value += g.value;
     return value;
+}
+
+// Lloyd from `seeds`: each normal to the seed it leans on most, each seed the triangle-weighted mean.
+std::vector<uint8_t> lloyd(const glm::dvec3* normals, const uint32_t* triangles, size_t count, std::vector<glm::dvec3> seeds) {
+    const uint32_t groups = uint32_t(seeds.size());
+    std::vector<uint8_t> group(count, 0);
+    for (int iteration = 0; iteration < 8; ++iteration) {
+        for (size_t i = 0; i < count; ++i) {
+            uint8_t best = 0;
+            for (uint32_t g = 1; g < groups; ++g)
+                if (glm::dot(normals[i], seeds[g]) > glm::dot(normals[i], seeds[best])) best = uint8_t(g);
+            group[i] = best;
+        }
+        std::vector<glm::dvec3> sums(groups, glm::dvec3(0.0));
+        for (size_t i = 0; i < count; ++i) sums[group[i]] += double(triangles[i]) * normals[i];
+        for (uint32_t g = 0; g < groups; ++g)
+            if (glm::length(sums[g]) > 0.0) seeds[g] = glm::normalize(sums[g]);
+    }
+    return group;
 }
 
 // Seeds spread over the normals: each next seed the normal least aligned with all seeds so far.
@@ -45,60 +82,109 @@ std::vector<glm::dvec3> farthestSeeds(const glm::dvec3* normals, size_t count, u
     return seeds;
 }
 
+// A sub-group's value with its members and `extra`, in the cone around its present axis: a lower
+// bound (the minimal cone is no wider), without a minimal cone per candidate move.
+double valueWithAroundAxis(const SplitGroup& group, const glm::dvec3* normals, const uint32_t* triangles, size_t extra,
+                           std::vector<glm::dvec3>& tips) {
+    tips.clear();
+    for (size_t i : group.members) tips.push_back(normals[i]);
+    tips.push_back(normals[extra]);
+    return expectedCulledTriangles(coneAroundAxis(group.cone.axis, tips.data(), tips.size()), group.triangles + triangles[extra]);
+}
+
+// A sub-group's value without its member `face`, in its minimal cone.
+double valueWithout(const SplitGroup& group, const glm::dvec3* normals, const uint32_t* triangles, size_t face,
+                    std::vector<glm::dvec3>& tips) {
+    tips.clear();
+    for (size_t i : group.members)
+        if (i != face) tips.push_back(normals[i]);
+    return expectedCulledTriangles(minimalCone(tips.data(), tips.size()), group.triangles - triangles[face]);
+}
+
+// Moves faces on a sub-group's cone boundary (the normals that hold its half-angle up) to the
+// sub-group where the sum gains most, while a move gains: Lloyd balances directions, while the
+// culled share is decided by each cone's widest normal. The receiving cone is weighed around its
+// axis (a lower bound, so every move taken gains) and both minimal cones made again after a move.
+void refineOnBoundaries(const glm::dvec3* normals, const uint32_t* triangles, std::vector<SplitGroup>& split, int passes) {
+    std::vector<glm::dvec3> tips;
+    for (int pass = 0; pass < passes; ++pass) {
+        double bestGain = 1e-9;
+        size_t bestFrom = 0, bestTo = 0, bestFace = 0;
+        for (size_t from = 0; from < split.size(); ++from) {
+            const SplitGroup& source = split[from];
+            if (!source.cone.cullable || source.members.size() < 2) continue;
+            for (size_t i : source.members) {
+                if (glm::dot(normals[i], source.cone.axis) > source.cone.cosHalfAngle + 1e-6) continue;  // inside, not holding it
+                const double without = valueWithout(source, normals, triangles, i, tips);
+                for (size_t to = 0; to < split.size(); ++to) {
+                    if (to == from || split[to].members.empty()) continue;
+                    const double with = valueWithAroundAxis(split[to], normals, triangles, i, tips);
+                    const double gain = without + with - source.value - split[to].value;
+                    if (gain > bestGain) bestGain = gain, bestFrom = from, bestTo = to, bestFace = i;
+                }
+            }
+        }
+        if (bestGain <= 1e-9) return;
+        std::vector<size_t>& members = split[bestFrom].members;
+        members.erase(std::find(members.begin(), members.end(), bestFace));
+        split[bestTo].members.push_back(bestFace);
+        measureGroup(split[bestFrom], normals, triangles);
+        measureGroup(split[bestTo], normals, triangles);
+    }
+}
+
 }  // namespace
 
 std::vector<uint8_t> splitForCones(const glm::dvec3* normals, const uint32_t* triangles, size_t count, uint32_t groups) {
     std::vector<uint8_t> single(count, 0);
     groups = uint32_t(std::min<size_t>(groups, count));
     if (groups <= 1) return single;
-    std::vector<glm::dvec3> seeds = farthestSeeds(normals, count, groups);
+    // Lloyd from spread seeds, refined on the cones' boundaries; kept where it beats one group.
+    std::vector<SplitGroup> split =
+        groupsOf(normals, triangles, count, lloyd(normals, triangles, count, farthestSeeds(normals, count, groups)), groups);
+    refineOnBoundaries(normals, triangles, split, int(2 * count));
+    if (!(totalValue(split) > totalValue(groupsOf(normals, triangles, count, single, 1)))) return single;
     std::vector<uint8_t> group(count, 0);
-    for (int iteration = 0; iteration < 8; ++iteration) {
-        for (size_t i = 0; i < count; ++i) {
-            uint8_t best = 0;
-            for (uint32_t g = 1; g < groups; ++g)
-                if (glm::dot(normals[i], seeds[g]) > glm::dot(normals[i], seeds[best])) best = uint8_t(g);
-            group[i] = best;
-        }
-        std::vector<glm::dvec3> sums(groups, glm::dvec3(0.0));
-        for (size_t i = 0; i < count; ++i) sums[group[i]] += double(triangles[i]) * normals[i];
-        for (uint32_t g = 0; g < groups; ++g)
-            if (glm::length(sums[g]) > 0.0) seeds[g] = glm::normalize(sums[g]);
-    }
-    // Lloyd minimises spread, not culled share: keep the split only where it pays.
-    return splitValue(normals, triangles, count, group, groups) > splitValue(normals, triangles, count, single, 1) ? group
-                                                                                                                 : single;
+    for (size_t g = 0; g < split.size(); ++g)
+        for (size_t i : split[g].members) group[i] = uint8_t(g);
+    return group;
 }
 
 MultiCones computeMultiCones(const Mesh& mesh, const FaceGeometry& faces, const ClusterBounds& bounds, uint32_t conesPerCluster) {
+    // Each cluster's faces with a side, their normals and triangles; degenerate faces apart (no
+    // normal: kept in sub-group 0, where they stay visible).
+    struct ClusterFacesSplit {
+        std::vector<glm::dvec3> normals;
+        std::vector<uint32_t> triangles, ids, degenerate;
+        std::vector<uint8_t> group;
+    };
+    std::vector<ClusterFacesSplit> clusters(bounds.count());
+    forEachInParallel(bounds.count(), [&](size_t c, size_t) {
+        ClusterFacesSplit& split = clusters[c];
+        for (uint32_t i = bounds.faces.starts[c]; i < bounds.faces.starts[c + 1]; ++i) {
+            const uint32_t f = bounds.faces.faces[i];
+            if (faces.degenerate[f]) { split.degenerate.push_back(f); continue; }
+            split.normals.push_back(faces.normals[f]);
+            split.triangles.push_back(uint32_t(mesh.faceSize(f) - 2));
+            split.ids.push_back(f);
+        }
+        if (!split.normals.empty())
+            split.group = splitForCones(split.normals.data(), split.triangles.data(), split.normals.size(), conesPerCluster);
+    });
     MultiCones multi;
     multi.conesPerCluster = conesPerCluster;
     multi.groupStarts.push_back(0);
-    std::vector<glm::dvec3> normals, members;
-    std::vector<uint32_t> tris, ids;
-    for (size_t c = 0; c < bounds.count(); ++c) {
-        normals.clear();
-        tris.clear();
-        ids.clear();
-        std::vector<uint32_t> degenerate;  // no normal: kept in group 0, where its faces stay visible
-        for (uint32_t i = bounds.faces.starts[c]; i < bounds.faces.starts[c + 1]; ++i) {
-            const uint32_t f = bounds.faces.faces[i];
-            if (faces.degenerate[f]) { degenerate.push_back(f); continue; }
-            normals.push_back(faces.normals[f]);
-            tris.push_back(uint32_t(mesh.faceSize(f) - 2));
-            ids.push_back(f);
-        }
-        const std::vector<uint8_t> group = normals.empty() ? std::vector<uint8_t>{}
-                                                           : splitForCones(normals.data(), tris.data(), normals.size(), conesPerCluster);
+    std::vector<glm::dvec3> members;
+    for (const ClusterFacesSplit& split : clusters) {
         for (uint32_t g = 0; g < conesPerCluster; ++g) {
             members.clear();
             uint32_t groupTris = 0;
-            for (size_t i = 0; i < ids.size(); ++i)
-                if (group[i] == g) multi.faces.push_back(ids[i]), members.push_back(normals[i]), groupTris += tris[i];
+            for (size_t i = 0; i < split.ids.size(); ++i)
+                if (split.group[i] == g) multi.faces.push_back(split.ids[i]), members.push_back(split.normals[i]), groupTris += split.triangles[i];
             ConeOfNormals cone = minimalCone(members.data(), members.size());
-            if (g == 0 && !degenerate.empty()) {
+            if (g == 0 && !split.degenerate.empty()) {
                 // A degenerate face has no side: conservative tests never cull its group.
-                for (uint32_t f : degenerate) multi.faces.push_back(f), groupTris += uint32_t(mesh.faceSize(f) - 2);
+                for (uint32_t f : split.degenerate) multi.faces.push_back(f), groupTris += uint32_t(mesh.faceSize(f) - 2);
                 cone = ConeOfNormals{};
             }
             if (members.empty()) cone = ConeOfNormals{};  // an empty group culls nothing and costs nothing
@@ -115,11 +201,91 @@ bool subGroupSeesBack(const ConeOfNormals& cone, const Sphere& sphere, const Eye
     return sphereSeesBack(cone, sphere, eye.position);
 }
 
-std::vector<uint8_t> cullSubGroups(const ClusterBounds& bounds, const MultiCones& multi, const Eye& eye) {
-    std::vector<uint8_t> culled(multi.groupCount(), 0);
-    const uint32_t k = multi.conesPerCluster;
-    for (size_t g = 0; g < culled.size(); ++g) culled[g] = subGroupSeesBack(multi.cones[g], bounds.spheres[g / k], eye) ? 1 : 0;
+std::vector<uint8_t> cullSubGroups(const std::vector<ConeOfNormals>& cones, const std::vector<Sphere>& spheres,
+                                   uint32_t conesPerCluster, const Eye& eye) {
+    std::vector<uint8_t> culled(cones.size(), 0);
+    for (size_t g = 0; g < culled.size(); ++g)
+        culled[g] = subGroupSeesBack(cones[g], spheres[g / conesPerCluster], eye) ? 1 : 0;
     return culled;
+}
+
+std::vector<uint8_t> cullSubGroups(const ClusterBounds& bounds, const MultiCones& multi, const Eye& eye) {
+    return cullSubGroups(multi.cones, bounds.spheres, multi.conesPerCluster, eye);
+}
+
+ClusterBatch subGroupBatch(const std::vector<ConeOfNormals>& cones, const std::vector<Sphere>& spheres, uint32_t conesPerCluster) {
+    ClusterBounds groups;
+    groups.cones = cones;
+    for (size_t g = 0; g < cones.size(); ++g) {
+        groups.spheres.push_back(spheres[g / conesPerCluster]);
+        groups.apexes.push_back(spheres[g / conesPerCluster].center);  // no apex: the sphere's slack alone
+    }
+    groups.octagons.assign(cones.size(), OctagonCone{});
+    return makeClusterBatch(groups);
+}
+
+std::vector<uint8_t> cullSubGroupsBatched(const ClusterBatch& batch, const std::vector<ConeOfNormals>& cones,
+                                          const std::vector<Sphere>& spheres, uint32_t conesPerCluster, const Eye& eye) {
+    if (eye.orthographic) return cullSubGroups(cones, spheres, conesPerCluster, eye);
+    std::vector<uint8_t> culled(batch.count, 0);
+    cullSphereBatch(batch, eye.position, culled.data());
+    return culled;
+}
+
+size_t multiConeRecordBytes(uint32_t conesPerCluster, size_t maxClusterTriangles, bool compact) {
+    const size_t offsets = (conesPerCluster - 1) * (maxClusterTriangles <= 255 ? 1 : 2);
+    const size_t bytes = compact ? 8 + 4 * conesPerCluster + offsets : 16 + 16 * conesPerCluster + offsets;
+    return (bytes + 3) / 4 * 4;
+}
+
+namespace {
+
+// The sphere as 16-bit fixed point within the box (one step: the box's largest side / 65535), its
+// radius in steps of the box's diagonal / 65535, both decoded: the centre's rounding is added to
+// the radius before it is rounded up, so the decoded sphere holds the original.
+Sphere compactSphere(const Sphere& sphere, const Aabb& box) {
+    const glm::dvec3 origin(box.min);
+    const glm::dvec3 extent = glm::dvec3(box.max) - origin;
+    const double step = std::max({extent.x, extent.y, extent.z, 1e-30}) / 65535.0;
+    const double radiusStep = std::max(glm::length(extent), 1e-30) / 65535.0;
+    Sphere decoded;
+    for (int i = 0; i < 3; ++i)
+        decoded.center[i] = origin[i] + step * std::clamp(std::round((sphere.center[i] - origin[i]) / step), 0.0, 65535.0);
+    const double needed = (sphere.radius + glm::length(sphere.center - decoded.center)) * (1.0 + 1e-12);
+    decoded.radius = radiusStep * std::ceil(needed / radiusStep);
+    if (needed / radiusStep > 65535.0) decoded.radius = std::numeric_limits<double>::infinity();  // cannot be stored: never culls
+    return decoded;
+}
+
+// The cone around the 8-bit rounding of `cone`'s axis holding every normal of the sub-group, its
+// sin(alpha) rounded up to a multiple of 1/254 (255 stores "never").
+ConeOfNormals compactCone(const ConeOfNormals& cone, const FaceGeometry& faces, const uint32_t* groupFaces, size_t count) {
+    if (!cone.cullable) return ConeOfNormals{};
+    const glm::dvec3 rounded = glm::round(cone.axis * 127.0) / 127.0;
+    std::vector<glm::dvec3> normals;
+    for (size_t i = 0; i < count; ++i) normals.push_back(faces.normals[groupFaces[i]]);
+    const ConeOfNormals around = coneAroundAxis(rounded, normals.data(), normals.size());
+    if (!around.cullable) return ConeOfNormals{};
+    const double sinSteps = std::ceil(around.sinHalfAngle * 254.0 * (1.0 + 1e-12));
+    if (sinSteps >= 254.0) return ConeOfNormals{};
+    ConeOfNormals decoded;
+    decoded.axis = around.axis;
+    decoded.sinHalfAngle = sinSteps / 254.0;
+    decoded.cosHalfAngle = std::sqrt(1.0 - decoded.sinHalfAngle * decoded.sinHalfAngle);
+    decoded.cullable = true;
+    return decoded;
+}
+
+}  // namespace
+
+CompactMultiCones compactMultiCones(const FaceGeometry& faces, const ClusterBounds& bounds, const MultiCones& multi,
+                                    const Aabb& meshBox) {
+    CompactMultiCones compact;
+    for (const Sphere& sphere : bounds.spheres) compact.spheres.push_back(compactSphere(sphere, meshBox));
+    for (size_t g = 0; g < multi.groupCount(); ++g)
+        compact.cones.push_back(compactCone(multi.cones[g], faces, multi.faces.data() + multi.groupStarts[g],
+                                            multi.groupStarts[g + 1] - multi.groupStarts[g]));
+    return compact;
 }
 
 size_t culledTriangles(const MultiCones& multi, const std::vector<uint8_t>& culledGroups) {

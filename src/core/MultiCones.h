@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "BatchCulling.h"
 #include "ClusterBounds.h"
 #include "Views.h"
 
@@ -43,5 +44,37 @@ std::vector<uint8_t> cullSubGroups(const ClusterBounds& bounds, const MultiCones
 
 // Triangles in culled sub-groups.
 size_t culledTriangles(const MultiCones& multi, const std::vector<uint8_t>& culledGroups);
+
+// Bytes of one cluster's record as a renderer would store it (layouts in docs/statistics-schema.md,
+// bytes_per_cluster), padded to 4 bytes. Float: sphere (4 floats), per cone its axis and sin(alpha)
+// (4 floats), K - 1 sub-group offsets. Compact: sphere in 4 x 16 bits within the mesh's box, per cone
+// an 8-bit axis and an 8-bit sin(alpha), the offsets. An offset takes 1 byte when no cluster holds
+// more than 255 triangles (meshoptimizer's limits), else 2.
+size_t multiConeRecordBytes(uint32_t conesPerCluster, size_t maxClusterTriangles, bool compact);
+
+// The compact record decoded, one per sub-group and cluster, for the same sphere test. Every
+// rounding goes the safe way: each sphere grows by its centre's rounding and rounds its radius up,
+// each cone is rebuilt around its rounded axis (holding every normal of its sub-group) and its
+// sin(alpha) rounded up to 1/254; a sub-group whose cone reaches a hemisphere stores "never".
+struct CompactMultiCones {
+    std::vector<ConeOfNormals> cones;  // as multi.cones
+    std::vector<Sphere> spheres;       // per cluster
+};
+CompactMultiCones compactMultiCones(const FaceGeometry& faces, const ClusterBounds& bounds, const MultiCones& multi,
+                                    const Aabb& meshBox);
+
+// Every sub-group from one eye with the given cones and spheres (the float record's or the compact
+// one's), by the exact test: 1 = culled.
+std::vector<uint8_t> cullSubGroups(const std::vector<ConeOfNormals>& cones, const std::vector<Sphere>& spheres,
+                                   uint32_t conesPerCluster, const Eye& eye);
+
+// The sub-groups as clusters of the batched sphere test (BatchCulling.h): each its own cone and its
+// cluster's sphere.
+ClusterBatch subGroupBatch(const std::vector<ConeOfNormals>& cones, const std::vector<Sphere>& spheres, uint32_t conesPerCluster);
+
+// What the product runs: the batched sphere test for a perspective eye (culling only what the exact
+// test culls, minus a sliver at its threshold), the exact test for an orthographic one.
+std::vector<uint8_t> cullSubGroupsBatched(const ClusterBatch& batch, const std::vector<ConeOfNormals>& cones,
+                                          const std::vector<Sphere>& spheres, uint32_t conesPerCluster, const Eye& eye);
 
 }  // namespace conescope

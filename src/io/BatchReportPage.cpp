@@ -64,7 +64,11 @@ const NS = "http://www.w3.org/2000/svg";
 const numeric = new Set(["triangles", "clusters", "efficiency", "back_facing_triangles", "triangles_culled",
   "test_loss_triangles", "partition_loss_triangles", "false_culls", "cull_fraction", "oracle_fraction",
   "mean_sphere_radius", "seconds", "a_clusters", "a_efficiency", "triangles_culled_only_a", "triangles_culled_only_b",
-  "uncullable_clusters", "uncullable_share"]);
+  "uncullable_clusters", "uncullable_share", "bytes_per_cluster", "culled_share"]);
+// The finer records of `batch --granularity`, as their columns' prefixes.
+const granularityRecords = ["cones_2", "cones_2_compact", "cones_4", "cones_4_compact", "cones_8", "cones_8_compact", "triangle"];
+for (const record of granularityRecords)
+  for (const key of ["efficiency", "culled_share", "bytes_per_cluster", "tests_per_view"]) numeric.add(`${record}_${key}`);
 const rows = data.rows.map((cells) => {
   const row = {};
   data.columns.forEach((column, k) => { row[column] = numeric.has(column) && cells[k] !== "" ? Number(cells[k]) : cells[k]; });
@@ -164,6 +168,7 @@ function scatter(id, caption, points, x, y, options) {
     point.append(svgElement("title", {}, `${row.file}\n${options.xLabel}: ${options.log ? count(x(row)) : percent(x(row))}\n${options.yLabel}: ${percent(y(row))}`));
     point.addEventListener("click", () => select(row));
     svg.append(point);
+    if (options.labels) svg.append(svgElement("text", {x: toX(x(row)) + 7, y: toY(y(row)) + 4}, row.name));
   }
   figure.append(svg);
   if (points.length > MAX_POINTS) figure.append(element("div", {class: "muted"}, `${count(MAX_POINTS)} of ${count(points.length)} meshes drawn`));
@@ -204,6 +209,23 @@ function lossBars(rowsShown) {
   return figure;
 }
 
+// With --granularity: the library's culled share of all triangles against bytes per cluster, one
+// point per record: the batch's own (one cone), 2, 4 and 8 cones per cluster (float and compact) and
+// per-triangle culling after the cluster test.
+function granularityPlot() {
+  const measured = ok.filter((row) => row.cones_4_culled_share !== "" && row.cones_4_culled_share !== undefined);
+  if (measured.length === 0) return null;
+  const triangles = sum(measured, "triangles");
+  const share = (key) => triangles > 0 ? measured.reduce((total, row) => total + row[key] * row.triangles, 0) / triangles : 0;
+  const bytes = (key) => sum(measured, key) / measured.length;
+  const points = [{file: "one cone (the batch's test)", name: "1 cone", bytes: bytes("bytes_per_cluster"), share: share("culled_share")}];
+  for (const record of granularityRecords)
+    points.push({file: record, name: record.replace("cones_", "").replace("_compact", " compact").replace("triangle", "per triangle"),
+      bytes: bytes(`${record}_bytes_per_cluster`), share: share(`${record}_culled_share`)});
+  return scatter("plot-granularity", `Culled share of all triangles against bytes per cluster (${count(measured.length)} meshes): 1, 2, 4 and 8 cones per cluster, per triangle`,
+    points, (point) => point.bytes, (point) => point.share, {log: true, labels: true, xLabel: "bytes per cluster", yLabel: "culled share"});
+}
+
 function drawPlots() {
   const plots = document.getElementById("plots");
   if (ok.length === 0) { plots.append(element("p", {class: "muted"}, "No mesh ran.")); return; }
@@ -214,6 +236,8 @@ function drawPlots() {
       (row) => row.a_efficiency, (row) => row.efficiency, {diagonal: true, xLabel: "A's efficiency", yLabel: "efficiency"}));
   else
     plots.append(element("p", {class: "muted", id: "plot-compare-missing"}, "Run the batch with --compare-meshopt to plot against meshoptimizer's pipeline."));
+  const granularity = granularityPlot();
+  if (granularity) plots.append(granularity);
   const lost = (row) => row.test_loss_triangles + row.partition_loss_triangles;
   plots.append(lossBars(ok.slice().sort((a, b) => lost(b) - lost(a)).slice(0, 30)));
 }

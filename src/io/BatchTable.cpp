@@ -20,6 +20,24 @@ const std::vector<std::string> meshColumns = {"vertices", "faces", "triangles", 
 const std::vector<std::string> comparisonColumns = {"triangles_culled_only_a", "triangles_culled_only_b",
                                                     "triangles_culled_both", "cluster_count_warning"};
 
+// The finer records of a granularity report, as column prefixes: cones_2, cones_2_compact, ... triangle.
+const std::vector<std::string>& granularityRecords() {
+    static const std::vector<std::string> records = [] {
+        std::vector<std::string> names;
+        for (uint32_t k : kGranularityCones)
+            for (const char* form : {"", "_compact"}) names.push_back("cones_" + std::to_string(k) + form);
+        names.push_back("triangle");
+        return names;
+    }();
+    return records;
+}
+const std::vector<std::string> granularityKeys = {"efficiency", "culled_share", "bytes_per_cluster", "tests_per_view"};
+
+std::string columnPrefix(std::string record) {
+    std::replace(record.begin(), record.end(), '-', '_');
+    return record;
+}
+
 // The stats CSV's totals table of a run: its header and its rows, each split into cells.
 std::vector<std::vector<std::string>> totalsTable(const RunStatistics& run) {
     std::ostringstream text;
@@ -51,6 +69,9 @@ std::vector<std::string> makeColumns() {
     for (const std::string& column : totalsColumns())
         if (describesSide(column)) columns.push_back("a_" + column);
     columns.insert(columns.end(), comparisonColumns.begin(), comparisonColumns.end());
+    columns.push_back("culled_share");
+    for (const std::string& record : granularityRecords())
+        for (const std::string& key : granularityKeys) columns.push_back(record + "_" + key);
     return columns;
 }
 
@@ -108,6 +129,24 @@ void addComparisonCells(BatchRow& row, const ComparedRuns& runs) {
     const nlohmann::json diff = comparisonToJson(runs.comparison);
     for (const std::string& column : comparisonColumns)
         row[column] = diff[column].is_null() ? "" : diff[column].is_string() ? diff[column].get<std::string>() : diff[column].dump();
+}
+
+void addGranularityCells(BatchRow& row, const GranularityReport& report) {
+    const auto text = [](double value) {
+        std::ostringstream out;
+        out.precision(17);
+        out << value;
+        return out.str();
+    };
+    row["culled_share"] = text(report.rows.front().culledShare);
+    for (const GranularityRow& record : report.rows) {
+        const std::string prefix = columnPrefix(record.record);
+        if (std::find(granularityRecords().begin(), granularityRecords().end(), prefix) == granularityRecords().end()) continue;
+        row[prefix + "_efficiency"] = text(record.efficiency);
+        row[prefix + "_culled_share"] = text(record.culledShare);
+        row[prefix + "_bytes_per_cluster"] = std::to_string(record.bytesPerCluster);
+        row[prefix + "_tests_per_view"] = text(record.testsPerView);
+    }
 }
 
 std::string batchCsvHeader() { return joined(batchColumns(), ",") + "\n"; }

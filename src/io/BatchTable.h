@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/Comparison.h"
+#include "core/Granularity.h"
 #include "core/Statistics.h"
 
 namespace conescope {
@@ -29,6 +30,11 @@ void addSettingCells(BatchRow& row, const Settings& settings);
 // A's totals as a_COLUMN (those a run's mesh does not fix), and what only each side culled. The row's
 // own totals are B's: the batch's settings.
 void addComparisonCells(BatchRow& row, const ComparedRuns& runs);
+
+// With `batch --granularity`: the displayed result's `culled_share` and, for each finer record of
+// the granularity report (cones-2 ... triangle, as cones_2 ... triangle), RECORD_efficiency,
+// RECORD_culled_share, RECORD_bytes_per_cluster and RECORD_tests_per_view.
+void addGranularityCells(BatchRow& row, const GranularityReport& report);
 
 // The header line and a row's line, each ending in '\n'; cells with a comma or a quote are quoted.
 std::string batchCsvHeader();

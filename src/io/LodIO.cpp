@@ -7,17 +7,14 @@
 #include <string>
 #include <vector>
 
+#include "io/ColumnTable.h"
 #include "io/StatisticsIO.h"
 
 namespace conescope {
 
 namespace {
 
-// The level columns, once for JSON and CSV.
-struct LevelColumn {
-    const char* key;
-    std::function<nlohmann::json(const LodLevelStatistics&)> value;
-};
+using LevelColumn = NamedColumn<LodLevelStatistics>;
 const std::vector<LevelColumn>& levelColumns() {
     static const std::vector<LevelColumn> columns{
         {"level", [](const LodLevelStatistics& l) { return l.level; }},
@@ -57,14 +54,6 @@ nlohmann::json cutViewToJson(const LodCutView& view) {
             {"clusters_per_level", view.clustersPerLevel}};
 }
 
-std::string csvCell(const nlohmann::json& value) {
-    if (value.is_number_float()) {
-        std::ostringstream text;
-        text << std::setprecision(17) << value.get<double>();
-        return text.str();
-    }
-    return value.dump();
-}
 
 }  // namespace
 
@@ -75,10 +64,7 @@ nlohmann::json lodStatisticsToJson(const LodStatistics& statistics, const Settin
     json["build_seconds"] = statistics.buildSeconds;
     json["views"] = statistics.cut.views.size();
     nlohmann::json& levels = json["levels"] = nlohmann::json::array();
-    for (const LodLevelStatistics& level : statistics.levels) {
-        nlohmann::json& row = levels.emplace_back();
-        for (const LevelColumn& column : levelColumns()) row[column.key] = column.value(level);
-    }
+    for (const LodLevelStatistics& level : statistics.levels) levels.push_back(rowToJson(levelColumns(), level));
     const LodCutStatistics& cut = statistics.cut;
     json["cut"] = {{"triangles", cut.meanTriangles},
                    {"clusters", cut.meanClusters},
@@ -96,12 +82,8 @@ nlohmann::json lodStatisticsToJson(const LodStatistics& statistics, const Settin
 
 void writeLodCsv(const LodStatistics& statistics, std::ostream& out) {
     const std::vector<LevelColumn>& columns = levelColumns();
-    for (size_t i = 0; i < columns.size(); ++i) out << (i ? "," : "") << columns[i].key;
-    out << "\n";
-    for (const LodLevelStatistics& level : statistics.levels) {
-        for (size_t i = 0; i < columns.size(); ++i) out << (i ? "," : "") << csvCell(columns[i].value(level));
-        out << "\n";
-    }
+    writeCsvHeader(columns, out);
+    for (const LodLevelStatistics& level : statistics.levels) writeCsvRow(columns, level, out);
     // The cut: its mean size over the views, its culling summed over them; no groups, cones or errors.
     const LodCutStatistics& cut = statistics.cut;
     const std::map<std::string, nlohmann::json> cells{{"level", "cut"},
@@ -113,7 +95,7 @@ void writeLodCsv(const LodStatistics& statistics, std::ostream& out) {
                                                       {"back_facing_triangles", cut.backFacingTriangles}};
     for (size_t i = 0; i < columns.size(); ++i) {
         const auto at = cells.find(columns[i].key);
-        out << (i ? "," : "") << (at == cells.end() ? "" : at->second.is_string() ? at->second.get<std::string>() : csvCell(at->second));
+        out << (i ? "," : "") << (at == cells.end() ? "" : csvCell(at->second));
     }
     out << "\n";
 }

@@ -97,5 +97,34 @@ TEST(BatchReport, RendersPlotsTablesAndTotalsInHeadlessChromium) {
     EXPECT_NE(dom.find("<tr class=\"mesh-row\" data-file=\"" + worst + "\""), std::string::npos) << worst;
 }
 
+// The uncullable note counts the meshes whose rows carry a note, and `--granularity` adds the plot
+// of culled share against bytes: the batch's own record, 2, 4 and 8 cones (float and compact) and
+// per-triangle culling, each a point.
+TEST(BatchReport, GranularityPlotAndTheUncullableNoteFollowTheRows) {
+    ScratchDirectory scratch;
+    clitest::copyBundledDatasets(scratch.path() / "library");
+    const std::string out = scratch.file("out");
+    const clitest::CliRun batch = clitest::runCli({"batch", scratch.file("library"), "-o", out, "--views", "8", "--granularity", "--quiet"});
+    ASSERT_EQ(batch.exitCode, 0) << batch.err;
+    const std::vector<std::map<std::string, std::string>> rows = readResults(out + "/results.csv");
+    size_t noted = 0;
+    for (const auto& row : rows) {
+        noted += row.at("note").empty() ? 0 : 1;
+        EXPECT_FALSE(row.at("cones_4_culled_share").empty()) << row.at("file");
+        EXPECT_LE(std::stoul(row.at("cones_4_compact_bytes_per_cluster")), 32u);
+    }
+    ASSERT_GT(noted, 0u);
+    ASSERT_LT(noted, rows.size());
+    const std::string dom = renderedDom(out + "/report.html", scratch);
+    ASSERT_NE(dom.find("data-rendered=\"yes\""), std::string::npos) << dom.substr(0, 2000);
+    EXPECT_NE(dom.find(std::to_string(noted) + " of " + std::to_string(rows.size()) + " meshes cull little or nothing"), std::string::npos);
+    const size_t at = dom.find("id=\"plot-granularity\"");
+    ASSERT_NE(at, std::string::npos);
+    const std::string plot = dom.substr(at, dom.find("</figure>", at) - at);
+    EXPECT_EQ(occurrences(plot, std::regex("<circle class=\"point\"")), 8u);
+    EXPECT_NE(plot.find(">4 compact<"), std::string::npos);
+    EXPECT_NE(plot.find(">per triangle<"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace conescope

@@ -84,8 +84,10 @@ CliRun runProgram(const std::string& path, const std::vector<std::string>& argum
     return run;
 }
 
-nlohmann::json runStatsJson(const std::vector<std::string>& arguments) {
-    std::vector<std::string> command = {"stats", "--quiet"};
+nlohmann::json runStatsJson(const std::vector<std::string>& arguments) { return runJsonCommand("stats", arguments); }
+
+nlohmann::json runJsonCommand(const std::string& name, const std::vector<std::string>& arguments) {
+    std::vector<std::string> command = {name, "--quiet"};
     command.insert(command.end(), arguments.begin(), arguments.end());
     const CliRun run = runCli(command);
     EXPECT_EQ(run.exitCode, 0) << run.err;

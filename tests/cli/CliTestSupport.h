@@ -41,7 +41,10 @@ int waitCli(pid_t pid);
 
 std::string readTextFile(const std::string& path);
 
-// `conescope-cli stats --quiet ARGUMENTS` parsed as JSON (a test failure when it is not).
+// `conescope-cli COMMAND --quiet ARGUMENTS` parsed as JSON (a test failure when it is not, or when
+// it exits with an error or writes to stderr).
+nlohmann::json runJsonCommand(const std::string& command, const std::vector<std::string>& arguments);
+// runJsonCommand("stats", ARGUMENTS).
 nlohmann::json runStatsJson(const std::vector<std::string>& arguments);
 
 // Timings differ between any two runs; everything else is deterministic: drops every ns_per_cluster.

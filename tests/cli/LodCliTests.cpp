@@ -18,11 +18,9 @@ using clitest::runStatsJson;
 using clitest::splitLines;
 
 nlohmann::json runLodJson(const std::vector<std::string>& arguments) {
-    std::vector<std::string> command = {"lod", "--quiet", "--format", "json"};
+    std::vector<std::string> command = {"--format", "json"};
     command.insert(command.end(), arguments.begin(), arguments.end());
-    const CliRun run = runCli(command);
-    EXPECT_EQ(run.exitCode, 0) << run.err;
-    return run.exitCode == 0 ? nlohmann::json::parse(run.out) : nlohmann::json{};
+    return clitest::runJsonCommand("lod", command);
 }
 
 TEST(CliLod, LevelsHalveAndTheCutIsConservative) {
@@ -34,7 +32,9 @@ TEST(CliLod, LevelsHalveAndTheCutIsConservative) {
         EXPECT_EQ(levels[l]["false_culls"], 0);
         for (const char* key : {"clusters", "triangles", "efficiency", "expected_efficiency", "mean_half_angle_deg", "max_error"})
             EXPECT_TRUE(levels[l].contains(key)) << key;
-        if (l > 0) EXPECT_LT(levels[l]["triangles"].get<double>(), 0.85 * levels[l - 1]["triangles"].get<double>());
+        if (l > 0) {
+            EXPECT_LT(levels[l]["triangles"].get<double>(), 0.85 * levels[l - 1]["triangles"].get<double>());
+        }
     }
     EXPECT_EQ(levels.back()["clusters"], 1);
     const nlohmann::json& cut = lod["cut"];

@@ -1,5 +1,6 @@
 // The correctness rule as a property: over many random clusters and eyes, no test of any cone
-// ever culls a cluster that holds a face the exact oracle calls front-facing.
+// ever culls a cluster that holds a face the exact oracle calls front-facing, and no K-cone record
+// (float or compact) a sub-group that holds one.
 #include <gtest/gtest.h>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -9,6 +10,8 @@
 
 #include "TestMeshes.h"
 #include "core/Culling.h"
+#include "core/Granularity.h"
+#include "core/MultiCones.h"
 #include "core/RecordTests.h"
 #include "core/Settings.h"
 
@@ -74,6 +77,18 @@ void checkMesh(std::mt19937_64& random, const Mesh& mesh, const Partition& parti
         boundsPerCone.push_back(computeClusterBounds(mesh, world, faces, partition, cone,
                                                      cone == ConeMethod::Average ? SphereMethod::Ritter : SphereMethod::Minimal));
     const ClusterFaces rows = facesByCluster(partition);
+    // K cones per cluster on the minimal cones' spheres, as the float and the compact record.
+    const ClusterBounds& minimal = boundsPerCone[size_t(std::find(allConeMethods().begin(), allConeMethods().end(), ConeMethod::Minimal) -
+                                                        allConeMethods().begin())];
+    std::vector<MultiCones> multis;
+    std::vector<CompactMultiCones> compacts;
+    std::vector<ClusterBatch> batches;  // float then compact of each K
+    for (uint32_t k : kGranularityCones) {
+        multis.push_back(computeMultiCones(mesh, faces, minimal, k));
+        compacts.push_back(compactMultiCones(faces, minimal, multis.back(), computeAabb(world)));
+        batches.push_back(subGroupBatch(multis.back().cones, minimal.spheres, k));
+        batches.push_back(subGroupBatch(compacts.back().cones, compacts.back().spheres, k));
+    }
     for (const Eye& eye : eyes) {
         const auto facing = classifyFaces(mesh, world, faces, eye);
         std::vector<uint8_t> hasFront(partition.clusterCount, 0);
@@ -100,6 +115,30 @@ void checkMesh(std::mt19937_64& random, const Mesh& mesh, const Partition& parti
                                           << eye.position.z << ") ortho " << eye.orthographic;
                         }
                     }
+                }
+            }
+        }
+        for (size_t i = 0; i < multis.size(); ++i) {
+            const MultiCones& multi = multis[i];
+            for (int form = 0; form < 4; ++form) {  // float, compact; exact, batched
+                const bool compact = form % 2 == 1;
+                const std::vector<ConeOfNormals>& cones = compact ? compacts[i].cones : multi.cones;
+                const std::vector<Sphere>& spheres = compact ? compacts[i].spheres : minimal.spheres;
+                const std::vector<uint8_t> culled =
+                    form < 2 ? cullSubGroups(cones, spheres, multi.conesPerCluster, eye)
+                             : cullSubGroupsBatched(batches[2 * i + (compact ? 1 : 0)], cones, spheres, multi.conesPerCluster, eye);
+                for (size_t g = 0; g < culled.size(); ++g) {
+                    ++counts.decisions;
+                    if (!culled[g]) continue;
+                    ++counts.culls;
+                    for (uint32_t f = multi.groupStarts[g]; f < multi.groupStarts[g + 1]; ++f)
+                        if (facing[multi.faces[f]] != Facing::Back) {
+                            ++counts.falseCulls;
+                            ADD_FAILURE() << "false cull: cones-" << multi.conesPerCluster << (compact ? "-compact" : "") << " sub-group "
+                                          << g << " eye (" << eye.position.x << ", " << eye.position.y << ", " << eye.position.z
+                                          << ") ortho " << eye.orthographic;
+                            break;
+                        }
                 }
             }
         }

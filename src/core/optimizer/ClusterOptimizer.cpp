@@ -386,10 +386,12 @@ Partition buildBest(const Mesh& mesh, const FaceGeometry& faces, const MeshletLi
         return [&progress, from, to](double fraction, const std::string& stage) { return progress(from + (to - from) * fraction, stage); };
     };
     Partition best = buildAtBudget(mesh, faces, limits, targetClusters, share(0.0, 0.9), Effort::Best, meshlets, partDone);
-    // The balanced run at the resolved budget: the default count asked for or left out gives the
-    // same partition.
-    const size_t target = targetClusters != 0 ? targetClusters : defaultClusterBudget(mesh, limits);
-    Partition balanced = buildOptimizedClusters(mesh, faces, limits, target, share(0.9, 1.0), Effort::Balanced, meshlets, {});
+    // The default count asked for is the default: its balanced run is the default's (no climb), so
+    // asking for it or leaving it out gives the same partition.
+    const size_t defaultCount = defaultClusterBudget(mesh, limits);
+    const size_t target = targetClusters != 0 ? targetClusters : defaultCount;
+    Partition balanced = buildOptimizedClusters(mesh, faces, limits, target == defaultCount ? 0 : target, share(0.9, 1.0),
+                                                Effort::Balanced, meshlets, {});
     const double distance = kOrbitDistance * double(computeAabb(mesh.positions).halfDiagonal());
     if (!betterAtBudget(mesh, faces, balanced, best, target) &&
         (best.clusterCount != balanced.clusterCount || cullsAsMuchFrom(mesh, faces, limits, best, balanced, distance)))

@@ -1,0 +1,22 @@
+#!/usr/bin/env bash
+# What each record granularity culls and costs (`conescope-cli granularity`: one cone per cluster
+# with every test, 2, 4 and 8 cones per cluster as float and compact records, per-triangle culling)
+# on every CGAL demo mesh that reads and every Sweet Home 3D furniture prop, 64 orbit views at
+# distance 3, the default partition. Writes bench/results/granularity.csv (one row per mesh and
+# record) and granularity.md (per set and record: culled share, ratio to the default record,
+# bytes, tests per view, false culls).
+#
+#   scripts/bench-granularity.sh
+#   CONESCOPE_PROPS_DEBS=/dir/with/debs CONESCOPE_BENCH_BUILD_DIR=... scripts/bench-granularity.sh
+set -euo pipefail
+source "$(dirname "${BASH_SOURCE[0]}")/bench-setup.sh" conescope-cli
+"$root/scripts/fetch-props.sh"
+cli="$build/src/cli/conescope-cli"
+list="$output/granularity.list.tmp"
+: > "$list"
+for mesh in "$root"/datasets/cgal-all/*.off "$root"/datasets/cgal-all/*.ply; do [[ -f "$mesh" ]] && echo "cgal $mesh" >> "$list"; done
+find "$root/datasets/props-debian/sh3d" -name '*.obj' | sort | sed 's/^/props /' >> "$list"
+start=$(date +%s)
+python3 "$root/bench/granularity_table.py" "$cli" "$list" "$output/granularity" "$root"
+rm -f "$list"
+echo "bench-granularity: wrote $output/granularity.{csv,md} in $(( $(date +%s) - start )) s" >&2

@@ -1,0 +1,169 @@
+#include "Granularity.h"
+
+#include <algorithm>
+#include <set>
+
+#include "MultiCones.h"
+#include "RecordTests.h"
+
+namespace conescope {
+
+namespace {
+
+void finishRow(GranularityRow& row, size_t clusters, size_t triangles, size_t views) {
+    row.bitsPerTriangle = triangles == 0 ? 0.0 : double(row.bytesPerCluster) * 8.0 * double(clusters) / double(triangles);
+    row.efficiency = cullEfficiency(row.trianglesCulled, row.backFacingTriangles);
+    row.culledShare = triangles == 0 || views == 0 ? 0.0 : double(row.trianglesCulled) / (double(triangles) * double(views));
+}
+
+// One K-cone record (float or compact) as it is counted over the views.
+struct MultiConeRecord {
+    const MultiCones* multi = nullptr;
+    std::vector<ConeOfNormals> cones;
+    const std::vector<Sphere>* spheres = nullptr;
+    ClusterBatch batch;
+    GranularityRow row;
+};
+
+// Adds one view of one record, as the product tests it (batched): triangles in culled sub-groups, and the culled sub-groups holding a
+// face the oracle did not find back-facing.
+void countView(MultiConeRecord& record, const std::vector<Facing>& facing, const Eye& eye) {
+    const MultiCones& multi = *record.multi;
+    const std::vector<uint8_t> culled = cullSubGroupsBatched(record.batch, record.cones, *record.spheres, multi.conesPerCluster, eye);
+    for (size_t g = 0; g < culled.size(); ++g) {
+        if (!culled[g]) continue;
+        record.row.trianglesCulled += multi.groupTriangles[g];
+        for (uint32_t i = multi.groupStarts[g]; i < multi.groupStarts[g + 1]; ++i)
+            if (facing[multi.faces[i]] != Facing::Back) {
+                ++record.row.falseCulls;
+                break;
+            }
+    }
+}
+
+size_t backFacingTriangles(const Mesh& mesh, const std::vector<Facing>& facing) {
+    size_t total = 0;
+    for (size_t f = 0; f < facing.size(); ++f)
+        if (facing[f] == Facing::Back) total += mesh.faceSize(f) - 2;
+    return total;
+}
+
+size_t largestClusterTriangles(const Mesh& mesh, const ClusterBounds& bounds) {
+    size_t largest = 0;
+    for (size_t c = 0; c < bounds.count(); ++c) {
+        size_t triangles = 0;
+        for (uint32_t i = bounds.faces.starts[c]; i < bounds.faces.starts[c + 1]; ++i) triangles += mesh.faceSize(bounds.faces.faces[i]) - 2;
+        largest = std::max(largest, triangles);
+    }
+    return largest;
+}
+
+}  // namespace
+
+std::vector<GranularityRow> oneConeRows(const RunStatistics& run) {
+    std::vector<GranularityRow> rows;
+    std::set<CullTest> enginesDone;
+    for (const CullTestStatistics& result : run.results) {
+        if (result.engineRecord && !enginesDone.insert(result.test).second) continue;
+        GranularityRow row;
+        row.record = result.engineRecord ? toString(result.test) : toString(result.cone) + "/" + toString(result.test);
+        row.bytesPerCluster = result.bytesPerCluster;
+        row.trianglesCulled = result.trianglesCulled;
+        row.backFacingTriangles = result.backFacingTriangles;
+        row.testsPerView = double(run.clusters);
+        row.falseCulls = result.falseCulls;
+        finishRow(row, run.clusters, run.triangles, run.viewCount);
+        rows.push_back(row);
+    }
+    return rows;
+}
+
+std::vector<GranularityRow> finerRows(const PreparedMesh& prepared, const ClusterSet& clusters, const std::vector<Eye>& views,
+                                      const Settings& settings, const ProgressCallback& progress) {
+    const Mesh& mesh = prepared.mesh();
+    const ClusterBounds& bounds = clusters.bounds;
+    const size_t largest = largestClusterTriangles(mesh, bounds);
+    std::vector<MultiCones> multis;
+    std::vector<CompactMultiCones> compacts;
+    multis.reserve(std::size(kGranularityCones));
+    compacts.reserve(std::size(kGranularityCones));
+    std::vector<MultiConeRecord> records;
+    for (uint32_t k : kGranularityCones) {
+        multis.push_back(computeMultiCones(mesh, prepared.faces, bounds, k));
+        compacts.push_back(compactMultiCones(prepared.faces, bounds, multis.back(), prepared.box));
+    }
+    for (size_t i = 0; i < multis.size(); ++i)
+        for (bool compact : {false, true}) {
+            MultiConeRecord record;
+            record.multi = &multis[i];
+            record.cones = compact ? compacts[i].cones : multis[i].cones;
+            record.spheres = compact ? &compacts[i].spheres : &bounds.spheres;
+            record.batch = subGroupBatch(record.cones, *record.spheres, multis[i].conesPerCluster);
+            const uint32_t k = multis[i].conesPerCluster;
+            record.row.record = "cones-" + std::to_string(k) + (compact ? "-compact" : "");
+            record.row.bytesPerCluster = multiConeRecordBytes(k, largest, compact);
+            size_t nonEmpty = 0;
+            for (uint32_t triangles : multis[i].groupTriangles) nonEmpty += triangles > 0 ? 1 : 0;
+            record.row.testsPerView = double(nonEmpty);
+            records.push_back(std::move(record));
+        }
+    // Per-triangle culling after the cluster test: every back face culled, one test per cluster
+    // plus one per triangle of each cluster the cluster test drew.
+    const CullTest clusterTest = displayedTest(settings);
+    GranularityRow triangle;
+    triangle.record = "triangle";
+    triangle.bytesPerCluster = recordBytes(clusterTest);
+    std::vector<size_t> clusterTriangles(bounds.count(), 0);
+    for (size_t c = 0; c < bounds.count(); ++c)
+        for (uint32_t i = bounds.faces.starts[c]; i < bounds.faces.starts[c + 1]; ++i)
+            clusterTriangles[c] += mesh.faceSize(bounds.faces.faces[i]) - 2;
+    const CullingInput input = cullingInput(prepared, clusters);
+    double triangleTests = 0.0;
+    for (size_t v = 0; v < views.size(); ++v) {
+        if (v % 8 == 0) reportProgress(progress, double(v) / double(views.size()), "finer records");
+        const std::vector<Facing> facing = classifyFaces(mesh, prepared.world, prepared.faces, views[v]);
+        const size_t back = backFacingTriangles(mesh, facing);
+        for (MultiConeRecord& record : records) {
+            record.row.backFacingTriangles += back;
+            countView(record, facing, views[v]);
+        }
+        const std::vector<uint8_t> culled = cullClusters(input, views[v], clusterTest);
+        triangleTests += double(bounds.count());
+        for (size_t c = 0; c < culled.size(); ++c)
+            if (!culled[c]) triangleTests += double(clusterTriangles[c]);
+        triangle.trianglesCulled += back;
+        triangle.backFacingTriangles += back;
+    }
+    triangle.testsPerView = views.empty() ? 0.0 : triangleTests / double(views.size());
+    std::vector<GranularityRow> rows;
+    for (MultiConeRecord& record : records) {
+        finishRow(record.row, bounds.count(), prepared.triangles, views.size());
+        rows.push_back(record.row);
+    }
+    finishRow(triangle, bounds.count(), prepared.triangles, views.size());
+    rows.push_back(triangle);
+    return rows;
+}
+
+GranularityReport measureGranularity(const PreparedMesh& prepared, const ClusterSet& clusters, const Settings& settings,
+                                     const ProgressCallback& progress) {
+    GranularityReport report;
+    report.run = measureRun(prepared, clusters, settings, progressWithin(progress, 0.0, 0.5));
+    report.rows = oneConeRows(report.run);
+    const std::vector<GranularityRow> finer =
+        finerRows(prepared, clusters, viewsFor(settings, prepared.box), settings, progressWithin(progress, 0.5, 1.0));
+    report.rows.insert(report.rows.end(), finer.begin(), finer.end());
+    return report;
+}
+
+GranularityReport runGranularity(const Mesh& mesh, const Settings& settings, const std::string& meshName,
+                                 const ProgressCallback& progress) {
+    validateMesh(mesh);
+    const std::shared_ptr<const Mesh> borrowed(&mesh, [](const Mesh*) {});  // the stages outlive no call
+    PreparedMesh prepared = prepareMesh(borrowed, meshName, settings.fixWinding, progressWithin(progress, 0.0, 0.05));
+    prepared.name = meshName;
+    const ClusterSet clusters = buildClusters(prepared, settings, nullptr, progressWithin(progress, 0.05, 0.15));
+    return measureGranularity(prepared, clusters, settings, progressWithin(progress, 0.15, 1.0));
+}
+
+}  // namespace conescope
