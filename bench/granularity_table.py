@@ -21,7 +21,7 @@ for line in open(list_path):
     done = subprocess.run([cli, "granularity", path, "--views", "64", "--distance", "3", "--format", "json", "-q"],
                           capture_output=True, text=True)
     if done.returncode != 0:
-        failed.append((group, name, done.stderr.strip().splitlines()[-1:] or ["?"]))
+        failed.append((group, name, [line.replace(root + "/", "") for line in done.stderr.strip().splitlines()[-1:]] or ["?"]))
         continue
     report = json.loads(done.stdout)
     runs.append((group, name, report))

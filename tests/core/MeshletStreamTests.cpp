@@ -1,7 +1,7 @@
 // meshoptimizer's meshlets handed over in parts: every face in exactly one part, each part's meshlets
 // those of buildMeshoptMeshlets (whole meshlets, none shared between parts), the work handed to the
-// stream's thread run after the meshlets and its errors passed on, and a stream dropped while it
-// builds stops.
+// stream's thread run after the meshlets (each piece in turn) and its errors passed on, and a stream
+// dropped while it builds stops.
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -139,6 +139,24 @@ TEST(MeshletStream, WorkRunsOnTheStreamsThreadAfterTheMeshletsAndPassesItsErrorO
     });
     slow.finishWork();
     EXPECT_TRUE(finished);
+}
+
+// The climb's steps share one stream: each hands over its own piece of work, and every piece runs on
+// the stream's thread (a second piece before the first is finished is refused, not lost).
+TEST(MeshletStream, EachPieceOfWorkRunsOnTheStreamsThreadInTurn) {
+    MeshletStream stream(shared(testmesh::icosphere(3)), {64, 124}, 2);
+    std::vector<std::thread::id> ranOn;
+    for (int piece = 0; piece < 3; ++piece) {
+        stream.runAfterwards([&] { ranOn.push_back(std::this_thread::get_id()); });
+        stream.finishWork();
+    }
+    ASSERT_EQ(ranOn.size(), 3u);
+    for (const std::thread::id& id : ranOn) EXPECT_NE(id, std::this_thread::get_id());
+    stream.runAfterwards([] { throw std::runtime_error("second step failed"); });
+    EXPECT_THROW(stream.finishWork(), std::runtime_error);
+    stream.runAfterwards([] {});  // an error does not stop the next piece
+    EXPECT_THROW(stream.runAfterwards([] {}), std::logic_error);
+    stream.finishWork();
 }
 
 TEST(MeshletStream, LimitsMeshoptimizerRefusesComeBackFromEveryPart) {

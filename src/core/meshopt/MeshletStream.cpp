@@ -7,6 +7,7 @@
 #include <condition_variable>
 #include <exception>
 #include <mutex>
+#include <stdexcept>
 #include <thread>
 #include <utility>
 
@@ -82,6 +83,7 @@ struct MeshletStream::State {
     std::condition_variable changed_;
     size_t partsMade_ = 0;
     bool stopping_ = false, workDone_ = false;
+    bool workAsked_ = false;  // a piece of work was handed over and not yet finished (finishWork)
     std::atomic<bool> workFinished_{false};  // workDone_, readable without the lock (finishWork watches it)
     std::function<void()> work_;
     std::exception_ptr buildError_, workError_;
@@ -111,20 +113,26 @@ MeshletStream::State::State(std::shared_ptr<const Mesh> mesh, const MeshletLimit
             changed_.notify_all();
         }
         builderHold_.release();
-        // Then the work handed over, if any comes before the stream is dropped.
+        // Then each piece of work handed over, until the stream is dropped with none waiting.
         std::unique_lock<std::mutex> lock(mutex_);
-        changed_.wait(lock, [this] { return stopping_ || work_; });
-        if (!work_) return;
-        lock.unlock();
-        try {
-            work_();
-        } catch (...) {
-            workError_ = std::current_exception();
+        for (;;) {
+            changed_.wait(lock, [this] { return stopping_ || work_; });
+            if (!work_) return;
+            const std::function<void()> work = std::move(work_);
+            work_ = nullptr;
+            lock.unlock();
+            std::exception_ptr error;
+            try {
+                work();
+            } catch (...) {
+                error = std::current_exception();
+            }
+            lock.lock();
+            workError_ = error;
+            workDone_ = true;
+            workFinished_.store(true, std::memory_order_release);
+            changed_.notify_all();
         }
-        workFinished_.store(true, std::memory_order_release);
-        lock.lock();
-        workDone_ = true;
-        changed_.notify_all();
     });
     builderHold_ = CoreHold(thread_.native_handle(), cores_.others);
 }
@@ -262,15 +270,21 @@ bool MeshletStream::allPartsMade() {
 
 void MeshletStream::runAfterwards(std::function<void()> work) {
     std::lock_guard<std::mutex> lock(state_->mutex_);
-    state_->work_ = std::move(work);
-    state_->changed_.notify_all();
+    State& s = *state_;
+    // One piece at a time: a second before finishWork would wait behind the first, or never run.
+    if (s.workAsked_) throw std::logic_error("MeshletStream::runAfterwards: the last piece of work was not finished (finishWork)");
+    s.work_ = std::move(work);
+    s.workAsked_ = true;
+    s.workDone_ = false;
+    s.workFinished_.store(false, std::memory_order_release);
+    s.changed_.notify_all();
 }
 
 void MeshletStream::finishWork() {
     State& s = *state_;
     {
         std::lock_guard<std::mutex> lock(s.mutex_);
-        if (!s.work_) return;
+        if (!s.workAsked_) return;
     }
     // The other thread is on its last part, which takes a small mesh's part a tenth of a
     // millisecond: watched for that long, its end is seen at once, where waking from a wait took
@@ -283,8 +297,9 @@ void MeshletStream::finishWork() {
         }
     }
     std::unique_lock<std::mutex> lock(s.mutex_);
-    s.changed_.wait(lock, [&s] { return s.workDone_ || s.workFinished_.load(std::memory_order_acquire); });
-    if (s.workError_) std::rethrow_exception(s.workError_);
+    s.changed_.wait(lock, [&s] { return s.workDone_; });
+    s.workAsked_ = false;
+    if (s.workError_) std::rethrow_exception(std::exchange(s.workError_, nullptr));
 }
 
 }  // namespace conescope

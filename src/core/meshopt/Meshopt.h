@@ -153,7 +153,8 @@ public:
 
     // Runs `work` on the stream's thread once every meshlet is made (at once if they are), so that
     // the core it ran on goes on with what the meshlets are for; finishWork waits for it and
-    // rethrows what it threw. At most one piece of work.
+    // rethrows what it threw. One piece at a time: each build that shares the stream (the climb's
+    // steps) hands over its own after the last one's finishWork; std::logic_error before that.
     void runAfterwards(std::function<void()> work);
     void finishWork();
 
