@@ -94,7 +94,8 @@ Row measure(const PreparedMesh& prepared, const std::string& name, const std::st
     if (grouping == "metis") options.grouping = metisGroups;
     const auto start = std::chrono::steady_clock::now();
     const ClusterHierarchy hierarchy = buildClusterHierarchy(prepared, settings, options);
-    Row row{name, grouping, prepared.triangles, hierarchy.levels.size()};
+    Row row;
+    row.mesh = name, row.grouping = grouping, row.triangles = prepared.triangles, row.levels = hierarchy.levels.size();
     row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const LodStatistics statistics = measureHierarchy(hierarchy, settings, LodThreshold{});
     double inside = 0.0;

@@ -26,6 +26,7 @@ struct BatchOptions {
     std::string compare;                 // "K=V,...": A against the batch's settings, as `compare --a`
     bool compareMeshopt = false;         // compare = meshoptimizer's own pipeline
     bool granularity = false;            // also the finer records' columns (granularity's rows)
+    bool lod = false;                    // also a LOD hierarchy's per-level columns (lod's levels and cut)
     StatisticsDetail detail;
     double timeoutSeconds = 0;           // per mesh; 0 = none
     long memoryLimitMiB = -1;            // per worker; -1 = physical memory / workers, 0 = none
@@ -35,7 +36,7 @@ struct BatchOptions {
 struct BatchWorkerOptions {
     SettingsOptions run;
     std::string compare;
-    bool granularity = false;
+    bool granularity = false, lod = false;
     StatisticsDetail detail;
     long memoryLimitMiB = 0;             // only to say it in an out-of-memory row
 };

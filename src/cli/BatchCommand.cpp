@@ -114,6 +114,7 @@ std::vector<std::string> workerCommand(const BatchConfig& config, long memoryLim
     for (const std::string& argument : settingArguments(config.settings)) command.push_back(argument);
     if (!config.compare.empty()) command.insert(command.end(), {"--compare", config.compare});
     if (config.granularity) command.push_back("--granularity");
+    if (config.lod) command.push_back("--lod");
     if (!config.detail.views) command.push_back("--no-per-view");
     if (!config.detail.clusters) command.push_back("--no-per-cluster");
     command.insert(command.end(), {"--memory-limit", std::to_string(memoryLimitMiB)});
@@ -322,6 +323,8 @@ BatchCommands addBatchCommands(CLI::App& app, BatchOptions& batch, BatchWorkerOp
         ->excludes(compare);
     command->add_flag("--granularity", batch.granularity,
                       "Also each mesh's 2, 4 and 8 cones per cluster and per-triangle culling (granularity's rows) as columns, and their plot in the report");
+    command->add_flag("--lod", batch.lod,
+                      "Also each mesh's cluster LOD hierarchy (lod's levels and its cut at 1 pixel) as columns, and efficiency by level in the report");
     command->add_flag_callback("--no-per-view", [&batch] { batch.detail.views = false; }, "Leave the per-view tables out of the JSON");
     command->add_flag_callback("--no-per-cluster", [&batch] { batch.detail.clusters = false; },
                                "Leave the per-cluster tables out of the JSON");
@@ -339,6 +342,7 @@ BatchCommands addBatchCommands(CLI::App& app, BatchOptions& batch, BatchWorkerOp
     addCullingOptions(*hidden, worker.run);
     hidden->add_option("--compare", worker.compare);
     hidden->add_flag("--granularity", worker.granularity);
+    hidden->add_flag("--lod", worker.lod);
     hidden->add_flag_callback("--no-per-view", [&worker] { worker.detail.views = false; });
     hidden->add_flag_callback("--no-per-cluster", [&worker] { worker.detail.clusters = false; });
     hidden->add_option("--memory-limit", worker.memoryLimitMiB);
@@ -348,7 +352,7 @@ BatchCommands addBatchCommands(CLI::App& app, BatchOptions& batch, BatchWorkerOp
 int runBatch(const BatchOptions& options) {
     const BatchConfig config =
         batchConfig(options.run.toSettings(), options.compareMeshopt ? kMeshoptPipeline : options.compare, options.detail,
-                    options.granularity);
+                    options.granularity, options.lod);
     const fs::path folder = options.output;
     makeOutputFolder(folder);
     const int lock = lockFolder(folder);

@@ -178,11 +178,11 @@ std::string contentHash(const std::string& path) {
     return readable ? hex(canonical.digest, sizeof canonical.digest) : std::string();
 }
 
-std::string settingsHash(const Settings& settings, const std::string& compare, const StatisticsDetail& detail, bool granularity) {
+std::string settingsHash(const Settings& settings, const std::string& compare, const StatisticsDetail& detail, const std::string& extras) {
     std::string text = settingsToJson(settings).dump();
     if (!settings.clusterFile.empty()) text += "\ncluster file " + contentHash(settings.clusterFile);
     text += "\ncompare " + compare + "\nviews " + (detail.views ? "1" : "0") + " clusters " + (detail.clusters ? "1" : "0");
-    if (granularity) text += "\ngranularity";  // batches without it keep their hashes
+    if (!extras.empty()) text += "\nextras " + extras;  // batches without them keep their hashes
     text += "\nversion " + std::string(conescopeVersion());
     return textHash(text, 8);
 }

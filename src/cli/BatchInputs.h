@@ -47,9 +47,9 @@ std::string batchJsonName(const std::string& canonicalPath, const std::string& s
 std::string contentHash(const std::string& path);
 
 // A hash of everything besides the mesh that decides a row and its files: the settings (and a cluster
-// file's bytes), the comparison asked for, the tables the JSON keeps, whether the finer records were
-// asked for (--granularity) and the program's version.
+// file's bytes), the comparison asked for, the tables the JSON keeps, the columns added on request
+// (`extras`: "granularity", "lod", both or none) and the program's version.
 std::string settingsHash(const Settings& settings, const std::string& compare, const StatisticsDetail& detail,
-                         bool granularity = false);
+                         const std::string& extras = {});
 
 }  // namespace conescope::cli

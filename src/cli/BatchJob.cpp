@@ -32,11 +32,13 @@ void runStatsJob(const BatchConfig& config, const BatchJob& job, const Mesh& mes
         writeStatisticsFile(job.json, report.run, config.detail);
         addRunCells(row, report.run, runWarnings(report.run));
         addGranularityCells(row, report);
-        return;
+    } else {
+        const RunStatistics run = runStatistics(mesh, withClusterIds(config.settings), fileNameOf(job.path));
+        writeStatisticsFile(job.json, run, config.detail);
+        addRunCells(row, run, runWarnings(run));
     }
-    const RunStatistics run = runStatistics(mesh, withClusterIds(config.settings), fileNameOf(job.path));
-    writeStatisticsFile(job.json, run, config.detail);
-    addRunCells(row, run, runWarnings(run));
+    // The hierarchy over the same partition as its level 0, at 1 pixel (1080 pixels high, 60 degrees).
+    if (config.lod) addLodCells(row, lodOfMesh(mesh, fileNameOf(job.path), withClusterIds(config.settings), LodThreshold{}));
 }
 
 // The mesh as `compare --a COMPARE` runs it: B is the batch's settings, so its side is the row's
@@ -63,10 +65,18 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 
 }  // namespace
 
-BatchConfig batchConfig(const Settings& settings, const std::string& compare, const StatisticsDetail& detail, bool granularity) {
+BatchConfig batchConfig(const Settings& settings, const std::string& compare, const StatisticsDetail& detail, bool granularity,
+                        bool lod) {
     parseConfiguration(compare, settings);
     if (granularity && !compare.empty()) throw std::invalid_argument("--granularity runs without a comparison (--compare, --compare-meshopt)");
-    return {settings, compare, detail, granularity};
+    if (lod && !compare.empty()) throw std::invalid_argument("--lod runs without a comparison (--compare, --compare-meshopt)");
+    return {settings, compare, detail, granularity, lod};
+}
+
+std::string extraColumns(const BatchConfig& config) {
+    std::string extras = config.granularity ? "granularity" : "";
+    if (config.lod) extras += extras.empty() ? "lod" : " lod";
+    return extras;
 }
 
 BatchRow runBatchJob(const BatchConfig& config, const BatchJob& job, const std::function<void()>& testFault) {
@@ -104,7 +114,7 @@ BatchRow batchRowStart(const BatchMesh& mesh, const BatchConfig& config) {
     row["json"] = mesh.json;
     if (!config.compare.empty()) row["compare_json"] = batchJsonName(mesh.canonical, ".compare");
     row["content_hash"] = contentHash(mesh.path);
-    row["settings_hash"] = settingsHash(config.settings, config.compare, config.detail, config.granularity);
+    row["settings_hash"] = settingsHash(config.settings, config.compare, config.detail, extraColumns(config));
     addSettingCells(row, config.settings);
     row["a_options"] = config.compare;
     return row;

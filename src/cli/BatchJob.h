@@ -17,12 +17,16 @@ struct BatchConfig {
     std::string compare;        // "K=V,...": A of a comparison against the settings (B), or empty
     StatisticsDetail detail;    // the tables the statistics JSON keeps
     bool granularity = false;   // also the granularity report's finer records (without a comparison)
+    bool lod = false;           // also a cluster LOD hierarchy's levels and cut (at 1 pixel)
 };
+
+// The columns a batch adds on request, for its settings hash: "granularity", "lod", both or "".
+std::string extraColumns(const BatchConfig& config);
 
 // The configuration the option text makes: parseConfiguration checks `compare` before any mesh is
 // read. Throws std::invalid_argument.
 BatchConfig batchConfig(const Settings& settings, const std::string& compare, const StatisticsDetail& detail,
-                        bool granularity = false);
+                        bool granularity = false, bool lod = false);
 
 // Where a mesh's files go: absolute paths, empty = not written.
 struct BatchJob {

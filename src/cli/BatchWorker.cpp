@@ -68,7 +68,7 @@ void writeAll(int fd, const std::string& text) {
 }  // namespace
 
 int runBatchWorker(const BatchWorkerOptions& options) {
-    const BatchConfig config = batchConfig(options.run.toSettings(), options.compare, options.detail, options.granularity);
+    const BatchConfig config = batchConfig(options.run.toSettings(), options.compare, options.detail, options.granularity, options.lod);
     // Replies have a descriptor of their own; whatever a library prints to stdout goes to stderr.
     const int replies = ::dup(STDOUT_FILENO);
     ::dup2(STDERR_FILENO, STDOUT_FILENO);

@@ -158,10 +158,7 @@ GranularityReport measureGranularity(const PreparedMesh& prepared, const Cluster
 
 GranularityReport runGranularity(const Mesh& mesh, const Settings& settings, const std::string& meshName,
                                  const ProgressCallback& progress) {
-    validateMesh(mesh);
-    const std::shared_ptr<const Mesh> borrowed(&mesh, [](const Mesh*) {});  // the stages outlive no call
-    PreparedMesh prepared = prepareMesh(borrowed, meshName, settings.fixWinding, progressWithin(progress, 0.0, 0.05));
-    prepared.name = meshName;
+    const PreparedMesh prepared = prepareBorrowed(mesh, meshName, settings.fixWinding, progressWithin(progress, 0.0, 0.05));
     const ClusterSet clusters = buildClusters(prepared, settings, nullptr, progressWithin(progress, 0.05, 0.15));
     return measureGranularity(prepared, clusters, settings, progressWithin(progress, 0.15, 1.0));
 }

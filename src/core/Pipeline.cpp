@@ -328,6 +328,13 @@ RunStatistics measureRun(const PreparedMesh& prepared, const ClusterSet& cluster
     return run;
 }
 
+PreparedMesh prepareBorrowed(const Mesh& mesh, const std::string& meshName, bool fixWinding, const ProgressCallback& progress) {
+    validateMesh(mesh);
+    PreparedMesh prepared = prepareMesh(std::shared_ptr<const Mesh>(&mesh, [](const Mesh*) {}), meshName, fixWinding, progress);
+    prepared.name = meshName;
+    return prepared;
+}
+
 RunStatistics runStatistics(const Mesh& mesh, const Settings& settings, const std::string& meshName,
                             const ProgressCallback& progress) {
     validateMesh(mesh);

@@ -71,6 +71,10 @@ bool boundsChanged(const Settings& before, const Settings& after);
 PreparedMesh prepareMesh(std::shared_ptr<const Mesh> mesh, const std::string& path, bool fixWinding,
                          const ProgressCallback& progress = {});
 
+// prepareMesh of a mesh the caller keeps alive while the stages are used (borrowed, not copied),
+// after validateMesh, its statistics named `meshName`: what the whole runs from a mesh start with.
+PreparedMesh prepareBorrowed(const Mesh& mesh, const std::string& meshName, bool fixWinding, const ProgressCallback& progress = {});
+
 // Partition (buildPartition) then bounds for the displayed cone (computeClusterBounds). Reuses
 // `previous` partition when only the cone or sphere changed. `meshlets`: the builder's start
 // when it was started beforehand (meshoptStartInBackground).

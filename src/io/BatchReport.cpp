@@ -18,9 +18,9 @@ const std::vector<std::string>& reportColumns() {
             "cull_fraction", "oracle_fraction", "mean_sphere_radius", "seconds", "warnings", "a_clusters", "a_efficiency",
             "triangles_culled_only_a", "triangles_culled_only_b", "uncullable_clusters", "uncullable_share", "note",
             "bytes_per_cluster", "culled_share"};
-        // batch --granularity's finer records, for the plot of culled share against bytes.
+        // batch --granularity's finer records and --lod's levels, for their plots.
         for (const std::string& column : batchColumns())
-            if (column.rfind("cones_", 0) == 0 || column.rfind("triangle_", 0) == 0) shown.push_back(column);
+            if (column.rfind("cones_", 0) == 0 || column.rfind("triangle_", 0) == 0 || column.rfind("lod_", 0) == 0) shown.push_back(column);
         return shown;
     }();
     return columns;

@@ -69,6 +69,8 @@ const numeric = new Set(["triangles", "clusters", "efficiency", "back_facing_tri
 const granularityRecords = ["cones_2", "cones_2_compact", "cones_4", "cones_4_compact", "cones_8", "cones_8_compact", "triangle"];
 for (const record of granularityRecords)
   for (const key of ["efficiency", "culled_share", "bytes_per_cluster", "tests_per_view"]) numeric.add(`${record}_${key}`);
+// batch --lod's columns: every one a number.
+for (const column of data.columns) if (column.startsWith("lod_")) numeric.add(column);
 const rows = data.rows.map((cells) => {
   const row = {};
   data.columns.forEach((column, k) => { row[column] = numeric.has(column) && cells[k] !== "" ? Number(cells[k]) : cells[k]; });
@@ -226,6 +228,35 @@ function granularityPlot() {
     points, (point) => point.bytes, (point) => point.share, {log: true, labels: true, xLabel: "bytes per cluster", yLabel: "culled share"});
 }
 
+// With --lod: each level's efficiency and the cut's, averaged over the meshes that have the level
+// (each mesh weighs the same), as bars: how much cone culling each level of the hierarchy keeps.
+function lodBars() {
+  const measured = ok.filter((row) => row.lod_levels !== "" && row.lod_levels !== undefined && row.lod_levels > 0);
+  if (measured.length === 0) return null;
+  const bars = [];
+  for (let level = 0; data.columns.includes(`lod_level_${level}_efficiency`); ++level) {
+    const having = measured.filter((row) => row[`lod_level_${level}_efficiency`] !== "");
+    if (having.length === 0) break;
+    bars.push({label: `level ${level} (${count(having.length)})`, value: sum(having, `lod_level_${level}_efficiency`) / having.length});
+  }
+  bars.push({label: "the cut at 1 px", value: sum(measured, "lod_cut_efficiency") / measured.length});
+  const width = 480, barHeight = 14, left = 150, right = 60, top = 8;
+  const figure = element("figure", {id: "plot-lod"});
+  figure.append(element("figcaption", {}, `Efficiency by LOD level (mean over ${count(measured.length)} meshes; meshes with the level in brackets)`));
+  const height = top + bars.length * (barHeight + 4) + 14;
+  const svg = svgElement("svg", {width: width, height: height, viewBox: `0 0 ${width} ${height}`});
+  bars.forEach((bar, k) => {
+    const y = top + k * (barHeight + 4);
+    svg.append(svgElement("text", {x: left - 6, y: y + barHeight - 3, "text-anchor": "end"}, bar.label));
+    const rect = svgElement("rect", {class: "bar culled", x: left, y: y, height: barHeight, width: bar.value * (width - left - right)});
+    rect.append(svgElement("title", {}, `${bar.label}: ${percent(bar.value)}`));
+    svg.append(rect);
+    svg.append(svgElement("text", {x: left + bar.value * (width - left - right) + 4, y: y + barHeight - 3}, percent(bar.value)));
+  });
+  figure.append(svg);
+  return figure;
+}
+
 function drawPlots() {
   const plots = document.getElementById("plots");
   if (ok.length === 0) { plots.append(element("p", {class: "muted"}, "No mesh ran.")); return; }
@@ -238,6 +269,8 @@ function drawPlots() {
     plots.append(element("p", {class: "muted", id: "plot-compare-missing"}, "Run the batch with --compare-meshopt to plot against meshoptimizer's pipeline."));
   const granularity = granularityPlot();
   if (granularity) plots.append(granularity);
+  const lod = lodBars();
+  if (lod) plots.append(lod);
   const lost = (row) => row.test_loss_triangles + row.partition_loss_triangles;
   plots.append(lossBars(ok.slice().sort((a, b) => lost(b) - lost(a)).slice(0, 30)));
 }

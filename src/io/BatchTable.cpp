@@ -38,6 +38,14 @@ std::string columnPrefix(std::string record) {
     return record;
 }
 
+// A number in a cell, read back to the same double.
+std::string text(double value) {
+    std::ostringstream out;
+    out.precision(17);
+    out << value;
+    return out.str();
+}
+
 // The stats CSV's totals table of a run: its header and its rows, each split into cells.
 std::vector<std::vector<std::string>> totalsTable(const RunStatistics& run) {
     std::ostringstream text;
@@ -72,6 +80,10 @@ std::vector<std::string> makeColumns() {
     columns.push_back("culled_share");
     for (const std::string& record : granularityRecords())
         for (const std::string& key : granularityKeys) columns.push_back(record + "_" + key);
+    for (const char* column : {"lod_levels", "lod_false_culls", "lod_cut_triangles", "lod_cut_efficiency", "lod_cut_false_culls"})
+        columns.push_back(column);
+    for (size_t level = 0; level < kLodLevelColumns; ++level)
+        for (const char* key : {"triangles", "efficiency"}) columns.push_back("lod_level_" + std::to_string(level) + "_" + key);
     return columns;
 }
 
@@ -132,12 +144,6 @@ void addComparisonCells(BatchRow& row, const ComparedRuns& runs) {
 }
 
 void addGranularityCells(BatchRow& row, const GranularityReport& report) {
-    const auto text = [](double value) {
-        std::ostringstream out;
-        out.precision(17);
-        out << value;
-        return out.str();
-    };
     row["culled_share"] = text(report.rows.front().culledShare);
     for (const GranularityRow& record : report.rows) {
         const std::string prefix = columnPrefix(record.record);
@@ -147,6 +153,22 @@ void addGranularityCells(BatchRow& row, const GranularityReport& report) {
         row[prefix + "_bytes_per_cluster"] = std::to_string(record.bytesPerCluster);
         row[prefix + "_tests_per_view"] = text(record.testsPerView);
     }
+}
+
+void addLodCells(BatchRow& row, const LodStatistics& lod) {
+    size_t falseCulls = lod.cut.falseCulls;
+    for (const LodLevelStatistics& level : lod.levels) {
+        falseCulls += level.culling.falseCulls;
+        if (level.level >= kLodLevelColumns) continue;
+        const std::string prefix = "lod_level_" + std::to_string(level.level) + "_";
+        row[prefix + "triangles"] = std::to_string(level.triangles);
+        row[prefix + "efficiency"] = text(level.culling.efficiency);
+    }
+    row["lod_levels"] = std::to_string(lod.levels.size());
+    row["lod_false_culls"] = std::to_string(falseCulls);
+    row["lod_cut_triangles"] = text(lod.cut.meanTriangles);
+    row["lod_cut_efficiency"] = text(lod.cut.efficiency);
+    row["lod_cut_false_culls"] = std::to_string(lod.cut.falseCulls);
 }
 
 std::string batchCsvHeader() { return joined(batchColumns(), ",") + "\n"; }

@@ -10,6 +10,7 @@
 
 #include "core/Comparison.h"
 #include "core/Granularity.h"
+#include "core/lod/LodCut.h"
 #include "core/Statistics.h"
 
 namespace conescope {
@@ -35,6 +36,12 @@ void addComparisonCells(BatchRow& row, const ComparedRuns& runs);
 // the granularity report (cones-2 ... triangle, as cones_2 ... triangle), RECORD_efficiency,
 // RECORD_culled_share, RECORD_bytes_per_cluster and RECORD_tests_per_view.
 void addGranularityCells(BatchRow& row, const GranularityReport& report);
+
+// With `batch --lod`: lod_levels, lod_false_culls (every level's and the cut's), per level L below
+// kLodLevelColumns lod_level_L_triangles and lod_level_L_efficiency, and the cut's lod_cut_triangles
+// (mean per view), lod_cut_efficiency and lod_cut_false_culls.
+constexpr size_t kLodLevelColumns = 8;
+void addLodCells(BatchRow& row, const LodStatistics& lod);
 
 // The header line and a row's line, each ending in '\n'; cells with a comma or a quote are quoted.
 std::string batchCsvHeader();

@@ -4,6 +4,8 @@
 // command resumes.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <signal.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -152,6 +154,36 @@ TEST(CliBatch, MostlyUncullableMeshesAreNoted) {
     EXPECT_EQ(torus.at("note"), "");
     EXPECT_LT(std::stod(torus.at("uncullable_share")), 0.5);
     EXPECT_NE(readTextFile(out + "/report.html").find("uncullable-note"), std::string::npos);
+}
+
+// --granularity and --lod add their columns: level 0 and the one-cone record are the row's own
+// (stats') numbers, the finer records and the levels are `granularity`'s and `lod`'s; without them
+// the columns stay empty, and a comparison refuses them.
+TEST(CliBatch, GranularityAndLodColumnsAreTheirCommandsNumbers) {
+    ScratchDirectory scratch;
+    const std::string out = scratch.file("out");
+    const TimedRun batch = runBatch({dataset("elephant.off"), dataset("torus.off"), "-o", out, "--views", "8", "--granularity", "--lod"});
+    ASSERT_EQ(batch.run.exitCode, 0) << batch.run.err;
+    for (const Row& row : readResults(out + "/results.csv")) {
+        EXPECT_EQ(std::stod(row.at("lod_level_0_efficiency")), std::stod(row.at("efficiency"))) << row.at("file");
+        EXPECT_EQ(row.at("lod_false_culls"), "0");
+        const nlohmann::json lod = clitest::runJsonCommand("lod", {row.at("file"), "--views", "8", "--format", "json", "--no-per-view"});
+        EXPECT_EQ(std::stoul(row.at("lod_levels")), lod["levels"].size());
+        EXPECT_EQ(std::stod(row.at("lod_cut_efficiency")), lod["cut"]["efficiency"].get<double>());
+        EXPECT_EQ(std::stod(row.at("lod_level_1_efficiency")), lod["levels"][1]["efficiency"].get<double>());
+        const nlohmann::json granularity = clitest::runJsonCommand("granularity", {row.at("file"), "--views", "8", "--test", "octagon", "--format", "json"});
+        for (const nlohmann::json& record : granularity["rows"]) {
+            std::string prefix = record["record"];
+            if (prefix.rfind("cones-", 0) != 0 && prefix != "triangle") continue;
+            std::replace(prefix.begin(), prefix.end(), '-', '_');
+            EXPECT_EQ(std::stod(row.at(prefix + "_culled_share")), record["culled_share"].get<double>()) << prefix;
+            EXPECT_EQ(std::stoul(row.at(prefix + "_bytes_per_cluster")), record["bytes_per_cluster"].get<size_t>()) << prefix;
+        }
+    }
+    const std::string plain = scratch.file("plain");
+    ASSERT_EQ(runBatch({dataset("torus.off"), "-o", plain, "--views", "4"}).run.exitCode, 0);
+    EXPECT_EQ(readResults(plain + "/results.csv").front().at("lod_levels"), "");
+    EXPECT_EQ(runBatch({dataset("torus.off"), "-o", scratch.file("refused"), "--lod", "--compare-meshopt"}).run.exitCode, 2);
 }
 
 TEST(CliBatch, ASecondRunSkipsEveryMeshAndRunsAChangedOneAgain) {

@@ -99,12 +99,12 @@ TEST(BatchReport, RendersPlotsTablesAndTotalsInHeadlessChromium) {
 
 // The uncullable note counts the meshes whose rows carry a note, and `--granularity` adds the plot
 // of culled share against bytes: the batch's own record, 2, 4 and 8 cones (float and compact) and
-// per-triangle culling, each a point.
+// per-triangle culling, each a point; `--lod` the bars of efficiency by level.
 TEST(BatchReport, GranularityPlotAndTheUncullableNoteFollowTheRows) {
     ScratchDirectory scratch;
     clitest::copyBundledDatasets(scratch.path() / "library");
     const std::string out = scratch.file("out");
-    const clitest::CliRun batch = clitest::runCli({"batch", scratch.file("library"), "-o", out, "--views", "8", "--granularity", "--quiet"});
+    const clitest::CliRun batch = clitest::runCli({"batch", scratch.file("library"), "-o", out, "--views", "8", "--granularity", "--lod", "--quiet"});
     ASSERT_EQ(batch.exitCode, 0) << batch.err;
     const std::vector<std::map<std::string, std::string>> rows = readResults(out + "/results.csv");
     size_t noted = 0;
@@ -124,6 +124,14 @@ TEST(BatchReport, GranularityPlotAndTheUncullableNoteFollowTheRows) {
     EXPECT_EQ(occurrences(plot, std::regex("<circle class=\"point\"")), 8u);
     EXPECT_NE(plot.find(">4 compact<"), std::string::npos);
     EXPECT_NE(plot.find(">per triangle<"), std::string::npos);
+    // --lod: a bar per level some mesh has, and the cut's.
+    size_t levels = 0;
+    for (const auto& row : rows) levels = std::max<size_t>(levels, std::stoul(row.at("lod_levels")));
+    const size_t lodAt = dom.find("id=\"plot-lod\"");
+    ASSERT_NE(lodAt, std::string::npos);
+    const std::string lod = dom.substr(lodAt, dom.find("</figure>", lodAt) - lodAt);
+    EXPECT_EQ(occurrences(lod, std::regex("<rect class=\"bar culled\"")), std::min<size_t>(levels, 8) + 1);
+    EXPECT_NE(lod.find(">the cut at 1 px<"), std::string::npos);
 }
 
 }  // namespace

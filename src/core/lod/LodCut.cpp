@@ -147,4 +147,11 @@ LodStatistics measureHierarchy(const ClusterHierarchy& hierarchy, const Settings
     return statistics;
 }
 
+LodStatistics lodOfMesh(const Mesh& mesh, const std::string& meshName, const Settings& settings, const LodThreshold& threshold,
+                        const LodBuildOptions& options, const ProgressCallback& progress) {
+    const PreparedMesh prepared = prepareBorrowed(mesh, meshName, settings.fixWinding, progressWithin(progress, 0.0, 0.1));
+    const ClusterHierarchy hierarchy = buildClusterHierarchy(prepared, settings, options, progressWithin(progress, 0.1, 0.6));
+    return measureHierarchy(hierarchy, settings, threshold, progressWithin(progress, 0.6, 1.0));
+}
+
 }  // namespace conescope

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "ClusterHierarchy.h"
@@ -71,5 +72,10 @@ struct LodStatistics {
 // cone and test. Cancellable between views.
 LodStatistics measureHierarchy(const ClusterHierarchy& hierarchy, const Settings& settings, const LodThreshold& threshold,
                                const ProgressCallback& progress = {});
+
+// The whole job from a mesh, as `conescope-cli lod` runs it without a hierarchy file: prepareMesh,
+// buildClusterHierarchy, measureHierarchy. What batch --lod computes per mesh.
+LodStatistics lodOfMesh(const Mesh& mesh, const std::string& meshName, const Settings& settings, const LodThreshold& threshold,
+                        const LodBuildOptions& options = {}, const ProgressCallback& progress = {});
 
 }  // namespace conescope
