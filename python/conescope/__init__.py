@@ -35,7 +35,7 @@ from ._errors import ArgumentTypeError, BatchError, Error, MeshDataError, MeshRe
 from ._errors import translated as _translated
 from ._arrays import mesh_arrays as _mesh_arrays
 
-__all__ = ["stats", "stats_arrays", "clusters", "clusters_arrays", "compare", "compare_arrays", "batch",
+__all__ = ["stats", "stats_arrays", "clusters", "clusters_arrays", "compare", "compare_arrays", "batch", "read_results",
            "Error", "MeshReadError", "SettingsError", "MeshDataError", "ArgumentTypeError", "BatchError",
            "extensions", "__version__"]
 
@@ -182,4 +182,4 @@ def compare_arrays(vertices, faces, a, b=None, cluster_ids=None, name="arrays", 
                 *_comparison(a, b, pairs), pairs, *_flags(per_view, per_cluster), value_error=MeshDataError)
 
 
-from ._batch import batch  # noqa: E402  (uses the helpers above)
+from ._batch import batch, read_results  # noqa: E402  (uses the helpers above)

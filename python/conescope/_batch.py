@@ -20,11 +20,54 @@ def _cli():
     return os.environ.get("CONESCOPE_CLI", packaged if os.access(packaged, os.X_OK) else _conescope.cli_path)
 
 
-def _read_results(text_or_path):
+# The one table of results.csv's column types (docs/statistics-schema.md): a column keeps its dtype
+# whatever the rows hold, so an error row (empty numbers) or an empty text column changes nothing and
+# batches concatenate or go to Parquet unchanged. Counts are nullable integers, texts nullable strings.
+_COUNTS = ("clusters views clusters_culled triangles_culled back_facing_triangles missed_clusters false_culls "
+           "uncullable_clusters open_edges non_manifold_edges inconsistent_edges duplicate_faces double_sided_faces "
+           "degenerate_faces components orientable winding_fixed_faces inside_out_components test_loss_triangles "
+           "partition_loss_triangles engine_record quantisation_loss_triangles vertices faces triangles "
+           "triangles_culled_only_a triangles_culled_only_b triangles_culled_both setting_max_vertices "
+           "setting_max_triangles setting_clusters_target setting_views")
+_REALS = ("efficiency expected_efficiency ns_per_cluster mean_view_efficiency mean_cluster_triangles "
+          "mean_cluster_vertices mean_sphere_radius max_sphere_radius cull_fraction oracle_fraction bytes_per_cluster "
+          "uncullable_share seconds setting_normal_weight setting_cone_weight setting_distance")
+_FLAGS = "setting_orthographic setting_fix_winding"
+COLUMN_DTYPES = {**{name: "Int64" for name in _COUNTS.split()}, **{name: "float64" for name in _REALS.split()},
+                 **{name: "boolean" for name in _FLAGS.split()}}
+
+
+def column_dtype(name):
+    """The dtype of a results.csv column: from the table (A's totals `a_X` as X), else a string."""
+    if name in COLUMN_DTYPES:
+        return COLUMN_DTYPES[name]
+    if name.startswith("a_") and name[2:] in COLUMN_DTYPES:
+        return COLUMN_DTYPES[name[2:]]
+    return "string"
+
+
+def with_fixed_dtypes(frame):
+    """The frame with every column in its fixed dtype."""
+    return frame.astype({name: column_dtype(name) for name in frame.columns})
+
+
+def read_results(path_or_buffer):
+    """A batch's results.csv as the DataFrame conescope.batch returns: exact numbers, fixed dtypes."""
     import pandas as pd
     # round_trip: the shortest texts the CSV holds read back to the very numbers written (pandas's
-    # default parser may be one unit in the last place off).
-    return pd.read_csv(text_or_path, float_precision="round_trip")
+    # default parser may be one unit in the last place off). Texts are read as text ("1" stays "1").
+    frame = pd.read_csv(path_or_buffer, float_precision="round_trip",
+                        dtype={name: str for name in _text_columns(path_or_buffer)})
+    return with_fixed_dtypes(frame)
+
+
+def _text_columns(path_or_buffer):
+    if hasattr(path_or_buffer, "getvalue"):
+        header = path_or_buffer.getvalue().split("\n", 1)[0]
+    else:
+        with open(path_or_buffer, encoding="utf-8") as file:
+            header = file.readline()
+    return [name for name in header.strip().split(",") if column_dtype(name) == "string"]
 
 
 def _local_batch(paths, output_dir, pairs, compare, per_view, per_cluster, jobs, shard, timeout, memory_limit):
@@ -51,7 +94,7 @@ def _local_batch(paths, output_dir, pairs, compare, per_view, per_cluster, jobs,
     # 0: every mesh ok; 3: finished with error rows, which the table holds.
     if process.returncode not in (0, 3):
         raise BatchError(errors.strip() or f"conescope-cli batch ended with exit code {process.returncode}")
-    return _read_results(os.path.join(output_dir, "results.csv"))
+    return read_results(os.path.join(output_dir, "results.csv"))
 
 
 def _row_on_worker(path, folder, pairs, compare, per_view, per_cluster):
@@ -79,7 +122,7 @@ def _dask_batch(client, paths, output_dir, pairs, compare, per_view, per_cluster
             rows.append(_conescope.error_row(mesh, "crash", message, pairs, compare, per_view, per_cluster))
     if folder:
         _conescope.write_results(folder, rows, compare)
-    return _read_results(io.StringIO(_conescope.results_csv(rows)))
+    return read_results(io.StringIO(_conescope.results_csv(rows)))
 
 
 def batch(paths, client=None, output_dir=None, compare=None, compare_meshopt=False, per_view=True, per_cluster=True,
@@ -121,5 +164,5 @@ def batch(paths, client=None, output_dir=None, compare=None, compare_meshopt=Fal
         with tempfile.TemporaryDirectory(prefix="conescope-batch-") as folder:
             frame = _local_batch(paths, folder, pairs, compare, per_view, per_cluster, jobs, shard, timeout, memory_limit)
     if output_dir is None:
-        frame[["json", "compare_json"]] = float("nan")
-    return frame
+        frame[["json", "compare_json"]] = None
+    return with_fixed_dtypes(frame)

@@ -1,5 +1,7 @@
 """conescope.batch without Dask: the command line's batch, its results.csv as a DataFrame."""
 
+import io
+
 import pandas as pd
 import pytest
 
@@ -11,7 +13,7 @@ def test_batch_rows_are_the_cli_numbers(library, tmp_path):
     out = tmp_path / "out"
     frame = conescope.batch([library], output_dir=out, views=16, jobs=2)
     assert len(frame) == 7
-    assert frame.equals(pd.read_csv(out / "results.csv", float_precision="round_trip"))
+    assert frame.equals(conescope.read_results(out / "results.csv"))
     broken = frame[frame.file.str.endswith("broken.off")].iloc[0]
     assert broken.status == "error" and broken.error_kind == "read"
     assert broken.error == cli_error("stats", "-q", broken.file)
@@ -49,3 +51,20 @@ def test_batch_settings_are_checked_before_any_mesh_runs(library):
         conescope.batch(library, views=0)
     with pytest.raises(ValueError, match="unknown option 'colour' in a configuration"):
         conescope.batch(library, compare="colour=red")
+
+
+def test_dtypes_do_not_change_with_error_rows_and_survive_concatenation(library, tmp_path):
+    clean = [str(path) for path in sorted(library.glob("*.off")) if path.name != "broken.off"][:1]
+    with_error = clean + [str(library / "broken.off")]
+    good = conescope.batch(clean, views=8)
+    mixed = conescope.batch(with_error, views=8)
+    errors_only = conescope.batch([str(library / "broken.off")], views=8)
+    assert (mixed.status == "error").sum() == 1 and (good.status == "ok").all()
+    assert good.dtypes.equals(mixed.dtypes) and good.dtypes.equals(errors_only.dtypes)
+    assert str(good.dtypes["triangles"]) == "Int64" and str(good.dtypes["efficiency"]) == "float64"
+    assert str(good.dtypes["error"]) == "string" and pd.isna(good.error.iloc[0])
+    assert str(good.dtypes["setting_orthographic"]) == "boolean"
+    assert pd.isna(errors_only.triangles.iloc[0])  # <NA>, not a float NaN turning the column into floats
+    joined = pd.concat([good, mixed, errors_only], ignore_index=True)
+    assert joined.dtypes.equals(good.dtypes) and len(joined) == 4
+    assert conescope.read_results(io.StringIO(joined.to_csv(index=False))).equals(joined)

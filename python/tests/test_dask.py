@@ -33,7 +33,7 @@ def test_dask_rows_are_the_command_lines(library, client, tmp_path):
         assert row.efficiency == document["results"][0]["efficiency"]
         assert row.clusters == document["clusters"]
         assert without_timings(json.load(open(out / row.json))) == without_timings(document)
-    assert pd.read_csv(out / "results.csv", float_precision="round_trip").drop(columns=TIMINGS).equals(frame.drop(columns=TIMINGS))
+    assert conescope.read_results(out / "results.csv").drop(columns=TIMINGS).equals(frame.drop(columns=TIMINGS))
     report = (out / "report.html").read_text()
     assert all(file in report for file in frame.file)
 

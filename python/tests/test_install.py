@@ -44,6 +44,9 @@ def test_pip_install_in_a_fresh_venv_gives_the_cli_documents(tmp_path):
     assert run.returncode == 0, run.stderr
     result = json.loads(run.stdout)
     assert Path(result["file"]).is_relative_to(venv)
+    installed = Path(result["file"]).parent
+    assert (installed / "py.typed").is_file()  # type checkers read the stub of the installed package
+    assert (installed / "__init__.pyi").read_text() == (SOURCE / "python" / "conescope" / "__init__.pyi").read_text()
     assert Path(result["cli"]).is_relative_to(venv)  # batch runs the installed conescope-cli
     assert result["version"] == subprocess.run([result["cli"], "--version"], capture_output=True,
                                                text=True).stdout.split()[-1]
