@@ -31,10 +31,16 @@ _COUNTS = ("clusters views clusters_culled triangles_culled back_facing_triangle
            "setting_max_triangles setting_clusters_target setting_views")
 _REALS = ("efficiency expected_efficiency ns_per_cluster mean_view_efficiency mean_cluster_triangles "
           "mean_cluster_vertices mean_sphere_radius max_sphere_radius cull_fraction oracle_fraction bytes_per_cluster "
-          "uncullable_share seconds setting_normal_weight setting_cone_weight setting_distance")
+          "uncullable_share seconds setting_normal_weight setting_cone_weight setting_distance culled_share")
 _FLAGS = "setting_orthographic setting_fix_winding"
 COLUMN_DTYPES = {**{name: "Int64" for name in _COUNTS.split()}, **{name: "float64" for name in _REALS.split()},
                  **{name: "boolean" for name in _FLAGS.split()}}
+
+
+# The columns of `batch --granularity` (cones_K..., triangle_...) and `--lod` (lod_...): counts by
+# their ending, every other one a real number.
+_EXTRA_PREFIXES = ("cones_", "triangle_", "lod_")
+_EXTRA_COUNTS = ("_bytes_per_cluster", "_levels", "_false_culls", "_triangles")
 
 
 def column_dtype(name):
@@ -43,6 +49,9 @@ def column_dtype(name):
         return COLUMN_DTYPES[name]
     if name.startswith("a_") and name[2:] in COLUMN_DTYPES:
         return COLUMN_DTYPES[name[2:]]
+    if name.startswith(_EXTRA_PREFIXES):
+        # The cut's triangles are a mean per view.
+        return "Int64" if name.endswith(_EXTRA_COUNTS) and name != "lod_cut_triangles" else "float64"
     return "string"
 
 

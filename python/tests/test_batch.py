@@ -6,7 +6,7 @@ import pandas as pd
 import pytest
 
 import conescope
-from conftest import cli_error, cli_json, without_timings
+from conftest import DATASETS, cli_error, cli_json, run_cli, without_timings
 
 
 def test_batch_rows_are_the_cli_numbers(library, tmp_path):
@@ -68,3 +68,20 @@ def test_dtypes_do_not_change_with_error_rows_and_survive_concatenation(library,
     joined = pd.concat([good, mixed, errors_only], ignore_index=True)
     assert joined.dtypes.equals(good.dtypes) and len(joined) == 4
     assert conescope.read_results(io.StringIO(joined.to_csv(index=False))).equals(joined)
+
+
+def test_granularity_and_lod_columns_read_as_numbers(tmp_path):
+    """The columns `batch --granularity --lod` adds are numbers in the frame, counts as Int64."""
+    out = tmp_path / "out"
+    run_cli("batch", DATASETS / "torus.off", DATASETS / "cube.off", "-o", out, "--views", "4", "--granularity", "--lod", "--quiet")
+    frame = conescope.read_results(out / "results.csv")
+    extra = [name for name in frame.columns if name.startswith(("cones_", "triangle_", "lod_")) or name == "culled_share"]
+    assert len(extra) > 40
+    for name in extra:
+        assert str(frame[name].dtype) in ("Int64", "float64"), name
+        assert frame[name].notna().all() or name.startswith("lod_level_"), name
+    assert str(frame["cones_4_compact_bytes_per_cluster"].dtype) == "Int64"
+    assert str(frame["lod_cut_triangles"].dtype) == "float64"
+    torus = frame[frame["file"].str.endswith("torus.off")].iloc[0]
+    assert torus["lod_level_0_efficiency"] == torus["efficiency"]
+
