@@ -16,11 +16,15 @@
 #include "cli/BatchJob.h"
 #include "cli/MeshRuns.h"
 #include "cli/OutputFiles.h"
+#include "core/Granularity.h"
 #include "core/SettingsSchema.h"
+#include "core/lod/LodCut.h"
 #include "io/BatchReport.h"
 #include "io/BatchTable.h"
 #include "io/ClusterIdFile.h"
 #include "io/ComparisonIO.h"
+#include "io/GranularityIO.h"
+#include "io/LodIO.h"
 #include "io/ClusterFiles.h"
 #include "io/MeshReader.h"
 #include "io/StatisticsIO.h"
@@ -152,6 +156,25 @@ Document clustersDocument(const Mesh& mesh, const std::string& name, const Setti
     return {cli::clusterTableJson(run, key, top).dump(2) + "\n", notes};
 }
 
+// `conescope-cli granularity`'s document: without a test among the settings, every test a row.
+Document granularityDocument(const Mesh& mesh, const std::string& name, const SettingPairs& pairs, std::vector<std::string> notes) {
+    const bool testsGiven = std::any_of(pairs.begin(), pairs.end(), [](const auto& pair) { return pair.first == "test"; });
+    const Settings settings = granularitySettings(withClusterIds(settingsFrom(pairs)), testsGiven);
+    const GranularityReport report = withoutGil([&] { return runGranularity(mesh, settings, name, keepGoing); });
+    for (const std::string& warning : cli::runWarnings(report.run)) notes.push_back(warning);
+    return {granularityToJson(report).dump(2) + "\n", notes};
+}
+
+// `conescope-cli lod`'s document for a hierarchy built from the mesh.
+Document lodDocument(const Mesh& mesh, const std::string& name, const SettingPairs& pairs, const LodThreshold& threshold,
+                     size_t groupSize, bool perView, std::vector<std::string> notes) {
+    const Settings settings = withClusterIds(settingsFrom(pairs));
+    LodBuildOptions options;
+    options.groupSize = groupSize;
+    const LodStatistics statistics = withoutGil([&] { return lodOfMesh(mesh, name, settings, threshold, options, keepGoing); });
+    return {lodStatisticsToJson(statistics, settings, perView).dump(2) + "\n", notes};
+}
+
 Document compareDocument(const Mesh& mesh, const std::string& name, const std::string& a, const std::string& b,
                          const SettingPairs& pairs, bool perView, bool perCluster, std::vector<std::string> notes) {
     const Settings base = settingsFrom(pairs);
@@ -260,6 +283,18 @@ PYBIND11_MODULE(_conescope, m) {
         std::vector<std::string> notes;
         const Mesh mesh = meshFromPython(vertices, faces, clusterIds, name, notes);
         return compareDocument(mesh, name, a, b, pairs, perView, perCluster, notes);
+    });
+    m.def("granularity", [](const std::string& path, const SettingPairs& pairs) {
+        std::vector<std::string> notes;
+        const Mesh mesh = readMeshForPython(path, notes, {settingsFrom(pairs)});
+        return granularityDocument(mesh, std::filesystem::path(path).filename().string(), pairs, notes);
+    });
+    m.def("lod", [](const std::string& path, const SettingPairs& pairs, double threshold, bool world, double screenHeight,
+                    double fovDegrees, size_t groupSize, bool perView) {
+        std::vector<std::string> notes;
+        const Mesh mesh = readMeshForPython(path, notes, {settingsFrom(pairs)});
+        return lodDocument(mesh, std::filesystem::path(path).filename().string(), pairs,
+                           LodThreshold{threshold, world, screenHeight, fovDegrees}, groupSize, perView, notes);
     });
     m.def("find_meshes", &findMeshes);
     m.def("batch_columns", &batchColumns);

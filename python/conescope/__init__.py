@@ -35,7 +35,8 @@ from ._errors import ArgumentTypeError, BatchError, Error, MeshDataError, MeshRe
 from ._errors import translated as _translated
 from ._arrays import mesh_arrays as _mesh_arrays
 
-__all__ = ["stats", "stats_arrays", "clusters", "clusters_arrays", "compare", "compare_arrays", "batch", "read_results",
+__all__ = ["stats", "stats_arrays", "clusters", "clusters_arrays", "compare", "compare_arrays", "granularity", "lod", "batch",
+           "read_results",
            "Error", "MeshReadError", "SettingsError", "MeshDataError", "ArgumentTypeError", "BatchError",
            "extensions", "__version__"]
 
@@ -162,6 +163,28 @@ def clusters_arrays(vertices, faces, cluster_ids=None, name="arrays", sort="test
     pairs = _setting_pairs(settings)
     return _run(_conescope.clusters_arrays, *_mesh_arrays(vertices, faces, cluster_ids), str(name), pairs,
                 *_sort_and_top(sort, top), value_error=MeshDataError)
+
+
+def granularity(path, **settings):
+    """What each record culls and costs on the mesh's partition, as `conescope-cli granularity PATH
+    --format json` writes it: one row per record under "rows" (one cone with each test, 2, 4 and 8
+    cones per cluster, per-triangle culling). Without test=..., every test but the oracle."""
+    return _run(_conescope.granularity, _path(path), _setting_pairs(settings))
+
+
+def lod(path, threshold=1.0, world=False, screen_height=1080.0, fov=60.0, group_size=8, per_view=True, **settings):
+    """A cluster LOD hierarchy built from the mesh, culled level by level and as the cut an eye draws,
+    as `conescope-cli lod PATH --format json` writes it ("levels", "cut")."""
+    if not threshold >= 0:
+        raise SettingsError(f"threshold must be 0 or more, not {threshold}")
+    if not screen_height > 0:
+        raise SettingsError(f"screen_height must be above 0, not {screen_height}")
+    if not 0 < fov < 180:
+        raise SettingsError(f"fov must be between 0 and 180 degrees, not {fov}")
+    if not isinstance(group_size, int) or group_size < 2:
+        raise SettingsError(f"group_size must be a whole number of 2 or more, not {group_size!r}")
+    return _run(_conescope.lod, _path(path), _setting_pairs(settings), float(threshold), bool(world), float(screen_height),
+                float(fov), group_size, bool(per_view))
 
 
 def compare(path, a, b=None, per_view=True, per_cluster=True, **settings):

@@ -132,3 +132,29 @@ def test_float64_positions_that_float32_merges_are_a_warning(tmp_path):
                     + "".join(f"3 {a} {b} {c}\n" for a, b, c in faces))
     with pytest.warns(UserWarning, match="merged 5877 positions the file holds apart"):
         conescope.stats(path, views=4)
+
+
+def test_granularity_is_the_cli_document():
+    """Every record's row as `conescope-cli granularity` gives it, all tests without test=..."""
+    document = conescope.granularity(DATASETS / "elephant.off", views=16)
+    assert document == cli_json("granularity", DATASETS / "elephant.off", "--views", "16", "--format", "json", "--quiet")
+    records = [row["record"] for row in document["rows"]]
+    assert records[0] == "minimal/octagon" and "cones-4-compact" in records and records[-1] == "triangle"
+    only_apex = conescope.granularity(DATASETS / "elephant.off", views=16, test="apex")
+    assert [row["record"] for row in only_apex["rows"]][0] == "minimal/apex"
+    assert len(only_apex["rows"]) == 1 + 6 + 1
+
+
+def test_lod_is_the_cli_document():
+    """Levels and cut as `conescope-cli lod` gives them; bad thresholds raise SettingsError."""
+    document = conescope.lod(DATASETS / "elephant.off", threshold=2, views=16, per_view=False)
+    expected = cli_json("lod", DATASETS / "elephant.off", "--threshold", "2", "--views", "16", "--no-per-view", "--format", "json",
+                        "--quiet")
+    for side in (document, expected):
+        side.pop("build_seconds")
+    assert document == expected
+    assert document["levels"][0]["efficiency"] == conescope.stats(DATASETS / "elephant.off", views=16)["results"][0]["efficiency"]
+    with pytest.raises(conescope.SettingsError, match="threshold"):
+        conescope.lod(DATASETS / "elephant.off", threshold=-1)
+    with pytest.raises(conescope.SettingsError, match="group_size"):
+        conescope.lod(DATASETS / "elephant.off", group_size=1)

@@ -12,16 +12,8 @@ namespace conescope::cli {
 
 namespace {
 
-// Without --test every test the tool offers is a row (the default first: the per-triangle row
-// culls after it); the oracle reads faces, not a record, so it is a row only when asked for.
-Settings granularitySettings(const GranularityOptions& options) {
-    Settings settings = withClusterIds(options.run.toSettings());
-    if (options.run.options.at("test")->count() == 0) {
-        settings.tests = {Settings{}.tests.front()};
-        for (CullTest test : allCullTests())
-            if (test != CullTest::Oracle && test != settings.tests.front()) settings.tests.push_back(test);
-    }
-    return settings;
+Settings settingsOf(const GranularityOptions& options) {
+    return granularitySettings(withClusterIds(options.run.toSettings()), options.run.options.at("test")->count() > 0);
 }
 
 }  // namespace
@@ -41,7 +33,7 @@ CLI::App* addGranularityCommand(CLI::App& app, GranularityOptions& options, cons
 }
 
 void runGranularity(const GranularityOptions& options) {
-    const Settings settings = granularitySettings(options);
+    const Settings settings = settingsOf(options);
     const Mesh mesh = readMeshNoting(options.mesh, options.quiet, {settings});
     const GranularityReport report = conescope::runGranularity(mesh, settings, fileName(options.mesh), stderrProgress(options.quiet));
     warnAboutMesh(report.run, options.quiet);

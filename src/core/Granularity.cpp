@@ -60,6 +60,14 @@ size_t largestClusterTriangles(const Mesh& mesh, const ClusterBounds& bounds) {
 
 }  // namespace
 
+Settings granularitySettings(Settings settings, bool testsGiven) {
+    if (testsGiven) return settings;
+    settings.tests = {Settings{}.tests.front()};
+    for (CullTest test : allCullTests())
+        if (test != CullTest::Oracle && test != settings.tests.front()) settings.tests.push_back(test);
+    return settings;
+}
+
 std::vector<GranularityRow> oneConeRows(const RunStatistics& run) {
     std::vector<GranularityRow> rows;
     std::set<CullTest> enginesDone;

@@ -32,6 +32,11 @@ struct GranularityReport {
 // The sub-group counts the rows are made for.
 constexpr uint32_t kGranularityCones[] = {2, 4, 8};
 
+// The settings a granularity report runs with: without tests given (`testsGiven` false) every test
+// the tool offers but the oracle (which reads faces, not a record), the default first, for the
+// per-triangle row culls after it.
+Settings granularitySettings(Settings settings, bool testsGiven);
+
 // One row per cone and test of the run, from its statistics (engine records, which read cones of
 // their own, once each).
 std::vector<GranularityRow> oneConeRows(const RunStatistics& run);
