@@ -112,7 +112,41 @@ def _row_on_worker(path, folder, pairs, compare, per_view, per_cluster):
     return worker_module.batch_row(path, folder, pairs, compare, per_view, per_cluster)
 
 
+# What each Dask worker is asked before any mesh is sent: the module's version it imports, or why it
+# cannot. Defined from source, so that it reaches a worker by value: a worker without the module
+# could not unpickle a function of it, and would drop its tasks while the batch waited forever.
+_WORKER_CHECK = """
+def module_on_worker():
+    try:
+        import conescope
+        return conescope.__version__
+    except Exception as error:
+        return "cannot import conescope (" + type(error).__name__ + ": " + str(error) + ")"
+"""
+
+
+def _check_workers(client):
+    """Raise BatchError unless every worker imports this version of the module."""
+    from . import __version__
+    namespace = {}
+    exec(_WORKER_CHECK, namespace)
+    try:
+        answers = client.run(namespace["module_on_worker"], on_error="return")
+    except Exception as error:
+        raise BatchError(f"the Dask cluster did not answer ({type(error).__name__}: {error})") from error
+    if not answers:
+        raise BatchError("the Dask client has no workers: start some (dask worker SCHEDULER) or use a LocalCluster")
+    wrong = {worker: answer for worker, answer in answers.items() if answer != __version__}
+    if wrong:
+        said = "; ".join(f"{worker}: {answer if isinstance(answer, str) and answer.startswith('cannot') else f'conescope {answer}'}"
+                         for worker, answer in sorted(wrong.items()))
+        raise BatchError(f"{len(wrong)} of {len(answers)} Dask workers cannot run this batch (conescope {__version__} here): "
+                         f"{said}. Start every worker with the same build on its path "
+                         "(PYTHONPATH=/path/to/build/python dask worker SCHEDULER).")
+
+
 def _dask_batch(client, paths, output_dir, pairs, compare, per_view, per_cluster, shard):
+    _check_workers(client)
     # Absolute paths: the workers may run in another folder.
     with translated(SettingsError):
         meshes = [os.path.abspath(mesh) for mesh in _conescope.find_meshes(paths, shard or "")]

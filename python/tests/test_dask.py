@@ -42,3 +42,19 @@ def test_a_broken_mesh_on_dask_is_an_error_row(library, client):
     frame = conescope.batch([library / "broken.off", library / "torus.off"], client=client, views=4)
     assert list(frame.status) == ["error", "ok"]
     assert frame.error[0].endswith("header declares 3 vertices but only 12 bytes follow (truncated file or wrong count)")
+
+
+def test_workers_without_this_build_stop_the_batch_before_any_mesh(library, client):
+    """A worker that imports another version (or none) is named in a BatchError, not waited for."""
+    def set_version(version):
+        import conescope as worker_conescope
+        worker_conescope.__version__ = version
+    workers = sorted(client.scheduler_info()["workers"])
+    client.run(set_version, "0.0-other", workers=workers[:1])
+    try:
+        with pytest.raises(conescope.BatchError, match=r"1 of 2 Dask workers cannot run this batch .*conescope 0\.0-other"):
+            conescope.batch([library / "torus.off"], client=client, views=4)
+    finally:
+        client.run(set_version, conescope.__version__, workers=workers[:1])
+    assert list(conescope.batch([library / "torus.off"], client=client, views=4).status) == ["ok"]
+
