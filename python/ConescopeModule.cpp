@@ -8,7 +8,9 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <map>
 #include <memory>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -211,6 +213,25 @@ BatchRow batchRow(const std::string& path, const std::string& folder, const Sett
     return row;
 }
 
+// Per mesh (absolute paths, as the Dask batch sends them), the row of folder/results.csv a new run
+// keeps (the command line's batch's rule, cli::reusableRow), or None.
+std::vector<std::optional<BatchRow>> keptRows(const std::vector<std::string>& paths, const std::string& folder, const SettingPairs& pairs,
+                                              const std::string& compare, bool perView, bool perCluster) {
+    const cli::BatchConfig config = batchConfigFrom(pairs, compare, perView, perCluster);
+    const BatchTable previous = readBatchCsv((std::filesystem::path(folder) / "results.csv").string());
+    std::map<std::string, const BatchRow*> byJson;
+    for (const BatchRow& row : previous.rows)
+        if (row.count("json")) byJson[row.at("json")] = &row;
+    std::vector<std::optional<BatchRow>> kept;
+    for (const std::string& path : paths) {
+        const cli::BatchMesh mesh = cli::findBatchMeshes({path}).front();  // one each, in the order given
+        const auto found = byJson.find(mesh.json);
+        const bool keep = mesh.problem.empty() && found != byJson.end() && cli::reusableRow(*found->second, cli::batchRowStart(mesh, config), folder);
+        kept.push_back(keep ? std::optional<BatchRow>(*found->second) : std::nullopt);
+    }
+    return kept;
+}
+
 BatchRow errorRow(const std::string& path, const std::string& kind, const std::string& message, const SettingPairs& pairs,
                   const std::string& compare, bool perView, bool perCluster) {
     const cli::BatchConfig config = batchConfigFrom(pairs, compare, perView, perCluster);
@@ -300,6 +321,7 @@ PYBIND11_MODULE(_conescope, m) {
     m.def("batch_columns", &batchColumns);
     m.def("batch_row", &batchRow);
     m.def("error_row", &errorRow);
+    m.def("kept_rows", &keptRows);
     m.def("results_csv", &batchCsvText);
     m.def("write_results", &writeResults);
 }

@@ -154,12 +154,18 @@ def _dask_batch(client, paths, output_dir, pairs, compare, per_view, per_cluster
     if output_dir is not None:
         folder = os.path.abspath(output_dir)  # the workers write here: shared storage on a real cluster
         os.makedirs(os.path.join(folder, "meshes"), exist_ok=True)
-    futures = client.map(_row_on_worker, meshes, folder=folder, pairs=pairs, compare=compare, per_view=per_view,
-                         per_cluster=per_cluster, pure=False)
+    # A second run into the same folder keeps the rows the command line's batch would keep.
+    kept = _conescope.kept_rows(meshes, folder, pairs, compare, per_view, per_cluster) if folder else [None] * len(meshes)
+    missing = [mesh for mesh, row in zip(meshes, kept) if row is None]
+    futures = dict(zip(missing, client.map(_row_on_worker, missing, folder=folder, pairs=pairs, compare=compare,
+                                           per_view=per_view, per_cluster=per_cluster, pure=False)))
     rows = []
-    for mesh, future in zip(meshes, futures):
+    for mesh, row in zip(meshes, kept):
+        if row is not None:
+            rows.append(row)
+            continue
         try:
-            rows.append(future.result())
+            rows.append(futures[mesh].result())
         except Exception as error:  # the worker died on it (KilledWorker) or Dask failed it
             message = f"{mesh}: the Dask task running it failed ({type(error).__name__}: {error})"
             rows.append(_conescope.error_row(mesh, "crash", message, pairs, compare, per_view, per_cluster))

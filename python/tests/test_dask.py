@@ -58,3 +58,19 @@ def test_workers_without_this_build_stop_the_batch_before_any_mesh(library, clie
         client.run(set_version, conescope.__version__, workers=workers[:1])
     assert list(conescope.batch([library / "torus.off"], client=client, views=4).status) == ["ok"]
 
+
+def test_a_second_dask_batch_into_the_same_folder_runs_only_what_changed(library, client, tmp_path):
+    """The command line's resume rule: kept rows come back as they were, a changed mesh runs again."""
+    out = tmp_path / "out"
+    first = conescope.batch([library], client=client, output_dir=out, views=8)
+    (library / "torus.off").write_text((library / "torus.off").read_text() + "\n")  # new bytes, same mesh
+    second = conescope.batch([library], client=client, output_dir=out, views=8)
+    assert list(second.file) == list(first.file)
+    changed = second.file.str.endswith("torus.off")
+    # Kept rows are the first run's, seconds included; the changed mesh was run again (new hash).
+    assert second[~changed].equals(first[~changed])
+    assert (second[changed].content_hash != first[changed].content_hash).all()
+    assert (second[changed].status == "ok").all()
+    again = conescope.batch([library], client=client, output_dir=out, views=16)  # other settings: all again
+    assert (again.settings_hash != second.settings_hash).all()
+

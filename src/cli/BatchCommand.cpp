@@ -139,26 +139,6 @@ bool sanitizerBuild() {
     return false;
 }
 
-// A row from the last run that this run can keep: the same mesh bytes and settings, its files still
-// there, and an outcome that another try would repeat (an ok row, or a file that cannot be read or
-// run; not a crash, a timeout or memory, which depend on the machine and the limits).
-bool reusable(const BatchRow& previous, const BatchRow& start, const fs::path& folder) {
-    const auto cell = [&](const BatchRow& row, const std::string& key) {
-        const auto found = row.find(key);
-        return found == row.end() ? std::string() : found->second;
-    };
-    if (cell(previous, "content_hash").empty() || cell(previous, "content_hash") != cell(start, "content_hash") ||
-        cell(previous, "settings_hash") != cell(start, "settings_hash"))
-        return false;
-    if (cell(previous, "status") == "ok") {
-        for (const std::string& file : {cell(start, "json"), cell(start, "compare_json")})
-            if (!file.empty() && !fs::exists(folder / file)) return false;
-        return true;
-    }
-    const std::string kind = cell(previous, "error_kind");
-    return kind == "read" || kind == "settings" || kind == "run";
-}
-
 // The job's request to a worker: three NUL-terminated fields (BatchWorker.cpp).
 std::string workerRequest(const BatchMesh& mesh, const BatchRow& start, const fs::path& folder) {
     const auto fileIn = [&](const char* key) {
@@ -220,7 +200,7 @@ BatchPlan planBatch(const BatchOptions& options, const BatchConfig& config, cons
             continue;
         }
         const auto found = byJson.find(mesh.json);
-        const bool keep = found != byJson.end() && reusable(*found->second, start, folder);
+        const bool keep = found != byJson.end() && reusableRow(*found->second, start, folder);
         plan.rows.push_back(keep ? *found->second : start);
         plan.done.push_back(keep);
         plan.skipped += keep ? 1 : 0;

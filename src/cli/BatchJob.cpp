@@ -120,6 +120,23 @@ BatchRow batchRowStart(const BatchMesh& mesh, const BatchConfig& config) {
     return row;
 }
 
+bool reusableRow(const BatchRow& previous, const BatchRow& start, const std::filesystem::path& folder) {
+    const auto cell = [&](const BatchRow& row, const std::string& key) {
+        const auto found = row.find(key);
+        return found == row.end() ? std::string() : found->second;
+    };
+    if (cell(previous, "content_hash").empty() || cell(previous, "content_hash") != cell(start, "content_hash") ||
+        cell(previous, "settings_hash") != cell(start, "settings_hash"))
+        return false;
+    if (cell(previous, "status") == "ok") {
+        for (const std::string& file : {cell(start, "json"), cell(start, "compare_json")})
+            if (!file.empty() && !std::filesystem::exists(folder / file)) return false;
+        return true;
+    }
+    const std::string kind = cell(previous, "error_kind");
+    return kind == "read" || kind == "settings" || kind == "run";
+}
+
 BatchRow errorCells(const std::string& kind, const std::string& message) {
     return {{"status", "error"}, {"error_kind", kind}, {"error", message}};
 }

@@ -4,6 +4,7 @@
 // row, so one bad mesh never stops the others.
 #pragma once
 
+#include <filesystem>
 #include <functional>
 #include <string>
 
@@ -44,6 +45,12 @@ BatchRow runBatchJob(const BatchConfig& config, const BatchJob& job, const std::
 // The cells that say which mesh and settings a row is about: file, json, compare_json, content_hash,
 // settings_hash, setting_KEY and a_options (the comparison asked for). The content hash is taken now.
 BatchRow batchRowStart(const BatchMesh& mesh, const BatchConfig& config);
+
+// Whether a row from the last run in `folder` can be kept for the mesh whose row starts as `start`:
+// the same mesh bytes and settings, its files still there, and an outcome another try would repeat
+// (an ok row, or a file that cannot be read or run; not a crash, a timeout or memory, which depend
+// on the machine and the limits). The batch and the Dask batch resume by it.
+bool reusableRow(const BatchRow& previous, const BatchRow& start, const std::filesystem::path& folder);
 
 // An error row's own cells.
 BatchRow errorCells(const std::string& kind, const std::string& message);
