@@ -91,7 +91,7 @@ auto withoutGil(Work&& work) {
 // A mesh from arrays: n x 3 positions, faces as an m x k integer array or a sequence of sequences,
 // optional per-face cluster ids; then the checks and merging every file's mesh gets. Positions come
 // as float64, so positions that only rounding to float32 merges are told (`notes`).
-Mesh meshFromPython(py::array_t<double, py::array::c_style | py::array::forcecast> vertices, const py::object& faces,
+Mesh meshFromPython(py::array_t<double, py::array::c_style | py::array::forcecast> vertices, py::object faces,
                     const py::object& clusterIds, const std::string& name, std::vector<std::string>& notes) {
     if (vertices.ndim() != 2 || vertices.shape(1) != 3) throw std::invalid_argument("vertices must be an n x 3 array");
     Mesh mesh;
@@ -101,9 +101,25 @@ Mesh meshFromPython(py::array_t<double, py::array::c_style | py::array::forcecas
         exact.emplace_back(v(k, 0), v(k, 1), v(k, 2));
         mesh.positions.emplace_back(exact.back());
     }
+    // An (m, k) uint32 C array (what conescope._arrays makes of any integer face array): read from
+    // its buffer without a Python object per index, and without the GIL.
+    if (py::isinstance<py::array>(faces)) {
+        const py::array table = py::reinterpret_borrow<py::array>(faces);
+        if (table.ndim() == 2 && table.dtype().is(py::dtype::of<uint32_t>()) && (table.flags() & py::array::c_style)) {
+            const uint32_t* indices = static_cast<const uint32_t*>(table.data());
+            const size_t rows = size_t(table.shape(0)), k = size_t(table.shape(1));
+            withoutGil([&] {
+                mesh.faceStarts.reserve(rows + 1);
+                mesh.faceVertices.reserve(rows * k);
+                for (size_t row = 0; row < rows; ++row) mesh.addFace(indices + row * k, k);
+                return 0;
+            });
+            faces = py::none();  // read: the loop below has nothing to do
+        }
+    }
     std::vector<uint32_t> corners;
     size_t index = 0;
-    for (const py::handle face : faces) {
+    for (const py::handle face : faces.is_none() ? py::list() : faces) {
         corners.clear();
         for (const py::handle corner : face) {
             const long long value = corner.cast<long long>();
