@@ -96,11 +96,17 @@ Mesh meshFromPython(py::array_t<double, py::array::c_style | py::array::forcecas
     if (vertices.ndim() != 2 || vertices.shape(1) != 3) throw std::invalid_argument("vertices must be an n x 3 array");
     Mesh mesh;
     std::vector<glm::dvec3> exact;
-    const auto v = vertices.unchecked<2>();
-    for (py::ssize_t k = 0; k < v.shape(0); ++k) {
-        exact.emplace_back(v(k, 0), v(k, 1), v(k, 2));
-        mesh.positions.emplace_back(exact.back());
-    }
+    const double* xyz = vertices.data();
+    const size_t count = size_t(vertices.shape(0));
+    withoutGil([&] {
+        exact.reserve(count);
+        mesh.positions.reserve(count);
+        for (size_t k = 0; k < count; ++k) {
+            exact.emplace_back(xyz[3 * k], xyz[3 * k + 1], xyz[3 * k + 2]);
+            mesh.positions.emplace_back(exact.back());
+        }
+        return 0;
+    });
     // An (m, k) uint32 C array (what conescope._arrays makes of any integer face array): read from
     // its buffer without a Python object per index, and without the GIL.
     if (py::isinstance<py::array>(faces)) {
@@ -137,7 +143,7 @@ Mesh meshFromPython(py::array_t<double, py::array::c_style | py::array::forcecas
             throw std::invalid_argument("cluster_ids must hold one id per face (" + std::to_string(mesh.faceCount()) + ")");
         mesh.faceArrays["cluster_id"].assign(ids.data(), ids.data() + ids.shape(0));
     }
-    MeshFile file = meshFromArrays(std::move(mesh), name, exact);
+    MeshFile file = withoutGil([&] { return meshFromArrays(std::move(mesh), name, exact); });
     notes.insert(notes.end(), file.notes.begin(), file.notes.end());
     return std::move(file.mesh);
 }
