@@ -230,7 +230,7 @@ BatchRow batchRow(const std::string& path, const std::string& folder, const Sett
         job.json = (std::filesystem::path(folder) / row["json"]).string();
         if (!compare.empty()) job.compareJson = (std::filesystem::path(folder) / row["compare_json"]).string();
     }
-    const BatchRow cells = withoutGil([&] { return cli::runBatchJob(config, job); });
+    const BatchRow cells = withoutGil([&] { return cli::runBatchJob(config, job, cli::testFaultFor(path)); });
     for (const auto& [key, value] : cells) row[key] = value;
     return row;
 }

@@ -74,3 +74,27 @@ def test_a_second_dask_batch_into_the_same_folder_runs_only_what_changed(library
     again = conescope.batch([library], client=client, output_dir=out, views=16)  # other settings: all again
     assert (again.settings_hash != second.settings_hash).all()
 
+
+
+def test_a_worker_killed_on_a_mesh_leaves_every_row(library, tmp_path, monkeypatch):
+    """A mesh that kills the worker process computing it (SIGSEGV, the test hook of the batch workers)
+    becomes a crash row once Dask gives up on it; every other mesh still has its row."""
+    monkeypatch.setenv("CONESCOPE_BATCH_TEST_FAULT", "crash:elephant.off")  # the workers start with it
+    cluster = LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=":0")
+    try:
+        with Client(cluster) as crashing:
+            frame = conescope.batch([library], client=crashing, views=4)
+    finally:
+        cluster.close()
+    assert len(frame) == 7
+    elephant = frame[frame.file.str.endswith("elephant.off")].iloc[0]
+    assert elephant.status == "error" and elephant.error_kind == "crash"
+    assert "KilledWorker" in elephant.error
+    assert (frame[~frame.file.str.endswith("elephant.off") & ~frame.file.str.endswith("broken.off")].status == "ok").all()
+
+
+def test_relative_paths_reach_the_workers_as_absolute_ones(library, client, monkeypatch):
+    monkeypatch.chdir(library)
+    frame = conescope.batch(["torus.off", "polygons"], client=client, views=4)
+    assert list(frame.status) == ["ok", "ok", "ok"]
+    assert all(file.startswith("/") for file in frame.file)

@@ -1,6 +1,11 @@
 #include "cli/BatchJob.h"
 
 #include <chrono>
+#include <csignal>
+#include <cstdlib>
+#include <cstring>
+#include <memory>
+#include <thread>
 #include <new>
 #include <sstream>
 
@@ -118,6 +123,27 @@ BatchRow batchRowStart(const BatchMesh& mesh, const BatchConfig& config) {
     addSettingCells(row, config.settings);
     row["a_options"] = config.compare;
     return row;
+}
+
+std::function<void()> testFaultFor(const std::string& path) {
+    const char* text = std::getenv("CONESCOPE_BATCH_TEST_FAULT");
+    const std::string value = text ? text : "";
+    const size_t colon = value.find(':');
+    if (colon == std::string::npos || std::filesystem::path(path).filename() != value.substr(colon + 1)) return {};
+    const std::string kind = value.substr(0, colon);
+    return [kind] {
+        if (kind == "crash") std::raise(SIGSEGV);
+        if (kind == "hang")
+            for (;;) std::this_thread::sleep_for(std::chrono::hours(1));
+        if (kind == "allocate") {
+            constexpr size_t block = size_t(64) << 20;
+            std::vector<std::unique_ptr<char[]>> blocks;
+            for (;;) {
+                blocks.emplace_back(new char[block]);
+                std::memset(blocks.back().get(), 1, block);
+            }
+        }
+    };
 }
 
 bool reusableRow(const BatchRow& previous, const BatchRow& start, const std::filesystem::path& folder) {

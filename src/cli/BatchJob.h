@@ -46,6 +46,13 @@ BatchRow runBatchJob(const BatchConfig& config, const BatchJob& job, const std::
 // settings_hash, setting_KEY and a_options (the comparison asked for). The content hash is taken now.
 BatchRow batchRowStart(const BatchMesh& mesh, const BatchConfig& config);
 
+// For tests only: CONESCOPE_BATCH_TEST_FAULT=KIND:NAME makes the process computing a batch's rows
+// (a batch worker, or a Dask worker through the Python module) misbehave on the mesh whose file is
+// named NAME, after reading it, where its run would be: `crash` (SIGSEGV), `allocate` (64 MiB
+// blocks, each written, until the allocator refuses), `hang` (sleeps until stopped). The action for
+// `path`, or empty; only runBatchJob's callers read it, so no other command changes with it.
+std::function<void()> testFaultFor(const std::string& path);
+
 // Whether a row from the last run in `folder` can be kept for the mesh whose row starts as `start`:
 // the same mesh bytes and settings, its files still there, and an outcome another try would repeat
 // (an ok row, or a file that cannot be read or run; not a crash, a timeout or memory, which depend
