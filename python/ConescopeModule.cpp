@@ -180,6 +180,20 @@ Document clustersDocument(const Mesh& mesh, const std::string& name, const Setti
     return {cli::clusterTableJson(run, key, top).dump(2) + "\n", notes};
 }
 
+// The partition the settings make of the mesh, as one cluster id per face of the mesh as given (what
+// `conescope-cli partition -o ids.txt` writes), with what the run would warn of.
+std::pair<py::array_t<uint32_t>, std::vector<std::string>> partitionIds(const Mesh& mesh, const std::string& name, const SettingPairs& pairs,
+                                                                        std::vector<std::string> notes) {
+    const Settings settings = withClusterIds(settingsFrom(pairs));
+    const Partition partition = withoutGil([&] {
+        const PreparedMesh prepared = prepareBorrowed(mesh, name, settings.fixWinding, keepGoing);
+        return buildClusters(prepared, settings, nullptr, keepGoing).partition;
+    });
+    py::array_t<uint32_t> ids(py::ssize_t(partition.clusterOfFace.size()));
+    std::copy(partition.clusterOfFace.begin(), partition.clusterOfFace.end(), ids.mutable_data());
+    return {ids, notes};
+}
+
 // `conescope-cli granularity`'s document: without a test among the settings, every test a row.
 Document granularityDocument(const Mesh& mesh, const std::string& name, const SettingPairs& pairs, std::vector<std::string> notes) {
     const bool testsGiven = std::any_of(pairs.begin(), pairs.end(), [](const auto& pair) { return pair.first == "test"; });
@@ -326,6 +340,17 @@ PYBIND11_MODULE(_conescope, m) {
         std::vector<std::string> notes;
         const Mesh mesh = meshFromPython(vertices, faces, clusterIds, name, notes);
         return compareDocument(mesh, name, a, b, pairs, perView, perCluster, notes);
+    });
+    m.def("partition", [](const std::string& path, const SettingPairs& pairs) {
+        std::vector<std::string> notes;
+        const Mesh mesh = readMeshForPython(path, notes, {settingsFrom(pairs)});
+        return partitionIds(mesh, std::filesystem::path(path).filename().string(), pairs, notes);
+    });
+    m.def("partition_arrays", [](py::array_t<double, py::array::c_style | py::array::forcecast> vertices, const py::object& faces,
+                                 const py::object& clusterIds, const std::string& name, const SettingPairs& pairs) {
+        std::vector<std::string> notes;
+        const Mesh mesh = meshFromPython(vertices, faces, clusterIds, name, notes);
+        return partitionIds(mesh, name, pairs, notes);
     });
     m.def("granularity", [](const std::string& path, const SettingPairs& pairs) {
         std::vector<std::string> notes;

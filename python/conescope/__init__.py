@@ -35,7 +35,8 @@ from ._errors import ArgumentTypeError, BatchError, Error, MeshDataError, MeshRe
 from ._errors import translated as _translated
 from ._arrays import mesh_arrays as _mesh_arrays
 
-__all__ = ["stats", "stats_arrays", "clusters", "clusters_arrays", "compare", "compare_arrays", "granularity", "lod", "batch",
+__all__ = ["stats", "stats_arrays", "clusters", "clusters_arrays", "compare", "compare_arrays", "granularity", "lod", "partition",
+           "partition_arrays", "batch",
            "read_results",
            "Error", "MeshReadError", "SettingsError", "MeshDataError", "ArgumentTypeError", "BatchError",
            "extensions", "__version__"]
@@ -88,10 +89,11 @@ def _path(path):
     return _os.fspath(path)
 
 
-def _run(function, *arguments, value_error=SettingsError):
-    """A call of the compiled part: its errors as conescope's, its notes as warnings, its JSON read."""
+def _run(function, *arguments, value_error=SettingsError, result=None):
+    """A call of the compiled part: its errors as conescope's, its notes as warnings, its JSON read
+    (or the pair (value, notes) given to `result`)."""
     with _translated(value_error):
-        return _document(function(*arguments))
+        return (result or _document)(function(*arguments))
 
 
 def _flags(per_view, per_cluster):
@@ -163,6 +165,26 @@ def clusters_arrays(vertices, faces, cluster_ids=None, name="arrays", sort="test
     pairs = _setting_pairs(settings)
     return _run(_conescope.clusters_arrays, *_mesh_arrays(vertices, faces, cluster_ids), str(name), pairs,
                 *_sort_and_top(sort, top), value_error=MeshDataError)
+
+
+def _ids(result):
+    ids, notes = result
+    for note in notes:
+        _warnings.warn(note, stacklevel=5)
+    return ids
+
+
+def partition(path, **settings):
+    """The partition the settings make: a numpy uint32 array, one cluster id per face of the mesh as
+    read (what `conescope-cli partition PATH -o ids.txt` writes)."""
+    return _run(_conescope.partition, _path(path), _setting_pairs(settings), result=_ids)
+
+
+def partition_arrays(vertices, faces, cluster_ids=None, name="arrays", **settings):
+    """partition() of a mesh given as arrays (see stats_arrays): one cluster id per face given."""
+    settings = _with_cluster_ids(cluster_ids, settings)
+    return _run(_conescope.partition_arrays, *_mesh_arrays(vertices, faces, cluster_ids), str(name), _setting_pairs(settings),
+                value_error=MeshDataError, result=_ids)
 
 
 def granularity(path, **settings):

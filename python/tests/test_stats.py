@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 import conescope
-from conftest import (BROKEN_OFF, DATASETS, cli_error, cli_json, quad_sphere, read_off, without_timings,
+from conftest import (BROKEN_OFF, DATASETS, cli_error, cli_json, quad_sphere, read_off, run_cli, without_timings,
                       write_obj)
 
 
@@ -158,3 +158,18 @@ def test_lod_is_the_cli_document():
         conescope.lod(DATASETS / "elephant.off", threshold=-1)
     with pytest.raises(conescope.SettingsError, match="group_size"):
         conescope.lod(DATASETS / "elephant.off", group_size=1)
+
+
+def test_partition_is_the_cli_partitions_ids(tmp_path):
+    """One uint32 cluster id per face, the ids `conescope-cli partition -o ids.txt` writes, for a file
+    and for arrays of the same mesh."""
+    ids_file = tmp_path / "ids.txt"
+    run_cli("partition", DATASETS / "fandisk.off", "-o", ids_file, "--quiet")
+    expected = np.array([int(line) for line in ids_file.read_text().splitlines() if not line.startswith("#")], dtype=np.uint32)
+    ids = conescope.partition(DATASETS / "fandisk.off")
+    assert ids.dtype == np.uint32 and ids.shape == expected.shape
+    assert (ids == expected).all()
+    vertices, faces = read_off(DATASETS / "fandisk.off")
+    assert (conescope.partition_arrays(vertices, faces) == expected).all()
+    assert len(np.unique(conescope.partition(DATASETS / "fandisk.off", builder="meshopt"))) > 1
+
