@@ -14,6 +14,8 @@ ArgumentTypeError (a TypeError), naming the row. What the command line warns of 
 budget, what the reader skipped) comes as a Python warning.
 """
 
+import functools as _functools
+import inspect as _inspect
 import json as _json
 import os as _os
 import sys as _sys
@@ -89,6 +91,28 @@ def _path(path):
     return _os.fspath(path)
 
 
+# The settings most runs set, as keyword-only arguments of every function that takes settings (None:
+# the schema's default); every other setting goes in **settings under its option's name, with
+# dashes or underscores (the README lists them).
+_COMMON_SETTINGS = ("builder", "max_verts", "max_tris", "clusters", "cone", "test", "views", "distance")
+
+
+def _common_settings(function):
+    """`function` with the common settings as keyword-only arguments before its **settings."""
+    signature = _inspect.signature(function)
+    parameters = list(signature.parameters.values())
+    common = [_inspect.Parameter(name, _inspect.Parameter.KEYWORD_ONLY, default=None) for name in _COMMON_SETTINGS]
+
+    @_functools.wraps(function)
+    def with_common(*arguments, **keywords):
+        for name in _COMMON_SETTINGS:
+            if name in keywords and keywords[name] is None:
+                del keywords[name]
+        return function(*arguments, **keywords)
+    with_common.__signature__ = signature.replace(parameters=parameters[:-1] + common + parameters[-1:])
+    return with_common
+
+
 def _run(function, *arguments, value_error=SettingsError, result=None):
     """A call of the compiled part: its errors as conescope's, its notes as warnings, its JSON read
     (or the pair (value, notes) given to `result`)."""
@@ -136,11 +160,13 @@ def _with_cluster_ids(cluster_ids, settings):
     return settings
 
 
+@_common_settings
 def stats(path, per_view=True, per_cluster=True, **settings):
     """The statistics document `conescope-cli stats PATH` writes, as a dict."""
     return _run(_conescope.stats, _path(path), _setting_pairs(settings), *_flags(per_view, per_cluster))
 
 
+@_common_settings
 def stats_arrays(vertices, faces, cluster_ids=None, name="arrays", per_view=True, per_cluster=True, **settings):
     """The statistics document of a mesh given as arrays.
 
@@ -154,11 +180,13 @@ def stats_arrays(vertices, faces, cluster_ids=None, name="arrays", per_view=True
                 *_flags(per_view, per_cluster), value_error=MeshDataError)
 
 
+@_common_settings
 def clusters(path, sort="test-loss", top=20, **settings):
     """The worst clusters, as `conescope-cli clusters PATH --format json` writes them (top=0: all)."""
     return _run(_conescope.clusters, _path(path), _setting_pairs(settings), *_sort_and_top(sort, top))
 
 
+@_common_settings
 def clusters_arrays(vertices, faces, cluster_ids=None, name="arrays", sort="test-loss", top=20, **settings):
     """clusters() of a mesh given as arrays (see stats_arrays)."""
     settings = _with_cluster_ids(cluster_ids, settings)
@@ -174,12 +202,14 @@ def _ids(result):
     return ids
 
 
+@_common_settings
 def partition(path, **settings):
     """The partition the settings make: a numpy uint32 array, one cluster id per face of the mesh as
     read (what `conescope-cli partition PATH -o ids.txt` writes)."""
     return _run(_conescope.partition, _path(path), _setting_pairs(settings), result=_ids)
 
 
+@_common_settings
 def partition_arrays(vertices, faces, cluster_ids=None, name="arrays", **settings):
     """partition() of a mesh given as arrays (see stats_arrays): one cluster id per face given."""
     settings = _with_cluster_ids(cluster_ids, settings)
@@ -187,6 +217,7 @@ def partition_arrays(vertices, faces, cluster_ids=None, name="arrays", **setting
                 value_error=MeshDataError, result=_ids)
 
 
+@_common_settings
 def granularity(path, **settings):
     """What each record culls and costs on the mesh's partition, as `conescope-cli granularity PATH
     --format json` writes it: one row per record under "rows" (one cone with each test, 2, 4 and 8
@@ -194,6 +225,7 @@ def granularity(path, **settings):
     return _run(_conescope.granularity, _path(path), _setting_pairs(settings))
 
 
+@_common_settings
 def lod(path, threshold=1.0, world=False, screen_height=1080.0, fov=60.0, group_size=8, per_view=True, **settings):
     """A cluster LOD hierarchy built from the mesh, culled level by level and as the cut an eye draws,
     as `conescope-cli lod PATH --format json` writes it ("levels", "cut")."""
@@ -209,6 +241,7 @@ def lod(path, threshold=1.0, world=False, screen_height=1080.0, fov=60.0, group_
                 float(fov), group_size, bool(per_view))
 
 
+@_common_settings
 def compare(path, a, b=None, per_view=True, per_cluster=True, **settings):
     """A against B, as `conescope-cli compare PATH --a A --b B --format json` writes it.
 
@@ -219,6 +252,7 @@ def compare(path, a, b=None, per_view=True, per_cluster=True, **settings):
     return _run(_conescope.compare, _path(path), *_comparison(a, b, pairs), pairs, *_flags(per_view, per_cluster))
 
 
+@_common_settings
 def compare_arrays(vertices, faces, a, b=None, cluster_ids=None, name="arrays", per_view=True, per_cluster=True,
                    **settings):
     """compare() of a mesh given as arrays (see stats_arrays)."""
@@ -228,3 +262,4 @@ def compare_arrays(vertices, faces, a, b=None, cluster_ids=None, name="arrays", 
 
 
 from ._batch import batch, read_results  # noqa: E402  (uses the helpers above)
+batch = _common_settings(batch)

@@ -173,3 +173,15 @@ def test_partition_is_the_cli_partitions_ids(tmp_path):
     assert (conescope.partition_arrays(vertices, faces) == expected).all()
     assert len(np.unique(conescope.partition(DATASETS / "fandisk.off", builder="meshopt"))) > 1
 
+
+
+def test_common_settings_are_keyword_only_arguments_and_none_is_the_default():
+    import inspect
+    for function in (conescope.stats, conescope.compare_arrays, conescope.granularity, conescope.batch):
+        parameters = inspect.signature(function).parameters
+        for name in ("builder", "max_verts", "max_tris", "clusters", "cone", "test", "views", "distance"):
+            assert parameters[name].kind is inspect.Parameter.KEYWORD_ONLY and parameters[name].default is None, name
+    with_none = conescope.stats(DATASETS / "torus.off", views=None, test=None, per_view=False, per_cluster=False)
+    default = conescope.stats(DATASETS / "torus.off", per_view=False, per_cluster=False)
+    assert without_timings(with_none) == without_timings(default)
+    assert conescope.stats(DATASETS / "torus.off", views=8, max_tris=64)["settings"]["max_triangles"] == 64
