@@ -74,7 +74,7 @@ def compare_arrays(vertices: Vertices, faces: Faces, a: Side, b: Side | None = N
 def batch(paths: PathLike | Sequence[PathLike], client: Any = None, output_dir: PathLike | None = None,
           compare: Side | None = None, compare_meshopt: bool = False, per_view: bool = True, per_cluster: bool = True,
           jobs: int | None = None, shard: str | None = None, timeout: float | None = None,
-          memory_limit: float | None = None, *,
+          memory_limit: float | None = None, progress: bool = False, *,
         builder: str | None = None, max_verts: int | None = None, max_tris: int | None = None, clusters: int | None = None,
         cone: str | Sequence[str] | None = None, test: str | Sequence[str] | None = None, views: int | None = None,
         distance: float | None = None, **settings: Settings) -> pd.DataFrame: ...

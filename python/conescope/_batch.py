@@ -79,8 +79,8 @@ def _text_columns(path_or_buffer):
     return [name for name in header.strip().split(",") if column_dtype(name) == "string"]
 
 
-def _local_batch(paths, output_dir, pairs, compare, per_view, per_cluster, jobs, shard, timeout, memory_limit):
-    command = [_cli(), "batch", *paths, "-o", output_dir, "--quiet"]
+def _local_batch(paths, output_dir, pairs, compare, per_view, per_cluster, jobs, shard, timeout, memory_limit, progress):
+    command = [_cli(), "batch", *paths, "-o", output_dir] + ([] if progress else ["--quiet"])
     command += _conescope.setting_arguments(pairs)
     if compare:
         command += ["--compare", compare]
@@ -116,37 +116,40 @@ def _row_on_worker(path, folder, pairs, compare, per_view, per_cluster):
 # cannot. Defined from source, so that it reaches a worker by value: a worker without the module
 # could not unpickle a function of it, and would drop its tasks while the batch waited forever.
 _WORKER_CHECK = """
-def module_on_worker():
+def module_on_worker(folders):
     try:
         import conescope
-        return conescope.__version__
     except Exception as error:
         return "cannot import conescope (" + type(error).__name__ + ": " + str(error) + ")"
+    import os
+    unseen = [folder for folder in folders if not os.path.isdir(folder)]
+    return conescope.__version__ if not unseen else "does not see " + ", ".join(unseen[:3])
 """
 
 
-def _check_workers(client):
-    """Raise BatchError unless every worker imports this version of the module."""
+def _check_workers(client, folders):
+    """Raise BatchError unless every worker imports this version of the module and sees `folders`
+    (the meshes' folders and the output folder: storage every worker must share)."""
     from . import __version__
     namespace = {}
     exec(_WORKER_CHECK, namespace)
     try:
-        answers = client.run(namespace["module_on_worker"], on_error="return")
+        answers = client.run(namespace["module_on_worker"], folders, on_error="return")
     except Exception as error:
         raise BatchError(f"the Dask cluster did not answer ({type(error).__name__}: {error})") from error
     if not answers:
         raise BatchError("the Dask client has no workers: start some (dask worker SCHEDULER) or use a LocalCluster")
     wrong = {worker: answer for worker, answer in answers.items() if answer != __version__}
     if wrong:
-        said = "; ".join(f"{worker}: {answer if isinstance(answer, str) and answer.startswith('cannot') else f'conescope {answer}'}"
+        said = "; ".join(f"{worker}: {answer if isinstance(answer, str) and not answer[:1].isdigit() else f'conescope {answer}'}"
                          for worker, answer in sorted(wrong.items()))
         raise BatchError(f"{len(wrong)} of {len(answers)} Dask workers cannot run this batch (conescope {__version__} here): "
                          f"{said}. Start every worker with the same build on its path "
-                         "(PYTHONPATH=/path/to/build/python dask worker SCHEDULER).")
+                         "(PYTHONPATH=/path/to/build/python dask worker SCHEDULER), the meshes and output_dir on "
+                         "storage every worker sees.")
 
 
-def _dask_batch(client, paths, output_dir, pairs, compare, per_view, per_cluster, shard):
-    _check_workers(client)
+def _dask_batch(client, paths, output_dir, pairs, compare, per_view, per_cluster, shard, progress):
     # Absolute paths: the workers may run in another folder.
     with translated(SettingsError):
         meshes = [os.path.abspath(mesh) for mesh in _conescope.find_meshes(paths, shard or "")]
@@ -154,11 +157,15 @@ def _dask_batch(client, paths, output_dir, pairs, compare, per_view, per_cluster
     if output_dir is not None:
         folder = os.path.abspath(output_dir)  # the workers write here: shared storage on a real cluster
         os.makedirs(os.path.join(folder, "meshes"), exist_ok=True)
+    _check_workers(client, sorted({os.path.dirname(mesh) for mesh in meshes} | ({folder} if folder else set())))
     # A second run into the same folder keeps the rows the command line's batch would keep.
     kept = _conescope.kept_rows(meshes, folder, pairs, compare, per_view, per_cluster) if folder else [None] * len(meshes)
     missing = [mesh for mesh, row in zip(meshes, kept) if row is None]
     futures = dict(zip(missing, client.map(_row_on_worker, missing, folder=folder, pairs=pairs, compare=compare,
                                            per_view=per_view, per_cluster=per_cluster, pure=False)))
+    if progress and futures:
+        from distributed import progress as dask_progress
+        dask_progress(list(futures.values()))  # Dask's own bar (a widget in a notebook); returns when all are done
     rows = []
     for mesh, row in zip(meshes, kept):
         if row is not None:
@@ -175,7 +182,7 @@ def _dask_batch(client, paths, output_dir, pairs, compare, per_view, per_cluster
 
 
 def batch(paths, client=None, output_dir=None, compare=None, compare_meshopt=False, per_view=True, per_cluster=True,
-          jobs=None, shard=None, timeout=None, memory_limit=None, **settings):
+          jobs=None, shard=None, timeout=None, memory_limit=None, progress=False, **settings):
     """results.csv of every mesh in `paths` (files and folders) as a pandas DataFrame: a row per mesh,
     the columns docs/statistics-schema.md lists.
 
@@ -185,6 +192,7 @@ def batch(paths, client=None, output_dir=None, compare=None, compare_meshopt=Fal
     mesh's row is computed on a Dask worker with this module; `output_dir` (shared by the workers) then
     gets the JSON files, results.csv and report.html. compare: A's options as "K=V,..." or a dict;
     compare_meshopt: meshoptimizer's pipeline as A. Without output_dir the json columns are empty.
+    progress: show it (the command line's progress on stderr, or Dask's own bar).
     """
     if isinstance(paths, (str, os.PathLike)):
         paths = [paths]
@@ -205,13 +213,14 @@ def batch(paths, client=None, output_dir=None, compare=None, compare_meshopt=Fal
             raise SettingsError(f"{name} must be a number above 0, not {value!r}")
     compare = _comparison(MESHOPT_PIPELINE if compare_meshopt else compare, None, pairs)[0]
     if client is not None:
-        frame = _dask_batch(client, paths, output_dir, pairs, compare, per_view, per_cluster, shard)
+        frame = _dask_batch(client, paths, output_dir, pairs, compare, per_view, per_cluster, shard, progress)
     elif output_dir is not None:
         frame = _local_batch(paths, os.fspath(output_dir), pairs, compare, per_view, per_cluster, jobs, shard, timeout,
-                             memory_limit)
+                             memory_limit, progress)
     else:
         with tempfile.TemporaryDirectory(prefix="conescope-batch-") as folder:
-            frame = _local_batch(paths, folder, pairs, compare, per_view, per_cluster, jobs, shard, timeout, memory_limit)
+            frame = _local_batch(paths, folder, pairs, compare, per_view, per_cluster, jobs, shard, timeout, memory_limit,
+                                 progress)
     if output_dir is None:
         frame[["json", "compare_json"]] = None
     return with_fixed_dtypes(frame)

@@ -98,3 +98,15 @@ def test_relative_paths_reach_the_workers_as_absolute_ones(library, client, monk
     frame = conescope.batch(["torus.off", "polygons"], client=client, views=4)
     assert list(frame.status) == ["ok", "ok", "ok"]
     assert all(file.startswith("/") for file in frame.file)
+
+
+def test_progress_and_folders_the_workers_cannot_see(library, client, capsys):
+    """progress=True shows Dask's bar; a folder the workers do not see stops the batch, named (on a
+    LocalCluster the workers share the client's files, so the check is asked of a folder none has)."""
+    frame = conescope.batch([library / "torus.off"], client=client, views=4, progress=True)
+    assert list(frame.status) == ["ok"]
+    assert "100%" in capsys.readouterr().out
+    from conescope._batch import _check_workers
+    with pytest.raises(conescope.BatchError, match=r"2 of 2 Dask workers .*does not see /no/such/storage"):
+        _check_workers(client, [str(library), "/no/such/storage"])
+    _check_workers(client, [str(library)])
