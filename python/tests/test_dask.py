@@ -110,3 +110,25 @@ def test_progress_and_folders_the_workers_cannot_see(library, client, capsys):
     with pytest.raises(conescope.BatchError, match=r"2 of 2 Dask workers .*does not see /no/such/storage"):
         _check_workers(client, [str(library), "/no/such/storage"])
     _check_workers(client, [str(library)])
+
+
+def test_a_worker_without_the_module_is_named_not_waited_for(library, tmp_path):
+    """A real worker process that cannot import conescope (started without the build on its path)
+    joins the cluster: the batch stops at once with a BatchError naming it."""
+    import os
+    import subprocess
+    import sys
+    cluster = LocalCluster(n_workers=0, processes=True, dashboard_address=":0")
+    environment = {key: value for key, value in os.environ.items() if key != "PYTHONPATH"}
+    worker = subprocess.Popen([sys.executable, "-m", "distributed.cli.dask_worker", cluster.scheduler_address, "--nworkers", "1",
+                               "--nthreads", "1", "--dashboard-address", ":0", "--no-nanny"],
+                              cwd=tmp_path, env=environment, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    try:
+        with Client(cluster) as bare:
+            bare.wait_for_workers(1, timeout=60)
+            with pytest.raises(conescope.BatchError, match=r"1 of 1 Dask workers .*cannot import conescope \(ModuleNotFoundError"):
+                conescope.batch([library / "torus.off"], client=bare, views=4)
+    finally:
+        worker.terminate()
+        worker.wait(timeout=30)
+        cluster.close()
