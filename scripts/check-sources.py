@@ -6,7 +6,10 @@
     ones local to a function by their own name);
   - no comment block in src/ or ui/ runs over 15 lines (figures and diaries go to docs/);
   - the files of src/core include each other without loops (a header and its .cpp count as one);
-  - no source file runs over 600 lines.
+  - no source file runs over 600 lines;
+  - no header outside src/core/meshopt/ includes the folder's door (meshopt/Meshopt.h), and at most
+    MAX_DOOR_INCLUDERS source files outside it do; its internal header (meshopt/Reproduction.h)
+    is included only inside the folder.
 
   scripts/check-sources.py [ROOT]      # prints each breach, exits 1 if there is one
 
@@ -18,6 +21,9 @@ import sys
 
 MAX_COMMENT_LINES = 15
 MAX_FILE_LINES = 600
+# Who may ask meshoptimizer's folder for something: the builders, bounds, records and files that use
+# its meshlets, bounds or simplification (9 today); a new one is a decision, not a side effect.
+MAX_DOOR_INCLUDERS = 10
 SOURCE_SUFFIXES = (".h", ".cpp")
 
 
@@ -98,6 +104,25 @@ def long_comments(files):
                 yield f"{path}:{number}: a /* */ comment of more than {MAX_COMMENT_LINES} lines"
 
 
+def meshopt_door_includes(files):
+    includers = []
+    for path, lines in files:
+        if path.startswith("src/core/meshopt/"):
+            continue
+        for number, line in enumerate(lines, 1):
+            match = re.match(r'\s*#\s*include\s*"(?:core/)?meshopt/(\w+)\.h"', line)
+            if not match:
+                continue
+            if match.group(1) != "Meshopt":
+                yield f"{path}:{number}: meshopt/{match.group(1)}.h is the folder's own; ask meshopt/Meshopt.h"
+            elif path.endswith(".h"):
+                yield f"{path}:{number}: a header includes meshopt/Meshopt.h (declare what it needs instead)"
+            else:
+                includers.append(path)
+    if len(includers) > MAX_DOOR_INCLUDERS:
+        yield (f"{len(includers)} files include meshopt/Meshopt.h (at most {MAX_DOOR_INCLUDERS}): " + ", ".join(includers))
+
+
 def long_files(files):
     for path, lines in files:
         if len(lines) - 1 > MAX_FILE_LINES:
@@ -147,7 +172,7 @@ def main():
     root = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), ".."))
     files = list(source_files(root, ["src", "ui"]))
     breaches = [*meshoptimizer_includes(files), *shared_class_names(files), *long_comments(files), *long_files(files),
-                *include_loops(root, files)]
+                *include_loops(root, files), *meshopt_door_includes(files)]
     for breach in breaches:
         print(breach)
     print(f"check-sources: {len(files)} files, {len(breaches)} breaches", file=sys.stderr)

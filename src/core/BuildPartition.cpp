@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "FileBuilder.h"
+#include "meshopt/Meshopt.h"
 
 namespace conescope {
 

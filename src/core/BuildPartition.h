@@ -8,7 +8,6 @@
 #include "Partition.h"
 #include "Progress.h"
 #include "Settings.h"
-#include "meshopt/Meshopt.h"
 
 namespace conescope {
 

@@ -149,7 +149,7 @@ void appendClusterBounds(ClusterBounds& bounds, ClusterBounds&& more) {
     append(bounds.apexes, std::move(more.apexes));
     append(bounds.octagons, std::move(more.octagons));
     append(bounds.normalsShares, std::move(more.normalsShares));
-    bounds.records = std::make_shared<EngineRecords>();  // records are made for whole bounds only
+    bounds.records = makeEngineRecords();  // records are made for whole bounds only
 }
 
 ClusterFaces clusterRowsOf(const uint32_t* faceIds, const Partition& partOfThem) {

@@ -4,13 +4,13 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
 
 #include "Cones.h"
-#include "EngineRecords.h"
 #include "Mesh.h"
 #include "OctagonCones.h"
 #include "Partition.h"
@@ -18,8 +18,16 @@
 
 namespace conescope {
 
+// The records a bounds holds (EngineRecords.h, which reads the bounds: declared here, so that
+// ClusterBounds.h does not include it).
+class EngineRecords;
+std::shared_ptr<EngineRecords> makeEngineRecords();
+
 enum class ConeMethod { Average, SeedSphere, Minimal, Meshopt };
 enum class SphereMethod { Ritter, Minimal };
+// The default cone and sphere (with kDefaultTest, CullTest.h): the exact minimal ones.
+constexpr ConeMethod kDefaultCone = ConeMethod::Minimal;
+constexpr SphereMethod kDefaultSphere = SphereMethod::Minimal;
 
 struct ClusterBounds {
     ConeMethod coneMethod = ConeMethod::Minimal;
@@ -40,7 +48,7 @@ struct ClusterBounds {
     std::vector<double> normalsShares;
     // The engine tests' and the compact octagon's records, made on first use (RecordTests.h); copies
     // of the bounds share them.
-    std::shared_ptr<EngineRecords> records = std::make_shared<EngineRecords>();
+    std::shared_ptr<EngineRecords> records = makeEngineRecords();
 
     size_t count() const { return cones.size(); }
 };

@@ -7,28 +7,15 @@
 #include <functional>
 #include <vector>
 
+#include "Effort.h"
 #include "ExpectedCull.h"  // the objective, expectedCullRate
 #include "Mesh.h"
-#include "meshopt/Meshopt.h"
 #include "Partition.h"
 #include "Progress.h"
 
 namespace conescope {
 
-// How long the optimized builder searches (docs/benchmarks.md has the measured trade):
-//  Fast:     meshoptimizer's meshlets (cone weight 1; the default budget builds them anyway), then
-//            greedy moves of border faces;
-//  Balanced: the same start, then annealing: two to ten sweeps on a mesh of one part (below 2,048
-//            faces), one on each part of a larger mesh; where the meshlets leave most triangles in
-//            clusters with no cone (foliage, props of a few clusters), clusters grown from like
-//            normals too, and the better kept (the default);
-//  Best:     clusters grown from like normals and reduced to the budget, also started from
-//            meshoptimizer's meshlets where growth misses the budget or the mesh is small, and up
-//            to 100 annealing sweeps; then the balanced search too, whose partition is kept where
-//            it is nearer the budget or culls more in expectation (best never below balanced).
-//            Several times slower; culls the most.
-// Fast and Balanced grow clusters too when the budget is above meshoptimizer's count.
-enum class Effort { Fast, Balanced, Best };
+class MeshletStream;  // meshopt/Meshopt.h: meshoptimizer's meshlets as they are made
 
 // The budget used when none is given: the count meshoptimizer's builder reaches at the same limits
 // with cone weight 1, so that a comparison at defaults is at equal counts. For limits meshoptimizer

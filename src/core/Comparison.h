@@ -50,8 +50,8 @@ struct ViewComparison {
 enum class FaceDiff : uint8_t { Neither = 0, OnlyA = 1, OnlyB = 2, Both = 3 };
 
 struct Comparison {
-    CullTest testA = CullTest::Apex, testB = CullTest::Apex;
-    ConeMethod coneA = ConeMethod::Minimal, coneB = ConeMethod::Minimal;
+    CullTest testA = kDefaultTest, testB = kDefaultTest;
+    ConeMethod coneA = kDefaultCone, coneB = kDefaultCone;
     std::vector<ViewComparison> views;
     // Summed over the views. Back-facing triangles only, as triangles_culled counts them: only A +
     // both is A's triangles_culled and only B + both is B's, view by view and in total.

@@ -47,7 +47,7 @@ struct CrossSectionPlace {
 
 struct CrossSection {
     uint32_t cluster = 0;
-    CullTest test = CullTest::Apex;
+    CullTest test = kDefaultTest;
     bool orthographic = false;
     std::string viewName = "v";       // "d" for a far eye
     glm::dvec3 up{0.0, 1.0, 0.0};     // V1 in 3D

@@ -14,6 +14,10 @@ namespace conescope {
 enum class CullTest { Oracle, Vertices, Aabb, AabbFast, Sphere, Apex, MeshoptSphere, Octagon, MeshoptApexF32, MeshoptSphereS8, CadsceneBoxS8,
                       OctagonCompact };
 
+// The defaults, here and nowhere else (Settings, the statistics and every struct that carries a test):
+// the best measured with the exact minimal cone (docs/benchmarks.md).
+constexpr CullTest kDefaultTest = CullTest::Octagon;
+
 // The test's name in the settings and statistics ("octagon"); Settings.cpp holds the names.
 std::string toString(CullTest);
 

@@ -9,6 +9,7 @@
 
 #include "ClusterBounds.h"
 #include "CullTest.h"
+#include "CullingInput.h"
 #include "Views.h"
 
 namespace conescope {
@@ -22,17 +23,6 @@ Facing classifyFace(const Mesh& mesh, const std::vector<glm::vec3>& world, const
 std::vector<Facing> classifyFaces(const Mesh& mesh, const std::vector<glm::vec3>& world, const FaceGeometry& faces,
                                   const Eye& eye);
 
-struct ClusterBatch;
-
-// The everything a cluster test needs besides the bounds.
-struct CullingInput {
-    const Mesh& mesh;
-    const std::vector<glm::vec3>& world;
-    const FaceGeometry& faces;
-    const ClusterBounds& bounds;
-    // The same bounds as float arrays (BatchCulling.h) for many views; made per call when null.
-    const ClusterBatch* batch = nullptr;
-};
 
 // One cluster, one eye, one test.
 bool cullCluster(const CullingInput& input, uint32_t cluster, const Eye& eye, CullTest test);

@@ -18,14 +18,16 @@ void makeOnce(std::mutex& mutex, bool& made, Make make) {
 
 }  // namespace
 
-std::vector<std::vector<uint32_t>> clusterTriangles(const RecordSource& source) {
-    const ClusterFaces& rows = source.clusters;
-    std::vector<std::vector<uint32_t>> triangles(source.count());
+std::shared_ptr<EngineRecords> makeEngineRecords() { return std::make_shared<EngineRecords>(); }
+
+std::vector<std::vector<uint32_t>> clusterTriangles(const CullingInput& input) {
+    const ClusterFaces& rows = input.bounds.faces;
+    std::vector<std::vector<uint32_t>> triangles(input.bounds.count());
     for (size_t c = 0; c < triangles.size(); ++c)
         for (uint32_t i = rows.starts[c]; i < rows.starts[c + 1]; ++i) {
             const uint32_t f = rows.faces[i];
-            const uint32_t* corners = source.mesh.faceBegin(f);
-            for (size_t k = 1; k + 1 < source.mesh.faceSize(f); ++k) triangles[c].insert(triangles[c].end(), {corners[0], corners[k], corners[k + 1]});
+            const uint32_t* corners = input.mesh.faceBegin(f);
+            for (size_t k = 1; k + 1 < input.mesh.faceSize(f); ++k) triangles[c].insert(triangles[c].end(), {corners[0], corners[k], corners[k + 1]});
         }
     return triangles;
 }
@@ -36,59 +38,59 @@ void EngineRecords::useStoredMeshoptBounds(const std::vector<MeshletBounds>& sto
     meshoptMade_ = false;
 }
 
-const std::vector<MeshletBounds>& EngineRecords::meshopt(const RecordSource& source) const {
+const std::vector<MeshletBounds>& EngineRecords::meshopt(const CullingInput& input) const {
     makeOnce(mutex_, meshoptMade_, [&] {
         if (!stored_.empty()) {
-            if (stored_.size() != source.count())
+            if (stored_.size() != input.bounds.count())
                 throw std::runtime_error("the cluster file stored bounds for " + std::to_string(stored_.size()) + " clusters, the partition has " +
-                                         std::to_string(source.count()));
+                                         std::to_string(input.bounds.count()));
             meshopt_ = stored_;
             return;
         }
-        const std::vector<std::vector<uint32_t>> triangles = clusterTriangles(source);
+        const std::vector<std::vector<uint32_t>> triangles = clusterTriangles(input);
         meshopt_.assign(triangles.size(), MeshletBounds{});
         forRangesInParallel(triangles.size(), 64, [&](size_t begin, size_t end) {
-            for (size_t c = begin; c < end; ++c) meshopt_[c] = meshoptEngineBounds(triangles[c], source.world);
+            for (size_t c = begin; c < end; ++c) meshopt_[c] = meshoptEngineBounds(triangles[c], input.world);
         });
     });
     return meshopt_;
 }
 
-const Aabb& EngineRecords::object(const RecordSource& source) const {
-    makeOnce(mutex_, objectMade_, [&] { object_ = computeAabb(source.world); });
+const Aabb& EngineRecords::object(const CullingInput& input) const {
+    makeOnce(mutex_, objectMade_, [&] { object_ = computeAabb(input.world); });
     return object_;
 }
 
-const std::vector<CadsceneRecord>& EngineRecords::cadscene(const RecordSource& source) const {
-    const Aabb& box = object(source);
+const std::vector<CadsceneRecord>& EngineRecords::cadscene(const CullingInput& input) const {
+    const Aabb& box = object(input);
     makeOnce(mutex_, cadsceneMade_, [&] {
-        const std::vector<std::vector<uint32_t>> triangles = clusterTriangles(source);
+        const std::vector<std::vector<uint32_t>> triangles = clusterTriangles(input);
         cadscene_.resize(triangles.size());
         cadsceneFloat_.resize(triangles.size());
         for (size_t c = 0; c < triangles.size(); ++c) {
-            cadscene_[c] = cadsceneRecord(triangles[c], source.world, box);
-            cadsceneFloat_[c] = cadsceneFloatRecord(triangles[c], source.world);
+            cadscene_[c] = cadsceneRecord(triangles[c], input.world, box);
+            cadsceneFloat_[c] = cadsceneFloatRecord(triangles[c], input.world);
         }
     });
     return cadscene_;
 }
 
-const std::vector<CadsceneFloat>& EngineRecords::cadsceneFloat(const RecordSource& source) const {
-    cadscene(source);
+const std::vector<CadsceneFloat>& EngineRecords::cadsceneFloat(const CullingInput& input) const {
+    cadscene(input);
     return cadsceneFloat_;
 }
 
-const std::vector<CompactOctagon>& EngineRecords::compactOctagons(const RecordSource& source) const {
-    const ApexGrid grid = apexGridOver(object(source));
+const std::vector<CompactOctagon>& EngineRecords::compactOctagons(const CullingInput& input) const {
+    const ApexGrid grid = apexGridOver(object(input));
     makeOnce(mutex_, compactMade_, [&] {
-        const ClusterFaces& rows = source.clusters;
-        compact_.resize(source.count());
-        decoded_.resize(source.count());
-        forRangesInParallel(source.count(), 64, [&](size_t begin, size_t end) {
+        const ClusterFaces& rows = input.bounds.faces;
+        compact_.resize(input.bounds.count());
+        decoded_.resize(input.bounds.count());
+        forRangesInParallel(input.bounds.count(), 64, [&](size_t begin, size_t end) {
             for (size_t c = begin; c < end; ++c) {
                 const uint32_t* faces = rows.faces.data() + rows.starts[c];
                 const size_t count = rows.starts[c + 1] - rows.starts[c];
-                compact_[c] = encodeCompactOctagon(source.cones[c], source.mesh, source.world, source.faces, faces, count, grid);
+                compact_[c] = encodeCompactOctagon(input.bounds.cones[c], input.mesh, input.world, input.faces, faces, count, grid);
                 decoded_[c] = decodeCompactOctagon(compact_[c], grid);
             }
         });
@@ -96,8 +98,8 @@ const std::vector<CompactOctagon>& EngineRecords::compactOctagons(const RecordSo
     return compact_;
 }
 
-const std::vector<DecodedOctagon>& EngineRecords::decodedOctagons(const RecordSource& source) const {
-    compactOctagons(source);
+const std::vector<DecodedOctagon>& EngineRecords::decodedOctagons(const CullingInput& input) const {
+    compactOctagons(input);
     return decoded_;
 }
 

@@ -11,22 +11,12 @@
 
 #include "CadsceneCones.h"
 #include "CompactOctagons.h"
+#include "CullingInput.h"
 #include "FileClusters.h"
 #include "Mesh.h"
 #include "Partition.h"
 
 namespace conescope {
-
-// What the records are made from: the stages the bounds were made from, and of the bounds the
-// clusters' faces and cones (ClusterBounds holds the records, so they do not know it).
-struct RecordSource {
-    const Mesh& mesh;
-    const std::vector<glm::vec3>& world;
-    const FaceGeometry& faces;
-    const ClusterFaces& clusters;
-    const std::vector<ConeOfNormals>& cones;
-    size_t count() const { return cones.size(); }
-};
 
 class EngineRecords {
 public:
@@ -34,13 +24,13 @@ public:
     void useStoredMeshoptBounds(const std::vector<MeshletBounds>& stored);
     bool meshoptStored() const { return !stored_.empty(); }
 
-    const std::vector<MeshletBounds>& meshopt(const RecordSource& source) const;
+    const std::vector<MeshletBounds>& meshopt(const CullingInput& input) const;
     // The mesh's world box: the grid of cadscene's boxes and of the compact octagon's apexes.
-    const Aabb& object(const RecordSource& source) const;
-    const std::vector<CadsceneRecord>& cadscene(const RecordSource& source) const;
-    const std::vector<CadsceneFloat>& cadsceneFloat(const RecordSource& source) const;
-    const std::vector<CompactOctagon>& compactOctagons(const RecordSource& source) const;
-    const std::vector<DecodedOctagon>& decodedOctagons(const RecordSource& source) const;
+    const Aabb& object(const CullingInput& input) const;
+    const std::vector<CadsceneRecord>& cadscene(const CullingInput& input) const;
+    const std::vector<CadsceneFloat>& cadsceneFloat(const CullingInput& input) const;
+    const std::vector<CompactOctagon>& compactOctagons(const CullingInput& input) const;
+    const std::vector<DecodedOctagon>& decodedOctagons(const CullingInput& input) const;
 
 private:
     mutable std::mutex mutex_;
@@ -55,6 +45,6 @@ private:
 };
 
 // The fan triangles of each cluster's faces, in face order: what an engine's meshlet would hold.
-std::vector<std::vector<uint32_t>> clusterTriangles(const RecordSource& source);
+std::vector<std::vector<uint32_t>> clusterTriangles(const CullingInput& input);
 
 }  // namespace conescope

@@ -46,8 +46,8 @@ struct LessonStep {
 
 struct Lesson {
     uint32_t cluster = 0;
-    CullTest test = CullTest::Octagon;
-    ConeMethod coneMethod = ConeMethod::Minimal;
+    CullTest test = kDefaultTest;
+    ConeMethod coneMethod = kDefaultCone;
     Eye eye;
     CullExplanation why;                 // explainCull: every number the test compared
     size_t faces = 0, triangles = 0, vertices = 0;

@@ -7,9 +7,11 @@
 #include <stdexcept>
 
 #include "BatchCulling.h"
+#include "EngineRecords.h"
 #include "FileBuilder.h"
 #include "RecordTests.h"
 #include "SettingsSchema.h"
+#include "meshopt/Meshopt.h"
 
 namespace conescope {
 

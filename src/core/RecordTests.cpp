@@ -2,17 +2,14 @@
 
 #include <stdexcept>
 
+#include "EngineRecords.h"
 #include "meshopt/Meshopt.h"
 
 namespace conescope {
 
 namespace {
 
-RecordSource sourceOf(const RecordInput& input) {
-    return {input.mesh, input.world, input.faces, input.bounds.faces, input.bounds.cones};
-}
-
-const EngineRecords& recordsOf(const RecordInput& input) { return *input.bounds.records; }
+const EngineRecords& recordsOf(const CullingInput& input) { return *input.bounds.records; }
 
 }  // namespace
 
@@ -55,14 +52,13 @@ size_t recordBytes(CullTest test) {
     return 0;
 }
 
-bool ownRecordCulls(const RecordInput& input, uint32_t cluster, const Eye& eye, CullTest test) {
+bool ownRecordCulls(const CullingInput& input, uint32_t cluster, const Eye& eye, CullTest test) {
     const EngineRecords& records = recordsOf(input);
-    const RecordSource source = sourceOf(input);
-    switch (test) {
-        case CullTest::MeshoptApexF32: return meshoptApexCulls(records.meshopt(source)[cluster], eye);
-        case CullTest::MeshoptSphereS8: return meshoptSphereS8Culls(records.meshopt(source)[cluster], eye);
-        case CullTest::CadsceneBoxS8: return cadsceneCulls(records.cadscene(source)[cluster], records.object(source), eye);
-        case CullTest::OctagonCompact: return compactOctagonCulls(records.decodedOctagons(source)[cluster], eye);
+        switch (test) {
+        case CullTest::MeshoptApexF32: return meshoptApexCulls(records.meshopt(input)[cluster], eye);
+        case CullTest::MeshoptSphereS8: return meshoptSphereS8Culls(records.meshopt(input)[cluster], eye);
+        case CullTest::CadsceneBoxS8: return cadsceneCulls(records.cadscene(input)[cluster], records.object(input), eye);
+        case CullTest::OctagonCompact: return compactOctagonCulls(records.decodedOctagons(input)[cluster], eye);
         default: throw std::logic_error("ownRecordCulls: " + std::to_string(int(test)) + " reads no record of its own");
     }
 }
@@ -71,25 +67,23 @@ bool hasFloatOriginal(CullTest test) {
     return test == CullTest::MeshoptSphereS8 || test == CullTest::CadsceneBoxS8 || test == CullTest::OctagonCompact;
 }
 
-bool floatOriginalCulls(const RecordInput& input, uint32_t cluster, const Eye& eye, CullTest test) {
+bool floatOriginalCulls(const CullingInput& input, uint32_t cluster, const Eye& eye, CullTest test) {
     const EngineRecords& records = recordsOf(input);
-    const RecordSource source = sourceOf(input);
-    switch (test) {
-        case CullTest::MeshoptSphereS8: return meshoptSphereF32Culls(records.meshopt(source)[cluster], eye);
-        case CullTest::CadsceneBoxS8: return cadsceneFloatCulls(records.cadsceneFloat(source)[cluster], eye);
+        switch (test) {
+        case CullTest::MeshoptSphereS8: return meshoptSphereF32Culls(records.meshopt(input)[cluster], eye);
+        case CullTest::CadsceneBoxS8: return cadsceneFloatCulls(records.cadsceneFloat(input)[cluster], eye);
         default: return false;
     }
 }
 
-double ownRecordMargin(const RecordInput& input, uint32_t cluster, const Eye& eye, CullTest test) {
+double ownRecordMargin(const CullingInput& input, uint32_t cluster, const Eye& eye, CullTest test) {
     const EngineRecords& records = recordsOf(input);
-    const RecordSource source = sourceOf(input);
-    switch (test) {
-        case CullTest::MeshoptApexF32: return meshoptApexMargin(records.meshopt(source)[cluster], eye);
-        case CullTest::MeshoptSphereS8: return meshoptSphereS8Margin(records.meshopt(source)[cluster], eye);
-        case CullTest::CadsceneBoxS8: return cadsceneMargin(records.cadscene(source)[cluster], records.object(source), eye);
+        switch (test) {
+        case CullTest::MeshoptApexF32: return meshoptApexMargin(records.meshopt(input)[cluster], eye);
+        case CullTest::MeshoptSphereS8: return meshoptSphereS8Margin(records.meshopt(input)[cluster], eye);
+        case CullTest::CadsceneBoxS8: return cadsceneMargin(records.cadscene(input)[cluster], records.object(input), eye);
         case CullTest::OctagonCompact: {
-            const DecodedOctagon& decoded = records.decodedOctagons(source)[cluster];
+            const DecodedOctagon& decoded = records.decodedOctagons(input)[cluster];
             if (!decoded.octagon.cullable) return -1.0;
             return octagonTightest(decoded.octagon, eye.orthographic ? eye.direction : decoded.apex - eye.position) - kCullMargin;
         }
@@ -97,14 +91,13 @@ double ownRecordMargin(const RecordInput& input, uint32_t cluster, const Eye& ey
     }
 }
 
-double ownRecordCullShare(const RecordInput& input, uint32_t cluster, CullTest test) {
+double ownRecordCullShare(const CullingInput& input, uint32_t cluster, CullTest test) {
     const EngineRecords& records = recordsOf(input);
-    const RecordSource source = sourceOf(input);
-    switch (test) {
-        case CullTest::MeshoptApexF32: return meshoptApexCullShare(records.meshopt(source)[cluster]);
-        case CullTest::MeshoptSphereS8: return meshoptSphereS8CullShare(records.meshopt(source)[cluster]);
-        case CullTest::CadsceneBoxS8: return cadsceneCullShare(records.cadscene(source)[cluster]);
-        case CullTest::OctagonCompact: return octagonCullShare(records.decodedOctagons(source)[cluster].octagon);
+        switch (test) {
+        case CullTest::MeshoptApexF32: return meshoptApexCullShare(records.meshopt(input)[cluster]);
+        case CullTest::MeshoptSphereS8: return meshoptSphereS8CullShare(records.meshopt(input)[cluster]);
+        case CullTest::CadsceneBoxS8: return cadsceneCullShare(records.cadscene(input)[cluster]);
+        case CullTest::OctagonCompact: return octagonCullShare(records.decodedOctagons(input)[cluster].octagon);
         default: return 0.0;
     }
 }

@@ -16,19 +16,13 @@
 
 #include "ClusterBounds.h"
 #include "CullTest.h"
+#include "CullingInput.h"
 #include "Views.h"
 
 namespace conescope {
 
 // What a record's test reads: the stages the bounds were made from, and the bounds (which hold the
 // records, ClusterBounds::records). Culling.h's CullingInput carries the same.
-struct RecordInput {
-    const Mesh& mesh;
-    const std::vector<glm::vec3>& world;
-    const FaceGeometry& faces;
-    const ClusterBounds& bounds;
-};
-
 // Whether the test reads a record of its own (one of the four above).
 bool readsOwnRecord(CullTest test);
 // Its rule in one line, for people (the picked cluster's page).
@@ -43,7 +37,7 @@ bool reproducesEngineRecord(CullTest test);
 size_t recordBytes(CullTest test);
 
 // The record's decision for one cluster (readsOwnRecord tests only).
-bool ownRecordCulls(const RecordInput& input, uint32_t cluster, const Eye& eye, CullTest test);
+bool ownRecordCulls(const CullingInput& input, uint32_t cluster, const Eye& eye, CullTest test);
 
 // Quantised records' float originals: meshopt-sphere-s8's the same test with meshopt_Bounds' float
 // axis and cutoff, cadscene-box-s8's its float box, average axis and angle without the quantisation
@@ -51,13 +45,13 @@ bool ownRecordCulls(const RecordInput& input, uint32_t cluster, const Eye& eye, 
 // Their culls that the quantised record drew, in clusters whose every face faced away, are its
 // quantisation loss.
 bool hasFloatOriginal(CullTest test);
-bool floatOriginalCulls(const RecordInput& input, uint32_t cluster, const Eye& eye, CullTest test);
+bool floatOriginalCulls(const CullingInput& input, uint32_t cluster, const Eye& eye, CullTest test);
 
 // How far the record passes its threshold (above 0 it culls), in units of a unit view's dot product.
-double ownRecordMargin(const RecordInput& input, uint32_t cluster, const Eye& eye, CullTest test);
+double ownRecordMargin(const CullingInput& input, uint32_t cluster, const Eye& eye, CullTest test);
 
 // Share of view directions (eye at infinity) from which the record culls the cluster.
-double ownRecordCullShare(const RecordInput& input, uint32_t cluster, CullTest test);
+double ownRecordCullShare(const CullingInput& input, uint32_t cluster, CullTest test);
 
 
 }  // namespace conescope

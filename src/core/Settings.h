@@ -10,8 +10,8 @@
 #include <glm/glm.hpp>
 
 #include "ClusterBounds.h"
-#include "ClusterOptimizer.h"
 #include "Culling.h"
+#include "Effort.h"
 #include "Partition.h"
 
 namespace conescope {
@@ -29,9 +29,9 @@ struct Settings {
     std::shared_ptr<const ClusterIdFile> clusterIds;  // clusterFile as io read it (io/ClusterIdFile.h)
     double normalWeight = 1.0;        // meshlet / kmeans preference for narrow cones
     float meshoptConeWeight = 1.0f;   // meshopt builder's cone_weight
-    std::vector<ConeMethod> cones{ConeMethod::Minimal};
-    std::vector<CullTest> tests{CullTest::Octagon};
-    SphereMethod sphere = SphereMethod::Minimal;
+    std::vector<ConeMethod> cones{kDefaultCone};
+    std::vector<CullTest> tests{kDefaultTest};
+    SphereMethod sphere = kDefaultSphere;
     size_t views = 128;
     double distance = 3.0;
     bool orthographic = false;

@@ -18,9 +18,8 @@ namespace {
 std::vector<uint8_t> floatOriginalDecisions(const CullingInput& input, const Eye& eye, CullTest test) {
     if (!hasFloatOriginal(test)) return {};
     if (test == CullTest::OctagonCompact) return cullClusters(input, eye, CullTest::Octagon);
-    const RecordInput records{input.mesh, input.world, input.faces, input.bounds};
     std::vector<uint8_t> culled(input.bounds.count());
-    for (uint32_t c = 0; c < culled.size(); ++c) culled[c] = floatOriginalCulls(records, c, eye, test);
+    for (uint32_t c = 0; c < culled.size(); ++c) culled[c] = floatOriginalCulls(input, c, eye, test);
     return culled;
 }
 

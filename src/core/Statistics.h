@@ -54,8 +54,8 @@ struct ClusterStatistics {
 };
 
 struct CullTestStatistics {
-    ConeMethod cone = ConeMethod::Minimal;
-    CullTest test = CullTest::Vertices;
+    ConeMethod cone = kDefaultCone;
+    CullTest test = kDefaultTest;
     size_t clustersCulled = 0;
     size_t trianglesCulled = 0;
     size_t backFacingTriangles = 0;

@@ -17,7 +17,7 @@ namespace conescope {
 // What the layer draws: one cluster's test from one eye.
 struct CullTestDrawing {
     int cluster = -1;                 // -1: nothing
-    CullTest test = CullTest::Apex;
+    CullTest test = kDefaultTest;
     Eye eye;
     CullExplanation why;
     Sphere sphere;                    // the cluster's bounding sphere

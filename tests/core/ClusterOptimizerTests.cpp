@@ -12,6 +12,7 @@
 #include "TestMeshes.h"
 #include "core/ClusterOptimizer.h"
 #include "core/Pipeline.h"
+#include "core/meshopt/Meshopt.h"
 
 using namespace conescope;
 

@@ -12,6 +12,7 @@
 #include "PartitionChecks.h"
 #include "TestMeshes.h"
 #include "core/ClusterOptimizer.h"
+#include "core/meshopt/Meshopt.h"
 
 namespace conescope {
 namespace {

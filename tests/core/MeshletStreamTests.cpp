@@ -15,6 +15,7 @@
 
 #include "TestMeshes.h"
 #include "core/meshopt/Meshopt.h"
+#include "core/meshopt/Reproduction.h"
 
 namespace conescope {
 namespace {

@@ -13,6 +13,7 @@
 #include "TestMeshes.h"
 #include "core/meshopt/KdTree.h"
 #include "core/meshopt/Meshopt.h"
+#include "core/meshopt/Reproduction.h"
 #include "core/Partition.h"
 
 namespace conescope {

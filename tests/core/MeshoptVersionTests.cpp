@@ -5,6 +5,7 @@
 
 #include "TestMeshes.h"
 #include "core/meshopt/Meshopt.h"
+#include "core/meshopt/Reproduction.h"
 
 namespace conescope {
 namespace {

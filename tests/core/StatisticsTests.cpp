@@ -7,6 +7,7 @@
 #include "TestMeshes.h"
 #include "core/Pipeline.h"
 #include "core/SettingsSchema.h"
+#include "core/meshopt/Reproduction.h"
 
 using namespace conescope;
 

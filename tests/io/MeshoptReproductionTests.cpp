@@ -13,6 +13,7 @@
 #include "IoTestSupport.h"
 #include "core/Partition.h"
 #include "core/meshopt/Meshopt.h"
+#include "core/meshopt/Reproduction.h"
 #include "io/MeshReader.h"
 
 namespace conescope {

@@ -15,6 +15,7 @@
 #include "io/ClusterIdFile.h"
 #include "io/MeshReader.h"
 #include "io/MeshletFiles.h"
+#include "core/meshopt/Reproduction.h"
 
 namespace conescope {
 namespace {

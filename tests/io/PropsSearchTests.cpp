@@ -12,6 +12,7 @@
 #include "IoTestSupport.h"
 #include "core/ClusterOptimizer.h"
 #include "io/MeshReader.h"
+#include "core/meshopt/Meshopt.h"
 
 namespace conescope {
 namespace {

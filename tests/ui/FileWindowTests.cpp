@@ -489,3 +489,4 @@ int main(int argc, char** argv) {
 }
 
 #include "FileWindowTests.moc"
+#include "core/meshopt/Meshopt.h"

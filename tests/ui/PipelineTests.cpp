@@ -371,3 +371,4 @@ private slots:
 
 QTEST_GUILESS_MAIN(PipelineTests)
 #include "PipelineTests.moc"
+#include "core/meshopt/Meshopt.h"

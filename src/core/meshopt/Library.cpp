@@ -1,6 +1,7 @@
 // Every call into meshoptimizer itself, and the one check of which version is linked. The only
 // file of ConeScope that includes <meshoptimizer.h>.
 #include "Meshopt.h"
+#include "Reproduction.h"
 
 #include <meshoptimizer.h>
 

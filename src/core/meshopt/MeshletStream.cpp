@@ -1,5 +1,6 @@
 // meshoptimizer's meshlets made on a thread of their own and handed over in parts (Meshopt.h).
 #include "Meshopt.h"
+#include "Reproduction.h"
 
 #include <algorithm>
 #include <atomic>

@@ -1,6 +1,7 @@
 // meshoptimizer's meshlets of a mesh as a partition of its faces: the limits it takes, the fan
 // triangles it is given, and the choice between the reproduction and the library.
 #include "Meshopt.h"
+#include "Reproduction.h"
 
 #include <algorithm>
 #include <stdexcept>

@@ -1,15 +1,15 @@
-// meshoptimizer in ConeScope: everything that knows the library lives in src/core/meshopt/, and
-// this is the folder's one header. Upgrading meshoptimizer is a decision about this folder alone.
-//   Which library    the version reproduced and one check of the linked one (reproducesLinkedMeshopt)
-//   Meshlets         meshopt_buildMeshlets as a partition of faces, by the reproduction or the library
-//   The reproduction meshoptimizer 0.18's builder made again, on the library's own arguments
+// meshoptimizer in ConeScope, the door: what the rest of the core may ask of src/core/meshopt/.
+// Everything that knows the library lives in that folder; upgrading meshoptimizer is a decision
+// about it alone. Reproduction.h holds the folder's own workings (which library, the reproduction
+// of its builder), for the folder and its tests only.
+//   Meshlets         meshopt_buildMeshlets as a partition of faces
 //   In parts         the meshlets handed over as they are made, on a thread of their own (MeshletStream)
 //   Bounds           meshopt_computeClusterBounds for one cluster of faces
 //   Engine records   meshopt_Bounds as engines ship them, tested as their shaders test them
 //   Simplification   meshopt_simplify with the border locked, for cluster LOD hierarchies
 // Only Library.cpp includes <meshoptimizer.h>, and a new call into the library goes there too,
 // declared here in its section; the reproduction (Reproduction.cpp, KdTree.h) and the stream
-// (MeshletStream.cpp, CoreAffinity.h) are ConeScope's own code. docs/architecture.md has the why.
+// (MeshletStream.cpp, CoreAffinity.h) are ConeScope's own code. docs/dev/architecture.md has the why.
 #pragma once
 
 #include <cstddef>
@@ -30,20 +30,6 @@
 
 namespace conescope {
 
-// --- Which library ------------------------------------------------------------------------------
-
-// The meshoptimizer version (MESHOPTIMIZER_VERSION) whose builder reproduceMeshoptMeshlets makes again.
-constexpr int kReproducedMeshoptVersion = 180;
-// The version of the meshoptimizer ConeScope was built with.
-int linkedMeshoptVersion();
-// The one check: whether the linked library is the version reproduced. Where it is not, the
-// builder and the stream call the library instead (slower, and the stream's meshlets come as one
-// part), and the tests of the reproduction skip while one test fails to say so.
-bool reproducesLinkedMeshopt();
-// Empty where the reproduction runs; else a sentence that says which version is linked and that
-// the library's builder runs instead (what the tests of the reproduction skip with).
-std::string meshoptFallbackNote();
-
 // --- meshoptimizer's meshlets of a mesh, as a partition of its faces -----------------------------
 
 // Whether meshoptimizer's builder takes these limits (3..255 vertices, at most 512 triangles, a
@@ -59,52 +45,9 @@ std::vector<uint32_t> fanTriangles(const Mesh& mesh);
 // triangles; a face the library leaves unplaced (centres near the float range, where its k-d tree
 // finds nothing) goes with the face before it. Throws as requireMeshoptLimits.
 Partition buildMeshoptMeshlets(const Mesh& mesh, const MeshletLimits& limits, float coneWeight);
-// The same from the reproduction, whatever library is linked.
-Partition meshoptReproducedMeshlets(const Mesh& mesh, const MeshletLimits& limits, float coneWeight);
-// The same from the library itself, its output triangles matched back to faces by their corners
-// (of faces with the same corners, each takes the next one not yet matched).
-Partition meshoptLibraryMeshlets(const Mesh& mesh, const MeshletLimits& limits, float coneWeight);
 // How many clusters buildMeshoptMeshlets makes (the optimized builder's default budget), without
-// mapping the meshlets back to faces where every face is a triangle, and how many the library's
-// make. Throw as requireMeshoptLimits.
+// mapping the meshlets back to faces where every face is a triangle. Throws as requireMeshoptLimits.
 size_t meshoptMeshletCount(const Mesh& mesh, const MeshletLimits& limits, float coneWeight);
-size_t meshoptLibraryMeshletCount(const Mesh& mesh, const MeshletLimits& limits, float coneWeight);
-
-// A meshlet per face (~0u for a face in none) as a partition: a face in no meshlet goes with the
-// face before it (the first with meshlet 0), then the ids are renumbered in order of first use.
-Partition meshletsAsPartition(std::vector<uint32_t> meshletOfFace);
-
-// --- The reproduction: meshopt_buildMeshlets of 0.18, decision for decision ----------------------
-// The same meshlets, triangle for triangle and in the same order, in about half the time, and with
-// the meshlet of every input triangle (the library reorders triangles and returns only corners).
-
-struct MeshoptMeshlets {
-    std::vector<uint32_t> meshletOfTriangle;  // per input triangle; ~0u for one never placed
-    std::vector<uint32_t> placementOrder;     // the triangles in the order the builder placed them
-    size_t count = 0;                         // meshlets
-    // Whether the library's k-d tree of triangle centres was built: scans stand in for its few
-    // searches where they can (same answers; the tests see both ways taken).
-    bool builtTree = false;
-};
-
-// Hears (meshlets closed, triangles placed) each time a meshlet is closed, the last one included,
-// from the building thread: every triangle placed so far is in a closed meshlet or the open one,
-// and the result's entries for them are final. Returning false stops the building (the result
-// then holds what was placed).
-using MeshletClosed = std::function<bool(size_t closedMeshlets, size_t placedTriangles)>;
-
-// The arguments are meshopt_buildMeshlets' (positionStride in bytes); the limits must be ones it
-// takes. Indices must be below vertexCount. `result`'s vectors are sized before the first triangle
-// is placed, so that a listener may read placed entries while it runs. On large meshes the k-d tree
-// is made on a thread of its own, held on `treeCores` where given (a core that would idle).
-void reproduceMeshoptMeshlets(MeshoptMeshlets& result, const uint32_t* indices, size_t indexCount, const float* positions,
-                              size_t vertexCount, size_t positionStride, size_t maxVertices, size_t maxTriangles, float coneWeight,
-                              const MeshletClosed& closed = {}, const Cores& treeCores = {});
-MeshoptMeshlets reproduceMeshoptMeshlets(const uint32_t* indices, size_t indexCount, const float* positions, size_t vertexCount,
-                                         size_t positionStride, size_t maxVertices, size_t maxTriangles, float coneWeight);
-
-// The partition of faces that meshlets made from fanTriangles(mesh) give (as buildMeshoptMeshlets).
-Partition facesOfMeshlets(const Mesh& mesh, const MeshoptMeshlets& meshlets);
 
 // --- In parts, as they are made ------------------------------------------------------------------
 // The builder sweeps the surface meshlet by meshlet, so consecutive meshlets make a part of the
@@ -122,11 +65,6 @@ struct MeshletPart {
 // shares of about 640 faces each (at least two, at most 64) with the last share in two halves.
 // Fixed by the face count alone, so the partitions do not depend on the machine.
 size_t meshletPartsFor(size_t faceCount);
-
-// How many of `triangles` placed triangles close part `part` of `partCount` (2 or more): equal
-// shares, the last share in two halves, so that the last part, which only begins once the builder
-// is done, is short. The last part ends at `triangles`.
-size_t placedThroughPart(size_t part, size_t partCount, size_t triangles);
 
 // buildMeshoptMeshlets at cone weight 1, on a thread of its own, handed over in parts. A face goes
 // with the meshlet of its first placed fan triangle (the lowest, as buildMeshoptMeshlets does).

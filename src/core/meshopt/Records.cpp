@@ -1,6 +1,7 @@
 // meshoptimizer's records tested as engines test them: in float, in the shaders' order of
 // operations, and not made conservative (Meshopt.h, "Engine records").
 #include "Meshopt.h"
+#include "Reproduction.h"
 
 #include <algorithm>
 #include <cmath>

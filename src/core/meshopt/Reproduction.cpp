@@ -6,6 +6,7 @@
 // in one folder", has the whole argument). Everything that decides is the library's float
 // arithmetic in the library's order, compiled without contracted multiply-adds.
 #include "Meshopt.h"
+#include "Reproduction.h"
 #include "KdTree.h"
 
 #include <algorithm>

@@ -12,38 +12,17 @@
 #include <utility>
 #include <vector>
 
+#include "BuildPlan.h"
 #include "Parts.h"
 #include "Runs.h"
 #include "State.h"
 #include "Steps.h"
 #include "core/Parallel.h"
+#include "core/meshopt/Meshopt.h"
 
 namespace conescope {
 
 namespace {
-
-// The default budget fills clusters to this fraction of what a round patch holds: at 64/124 that
-// is 84 triangles, about what meshoptimizer's builder reaches at cone weight 1 (84-87 on the CGAL
-// meshes) and a budget the reduction reaches on all of them.
-constexpr double kDefaultFill = 0.68;
-SearchPlan planFor(Effort effort) {
-    switch (effort) {
-        case Effort::Fast: return {false, 0, 0, 0.0, 0};
-        case Effort::Balanced: return {false, 2, 2, std::numeric_limits<double>::infinity(), 1, kGrowWhereUncullable, true, kOnePartSweepVisits};
-        case Effort::Best: break;
-    }
-    return {true, 100, 8, 5.0e6, 100};
-}
-
-SearchPlan planAt(Effort effort, const MeshletLimits& limits) {
-    SearchPlan plan = planFor(effort);
-    plan.meshoptLimits = meshoptTakesLimits(limits);
-    return plan;
-}
-
-// The fast levels start from meshoptimizer's meshlets where it takes the limits.
-bool startsFromMeshlets(const SearchPlan& plan) { return !plan.growthStart && plan.meshoptLimits; }
-
 
 // defaultClusterBudget, with whether meshoptimizer takes the limits known.
 size_t defaultBudget(const Mesh& mesh, const MeshletLimits& limits, bool meshoptLimits) {
@@ -72,20 +51,9 @@ size_t fewestClustersWithin(const Mesh& mesh, const MeshletLimits& limits) {
     return std::max(atLeast(triangleCount(mesh), limits.maxTriangles), atLeast(usedVertices, limits.maxVertices));
 }
 
-size_t annealingSweepsFor(Effort effort, size_t faceCount, size_t meshletParts) {
-    const SearchPlan plan = planFor(effort);
-    if (meshletParts == 1 && plan.onePartSweepVisits > 0.0)
-        return std::clamp<size_t>(size_t(plan.onePartSweepVisits / double(std::max<size_t>(faceCount, 1))), plan.minSweeps, kOnePartSweepsAtMost);
-    const size_t sweeps = annealingSweeps(plan, faceCount);
-    return meshletParts > 1 ? std::min(sweeps, plan.sweepsPerPart) : sweeps;
-}
-
-bool startsFromMeshoptMeshlets(const MeshletLimits& limits, Effort effort) { return startsFromMeshlets(planAt(effort, limits)); }
+bool startsFromMeshoptMeshlets(const MeshletLimits& limits, Effort effort) { return startsFromMeshlets(effort, meshoptTakesLimits(limits)); }
 
 namespace {
-
-// The default orbit's distance in half-diagonals of the mesh's box (Settings::distance).
-constexpr double kOrbitDistance = 3.0;
 
 // The optimisation from meshoptimizer's meshlets, part by part as the stream makes them: this
 // thread takes parts in order as they come, and the stream's thread takes them too once its
@@ -206,7 +174,7 @@ bool onePiece(const Mesh& mesh) {
 // joined across a gap: its halves could span it), or whose halves miss 2 stay whole.
 Partition splitToBudget(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits, Partition start,
                         size_t target) {
-    const SearchPlan fast = planAt(Effort::Fast, limits);
+    const SearchPlan fast = searchPlanFor(Effort::Fast, meshoptTakesLimits(limits));
     std::vector<uint32_t> newIndex(mesh.positions.size(), optimizer::kNone);
     while (start.clusterCount < target) {
         const ClusterFaces rows = facesByCluster(start);
@@ -238,12 +206,10 @@ Partition splitToBudget(const Mesh& mesh, const FaceGeometry& faces, const Meshl
     return start;
 }
 
-// Whether partition `a` is the one to keep over `b` at a budget: within it first, then the nearer
-// count, then the higher expected cull rate.
+// Whether partition `a` is the one to keep over `b` at a budget (nearerTheBudget, then the higher
+// expected cull rate).
 bool betterAtBudget(const Mesh& mesh, const FaceGeometry& faces, const Partition& a, const Partition& b, size_t target) {
-    const bool aAbove = a.clusterCount > target, bAbove = b.clusterCount > target;
-    if (aAbove != bAbove) return !aAbove;
-    if (a.clusterCount != b.clusterCount) return aAbove ? a.clusterCount < b.clusterCount : a.clusterCount > b.clusterCount;
+    if (const std::optional<bool> nearer = nearerTheBudget(a.clusterCount, b.clusterCount, target)) return *nearer;
     return expectedCullRate(mesh, faces, a) > expectedCullRate(mesh, faces, b);
 }
 
@@ -264,139 +230,139 @@ MeshletStream& meshletsFor(const Mesh& mesh, const MeshletLimits& limits, Meshle
     return *own;
 }
 
-}  // namespace
+// One build's inputs, shared by the steps of its plan.
+struct BuildInputs {
+    const Mesh& mesh;
+    const FaceGeometry& faces;
+    const MeshletLimits& limits;
+    MeshletStream* meshlets;  // meshoptimizer's meshlets of this mesh where the plan starts there
+    BuildFacts facts;
+};
 
-namespace {
-
-// The builder's steps to the budget, before packing (buildOptimizedClusters).
-Partition buildNearBudget(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits, size_t targetClusters,
-                          const ProgressCallback& progress, Effort effort, MeshletStream* meshlets, const PartClusters& partDone) {
-    const size_t faceCount = mesh.faceCount();
-    if (faceCount == 0) return {};
-    SearchPlan plan = planAt(effort, limits);
-    plan.viewDistance = kOrbitDistance * double(computeAabb(mesh.positions).halfDiagonal());
-    const size_t sweeps = annealingSweeps(plan, faceCount);
-    // The fast levels start from meshoptimizer's meshlets, whose count is the default budget; a
-    // budget above it is grown instead.
-    std::unique_ptr<MeshletStream> ownStream;
-    if (startsFromMeshlets(plan)) {
-        meshlets = &meshletsFor(mesh, limits, meshlets, ownStream);
-        if (targetClusters == 0 || targetClusters <= meshlets->meshletCount()) {
-            // The default budget keeps the refined meshlets: as fast as meshoptimizer's own build.
-            // At the balanced level an explicit budget also grows its own clusters and keeps what
-            // culls more in expectation: growth beat the refined meshlets a few clusters below
-            // their count (a cliff at the count: docs/benchmarks.md, "Budget sweep").
-            const bool alsoGrow = targetClusters != 0 && effort == Effort::Balanced;
-            const Partition fromMeshlets = optimizeMeshletParts(mesh, faces, limits, targetClusters, plan,
-                                                                annealingSweepsFor(effort, faceCount, meshlets->partCount()),
-                                                                *meshlets, progress, alsoGrow ? PartClusters() : partDone);
-            if (targetClusters == 0 || (!alsoGrow && fromMeshlets.clusterCount <= targetClusters)) return fromMeshlets;
-            // Elsewhere growth is tried where a part's share of the budget is below what its own
-            // faces allow while the whole mesh allows the budget.
-            const Partition grown = optimizeGrownParts(mesh, faces, limits, targetClusters, plan, sweeps, progress, {});
-            const Partition& kept = betterAtBudget(mesh, faces, grown, fromMeshlets, targetClusters) ? grown : fromMeshlets;
-            if (alsoGrow || &kept == &grown) heardAsOnePart(partDone, faceCount, kept);  // else its parts were heard
-            return kept;
-        }
-        // A budget above meshoptimizer's count: its optimised meshlets split to the budget and
-        // searched again, or clusters grown and reduced to it, whichever culls more in expectation.
-        // Growth alone culled less than meshoptimizer's count on a third of CGAL's meshes (a cliff
-        // at 1.05x its count: docs/benchmarks.md, "Budget sweep").
-        const Partition fromMeshlets = optimizeMeshletParts(mesh, faces, limits, 0, plan,
-                                                            annealingSweepsFor(effort, faceCount, meshlets->partCount()),
-                                                            *meshlets, progress, {});
-        const Partition halves = splitToBudget(mesh, faces, limits, fromMeshlets, targetClusters);
-        // Growth keeps ties: its clusters are of near faces, where a split's halves can span pieces
-        // a meshlet joined across gaps.
-        Partition split = optimizeClusters(mesh, faces, limits, targetClusters, plan, sweeps, &halves);
-        Partition best = optimizeGrownParts(mesh, faces, limits, targetClusters, plan, sweeps, progress, {});
-        if (betterAtBudget(mesh, faces, split, best, targetClusters)) best = std::move(split);
-        heardAsOnePart(partDone, faceCount, best);
-        return best;
-    }
-    const size_t target = targetClusters != 0 ? targetClusters : defaultBudget(mesh, limits, plan.meshoptLimits);
-    return optimizeGrownParts(mesh, faces, limits, target, plan, sweeps, progress, partDone);
+// A callback that maps a build's progress into [from, to] of the caller's.
+ProgressCallback progressShare(const ProgressCallback& progress, double from, double to) {
+    if (!progress) return {};
+    return [&progress, from, to](double fraction, const std::string& stage) { return progress(from + (to - from) * fraction, stage); };
 }
 
-// Packing is tried on meshes up to this many faces (one part's size): its seeds and reduction
-// run over the whole mesh at once.
-constexpr size_t kPackingFacesAtMost = size_t(1) << 17;
-
-}  // namespace
-
-namespace {
-
-// The whole build at one budget (buildOptimizedClusters without the climb).
-Partition buildAtBudget(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits, size_t targetClusters,
-                        const ProgressCallback& progress, Effort effort, MeshletStream* meshlets, const PartClusters& partDone) {
-    Partition made = buildNearBudget(mesh, faces, limits, targetClusters, progress, effort, meshlets, partDone);
-    // At the balanced level an explicit budget is annealed as long as a packing is (the best level's
-    // sweeps, one run, on at most 2^17 faces): a budget is asked for when the clusters are built
-    // once, and every budget then meets the same search (a shorter one left the count culling less
-    // than a packed budget below it: docs/benchmarks.md, "Budget sweep"). The best level has
-    // annealed that long already; the fast level does not anneal.
-    if (targetClusters == 0 || mesh.faceCount() > kPackingFacesAtMost) return made;
-    const size_t sweeps = effort == Effort::Fast ? 0 : annealingSweepsFor(Effort::Best, mesh.faceCount(), 1);
-    Partition kept;
-    if (made.clusterCount <= targetClusters) {
-        if (effort != Effort::Balanced || sweeps == 0) return made;
-        // It may take a second or two on a large mesh: a cancel is heard before it.
-        if (progress && !progress(1.0, "annealing clusters")) throw OperationCancelled();
-        optimizer::State state(mesh, faces, limits);
-        kept = optimizer::annealedFurther(state, made, sweeps);
-        if (expectedCullRate(mesh, faces, kept) <= expectedCullRate(mesh, faces, made)) return made;
-    } else {
-        // Missed: compact clusters packed to it, kept only when they reach it (they cull less than
-        // clusters shaped by their normals: a trade worth making for the budget only).
-        if (targetClusters < fewestClustersWithin(mesh, limits)) return made;
-        kept = optimizer::packToBudget(mesh, faces, limits, targetClusters, sweeps, made, progress);
-        if (kept.clusterCount > targetClusters) return made;
-    }
-    heardAsOnePart(partDone, mesh.faceCount(), kept);
+// BuildStart::Meshlets: meshoptimizer's meshlets searched at the budget, and grown clusters as the
+// plan asks (the better at the budget kept; heard as one part when growth was run alongside).
+Partition fromMeshlets(const BuildInputs& in, const BuildPlan& plan, const ProgressCallback& progress, const PartClusters& partDone) {
+    const size_t sweeps = annealingSweepsFor(plan.effort, in.facts.faces, in.meshlets->partCount());
+    const bool always = plan.alsoGrown == AlsoGrown::Always;
+    const Partition searched = optimizeMeshletParts(in.mesh, in.faces, in.limits, plan.budget, plan.search, sweeps, *in.meshlets,
+                                                    progress, always ? PartClusters() : partDone);
+    if (plan.alsoGrown == AlsoGrown::Never || (!always && searched.clusterCount <= plan.budget)) return searched;
+    const Partition grown = optimizeGrownParts(in.mesh, in.faces, in.limits, plan.budget, plan.search,
+                                               annealingSweeps(plan.search, in.facts.faces), progress, {});
+    const bool grownKept = betterAtBudget(in.mesh, in.faces, grown, searched, plan.budget);
+    const Partition& kept = grownKept ? grown : searched;
+    if (always || grownKept) heardAsOnePart(partDone, in.facts.faces, kept);  // else its parts were heard
     return kept;
 }
 
-// The climb's own searches cost a whole build each (about 0.1 s on 4,096 faces): faces times the
-// own searches stay within kClimbWork, one every stride budgets (at most kClimbStrideAtMost), up to
-// kClimbAboveCount times the count; the steps between are splits only (milliseconds each).
-constexpr size_t kClimbWork = size_t(1) << 17;
-constexpr size_t kClimbStrideAtMost = 8;
-constexpr double kClimbAboveCount = 1.25;
-
-// Every how many budgets the climb from `from` to `highest` searches on its own: 0 when even every
-// kClimbStrideAtMost-th budget costs too much.
-size_t climbStride(size_t faceCount, size_t from, size_t highest) {
-    const size_t steps = highest - std::min(from, highest) + 1;
-    for (size_t stride = 1; stride <= kClimbStrideAtMost; ++stride)
-        if (faceCount * ((steps + stride - 1) / stride + 1) <= kClimbWork) return stride;
-    return 0;
+// BuildStart::SplitMeshlets: the searched meshlets at their count split to the budget and searched
+// again, against clusters grown to it. Growth keeps ties: its clusters are of near faces, where a
+// split's halves can span pieces a meshlet joined across gaps.
+Partition fromSplitMeshlets(const BuildInputs& in, const BuildPlan& plan, const ProgressCallback& progress, const PartClusters& partDone) {
+    const size_t sweeps = annealingSweeps(plan.search, in.facts.faces);
+    const Partition searched = optimizeMeshletParts(in.mesh, in.faces, in.limits, 0, plan.search,
+                                                    annealingSweepsFor(plan.effort, in.facts.faces, in.meshlets->partCount()),
+                                                    *in.meshlets, progress, {});
+    const Partition halves = splitToBudget(in.mesh, in.faces, in.limits, searched, plan.budget);
+    Partition split = optimizeClusters(in.mesh, in.faces, in.limits, plan.budget, plan.search, sweeps, &halves);
+    Partition best = optimizeGrownParts(in.mesh, in.faces, in.limits, plan.budget, plan.search, sweeps, progress, {});
+    if (betterAtBudget(in.mesh, in.faces, split, best, plan.budget)) best = std::move(split);
+    heardAsOnePart(partDone, in.facts.faces, best);
+    return best;
 }
 
-// The best level's search, then the balanced one's, and the better kept: nearer the budget (within
-// it first), then more culled in expectation, over far views and from the default orbit's distance
-// (the best level's larger clusters of like normals can cull less from up close). The best level's longer search from grown clusters
-// can end in a worse basin than the balanced one's from meshoptimizer's meshlets (a coconut tree
-// 0.068 against 0.362; a tree of 154k triangles 3 clusters above meshoptimizer's count); so it
-// never culls less in expectation nor makes more clusters than the default. The balanced run takes
-// the last tenth of the progress; where it is kept it is heard as one part.
-Partition buildBest(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits, size_t targetClusters,
-                    const ProgressCallback& progress, MeshletStream* meshlets, const PartClusters& partDone) {
-    auto share = [&progress](double from, double to) -> ProgressCallback {
-        if (!progress) return {};
-        return [&progress, from, to](double fraction, const std::string& stage) { return progress(from + (to - from) * fraction, stage); };
-    };
-    Partition best = buildAtBudget(mesh, faces, limits, targetClusters, share(0.0, 0.9), Effort::Best, meshlets, partDone);
-    // The default count asked for is the default: its balanced run is the default's (no climb), so
-    // asking for it or leaving it out gives the same partition.
-    const size_t defaultCount = defaultClusterBudget(mesh, limits);
-    const size_t target = targetClusters != 0 ? targetClusters : defaultCount;
-    Partition balanced = buildOptimizedClusters(mesh, faces, limits, target == defaultCount ? 0 : target, share(0.9, 1.0),
-                                                Effort::Balanced, meshlets, {});
-    const double distance = kOrbitDistance * double(computeAabb(mesh.positions).halfDiagonal());
-    if (!betterAtBudget(mesh, faces, balanced, best, target) &&
-        (best.clusterCount != balanced.clusterCount || cullsAsMuchFrom(mesh, faces, limits, best, balanced, distance)))
+// The plan's start, searched to the budget (before its finish).
+Partition started(const BuildInputs& in, const BuildPlan& plan, const ProgressCallback& progress, const PartClusters& partDone) {
+    switch (plan.start) {
+        case BuildStart::Meshlets: return fromMeshlets(in, plan, progress, partDone);
+        case BuildStart::SplitMeshlets: return fromSplitMeshlets(in, plan, progress, partDone);
+        case BuildStart::Grown: break;
+    }
+    const size_t target = plan.budget != 0 ? plan.budget : defaultBudget(in.mesh, in.limits, in.facts.meshoptLimits);
+    return optimizeGrownParts(in.mesh, in.faces, in.limits, target, plan.search, annealingSweeps(plan.search, in.facts.faces),
+                              progress, partDone);
+}
+
+// The plan's finish of a started partition: a reached budget annealed further, kept where it culls
+// more in expectation; a missed one packed to, kept only where packing reaches it (compact clusters
+// cull less than clusters shaped by their normals: a trade worth making for the budget only).
+Partition finished(const BuildInputs& in, const BuildPlan& plan, Partition made, const ProgressCallback& progress,
+                   const PartClusters& partDone) {
+    Partition kept;
+    if (made.clusterCount <= plan.budget || plan.budget == 0) {
+        if (!plan.annealFurther) return made;
+        // It may take a second or two on a large mesh: a cancel is heard before it.
+        if (progress && !progress(1.0, "annealing clusters")) throw OperationCancelled();
+        optimizer::State state(in.mesh, in.faces, in.limits);
+        kept = optimizer::annealedFurther(state, made, plan.finishSweeps);
+        if (expectedCullRate(in.mesh, in.faces, kept) <= expectedCullRate(in.mesh, in.faces, made)) return made;
+    } else {
+        if (!plan.packWhenMissed) return made;
+        kept = optimizer::packToBudget(in.mesh, in.faces, in.limits, plan.budget, plan.finishSweeps, made, progress);
+        if (kept.clusterCount > plan.budget) return made;
+    }
+    heardAsOnePart(partDone, in.facts.faces, kept);
+    return kept;
+}
+
+// The plan of one budget without its climb or balanced rival.
+Partition atBudget(const BuildInputs& in, const BuildPlan& plan, const ProgressCallback& progress, const PartClusters& partDone) {
+    return finished(in, plan, started(in, plan, progress, partDone), progress, partDone);
+}
+
+// The climb: from the fewest clusters the limits allow (asked for; the count reached is where it
+// starts) one cluster at a time, each step the better of the step below with one cluster split
+// (never culling less) and, every stride budgets and at the count and the budget asked for, the
+// budget's own search; a step not searched is the split alone. Progress runs once over the whole
+// climb: the base a share as if every budget were searched, the budgets from its count the rest.
+Partition climbed(const BuildInputs& in, const BuildPlan& plan, const ProgressCallback& progress, const PartClusters& partDone) {
+    auto planAt = [&](size_t budget) { return planBuild(plan.effort, budget, in.facts); };
+    const size_t target = plan.budget, fewest = in.facts.fewest, count = in.facts.meshletCount;
+    const double baseShare = 1.0 / double(target - fewest + 2);
+    Partition best = atBudget(in, planAt(fewest), progressShare(progress, 0.0, baseShare), {});
+    const size_t start = best.clusterCount, stride = climbStride(in.facts.faces, start, highestClimb(count));
+    if (start > target || stride == 0) return atBudget(in, plan, progressShare(progress, baseShare, 1.0), partDone);
+    auto searchedAt = [&](size_t k) { return (k - start) % stride == 0 || k == count || k == target; };
+    size_t searches = 0, searched = 0;
+    for (size_t k = start; k <= target; ++k) searches += searchedAt(k);
+    for (size_t k = start; k <= target; ++k) {
+        Partition stepped = splitToBudget(in.mesh, in.faces, in.limits, std::move(best), k);
+        if (!searchedAt(k)) {
+            best = std::move(stepped);
+            continue;
+        }
+        const double from = baseShare + (1.0 - baseShare) * double(searched++) / double(searches);
+        Partition own = atBudget(in, planAt(k), progressShare(progress, from, from + (1.0 - baseShare) / double(searches)), {});
+        best = betterAtBudget(in.mesh, in.faces, stepped, own, k) ? std::move(stepped) : std::move(own);
+    }
+    if (progress && !progress(1.0, "clusters")) throw OperationCancelled();
+    heardAsOnePart(partDone, in.facts.faces, best);
+    return best;
+}
+
+// The best level's search, then the balanced one's, and the better kept: nearer the budget, then
+// more culled in expectation over far views and from the default orbit's distance (the best
+// level's larger clusters of like normals can cull less from up close). Its longer search from
+// grown clusters can end in a worse basin than the balanced one's (a coconut tree 0.068 against
+// 0.362), so it never culls less in expectation nor makes more clusters than the default. The
+// balanced run takes the last tenth of the progress; where it is kept it is heard as one part.
+Partition bestOfBoth(const BuildInputs& in, const BuildPlan& plan, const ProgressCallback& progress, const PartClusters& partDone) {
+    Partition best = atBudget(in, plan, progressShare(progress, 0.0, 0.9), partDone);
+    // The default count asked for is the default: its balanced run is the default's (no climb).
+    const size_t defaultCount = defaultClusterBudget(in.mesh, in.limits);
+    const size_t target = plan.budget != 0 ? plan.budget : defaultCount;
+    Partition balanced = buildOptimizedClusters(in.mesh, in.faces, in.limits, target == defaultCount ? 0 : target,
+                                                progressShare(progress, 0.9, 1.0), Effort::Balanced, in.meshlets, {});
+    if (!betterAtBudget(in.mesh, in.faces, balanced, best, target) &&
+        (best.clusterCount != balanced.clusterCount || cullsAsMuchFrom(in.mesh, in.faces, in.limits, best, balanced, in.facts.viewDistance)))
         return best;
-    heardAsOnePart(partDone, mesh.faceCount(), balanced);
+    heardAsOnePart(partDone, in.facts.faces, balanced);
     return balanced;
 }
 
@@ -405,58 +371,20 @@ Partition buildBest(const Mesh& mesh, const FaceGeometry& faces, const MeshletLi
 Partition buildOptimizedClusters(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits,
                                  size_t targetClusters, const ProgressCallback& progress, Effort effort,
                                  MeshletStream* meshlets, const PartClusters& partDone) {
-    // On small meshes, at the balanced level, an explicit budget climbs from the fewest clusters
-    // the builder reaches one cluster at a time: each step keeps the better in expectation of the
-    // step below with one cluster split (which never culls less) and its own search. Where every
-    // step is searched (stride 1) one more cluster never culls less in expectation; on larger
-    // meshes a search every stride steps keeps a budget at least at the chain below it. Searched
-    // alone, one more cluster could land in a worse basin: CGAL's pinion 0.413 at 18 clusters,
-    // 0.346 at 19; bones 0.0331 at 41, 0.0332 at 44 where 41 split to 44 gives 0.0509
-    // (docs/benchmarks.md).
-    const size_t faceCount = mesh.faceCount();
-    if (effort == Effort::Best) return buildBest(mesh, faces, limits, targetClusters, progress, meshlets, partDone);
-    if (targetClusters == 0 || effort != Effort::Balanced || !meshoptTakesLimits(limits))
-        return buildAtBudget(mesh, faces, limits, targetClusters, progress, effort, meshlets, partDone);
-    // One stream of meshoptimizer's meshlets for every step: its count is the default budget.
+    if (mesh.faceCount() == 0) return {};
+    const double viewDistance = kOrbitDistance * double(computeAabb(mesh.positions).halfDiagonal());
+    BuildInputs in{mesh, faces, limits, meshlets, {mesh.faceCount(), meshoptTakesLimits(limits), 0, fewestClustersWithin(mesh, limits), viewDistance}};
+    // One stream of meshoptimizer's meshlets for every step; its count (which waits for every
+    // meshlet) is asked for only where an explicit budget is set against it.
     std::unique_ptr<MeshletStream> ownStream;
-    meshlets = &meshletsFor(mesh, limits, meshlets, ownStream);
-    // Which budgets a mesh climbs to, and its stride, depend on the mesh and limits only, so a
-    // climbed budget never meets a budget above it searched alone or on another stride. The base
-    // reaches the count or fewer: a mesh too large for a climb from there is not tried.
-    const size_t count = meshlets->meshletCount(), fewest = fewestClustersWithin(mesh, limits);
-    const size_t highest = size_t(kClimbAboveCount * double(count));
-    if (targetClusters <= fewest || targetClusters > highest || climbStride(faceCount, count, highest) == 0)
-        return buildAtBudget(mesh, faces, limits, targetClusters, progress, effort, meshlets, partDone);
-    // Progress runs once over the whole climb: the base a share as if every budget were searched,
-    // the budgets from the count it reached the rest.
-    const double baseShare = 1.0 / double(targetClusters - fewest + 2);
-    auto share = [&progress](double from, double to) -> ProgressCallback {
-        if (!progress) return {};
-        return [&progress, from, to](double fraction, const std::string& stage) { return progress(from + (to - from) * fraction, stage); };
-    };
-    // The base: the fewest clusters the limits allow, asked for; the count reached is where the climb starts.
-    Partition best = buildAtBudget(mesh, faces, limits, fewest, share(0.0, baseShare), effort, meshlets, {});
-    const size_t start = best.clusterCount, stride = climbStride(faceCount, start, highest);
-    if (start > targetClusters || stride == 0)
-        return buildAtBudget(mesh, faces, limits, targetClusters, share(baseShare, 1.0), effort, meshlets, partDone);
-    // Searched on its own: every stride-th budget, the count and the budget asked for (so a climb
-    // never culls less in expectation than the budget's own search).
-    auto searchedAt = [&](size_t k) { return (k - start) % stride == 0 || k == count || k == targetClusters; };
-    size_t searches = 0, searched = 0;
-    for (size_t k = start; k <= targetClusters; ++k) searches += searchedAt(k);
-    for (size_t k = start; k <= targetClusters; ++k) {
-        Partition stepped = splitToBudget(mesh, faces, limits, std::move(best), k);
-        if (!searchedAt(k)) {
-            best = std::move(stepped);
-            continue;
-        }
-        const double from = baseShare + (1.0 - baseShare) * double(searched++) / double(searches);
-        Partition own = buildAtBudget(mesh, faces, limits, k, share(from, from + (1.0 - baseShare) / double(searches)), effort, meshlets, {});
-        best = betterAtBudget(mesh, faces, stepped, own, k) ? std::move(stepped) : std::move(own);
+    if (startsFromMeshlets(effort, in.facts.meshoptLimits)) {
+        in.meshlets = &meshletsFor(mesh, limits, meshlets, ownStream);
+        if (targetClusters != 0) in.facts.meshletCount = in.meshlets->meshletCount();
     }
-    if (progress && !progress(1.0, "clusters")) throw OperationCancelled();
-    heardAsOnePart(partDone, faceCount, best);
-    return best;
+    const BuildPlan plan = planBuild(effort, targetClusters, in.facts);
+    if (plan.alsoBalanced) return bestOfBoth(in, plan, progress, partDone);
+    if (plan.climb) return climbed(in, plan, progress, partDone);
+    return atBudget(in, plan, progress, partDone);
 }
 
 }  // namespace conescope

@@ -17,6 +17,13 @@ size_t annealingSweeps(const SearchPlan& plan, size_t faceCount) {
     return sweeps < plan.minSweeps ? 0 : sweeps;
 }
 
+std::optional<bool> nearerTheBudget(size_t a, size_t b, size_t target) {
+    const bool aAbove = a > target, bAbove = b > target;
+    if (aAbove != bAbove) return !aAbove;
+    if (a != b) return aAbove ? a < b : a > b;
+    return std::nullopt;
+}
+
 namespace {
 
 // Growth stops a cluster at this multiple of the budget's mean size (or the triangle limit). At
@@ -38,13 +45,9 @@ bool withinLimits(const optimizer::State& state) {
     return true;
 }
 
-// Whether run `a` is the one to keep over run `b`: within the budget first, then the nearer count to
-// it (fewer clusters cull less, and only equal counts compare fairly), then the better objective.
+// Whether run `a` is the one to keep over run `b` (nearerTheBudget, then the better objective).
 bool closerToTheBudget(size_t a, double aValue, size_t b, double bValue, size_t target) {
-    const bool aAbove = a > target, bAbove = b > target;
-    if (aAbove != bAbove) return !aAbove;
-    if (a != b) return aAbove ? a < b : a > b;
-    return aValue > bValue;
+    return nearerTheBudget(a, b, target).value_or(aValue > bValue);
 }
 bool closerToTheBudget(const optimizer::State& a, const optimizer::State& b, size_t target) {
     return closerToTheBudget(a.liveClusters, objectiveOf(a), b.liveClusters, objectiveOf(b), target);

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 
 #include "core/Mesh.h"
 #include "core/Partition.h"
@@ -47,13 +48,18 @@ struct SearchPlan {
     // keeping grown clusters only where they cull more from there too.
     double viewDistance = 0.0;
     // Whether meshoptimizer's builder takes the limits, so that its meshlets can be a start: asked
-    // of meshopt/ once per build (planAt), not again at every step that needs to know.
+    // of meshopt/ once per build (searchPlanFor), not again at every step that needs to know.
     bool meshoptLimits = false;
 };
 
 // The annealing sweeps the plan buys for a mesh of this size; too few to cool slowly are not worth
 // their time (0).
 size_t annealingSweeps(const SearchPlan& plan, size_t faceCount);
+
+// The one rule for which of two runs to keep at a budget: within it first, then the nearer count
+// (fewer clusters cull less, and only equal counts compare fairly). Empty when the counts are equal
+// and the objective decides.
+std::optional<bool> nearerTheBudget(size_t a, size_t b, size_t target);
 
 // Whether partition `a` culls at least as much as `b` in expectation from eyes `distance` away (each
 // cluster's cone widened by the angle its bounding sphere spans from there): how runs at one count
