@@ -9,7 +9,7 @@
 //   Simplification   meshopt_simplify with the border locked, for cluster LOD hierarchies
 // Only Library.cpp includes <meshoptimizer.h>, and a new call into the library goes there too,
 // declared here in its section; the reproduction (Reproduction.cpp, KdTree.h) and the stream
-// (MeshletStream.cpp, CoreAffinity.h) are ConeScope's own code. docs/architecture.md has the why.
+// (MeshletStream.cpp, CoreAffinity.h) are ConeScope's own code. docs/dev/architecture.md has the why.
 #pragma once
 
 #include <cstddef>
