@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The rules of docs/architecture.md ("Rules the sources keep") that a script can see:
+"""The rules of docs/dev/architecture.md ("Rules the sources keep") that a script can see:
 
   - <meshoptimizer.h> is included only under src/core/meshopt/;
   - no two classes or structs share a name across src/ and ui/ (nested ones count as Outer::Inner,
@@ -9,7 +9,9 @@
   - no source file runs over 600 lines;
   - no header outside src/core/meshopt/ includes the folder's door (meshopt/Meshopt.h), and at most
     MAX_DOOR_INCLUDERS source files outside it do; its internal header (meshopt/Reproduction.h)
-    is included only inside the folder.
+    is included only inside the folder;
+  - README.md has fewer than 250 lines (the rest goes to docs/user/ and docs/dev/);
+  - every relative link and image of every .md file names a file that exists, and a #heading in it.
 
   scripts/check-sources.py [ROOT]      # prints each breach, exits 1 if there is one
 
@@ -24,6 +26,7 @@ MAX_FILE_LINES = 600
 # Who may ask meshoptimizer's folder for something: the builders, bounds, records and files that use
 # its meshlets, bounds or simplification (9 today); a new one is a decision, not a side effect.
 MAX_DOOR_INCLUDERS = 10
+MAX_README_LINES = 250
 SOURCE_SUFFIXES = (".h", ".cpp")
 
 
@@ -168,11 +171,47 @@ def include_loops(root, files):
         yield "include loop: " + " -> ".join(loop)
 
 
+def long_readme(root):
+    lines = open(os.path.join(root, "README.md"), encoding="utf-8").read().count("\n")
+    if lines >= MAX_README_LINES:
+        yield f"README.md: {lines} lines (fewer than {MAX_README_LINES}; details go to docs/user/ and docs/dev/)"
+
+
+LINK = re.compile(r"!?\[[^\]]*\]\(([^)\s]+)[^)]*\)|<img [^>]*src=\"([^\"]+)\"")
+
+
+def heading_anchors(path):
+    """GitHub's anchors of a markdown file's headings: lower case, punctuation dropped, spaces to dashes."""
+    text = re.sub(r"^```.*?^```", "", open(path, encoding="utf-8").read(), flags=re.S | re.M)
+    return {re.sub(r"[^\w\- ]", "", title.strip().lower()).replace(" ", "-")
+            for title in re.findall(r"^#+\s+(.*)$", text, re.M)}
+
+
+def broken_doc_links(root):
+    """Relative links and images in the repository's .md files (not the fetched meshes or builds)."""
+    for directory, folders, names in os.walk(root):
+        folders[:] = sorted(f for f in folders if not f.startswith((".", "build")) and f not in ("cgal", "cgal-all", "props-debian"))
+        for name in sorted(n for n in names if n.endswith(".md")):
+            path = os.path.join(directory, name)
+            text = re.sub(r"^```.*?^```", "", open(path, encoding="utf-8").read(), flags=re.S | re.M)
+            for match in LINK.finditer(text):
+                target = match.group(1) or match.group(2)
+                if re.match(r"[a-z]+:", target):
+                    continue
+                file, _, anchor = target.partition("#")
+                where = os.path.normpath(os.path.join(directory, file)) if file else path
+                shown = os.path.relpath(path, root)
+                if not os.path.exists(where):
+                    yield f"{shown}: link to {target}: no such file"
+                elif anchor and where.endswith(".md") and anchor not in heading_anchors(where):
+                    yield f"{shown}: link to {target}: no such heading"
+
+
 def main():
     root = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), ".."))
     files = list(source_files(root, ["src", "ui"]))
     breaches = [*meshoptimizer_includes(files), *shared_class_names(files), *long_comments(files), *long_files(files),
-                *include_loops(root, files), *meshopt_door_includes(files)]
+                *include_loops(root, files), *meshopt_door_includes(files), *long_readme(root), *broken_doc_links(root)]
     for breach in breaches:
         print(breach)
     print(f"check-sources: {len(files)} files, {len(breaches)} breaches", file=sys.stderr)

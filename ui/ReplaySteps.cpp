@@ -216,7 +216,7 @@ struct StepKind {
     std::function<Action(const Json& value, const QDir& folder)> parse;
 };
 
-// Every step kind: a new kind is one row here (and a line in the README's table).
+// Every step kind: a new kind is one row here (and a line in docs/user/window.md's table).
 const std::vector<StepKind>& stepKinds() {
     static const std::vector<StepKind> kinds = {
         {"open",

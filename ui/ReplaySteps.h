@@ -1,4 +1,4 @@
-// The steps of a replay file (`conescope --replay FILE.json`, README "Replaying a session"): a JSON
+// The steps of a replay file (`conescope --replay FILE.json`, docs/user/window.md, "Replay files"): a JSON
 // list of objects of one member each, {"open": "mesh.off"}, {"set": {"test": "apex"}}, ... Each step
 // kind is one row of the table in ReplaySteps.cpp: its name, how its value is checked when the file is
 // read, and the Session or window action that plays it (the same one a click makes).

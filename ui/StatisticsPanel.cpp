@@ -30,7 +30,7 @@ QString efficiencies(const Comparison& comparison) {
 QString configuration(const Settings& settings) {
     QString builder = QString::fromStdString(toString(settings.builder));
     // The optimized builder's effort and budget change what it makes at the same count: an
-    // explicit budget is searched longer than the default one (README, "Builders").
+    // explicit budget is searched longer than the default one (docs/user/what-is-computed.md, "Builders").
     if (settings.builder == Builder::Optimized)
         builder += QStringLiteral(" (%1, %2)")
                        .arg(QString::fromStdString(toString(settings.effort)),

@@ -93,7 +93,7 @@ def _path(path):
 
 # The settings most runs set, as keyword-only arguments of every function that takes settings (None:
 # the schema's default); every other setting goes in **settings under its option's name, with
-# dashes or underscores (the README lists them).
+# dashes or underscores (docs/user/command-line.md and what-is-computed.md list them).
 _COMMON_SETTINGS = ("builder", "max_verts", "max_tris", "clusters", "cone", "test", "views", "distance")
 
 

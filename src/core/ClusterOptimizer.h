@@ -38,7 +38,7 @@ using PartClusters = std::function<void(size_t part, size_t parts, const std::ve
 
 // Maximises expectedCullRate under the vertex/triangle limits at a budget of targetClusters (0:
 // defaultClusterBudget): from meshoptimizer's meshlets or from grown clusters reduced to the budget,
-// then local search, on parts of the mesh at once (docs/architecture.md, "The optimized builder",
+// then local search, on parts of the mesh at once (docs/dev/architecture.md, "The optimized builder",
 // has the steps). The result has at most targetClusters clusters whenever the limits allow
 // meshoptimizer's count, and never more than that count. An explicit budget those steps miss is
 // packed to (compact clusters, which cull less), on meshes up to 2^17 faces, where packing reaches it. The same input gives the same partition

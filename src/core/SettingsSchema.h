@@ -2,7 +2,7 @@
 // and help, the text it accepts, its default (Settings{}), the builders that use it and the stage a
 // change of it makes stale. The CLI's options, the application's command line, the settings panel's
 // enabled states, the window's recompute rules and the JSON `settings` object all come from this
-// table, so a new setting is one row (docs/architecture.md).
+// table, so a new setting is one row (docs/dev/architecture.md).
 #pragma once
 
 #include <cstddef>

@@ -5,7 +5,7 @@
 // where they are is done here, because measurement showed assimp 5.2.5 silently wrong there: it
 // drops triangles with out-of-range indices, reads accessors whose byteOffset runs past their
 // buffer view, reads non-float positions as floats, ignores required extensions and refuses files
-// without a scene list. README.md ("Why this glTF library") has the measurements.
+// without a scene list. docs/dev/architecture.md ("Why this glTF library") has the measurements.
 #pragma once
 
 #include <cstdint>

@@ -1,7 +1,7 @@
 // meshoptimizer's meshlet arrays in files: JSON and a little-endian binary form of the same content,
 // both holding meshopt_buildMeshlets's three arrays exactly as it fills them and, optionally, one
 // meshopt_Bounds per meshlet. The layouts (JSON keys; binary header, arrays, padding, bounds) are
-// in README.md, "Debugging your engine's meshlets"; the binary's size must be exactly its header's.
+// in docs/user/engine-meshlets.md; the binary's size must be exactly its header's.
 #pragma once
 
 #include <stdexcept>

@@ -1,6 +1,6 @@
 // prepareVtpForVtk: checks a .vtp file before VTK 9.1's vtkXMLPolyDataReader reads it, because
 // that reader crashes on some damaged files and drops or allocates from others without a word (the
-// cases, found by mutating valid files, are listed in docs/architecture.md, "Readers"). The XML is
+// cases, found by mutating valid files, are listed in docs/dev/architecture.md, "Readers"). The XML is
 // read by expat (VtpXml.cpp) and the arrays decoded in VtpEncoding.cpp; this file checks every
 // array, in every encoding, against the counts of its piece, and adds an empty <PointData/> where
 // its absence would crash VTK's error message.

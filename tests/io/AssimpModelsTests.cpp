@@ -1,6 +1,6 @@
 // Files nobody here wrote: assimp's test models (Debian assimp-testmodels). Every mesh file there in
 // a format readMesh supports either reads with the triangle count assimp finds, or is refused with
-// a reason: assimp refuses it too, or it is listed below (and in the README) with why; the few
+// a reason: assimp refuses it too, or it is listed below (and in docs/user/file-formats.md) with why; the few
 // read with another count than assimp's are listed with why as well.
 #include <algorithm>
 #include <filesystem>

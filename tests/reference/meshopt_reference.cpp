@@ -2,7 +2,7 @@
 // reads an OFF file, builds meshlets with meshopt_buildMeshlets (limits and cone weight from the
 // command line; ConeScope's defaults are 64 vertices, 124 triangles, cone weight 1), bounds each
 // with meshopt_computeMeshletBounds, optionally writes them as a meshlet JSON (with the bounds) and
-// as an OBJ with an `o` object per meshlet, then culls from the standard orbit of README.md
+// as an OBJ with an `o` object per meshlet, then culls from the standard orbit of docs/user/command-line.md
 // ("Standard views") with the two tests engines ship, in float as a shader would:
 //   apex-f32:   dot(normalize(cone_apex - eye), cone_axis) >= cone_cutoff          (meshoptimizer.h)
 //   sphere-s8:  dot(center - eye, axis) >= cutoff * length(center - eye) + radius,
@@ -148,7 +148,7 @@ Vec sub(Vec a, Vec b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
 double dot(Vec a, Vec b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 Vec cross(Vec a, Vec b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
 
-// README's standard orbit: around the box centre at D half-diagonals (the box in float, as read).
+// The standard orbit (docs/user/command-line.md): around the box centre at D half-diagonals (the box in float, as read).
 std::vector<Vec> orbit(const Mesh& mesh, size_t count, double distance) {
     float low[3] = {mesh.positions[0], mesh.positions[1], mesh.positions[2]}, high[3] = {low[0], low[1], low[2]};
     for (size_t v = 0; v < mesh.positions.size(); ++v) low[v % 3] = std::min(low[v % 3], mesh.positions[v]), high[v % 3] = std::max(high[v % 3], mesh.positions[v]);

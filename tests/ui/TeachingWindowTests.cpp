@@ -1,7 +1,7 @@
 // Teaching with the window: examples of each outcome in one click, the eye swept across the
 // cull boundary with the words following it, slides a class can project (1920x1080 PNGs and a 16:9
 // PDF), a lesson that fits a 1280x720 projector with Next and Back standing still, a first view that
-// shows culled clusters, and words for every choice and every statistics row; the README's keys are
+// shows culled clusters, and words for every choice and every statistics row; the user docs' keys are
 // the app's.
 #include <QAbstractButton>
 #include <QAction>
@@ -394,11 +394,15 @@ private slots:
         window_->waitUntilIdle();
     }
 
-    // The README names the keys the app has: each "(KEY)" after a control's words is that action's shortcut.
-    void theReadmeKeysAreTheApps() {
-        QFile file(QStringLiteral(CONESCOPE_SOURCE_DIR "/README.md"));
-        QVERIFY(file.open(QIODevice::ReadOnly | QIODevice::Text));
-        const QString readme = QString::fromUtf8(file.readAll()).simplified();
+    // The user docs name the keys the app has: each "(KEY)" after a control's words is that action's shortcut.
+    void theDocumentedKeysAreTheApps() {
+        QString docs;
+        for (const char* page : {"/docs/user/window.md", "/docs/user/teaching.md"}) {
+            QFile file(QStringLiteral(CONESCOPE_SOURCE_DIR) + QLatin1String(page));
+            QVERIFY2(file.open(QIODevice::ReadOnly | QIODevice::Text), page);
+            docs += QString::fromUtf8(file.readAll()) + QLatin1Char(' ');
+        }
+        docs = docs.simplified();
         const std::pair<const char*, const char*> keys[] = {
             {"snapped to the observer (", "Put the &eye at the camera (look from here)"},
             {"linked to it (", "&Follow the observer's camera"},
@@ -407,10 +411,10 @@ private slots:
             {"the one the test loses most (", "Pick the cluster the test loses &most"},
         };
         for (const auto& [words, action] : keys) {
-            const int at = readme.indexOf(QLatin1String(words));
+            const int at = docs.indexOf(QLatin1String(words));
             QVERIFY2(at >= 0, words);
             const int start = at + int(qstrlen(words));
-            const QString key = readme.mid(start, readme.indexOf(QLatin1Char(')'), start) - start);
+            const QString key = docs.mid(start, docs.indexOf(QLatin1Char(')'), start) - start);
             QAction* found = actionNamed(window_.get(), QString::fromLatin1(action));
             QVERIFY2(found, action);
             QCOMPARE(key, found->shortcut().toString());

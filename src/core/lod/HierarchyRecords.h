@@ -1,7 +1,7 @@
 // A cluster LOD hierarchy as an engine ships it: every level's clusters as meshoptimizer's meshlet
 // arrays (level after level in one set), and per cluster and per group the fields meshoptimizer's
 // clusterlod keeps (level, group, the group it refines, bounds and error). io's MeshletFiles.h reads
-// and writes them as JSON; README.md, "Cluster LOD hierarchies", has the layout.
+// and writes them as JSON; docs/user/engine-meshlets.md, "Cluster LOD hierarchies", has the layout.
 #pragma once
 
 #include <cstdint>

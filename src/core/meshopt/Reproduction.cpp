@@ -2,7 +2,7 @@
 // the same decisions, faster. The library visits every triangle around the meshlet at each step;
 // here they are kept in five buckets by the library's first rank (vertices added), so a step scores
 // only the lowest non-empty bucket and breaks ties by the library's visiting order, and a scan
-// stands in for the k-d tree's few searches while it is cheap (docs/architecture.md, "meshoptimizer
+// stands in for the k-d tree's few searches while it is cheap (docs/dev/architecture.md, "meshoptimizer
 // in one folder", has the whole argument). Everything that decides is the library's float
 // arithmetic in the library's order, compiled without contracted multiply-adds.
 #include "Meshopt.h"
