@@ -4,113 +4,104 @@
 
 #include <QCoreApplication>
 
+#include "core/Choices.h"
+
 namespace conescope {
 
 namespace {
 
 QString tr(const char* text) { return QCoreApplication::translate("Glossary", text); }
 
+// The general terms, in the order a lesson meets them; the cones and tests follow from their tables.
+struct Term {
+    const char* key;
+    const char* term;
+    const char* text;
+};
+const Term kTerms[] = {
+    {"cluster", "Cluster",
+     "A small group of neighbouring faces (a few dozen triangles) that is drawn, or skipped, as one piece. Culling a "
+     "cluster saves all its triangles with one cheap test."},
+    {"face normal", "Face normal",
+     "The direction a face looks: at right angles to the face, pointing out of the surface. A face turns its back on "
+     "the eye when the eye is behind it, n\u00b7(e \u2212 q) < 0 for the eye e and every corner q."},
+    {"back-facing", "Back-facing face",
+     "A face whose back the eye sees. A closed surface never shows its back faces, so they need not be drawn. A face "
+     "seen exactly edge-on counts as visible."},
+    {"gauss sphere", "Gauss sphere (Gauss map)",
+     "The cluster's normals slid to start at one point: their tips lie on a sphere of radius 1. A flat patch puts them "
+     "close together, a curved one spreads them out."},
+    {"normal cone", "Normal cone (cone of normals)",
+     "A cone around one direction, the axis V1, that holds every normal of a cluster. If the eye sees the whole cone "
+     "from behind, it sees every face from behind, and the cluster can be skipped."},
+    {"axis", "Cone axis V1", "The direction the cone of normals is centred on: roughly where the cluster's faces look."},
+    {"alpha", "Half-angle \u03b1",
+     "How far the cone opens: no normal is more than \u03b1 from V1 (cos \u03b1 = the smallest n\u00b7V1). A narrower "
+     "cone (smaller \u03b1) can be culled from more places."},
+    {"angle b", "Angle B",
+     "The article's angle, 90\u00b0 \u2212 \u03b1: the cluster faces away from every view vector v within B of V1, "
+     "that is when v\u00b7V1 > cos B = sin \u03b1."},
+    {"view vector", "View vector v",
+     "The unit vector from the eye towards the cluster (to the apex, the sphere's centre or a corner, as the test "
+     "says). A test culls when v lies close enough to V1."},
+    {"apex", "Apex",
+     "A point behind the plane of every face of the cluster, on its cone axis. Seen from behind the cone, the apex "
+     "stands for every point of the cluster, so one view vector is enough (the apex and octagon tests)."},
+    {"bounding sphere", "Bounding sphere",
+     "A sphere around the whole cluster (centre c, radius r). From distance d its points lie within asin(r/d) of the "
+     "direction to c, which the sphere tests allow for."},
+    {"bounding box", "Bounding box (AABB)",
+     "The smallest box with sides along the axes that holds the cluster. The box tests check the view vector to each "
+     "of its 8 corners."},
+    {"margin", "Margin",
+     "How far the test's tightest comparison is from its threshold: positive, the cluster is culled with that much to "
+     "spare; negative, the test fell short by that much."},
+    {"cull eye", "Cull eye",
+     "The point the cull decisions are made from (magenta). The observer camera can look at the result from anywhere."},
+    {"observer", "Observer camera", "The ordinary 3D view you turn with the mouse; it does not decide anything."},
+    {"orbit", "Orbit",
+     "A fixed set of eye positions spread evenly around the mesh (the golden-angle spiral), so every tool measures over "
+     "the same views."},
+    {"oracle", "Oracle",
+     "The exact answer: a cluster may be skipped only when every one of its faces is back-facing. It checks each face, so "
+     "it is too slow to ship, but it is the ceiling for any test."},
+    {"cull fraction", "Cull fraction",
+     "The share of all view directions (eyes far away) from which the test culls a cluster: (1 \u2212 sin \u03b1)/2 for "
+     "a round cone, the area of its pyramid for the octagon test."},
+    {"oracle fraction", "Oracle fraction",
+     "The share of all view directions from which every face of a cluster faces away: the most any test could cull it "
+     "from."},
+    {"test loss", "Test loss",
+     "Back faces drawn because the test was not sure: every face of their cluster faced away, yet the cluster was "
+     "drawn. A narrower cone, a tighter bound or another test could save them."},
+    {"partition loss", "Partition loss",
+     "Back faces drawn because their cluster also holds a face the eye sees: no test may skip such a cluster. Only "
+     "grouping the faces differently could save them."},
+    {"efficiency", "Efficiency",
+     "Triangles in culled clusters divided by all back-facing triangles: 100% would be as good as checking every "
+     "triangle."},
+    {"missed cull", "Missed cull", "A cluster whose every face faces away but which the test drew: its faces are the test's loss."},
+    {"false cull", "False cull",
+     "A cluster culled although a face of it could be seen. A correct test never makes one; ConeScope counts them to prove it."},
+    {"builder", "Builder", "How the faces are grouped into clusters (the partition)."},
+    {"degenerate face", "Degenerate face",
+     "A face without area (its corners on one line): it has no normal, faces nowhere and never decides a cull."},
+    {"visible face", "Visible face", "A face the cull eye may see: it faces the eye, or is seen edge-on."},
+    {"not measured", "Not measured yet", "Nothing to show in this colouring yet: it appears once the eye (or A) is measured."},
+};
+
 }  // namespace
 
 const std::vector<GlossaryEntry>& glossary() {
-    static const std::vector<GlossaryEntry> entries = {
-        {"cluster", tr("Cluster"),
-         tr("A small group of neighbouring faces (a few dozen triangles) that is drawn, or skipped, as one piece. Culling a "
-            "cluster saves all its triangles with one cheap test.")},
-        {"face normal", tr("Face normal"),
-         tr("The direction a face looks: at right angles to the face, pointing out of the surface. A face turns its back on "
-            "the eye when the eye is behind it, n\u00b7(e \u2212 q) < 0 for the eye e and every corner q.")},
-        {"back-facing", tr("Back-facing face"),
-         tr("A face whose back the eye sees. A closed surface never shows its back faces, so they need not be drawn. A face "
-            "seen exactly edge-on counts as visible.")},
-        {"gauss sphere", tr("Gauss sphere (Gauss map)"),
-         tr("The cluster's normals slid to start at one point: their tips lie on a sphere of radius 1. A flat patch puts them "
-            "close together, a curved one spreads them out.")},
-        {"normal cone", tr("Normal cone (cone of normals)"),
-         tr("A cone around one direction, the axis V1, that holds every normal of a cluster. If the eye sees the whole cone "
-            "from behind, it sees every face from behind, and the cluster can be skipped.")},
-        {"axis", tr("Cone axis V1"), tr("The direction the cone of normals is centred on: roughly where the cluster's faces look.")},
-        {"alpha", tr("Half-angle \u03b1"),
-         tr("How far the cone opens: no normal is more than \u03b1 from V1 (cos \u03b1 = the smallest n\u00b7V1). A narrower "
-            "cone (smaller \u03b1) can be culled from more places.")},
-        {"angle b", tr("Angle B"),
-         tr("The article's angle, 90\u00b0 \u2212 \u03b1: the cluster faces away from every view vector v within B of V1, "
-            "that is when v\u00b7V1 > cos B = sin \u03b1.")},
-        {"view vector", tr("View vector v"),
-         tr("The unit vector from the eye towards the cluster (to the apex, the sphere's centre or a corner, as the test "
-            "says). A test culls when v lies close enough to V1.")},
-        {"apex", tr("Apex"),
-         tr("A point behind the plane of every face of the cluster, on its cone axis. Seen from behind the cone, the apex "
-            "stands for every point of the cluster, so one view vector is enough (the apex and octagon tests).")},
-        {"bounding sphere", tr("Bounding sphere"),
-         tr("A sphere around the whole cluster (centre c, radius r). From distance d its points lie within asin(r/d) of the "
-            "direction to c, which the sphere tests allow for.")},
-        {"bounding box", tr("Bounding box (AABB)"),
-         tr("The smallest box with sides along the axes that holds the cluster. The box tests check the view vector to each "
-            "of its 8 corners.")},
-        {"margin", tr("Margin"),
-         tr("How far the test's tightest comparison is from its threshold: positive, the cluster is culled with that much to "
-            "spare; negative, the test fell short by that much.")},
-        {"cull eye", tr("Cull eye"),
-         tr("The point the cull decisions are made from (magenta). The observer camera can look at the result from anywhere.")},
-        {"observer", tr("Observer camera"), tr("The ordinary 3D view you turn with the mouse; it does not decide anything.")},
-        {"orbit", tr("Orbit"),
-         tr("A fixed set of eye positions spread evenly around the mesh (the golden-angle spiral), so every tool measures over "
-            "the same views.")},
-        {"oracle", tr("Oracle"),
-         tr("The exact answer: a cluster may be skipped only when every one of its faces is back-facing. It checks each face, so "
-            "it is too slow to ship, but it is the ceiling for any test.")},
-        {"cull fraction", tr("Cull fraction"),
-         tr("The share of all view directions (eyes far away) from which the test culls a cluster: (1 \u2212 sin \u03b1)/2 for "
-            "a round cone, the area of its pyramid for the octagon test.")},
-        {"oracle fraction", tr("Oracle fraction"),
-         tr("The share of all view directions from which every face of a cluster faces away: the most any test could cull it "
-            "from.")},
-        {"test loss", tr("Test loss"),
-         tr("Back faces drawn because the test was not sure: every face of their cluster faced away, yet the cluster was "
-            "drawn. A narrower cone, a tighter bound or another test could save them.")},
-        {"partition loss", tr("Partition loss"),
-         tr("Back faces drawn because their cluster also holds a face the eye sees: no test may skip such a cluster. Only "
-            "grouping the faces differently could save them.")},
-        {"efficiency", tr("Efficiency"),
-         tr("Triangles in culled clusters divided by all back-facing triangles: 100% would be as good as checking every "
-            "triangle.")},
-        {"missed cull", tr("Missed cull"), tr("A cluster whose every face faces away but which the test drew: its faces are the test's loss.")},
-        {"false cull", tr("False cull"),
-         tr("A cluster culled although a face of it could be seen. A correct test never makes one; ConeScope counts them to prove it.")},
-        {"builder", tr("Builder"), tr("How the faces are grouped into clusters (the partition).")},
-        {"degenerate face", tr("Degenerate face"),
-         tr("A face without area (its corners on one line): it has no normal, faces nowhere and never decides a cull.")},
-        {"visible face", tr("Visible face"), tr("A face the cull eye may see: it faces the eye, or is seen edge-on.")},
-        {"not measured", tr("Not measured yet"), tr("Nothing to show in this colouring yet: it appears once the eye (or A) is measured.")},
-        {"test oracle", tr("Test: oracle"), tr("Checks every face exactly (n\u00b7(e \u2212 q) < 0 at every corner). The ceiling, not a real test.")},
-        {"test vertices", tr("Test: vertices"),
-         tr("The cone seen from behind along the view vector to every vertex of the cluster. Exact for the cone, but one check per vertex.")},
-        {"test aabb", tr("Test: aabb"), tr("The article's box test: the cone seen from behind along the view vector to each of the 8 box corners.")},
-        {"test aabb-fast", tr("Test: aabb-fast"), tr("The box test in the article's optimised form: squares instead of a square root per corner.")},
-        {"test sphere", tr("Test: sphere"),
-         tr("The article's sphere test: v\u00b7V1 > cos(B \u2212 asin(r/d)) with v towards the sphere's centre. Never culls with the eye inside the sphere.")},
-        {"test apex", tr("Test: apex"), tr("meshoptimizer's test: v\u00b7V1 > sin \u03b1 with v from the eye to the apex.")},
-        {"test meshopt-sphere", tr("Test: meshopt-sphere"), tr("meshoptimizer's sphere test: (c \u2212 e)\u00b7V1 > sin \u03b1 |c \u2212 e| + r.")},
-        {"test octagon", tr("Test: octagon"),
-         tr("The apex test with an eight-sided cone of normals: tighter where the normals spread more one way than the "
-            "other. Culls when g\u00b7v > 0 for each of its eight edges g.")},
-        {"test octagon-compact", tr("Test: octagon-compact"),
-         tr("The octagon test on a 16-byte record (edges quantised, kept conservative): what an engine would store.")},
-        {"test meshopt-apex-f32", tr("Test: meshopt-apex-f32"),
-         tr("meshoptimizer's own record in float, tested as a shader does: dot(normalize(apex \u2212 e), axis) \u2265 cutoff. "
-            "Not made safe: its culls of a cluster with a visible face are counted as the record's false culls.")},
-        {"test meshopt-sphere-s8", tr("Test: meshopt-sphere-s8"),
-         tr("meshoptimizer's 8-bit cone with its bounding sphere, tested as niagara's task shader does. Not made safe: "
-            "its false culls are counted.")},
-        {"test cadscene-box-s8", tr("Test: cadscene-box-s8"),
-         tr("NVIDIA cadscene's record: an octahedral axis, an 8-bit angle and an 8-bit box, tested at the box's 8 corners. "
-            "Not made safe: its false culls are counted.")},
-        {"cone average", tr("Cone: average"), tr("The article's cone: V1 is the mean normal, \u03b1 the angle to the farthest normal.")},
-        {"cone seed-sphere", tr("Cone: seed-sphere"), tr("The article's note: V1 towards the centre of the smallest sphere around the normals' tips.")},
-        {"cone minimal", tr("Cone: minimal"), tr("The narrowest cone that holds every normal (the smallest cap on the Gauss sphere).")},
-        {"cone meshopt", tr("Cone: meshopt"), tr("meshoptimizer's cone (meshopt_computeClusterBounds).")},
-    };
+    static const std::vector<GlossaryEntry> entries = [] {
+        std::vector<GlossaryEntry> list;
+        for (const Term& term : kTerms) list.push_back({term.key, tr(term.term), tr(term.text)});
+        for (const CullTestDescriptor& test : cullTestDescriptors())
+            list.push_back({QStringLiteral("test ") + test.name, tr("Test: ") + test.name, tr(test.glossary)});
+        for (const ConeDescriptor& cone : coneDescriptors())
+            list.push_back({QStringLiteral("cone ") + cone.name, tr("Cone: ") + cone.name, tr(cone.glossary)});
+        return list;
+    }();
     return entries;
 }
 
@@ -123,16 +114,7 @@ QString explain(const QString& key) {
 QString explain(CullTest test) { return explain(QStringLiteral("test ") + QString::fromStdString(toString(test))); }
 QString explain(ConeMethod method) { return explain(QStringLiteral("cone ") + QString::fromStdString(toString(method))); }
 
-QString explain(Builder builder) {
-    switch (builder) {
-        case Builder::Optimized: return tr("Groups faces so that the expected share of culled triangles is as large as it can be, at meshoptimizer's cluster count (the default).");
-        case Builder::Meshlet: return tr("Grows clusters face by face under the vertex and triangle limits, preferring narrow cones.");
-        case Builder::KMeans: return tr("k-means on position and normal to a target count.");
-        case Builder::Meshopt: return tr("meshoptimizer's own meshlet builder (meshopt_buildMeshlets).");
-        case Builder::File: return tr("The clusters a file gives: the mesh's cluster_id array or a text file of one id per face.");
-    }
-    return {};
-}
+QString explain(Builder builder) { return tr(descriptor(builder).explanation); }
 
 QString explain(Effort effort) {
     switch (effort) {

@@ -2,8 +2,10 @@
 
 #include <cctype>
 #include <cmath>
+#include <utility>
 
 #include "BatchCulling.h"
+#include "Choices.h"
 #include "LessonSteps.h"
 #include "LessonText.h"
 #include "RecordTests.h"
@@ -89,6 +91,14 @@ std::string gaussStep(const Lesson& lesson) {
     return text + ": the cluster may be skipped only when every one turns away.";
 }
 
+// The cone's lesson wording (Choices.cpp) with the average and minimal cones' half-angles filled in.
+std::string withConeAngles(std::string wording, const std::string& average, const std::string& minimal) {
+    for (const auto& [mark, angle] : {std::pair<std::string, const std::string&>{"{average}", average}, {"{minimal}", minimal}})
+        for (size_t at = wording.find(mark); at != std::string::npos; at = wording.find(mark, at + angle.size()))
+            wording.replace(at, mark.size(), angle);
+    return wording;
+}
+
 std::string coneStep(const Lesson& lesson) {
     const CullExplanation& why = lesson.why;
     const std::string shown = toString(lesson.coneMethod);
@@ -102,13 +112,7 @@ std::string coneStep(const Lesson& lesson) {
     const double average = glm::degrees(lesson.averageCone.halfAngle());
     const double minimal = glm::degrees(lesson.minimalCone.halfAngle());
     const std::string averageText = lesson.averageCone.cullable ? degrees(average) : "more than 90\u00b0";
-    if (lesson.coneMethod == ConeMethod::Minimal)
-        text += "It is the narrowest cone that holds them; the article's average cone (V1 = the mean normal) needs \u03b1 = " +
-                averageText + ". ";
-    else if (lesson.coneMethod == ConeMethod::Average)
-        text += "V1 is the mean normal, as in the article; the narrowest cone (minimal) needs only \u03b1 = " + degrees(minimal) + ". ";
-    else
-        text += "The article's average cone needs \u03b1 = " + averageText + ", the narrowest (minimal) " + degrees(minimal) + ". ";
+    text += withConeAngles(descriptor(lesson.coneMethod).lessonWording, averageText, degrees(minimal));
     return text + "A narrower cone culls from more places: seen from far away this one culls from (1 \u2212 sin \u03b1)/2 = " +
            percent((1.0 - std::sin(glm::radians(why.halfAngleDegrees))) / 2.0) + " of all directions.";
 }

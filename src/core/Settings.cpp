@@ -3,34 +3,32 @@
 #include <stdexcept>
 #include <utility>
 
+#include "Choices.h"
+
 namespace conescope {
 
 namespace {
 template <typename Enum>
 using NameTable = std::vector<std::pair<Enum, const char*>>;
 
+// The cone, test and builder names come from their descriptor tables (Choices.h), in their order.
+template <typename Enum, typename Row, size_t N>
+NameTable<Enum> namesFrom(const std::array<Row, N>& rows, Enum Row::*value) {
+    NameTable<Enum> names;
+    for (const Row& row : rows) names.emplace_back(row.*value, row.name);
+    return names;
+}
+
 const NameTable<Builder>& builderNames() {
-    static const NameTable<Builder> names = {
-        {Builder::Meshlet, "meshlet"}, {Builder::KMeans, "kmeans"}, {Builder::Meshopt, "meshopt"}, {Builder::File, "file"},
-        {Builder::Optimized, "optimized"}};
+    static const NameTable<Builder> names = namesFrom(builderDescriptors(), &BuilderDescriptor::builder);
     return names;
 }
 const NameTable<ConeMethod>& coneNames() {
-    static const NameTable<ConeMethod> names = {{ConeMethod::Average, "average"},
-                                                {ConeMethod::SeedSphere, "seed-sphere"},
-                                                {ConeMethod::Minimal, "minimal"},
-                                                {ConeMethod::Meshopt, "meshopt"}};
+    static const NameTable<ConeMethod> names = namesFrom(coneDescriptors(), &ConeDescriptor::method);
     return names;
 }
 const NameTable<CullTest>& testNames() {
-    static const NameTable<CullTest> names = {{CullTest::Oracle, "oracle"},     {CullTest::Vertices, "vertices"},
-                                              {CullTest::Aabb, "aabb"},         {CullTest::AabbFast, "aabb-fast"},
-                                              {CullTest::Sphere, "sphere"},     {CullTest::Apex, "apex"},
-                                              {CullTest::Octagon, "octagon"},   {CullTest::MeshoptSphere, "meshopt-sphere"},
-                                              {CullTest::OctagonCompact, "octagon-compact"},
-                                              {CullTest::MeshoptApexF32, "meshopt-apex-f32"},
-                                              {CullTest::MeshoptSphereS8, "meshopt-sphere-s8"},
-                                              {CullTest::CadsceneBoxS8, "cadscene-box-s8"}};
+    static const NameTable<CullTest> names = namesFrom(cullTestDescriptors(), &CullTestDescriptor::test);
     return names;
 }
 const NameTable<SphereMethod>& sphereNames() {

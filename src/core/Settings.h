@@ -9,14 +9,13 @@
 
 #include <glm/glm.hpp>
 
+#include "Choices.h"
 #include "ClusterBounds.h"
 #include "Culling.h"
 #include "Effort.h"
 #include "Partition.h"
 
 namespace conescope {
-
-enum class Builder { Meshlet, KMeans, Meshopt, File, Optimized };
 
 struct Settings {
     // Defaults are the best measured combination (docs/benchmarks.md): optimized clusters, exact

@@ -135,8 +135,8 @@ SettingField describe(std::string key, std::string flag, std::string valueName, 
     return field;
 }
 
-std::vector<SettingField> makeFields() {
-    std::vector<SettingField> fields;
+// How the clusters are made: the builder and its limits (Stage::Clusters).
+void addClusterFields(std::vector<SettingField>& fields) {
     auto row = [&](SettingField field) { fields.push_back(std::move(field)); };
     SettingField f;
 
@@ -199,6 +199,12 @@ std::vector<SettingField> makeFields() {
     f.value = [](const Settings& s) -> SettingValue { return floatAsShortestDouble(s.meshoptConeWeight); };
     f.assign = [](Settings& s, const SettingValue& v) { s.meshoptConeWeight = float(std::get<double>(v)); };
     row(f);
+}
+
+// The bounds, the tests and the views they are measured from.
+void addMeasurementFields(std::vector<SettingField>& fields) {
+    auto row = [&](SettingField field) { fields.push_back(std::move(field)); };
+    SettingField f;
 
     f = describe("cones", "cone", "CONES", "Cone of normals methods, comma separated; the first is the one shown",
          SettingKind::NameList, false, Stage::Bounds);
@@ -256,6 +262,12 @@ std::vector<SettingField> makeFields() {
     f.value = [](const Settings& s) -> SettingValue { return s.fixWinding; };
     f.assign = [](Settings& s, const SettingValue& v) { s.fixWinding = std::get<bool>(v); };
     row(f);
+}
+
+std::vector<SettingField> makeFields() {
+    std::vector<SettingField> fields;
+    addClusterFields(fields);
+    addMeasurementFields(fields);
     return fields;
 }
 

@@ -18,6 +18,7 @@
 #include <vtkSphereSource.h>
 #include <vtkWindowToImageFilter.h>
 
+#include "core/Choices.h"
 #include "scene/SceneGeometry.h"
 #include "scene/SceneLayer.h"
 #include "scene/SceneLegend.h"
@@ -101,15 +102,7 @@ std::string degreesText(double radians) {
 
 }  // namespace
 
-Rgb coneMethodColour(ConeMethod method) {
-    switch (method) {
-    case ConeMethod::Average: return {1.00, 0.50, 0.10};
-    case ConeMethod::SeedSphere: return {0.25, 0.80, 0.95};
-    case ConeMethod::Minimal: return {0.35, 0.90, 0.35};
-    case ConeMethod::Meshopt: return {0.95, 0.35, 0.60};
-    }
-    return {1.0, 1.0, 1.0};
-}
+Rgb coneMethodColour(ConeMethod method) { return descriptor(method).colour; }
 
 struct GaussMapScene::Impl {
     vtkSmartPointer<vtkActor> sphere = actorFor(plainMapper(emptyPolyData()));

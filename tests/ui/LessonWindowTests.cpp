@@ -20,6 +20,8 @@
 #include <vtkGenericOpenGLRenderWindow.h>
 #include <vtkNew.h>
 
+#include "core/Choices.h"
+
 #include "CrossSectionView.h"
 #include "Datasets.h"
 #include "EyeStepTimes.h"
@@ -232,6 +234,16 @@ private slots:
                                  "bounding box", "cull fraction", "oracle fraction", "test loss", "partition loss", "efficiency"})
             QVERIFY2(!explain(QString::fromLatin1(term)).isEmpty(), term);
         for (CullTest test : allCullTests()) QVERIFY(!explain(test).isEmpty());
+        // The glossary's tests and cones are exactly the descriptor tables' rows, in their order.
+        QStringList tests, cones, expectedTests, expectedCones;
+        for (const GlossaryEntry& entry : glossary()) {
+            if (entry.key.startsWith(QStringLiteral("test "))) tests << entry.key.mid(5);
+            if (entry.key.startsWith(QStringLiteral("cone "))) cones << entry.key.mid(5);
+        }
+        for (const CullTestDescriptor& row : cullTestDescriptors()) expectedTests << QString::fromUtf8(row.name);
+        for (const ConeDescriptor& row : coneDescriptors()) expectedCones << QString::fromUtf8(row.name);
+        QCOMPARE(tests, expectedTests);
+        QCOMPARE(cones, expectedCones);
         QVERIFY(glossaryHtml().contains(QStringLiteral("Partition loss")));
         window_->setFaceColoring(FaceColoring::CullDecision);
     }
