@@ -13,7 +13,7 @@ struct ClusterReportInput {
     uint32_t cluster = 0;
     const ClusterBounds* bounds = nullptr;
     Eye eye;
-    CullTest test = CullTest::Vertices;
+    CullTest test = kDefaultTest;
     CullExplanation explanation;
 };
 
