@@ -6,7 +6,9 @@
     ones local to a function by their own name);
   - no comment block in src/ or ui/ runs over 15 lines (figures and diaries go to docs/);
   - the files of src/core include each other without loops (a header and its .cpp count as one);
-  - no source file runs over 600 lines.
+  - no source file runs over 600 lines;
+  - no function in src/ or ui/ runs over 80 lines, from its signature to its closing brace (lambdas count
+    with the function around them; a short allowlist names the few left and why).
 
   scripts/check-sources.py [ROOT]      # prints each breach, exits 1 if there is one
 
@@ -18,6 +20,10 @@ import sys
 
 MAX_COMMENT_LINES = 15
 MAX_FILE_LINES = 600
+MAX_FUNCTION_LINES = 80
+# (file, function) still over MAX_FUNCTION_LINES, each with the reason it is left.
+LONG_FUNCTIONS_ALLOWED = {
+}
 SOURCE_SUFFIXES = (".h", ".cpp")
 
 
@@ -104,6 +110,71 @@ def long_files(files):
             yield f"{path}: {len(lines) - 1} lines (at most about {MAX_FILE_LINES})"
 
 
+def blank_comments_and_strings(text):
+    """The text with comments, string and character literals replaced by spaces (newlines kept), so
+    braces inside them do not count."""
+    def blank(match):
+        return re.sub(r"[^\n]", " ", match.group(0))
+    pattern = re.compile(r'R"([^(\s]*)\(.*?\)\1"|//[^\n]*|/\*.*?\*/|"(?:\\.|[^"\\\n])*"|\'(?:\\.|[^\'\\\n])*\'', re.S)
+    return pattern.sub(blank, text)
+
+
+CONTAINER = re.compile(r"^(?:template\s*<.*>\s*)?(?:namespace|class|struct|union|enum|extern)\b", re.S)
+FUNCTION_BODY = re.compile(r"\)\s*(?:const|override|final|noexcept|mutable|&&?|\s)*(?:->\s*[\w:<>,\s*&]+)?$")
+LABEL_OR_MACRO = re.compile(r"^\s*(?:(?:public|private|protected)(?:\s+(?:slots|Q_SLOTS))?\s*:|signals\s*:|Q_\w+|#.*)\s*$")
+
+
+def function_spans(lines):
+    """(name, first line, last line) of every function body in a file: a `{` that follows a signature
+    (text ending in `)`, perhaps with const/override/noexcept or a trailing return type) outside any
+    function; namespace, class, enum and initialiser braces are walked through. The first line is the
+    signature's first line; braces inside a function (blocks, lambdas) belong to it."""
+    text = blank_comments_and_strings("\n".join(lines))
+    scopes = []  # "container", "function" or "init" for each open brace
+    statement_start = 0  # offset where the text before the next brace begins
+    opened = []  # (name, start line) of the function open, if any
+    line_of = lambda offset: text.count("\n", 0, offset) + 1
+    for offset, char in enumerate(text):
+        inside_function = "function" in scopes
+        if char == ";" and not inside_function and (not scopes or scopes[-1] != "init"):
+            statement_start = offset + 1
+        elif char == "{":
+            if inside_function:
+                scopes.append("block")
+                continue
+            statement = text[statement_start:offset]
+            kept = [line for line in statement.split("\n") if line.strip() and not LABEL_OR_MACRO.match(line)]
+            signature = "\n".join(kept).strip()
+            if CONTAINER.match(signature):
+                scopes.append("container")
+                statement_start = offset + 1
+            elif FUNCTION_BODY.search(signature) and "(" in signature:
+                scopes.append("function")
+                first = statement_start + statement.index(kept[0]) + len(kept[0]) - len(kept[0].lstrip())
+                name = re.findall(r"([~\w:]+)\s*\(", signature.split("(")[0] + "(")
+                opened.append((name[-1] if name else "?", line_of(first)))
+            else:
+                scopes.append("init")  # `= {`, `member{value}`: part of the statement around it
+        elif char == "}" and scopes:
+            kind = scopes.pop()
+            if kind == "function":
+                name, start = opened.pop()
+                yield name, start, line_of(offset)
+            if kind in ("function", "container"):
+                statement_start = offset + 1
+
+
+def long_functions(files, allowed=None):
+    allowed = LONG_FUNCTIONS_ALLOWED if allowed is None else allowed
+    for path, lines in files:
+        if not (path.startswith("src/") or path.startswith("ui/")):
+            continue
+        for name, first, last in function_spans(lines):
+            length = last - first + 1
+            if length > MAX_FUNCTION_LINES and (path, name) not in allowed:
+                yield f"{path}:{first}: {name} runs {length} lines (at most {MAX_FUNCTION_LINES}; split it)"
+
+
 def include_loops(root, files):
     """Loops among src/core's modules (a header and its .cpp together), following quoted includes."""
     def module(path):
@@ -148,6 +219,7 @@ def main():
     files = list(source_files(root, ["src", "ui"]))
     breaches = [*meshoptimizer_includes(files), *shared_class_names(files), *long_comments(files), *long_files(files),
                 *include_loops(root, files)]
+    breaches += long_functions(files)
     for breach in breaches:
         print(breach)
     print(f"check-sources: {len(files)} files, {len(breaches)} breaches", file=sys.stderr)
