@@ -23,6 +23,10 @@ MAX_FILE_LINES = 600
 MAX_FUNCTION_LINES = 80
 # (file, function) still over MAX_FUNCTION_LINES, each with the reason it is left.
 LONG_FUNCTIONS_ALLOWED = {
+    # Tables written as one initialiser, to be read from the descriptor tables of the cones, tests and
+    # builders that are replacing them.
+    ("src/core/SettingsSchema.cpp", "makeFields"): "the settings schema's table",
+    ("ui/Glossary.cpp", "glossary"): "the glossary's table",
 }
 SOURCE_SUFFIXES = (".h", ".cpp")
 
