@@ -155,8 +155,13 @@ def function_spans(lines):
             elif FUNCTION_BODY.search(signature) and "(" in signature:
                 scopes.append("function")
                 first = statement_start + statement.index(kept[0]) + len(kept[0]) - len(kept[0].lstrip())
-                name = re.findall(r"([~\w:]+)\s*\(", signature.split("(")[0] + "(")
-                opened.append((name[-1] if name else "?", line_of(first)))
+                operator = re.search(r"[\w:]*operator\s*(?:\(\)|[^\s(]+)", signature)
+                name = [operator.group(0)] if operator else re.findall(r"([~\w:]+)\s*\(", signature.split("(")[0] + "(")
+                lambdas = list(re.finditer(r"\[[^\[\]]*\]\s*\(", statement))
+                if scopes[:-1] and scopes[-2] == "init" and lambdas:
+                    first = statement_start + lambdas[-1].start()  # a lambda in a table: from its own line
+                    name = ["lambda"]
+                opened.append((name[-1] if name else "lambda", line_of(first)))
             else:
                 scopes.append("init")  # `= {`, `member{value}`: part of the statement around it
         elif char == "}" and scopes:

@@ -34,8 +34,15 @@ class FunctionLength(unittest.TestCase):
         source = "\n".join(["class Widget : public Base {", "    Q_OBJECT", "public:", "    explicit Widget(int v)",
                             "        : value_{v}, other_(2) {", "        setUp();", "    }", "    int value() const { return value_; }",
                             "private:", "    int value_{0};", "};", "const std::vector<int> table = {", "    1, 2,", "};",
-                            "enum class Kind : int { a, b };", "auto Widget::make() -> std::vector<int> {", "    return {};", "}"])
-        self.assertEqual(self.spans(source), [("Widget", 4, 7), ("value", 8, 8), ("Widget::make", 16, 18)])
+                            "enum class Kind : int { a, b };", "auto Widget::make() -> std::vector<int> {", "    return {};", "}",
+                            "bool Widget::operator()(int a) const { return a; }", "Widget operator+(Widget a, Widget b) { return a; }"])
+        self.assertEqual(self.spans(source), [("Widget", 4, 7), ("value", 8, 8), ("Widget::make", 16, 18),
+                                              ("Widget::operator()", 19, 19), ("operator+", 20, 20)])
+
+    def test_lambdas_in_a_table_at_namespace_scope_count_from_their_own_line(self):
+        source = "\n".join(["const Column columns[] = {", "    {\"a\", 1},", "    {\"b\",", "     [](int c) {", "         return c;",
+                            "     }},", "};"])
+        self.assertEqual(self.spans(source), [("lambda", 4, 6)])
 
     def test_a_long_function_is_a_breach_and_a_short_one_or_an_allowed_one_is_not(self):
         limit = rules.MAX_FUNCTION_LINES
