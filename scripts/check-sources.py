@@ -11,7 +11,9 @@
     MAX_DOOR_INCLUDERS source files outside it do; its internal header (meshopt/Reproduction.h)
     is included only inside the folder;
   - README.md has fewer than 250 lines (the rest goes to docs/user/ and docs/dev/);
-  - every relative link and image of every .md file names a file that exists, and a #heading in it.
+  - every relative link and image of every .md file names a file that exists, and a #heading in it;
+  - no function in src/ or ui/ runs over 80 lines, from its signature to its closing brace (lambdas count
+    with the function around them; a short allowlist names the few left and why).
 
   scripts/check-sources.py [ROOT]      # prints each breach, exits 1 if there is one
 
@@ -27,6 +29,10 @@ MAX_FILE_LINES = 600
 # its meshlets, bounds or simplification (9 today); a new one is a decision, not a side effect.
 MAX_DOOR_INCLUDERS = 10
 MAX_README_LINES = 250
+MAX_FUNCTION_LINES = 80
+# (file, function) still over MAX_FUNCTION_LINES, each with the reason it is left.
+# None today.
+LONG_FUNCTIONS_ALLOWED = {}
 SOURCE_SUFFIXES = (".h", ".cpp")
 
 
@@ -132,6 +138,76 @@ def long_files(files):
             yield f"{path}: {len(lines) - 1} lines (at most about {MAX_FILE_LINES})"
 
 
+def blank_comments_and_strings(text):
+    """The text with comments, string and character literals replaced by spaces (newlines kept), so
+    braces inside them do not count."""
+    def blank(match):
+        return re.sub(r"[^\n]", " ", match.group(0))
+    pattern = re.compile(r'R"([^(\s]*)\(.*?\)\1"|//[^\n]*|/\*.*?\*/|"(?:\\.|[^"\\\n])*"|\'(?:\\.|[^\'\\\n])*\'', re.S)
+    return pattern.sub(blank, text)
+
+
+CONTAINER = re.compile(r"^(?:template\s*<.*>\s*)?(?:namespace|class|struct|union|enum|extern)\b", re.S)
+FUNCTION_BODY = re.compile(r"\)\s*(?:const|override|final|noexcept|mutable|&&?|\s)*(?:->\s*[\w:<>,\s*&]+)?$")
+LABEL_OR_MACRO = re.compile(r"^\s*(?:(?:public|private|protected)(?:\s+(?:slots|Q_SLOTS))?\s*:|signals\s*:|Q_\w+|#.*)\s*$")
+
+
+def function_spans(lines):
+    """(name, first line, last line) of every function body in a file: a `{` that follows a signature
+    (text ending in `)`, perhaps with const/override/noexcept or a trailing return type) outside any
+    function; namespace, class, enum and initialiser braces are walked through. The first line is the
+    signature's first line; braces inside a function (blocks, lambdas) belong to it."""
+    text = blank_comments_and_strings("\n".join(lines))
+    scopes = []  # "container", "function" or "init" for each open brace
+    statement_start = 0  # offset where the text before the next brace begins
+    opened = []  # (name, start line) of the function open, if any
+    line_of = lambda offset: text.count("\n", 0, offset) + 1
+    for offset, char in enumerate(text):
+        inside_function = "function" in scopes
+        if char == ";" and not inside_function and (not scopes or scopes[-1] != "init"):
+            statement_start = offset + 1
+        elif char == "{":
+            if inside_function:
+                scopes.append("block")
+                continue
+            statement = text[statement_start:offset]
+            kept = [line for line in statement.split("\n") if line.strip() and not LABEL_OR_MACRO.match(line)]
+            signature = "\n".join(kept).strip()
+            if CONTAINER.match(signature):
+                scopes.append("container")
+                statement_start = offset + 1
+            elif FUNCTION_BODY.search(signature) and "(" in signature:
+                scopes.append("function")
+                first = statement_start + statement.index(kept[0]) + len(kept[0]) - len(kept[0].lstrip())
+                operator = re.search(r"[\w:]*operator\s*(?:\(\)|[^\s(]+)", signature)
+                name = [operator.group(0)] if operator else re.findall(r"([~\w:]+)\s*\(", signature.split("(")[0] + "(")
+                lambdas = list(re.finditer(r"\[[^\[\]]*\]\s*\(", statement))
+                if scopes[:-1] and scopes[-2] == "init" and lambdas:
+                    first = statement_start + lambdas[-1].start()  # a lambda in a table: from its own line
+                    name = ["lambda"]
+                opened.append((name[-1] if name else "lambda", line_of(first)))
+            else:
+                scopes.append("init")  # `= {`, `member{value}`: part of the statement around it
+        elif char == "}" and scopes:
+            kind = scopes.pop()
+            if kind == "function":
+                name, start = opened.pop()
+                yield name, start, line_of(offset)
+            if kind in ("function", "container"):
+                statement_start = offset + 1
+
+
+def long_functions(files, allowed=None):
+    allowed = LONG_FUNCTIONS_ALLOWED if allowed is None else allowed
+    for path, lines in files:
+        if not (path.startswith("src/") or path.startswith("ui/")):
+            continue
+        for name, first, last in function_spans(lines):
+            length = last - first + 1
+            if length > MAX_FUNCTION_LINES and (path, name) not in allowed:
+                yield f"{path}:{first}: {name} runs {length} lines (at most {MAX_FUNCTION_LINES}; split it)"
+
+
 def include_loops(root, files):
     """Loops among src/core's modules (a header and its .cpp together), following quoted includes."""
     def module(path):
@@ -212,6 +288,7 @@ def main():
     files = list(source_files(root, ["src", "ui"]))
     breaches = [*meshoptimizer_includes(files), *shared_class_names(files), *long_comments(files), *long_files(files),
                 *include_loops(root, files), *meshopt_door_includes(files), *long_readme(root), *broken_doc_links(root)]
+    breaches += long_functions(files)
     for breach in breaches:
         print(breach)
     print(f"check-sources: {len(files)} files, {len(breaches)} breaches", file=sys.stderr)

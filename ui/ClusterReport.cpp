@@ -113,6 +113,62 @@ void octagonRows(Table& table, const CullExplanation& why, bool orthographic) {
         .row(QStringLiteral("edges seeing the back"), QStringLiteral("%1 of 8").arg(why.edgesBack));
 }
 
+// The rows of the tests that compare v.V1 from a perspective eye; the corner table for the AABB tests.
+QString perspectiveRows(Table& table, const CullExplanation& why, CullTest test) {
+    switch (test) {
+        case CullTest::Vertices:
+            table.row(QStringLiteral("rule"), QStringLiteral("culled iff v&middot;V1 &gt; sin &alpha; for v = (q &minus; e)/|q &minus; e| "
+                                                             "at every cluster vertex q"))
+                .row(QStringLiteral("threshold sin &alpha; (+ margin)"), number(why.threshold))
+                .row(QStringLiteral("vertices seeing the back"),
+                     QStringLiteral("%1 of %2").arg(why.pointsBack).arg(why.pointsTested));
+            break;
+        case CullTest::Aabb:
+        case CullTest::AabbFast:
+            table.row(QStringLiteral("rule"),
+                      test == CullTest::Aabb
+                          ? QStringLiteral("culled iff v&middot;V1 &gt; sin &alpha; at all 8 AABB corners")
+                          : QStringLiteral("culled iff (k &minus; e)&middot;V1 &gt; 0 and ((k &minus; e)&middot;V1)&sup2; &gt; "
+                                           "sin&sup2; &alpha; |k &minus; e|&sup2; at all 8 corners k (no square root; "
+                                           "the table shows the normalised form)"))
+                .row(QStringLiteral("threshold sin &alpha; (+ margin)"), number(why.threshold))
+                .row(QStringLiteral("corners seeing the back"),
+                     QStringLiteral("%1 of %2").arg(why.pointsBack).arg(why.pointsTested));
+            return cornerTable(why);
+        case CullTest::Sphere:
+            table.row(QStringLiteral("rule"), QStringLiteral("culled iff v&middot;V1 &gt; cos(B &minus; asin(r/d)), "
+                                                             "v = (c &minus; e)/d, d = |c &minus; e|; never with the eye inside"))
+                .row(QStringLiteral("d = |c &minus; e|"), number(why.distance))
+                .row(QStringLiteral("r"), number(why.radius))
+                .row(QStringLiteral("eye inside the sphere"), yesNo(why.eyeInsideSphere))
+                .row(QStringLiteral("asin(r/d)"), why.eyeInsideSphere ? QStringLiteral("&mdash;") : degrees(why.sphereAngleDegrees))
+                .row(QStringLiteral("B"), degrees(why.angleBDegrees))
+                .row(QStringLiteral("v"), vector3(why.view))
+                .row(QStringLiteral("v&middot;V1"), number(why.viewDotAxis))
+                .row(QStringLiteral("threshold cos(B &minus; asin(r/d)) (+ margin)"), number(why.threshold));
+            break;
+        case CullTest::Apex:
+            table.row(QStringLiteral("rule"), QStringLiteral("culled iff v&middot;V1 &gt; sin &alpha; for v = (apex &minus; e)/|apex &minus; e|: "
+                                                             "the apex lies behind every face plane"))
+                .row(QStringLiteral("apex"), vector3(why.apex))
+                .row(QStringLiteral("v"), vector3(why.view))
+                .row(QStringLiteral("v&middot;V1"), number(why.viewDotAxis))
+                .row(QStringLiteral("threshold sin &alpha; (+ margin)"), number(why.threshold));
+            break;
+        case CullTest::MeshoptSphere:
+            table.row(QStringLiteral("rule"), QStringLiteral("culled iff (c &minus; e)&middot;V1 &gt; sin &alpha; |c &minus; e| + r, "
+                                                             "i.e. d (v&middot;V1) &gt; d sin &alpha; + r"))
+                .row(QStringLiteral("d = |c &minus; e|"), number(why.distance))
+                .row(QStringLiteral("r"), number(why.radius))
+                .row(QStringLiteral("v = (c &minus; e)/d"), vector3(why.view))
+                .row(QStringLiteral("v&middot;V1"), number(why.viewDotAxis))
+                .row(QStringLiteral("sin &alpha; (+ margin)"), number(why.threshold));
+            break;
+        default: break;  // the oracle, the octagon and the records of their own are above
+    }
+    return QString();
+}
+
 // The steps of the chosen test with the numbers it compared.
 QString testSection(const ClusterReportInput& input) {
     const CullExplanation& why = input.explanation;
@@ -141,58 +197,7 @@ QString testSection(const ClusterReportInput& input) {
             .row(QStringLiteral("d&middot;V1"), number(why.viewDotAxis))
             .row(QStringLiteral("threshold sin &alpha; (+ margin)"), number(why.threshold));
     } else {
-        switch (input.test) {
-            case CullTest::Vertices:
-                table.row(QStringLiteral("rule"), QStringLiteral("culled iff v&middot;V1 &gt; sin &alpha; for v = (q &minus; e)/|q &minus; e| "
-                                                                 "at every cluster vertex q"))
-                    .row(QStringLiteral("threshold sin &alpha; (+ margin)"), number(why.threshold))
-                    .row(QStringLiteral("vertices seeing the back"),
-                         QStringLiteral("%1 of %2").arg(why.pointsBack).arg(why.pointsTested));
-                break;
-            case CullTest::Aabb:
-            case CullTest::AabbFast:
-                table.row(QStringLiteral("rule"),
-                          input.test == CullTest::Aabb
-                              ? QStringLiteral("culled iff v&middot;V1 &gt; sin &alpha; at all 8 AABB corners")
-                              : QStringLiteral("culled iff (k &minus; e)&middot;V1 &gt; 0 and ((k &minus; e)&middot;V1)&sup2; &gt; "
-                                               "sin&sup2; &alpha; |k &minus; e|&sup2; at all 8 corners k (no square root; "
-                                               "the table shows the normalised form)"))
-                    .row(QStringLiteral("threshold sin &alpha; (+ margin)"), number(why.threshold))
-                    .row(QStringLiteral("corners seeing the back"),
-                         QStringLiteral("%1 of %2").arg(why.pointsBack).arg(why.pointsTested));
-                steps = cornerTable(why);
-                break;
-            case CullTest::Sphere:
-                table.row(QStringLiteral("rule"), QStringLiteral("culled iff v&middot;V1 &gt; cos(B &minus; asin(r/d)), "
-                                                                 "v = (c &minus; e)/d, d = |c &minus; e|; never with the eye inside"))
-                    .row(QStringLiteral("d = |c &minus; e|"), number(why.distance))
-                    .row(QStringLiteral("r"), number(why.radius))
-                    .row(QStringLiteral("eye inside the sphere"), yesNo(why.eyeInsideSphere))
-                    .row(QStringLiteral("asin(r/d)"), why.eyeInsideSphere ? QStringLiteral("&mdash;") : degrees(why.sphereAngleDegrees))
-                    .row(QStringLiteral("B"), degrees(why.angleBDegrees))
-                    .row(QStringLiteral("v"), vector3(why.view))
-                    .row(QStringLiteral("v&middot;V1"), number(why.viewDotAxis))
-                    .row(QStringLiteral("threshold cos(B &minus; asin(r/d)) (+ margin)"), number(why.threshold));
-                break;
-            case CullTest::Apex:
-                table.row(QStringLiteral("rule"), QStringLiteral("culled iff v&middot;V1 &gt; sin &alpha; for v = (apex &minus; e)/|apex &minus; e|: "
-                                                                 "the apex lies behind every face plane"))
-                    .row(QStringLiteral("apex"), vector3(why.apex))
-                    .row(QStringLiteral("v"), vector3(why.view))
-                    .row(QStringLiteral("v&middot;V1"), number(why.viewDotAxis))
-                    .row(QStringLiteral("threshold sin &alpha; (+ margin)"), number(why.threshold));
-                break;
-            case CullTest::MeshoptSphere:
-                table.row(QStringLiteral("rule"), QStringLiteral("culled iff (c &minus; e)&middot;V1 &gt; sin &alpha; |c &minus; e| + r, "
-                                                                 "i.e. d (v&middot;V1) &gt; d sin &alpha; + r"))
-                    .row(QStringLiteral("d = |c &minus; e|"), number(why.distance))
-                    .row(QStringLiteral("r"), number(why.radius))
-                    .row(QStringLiteral("v = (c &minus; e)/d"), vector3(why.view))
-                    .row(QStringLiteral("v&middot;V1"), number(why.viewDotAxis))
-                    .row(QStringLiteral("sin &alpha; (+ margin)"), number(why.threshold));
-                break;
-            default: break;  // the oracle, the octagon and the records of their own are above
-        }
+        steps = perspectiveRows(table, why, input.test);
     }
     if (!std::isnan(why.margin))
         table.row(input.test == CullTest::Octagon ? QStringLiteral("margin (tightest g&middot;v &minus; threshold)")

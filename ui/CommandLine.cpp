@@ -79,25 +79,17 @@ std::vector<Enum> parseNameList(const QString& text, Parse parse) {
 
 }  // namespace
 
-CommandLineResult parseCommandLine(const QStringList& arguments) {
-    QCommandLineParser parser;
-    parser.setApplicationDescription(QStringLiteral(
-        "ConeScope: cluster back-face culling with normal cones. Opens MESH (or a bundled mesh) in the "
-        "viewer, or with --screenshot renders one frame to a PNG and exits."));
-    const QCommandLineOption help = parser.addHelpOption();
-    const QCommandLineOption version = parser.addVersionOption();
+namespace {
+
+// The window's options besides the run settings, and one option per field of the settings schema.
+struct AppOptionSet {
+    QCommandLineOption help, version, screenshot, size, fromEye, coloring, layers, pick, gaussMap, compare, replay, stay;
+    std::vector<std::pair<const SettingField*, QCommandLineOption>> settings;
+};
+
+// The run settings, one option per field of the schema (core/SettingsSchema.h), as the CLI has them.
+std::vector<std::pair<const SettingField*, QCommandLineOption>> settingOptions() {
     const Settings defaults;
-    const QCommandLineOption screenshot(QStringLiteral("screenshot"), QStringLiteral("Render one frame to this PNG and exit."),
-                                        QStringLiteral("OUT.png"));
-    const QCommandLineOption size(QStringLiteral("size"), QStringLiteral("Screenshot size (default 1280x800)."),
-                                  QStringLiteral("WxH"));
-    const QCommandLineOption fromEye(QStringLiteral("from-eye"),
-                                     QStringLiteral("Screenshot what the cull eye sees (culled clusters removed)."));
-    const QCommandLineOption coloring(
-        QStringLiteral("coloring"),
-        QStringLiteral("Face colours: %1 (default: %2).").arg(colouringNames(), QString::fromStdString(toString(FaceColoring::CullDecision))),
-        QStringLiteral("name"));
-    // The run settings, one option per field of the schema (core/SettingsSchema.h), as the CLI has them.
     std::vector<std::pair<const SettingField*, QCommandLineOption>> settingOptions;
     for (const SettingField& field : settingFields()) {
         // Here --eye places the window's cull eye; the orbit is measured as well.
@@ -108,6 +100,27 @@ CommandLineResult parseCommandLine(const QStringList& arguments) {
         if (field.kind != SettingKind::Flag) option.setValueName(QString::fromStdString(field.valueName));
         settingOptions.emplace_back(&field, option);
     }
+    return settingOptions;
+}
+
+// Declares every option and the MESH argument on the parser, in the order the help lists them.
+AppOptionSet addAppOptions(QCommandLineParser& parser) {
+    parser.setApplicationDescription(QStringLiteral(
+        "ConeScope: cluster back-face culling with normal cones. Opens MESH (or a bundled mesh) in the "
+        "viewer, or with --screenshot renders one frame to a PNG and exits."));
+    const QCommandLineOption help = parser.addHelpOption();
+    const QCommandLineOption version = parser.addVersionOption();
+    const QCommandLineOption screenshot(QStringLiteral("screenshot"), QStringLiteral("Render one frame to this PNG and exit."),
+                                        QStringLiteral("OUT.png"));
+    const QCommandLineOption size(QStringLiteral("size"), QStringLiteral("Screenshot size (default 1280x800)."),
+                                  QStringLiteral("WxH"));
+    const QCommandLineOption fromEye(QStringLiteral("from-eye"),
+                                     QStringLiteral("Screenshot what the cull eye sees (culled clusters removed)."));
+    const QCommandLineOption coloring(
+        QStringLiteral("coloring"),
+        QStringLiteral("Face colours: %1 (default: %2).").arg(colouringNames(), QString::fromStdString(toString(FaceColoring::CullDecision))),
+        QStringLiteral("name"));
+    std::vector<std::pair<const SettingField*, QCommandLineOption>> settings = settingOptions();
     QStringList layerNames;
     for (Layer layer : allLayers()) layerNames << QString::fromStdString(toString(layer));
     const QCommandLineOption layers(
@@ -137,83 +150,97 @@ CommandLineResult parseCommandLine(const QStringList& arguments) {
                                     QStringLiteral("FILE.json"));
     const QCommandLineOption stay(QStringLiteral("stay"), QStringLiteral("With --replay: keep the window open afterwards."));
     parser.addOptions({screenshot, size, fromEye, coloring, layers, pick, gaussMap, compare, replay, stay});
-    for (const auto& [field, option] : settingOptions) parser.addOption(option);
+    for (const auto& [field, option] : settings) parser.addOption(option);
     QStringList extensions;
     for (const std::string& extension : supportedMeshExtensions()) extensions << QString::fromStdString(extension);
     parser.addPositionalArgument(QStringLiteral("MESH"), QStringLiteral("Mesh file (%1).").arg(extensions.join(QLatin1Char(' '))),
                                  QStringLiteral("[MESH]"));
+    return {help, version, screenshot, size, fromEye, coloring, layers, pick, gaussMap, compare, replay, stay, std::move(settings)};
+}
 
+// The help text, or nothing when neither --help nor --help-all was given.
+std::optional<QString> helpText(const QCommandLineParser& parser, const AppOptionSet& o) {
+    if (!parser.isSet(o.help) && !parser.isSet(QStringLiteral("help-all"))) return std::nullopt;
+    if (QCoreApplication::instance()) return parser.helpText();
+    // QCommandLineParser writes its usage line from the application object: make a
+    // short-lived one, so asking for help needs neither a display nor a window.
+    static int argumentCount = 1;
+    static char programName[] = "conescope";
+    static char* argumentValues[] = {programName, nullptr};
+    QCoreApplication application(argumentCount, argumentValues);
+    return parser.helpText();
+}
+
+// The options given, checked against each other; throws std::invalid_argument saying what is wrong.
+void readAppOptions(const QCommandLineParser& parser, const AppOptionSet& o, AppOptions& options) {
+    const QStringList positional = parser.positionalArguments();
+    if (positional.size() > 1) throw std::invalid_argument("more than one mesh given");
+    if (!positional.isEmpty()) options.mesh = positional.front();
+    Settings& settings = options.settings;
+    for (const auto& [field, option] : o.settings) {
+        if (!parser.isSet(option)) continue;
+        // A list option given twice adds to the list, as in the CLI.
+        const QStringList values = field->kind == SettingKind::Flag ? QStringList{QStringLiteral("true")} : parser.values(option);
+        parseSetting(*field, values.join(QLatin1Char(',')).toStdString(), settings);
+    }
+    options.eye = settings.eye;
+    settings.eye.reset();
+    if (parser.isSet(o.size)) options.size = parseSizeText(parser.value(o.size));
+    if (parser.isSet(o.screenshot)) {
+        options.screenshot = parser.value(o.screenshot);
+        if (options.screenshot.isEmpty()) throw std::invalid_argument("--screenshot needs a file name");
+    }
+    options.fromEye = parser.isSet(o.fromEye);
+    if (parser.isSet(o.coloring)) options.coloring = parseFaceColoring(parser.value(o.coloring));
+    if (parser.isSet(o.layers))
+        options.layers = parseNameList<Layer>(parser.value(o.layers), [](const std::string& name) { return parseLayer(QString::fromStdString(name)); });
+    if (parser.isSet(o.pick)) {
+        bool valid = false;
+        options.pick = parser.value(o.pick).toULongLong(&valid);
+        if (!valid) throw std::invalid_argument("--pick '" + parser.value(o.pick).toStdString() + "' is not a cluster id");
+    }
+    if (options.screenshot.isEmpty() && (parser.isSet(o.size) || options.fromEye || options.pick))
+        throw std::invalid_argument("--size, --from-eye and --pick only apply to --screenshot");
+    options.gaussMap = parser.value(o.gaussMap);
+    if (parser.isSet(o.compare)) {
+        if (options.screenshot.isEmpty()) throw std::invalid_argument("--compare only applies to --screenshot");
+        options.compare = parser.value(o.compare).toStdString();
+        parseConfiguration(*options.compare, settings);  // a typo fails before anything is read
+        if (!parser.isSet(o.coloring)) options.coloring = FaceColoring::Comparison;
+    }
+    if (parser.isSet(o.gaussMap) && (!options.pick || options.gaussMap.isEmpty()))
+        throw std::invalid_argument("--gauss-map needs a file name and --pick");
+    options.replay = parser.value(o.replay);
+    options.stay = parser.isSet(o.stay);
+    if (parser.isSet(o.replay) && options.replay.isEmpty()) throw std::invalid_argument("--replay needs a file name");
+    if (!options.replay.isEmpty() && !options.screenshot.isEmpty())
+        throw std::invalid_argument("--replay plays in the window: use its screenshot steps instead of --screenshot");
+    if (options.stay && options.replay.isEmpty()) throw std::invalid_argument("--stay only applies to --replay");
+}
+
+}  // namespace
+
+CommandLineResult parseCommandLine(const QStringList& arguments) {
+    QCommandLineParser parser;
+    const AppOptionSet o = addAppOptions(parser);
     CommandLineResult result;
     if (!parser.parse(arguments)) {
         result.action = CommandLineResult::Action::ExitFailure;
         result.message = parser.errorText();
         return result;
     }
-    if (parser.isSet(help) || parser.isSet(QStringLiteral("help-all"))) {
+    if (const std::optional<QString> help = helpText(parser, o)) {
         result.action = CommandLineResult::Action::ExitSuccess;
-        if (QCoreApplication::instance()) {
-            result.message = parser.helpText();
-        } else {
-            // QCommandLineParser writes its usage line from the application object: make a
-            // short-lived one, so asking for help needs neither a display nor a window.
-            static int argumentCount = 1;
-            static char programName[] = "conescope";
-            static char* argumentValues[] = {programName, nullptr};
-            QCoreApplication application(argumentCount, argumentValues);
-            result.message = parser.helpText();
-        }
+        result.message = *help;
         return result;
     }
-    if (parser.isSet(version)) {
+    if (parser.isSet(o.version)) {
         result.action = CommandLineResult::Action::ExitSuccess;
         result.message = QStringLiteral("conescope %1").arg(QStringLiteral(CONESCOPE_VERSION));
         return result;
     }
-    AppOptions& options = result.options;
     try {
-        const QStringList positional = parser.positionalArguments();
-        if (positional.size() > 1) throw std::invalid_argument("more than one mesh given");
-        if (!positional.isEmpty()) options.mesh = positional.front();
-        Settings& settings = options.settings;
-        for (const auto& [field, option] : settingOptions) {
-            if (!parser.isSet(option)) continue;
-            // A list option given twice adds to the list, as in the CLI.
-            const QStringList values = field->kind == SettingKind::Flag ? QStringList{QStringLiteral("true")} : parser.values(option);
-            parseSetting(*field, values.join(QLatin1Char(',')).toStdString(), settings);
-        }
-        options.eye = settings.eye;
-        settings.eye.reset();
-        if (parser.isSet(size)) options.size = parseSizeText(parser.value(size));
-        if (parser.isSet(screenshot)) {
-            options.screenshot = parser.value(screenshot);
-            if (options.screenshot.isEmpty()) throw std::invalid_argument("--screenshot needs a file name");
-        }
-        options.fromEye = parser.isSet(fromEye);
-        if (parser.isSet(coloring)) options.coloring = parseFaceColoring(parser.value(coloring));
-        if (parser.isSet(layers))
-            options.layers = parseNameList<Layer>(parser.value(layers), [](const std::string& name) { return parseLayer(QString::fromStdString(name)); });
-        if (parser.isSet(pick)) {
-            bool valid = false;
-            options.pick = parser.value(pick).toULongLong(&valid);
-            if (!valid) throw std::invalid_argument("--pick '" + parser.value(pick).toStdString() + "' is not a cluster id");
-        }
-        if (options.screenshot.isEmpty() && (parser.isSet(size) || options.fromEye || options.pick))
-            throw std::invalid_argument("--size, --from-eye and --pick only apply to --screenshot");
-        options.gaussMap = parser.value(gaussMap);
-        if (parser.isSet(compare)) {
-            if (options.screenshot.isEmpty()) throw std::invalid_argument("--compare only applies to --screenshot");
-            options.compare = parser.value(compare).toStdString();
-            parseConfiguration(*options.compare, settings);  // a typo fails before anything is read
-            if (!parser.isSet(coloring)) options.coloring = FaceColoring::Comparison;
-        }
-        if (parser.isSet(gaussMap) && (!options.pick || options.gaussMap.isEmpty()))
-            throw std::invalid_argument("--gauss-map needs a file name and --pick");
-        options.replay = parser.value(replay);
-        options.stay = parser.isSet(stay);
-        if (parser.isSet(replay) && options.replay.isEmpty()) throw std::invalid_argument("--replay needs a file name");
-        if (!options.replay.isEmpty() && !options.screenshot.isEmpty())
-            throw std::invalid_argument("--replay plays in the window: use its screenshot steps instead of --screenshot");
-        if (options.stay && options.replay.isEmpty()) throw std::invalid_argument("--stay only applies to --replay");
+        readAppOptions(parser, o, result.options);
     } catch (const std::exception& error) {
         result.action = CommandLineResult::Action::ExitFailure;
         result.message = QString::fromStdString(error.what());

@@ -60,6 +60,33 @@ MainWindow::~MainWindow() = default;
 
 // --- Construction --------------------------------------------------------------------------------
 
+// Long panels scroll rather than forcing their height on the other docks.
+static QScrollArea* scrolledPanel(QWidget* panel, QWidget* parent) {
+    auto* area = new QScrollArea(parent);
+    area->setWidget(panel);
+    area->setWidgetResizable(true);
+    area->setFrameShape(QFrame::NoFrame);
+    area->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    area->setMinimumWidth(panel->sizeHint().width() + area->verticalScrollBar()->sizeHint().width());
+    return area;
+}
+
+// A picture with a line of words under it.
+static QWidget* captionedPicture(QWidget* picture, const QString& words, const QString& help, QWidget* parent) {
+    auto* page = new QWidget(parent);
+    auto* caption = new QLabel(words, page);
+    caption->setWordWrap(true);
+    caption->setToolTip(help);
+    picture->setToolTip(help);
+    picture->setWhatsThis(help);
+    auto* layout = new QVBoxLayout(page);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->setSpacing(2);
+    layout->addWidget(picture, 1);
+    layout->addWidget(caption);
+    return page;
+}
+
 void MainWindow::createDocks() {
     // The left column runs the full height; the plots and the eye's view share the bottom with
     // the observer view and the right column.
@@ -72,30 +99,9 @@ void MainWindow::createDocks() {
         addDockWidget(area, widget);
         return widget;
     };
-    // Long panels scroll rather than forcing their height on the other docks.
-    auto scrolled = [this](QWidget* panel) {
-        auto* area = new QScrollArea(this);
-        area->setWidget(panel);
-        area->setWidgetResizable(true);
-        area->setFrameShape(QFrame::NoFrame);
-        area->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-        area->setMinimumWidth(panel->sizeHint().width() + area->verticalScrollBar()->sizeHint().width());
-        return area;
-    };
-    // A picture with a line of words under it.
+    auto scrolled = [this](QWidget* panel) { return scrolledPanel(panel, this); };
     auto captioned = [this](QWidget* picture, const QString& words, const QString& help) {
-        auto* page = new QWidget(this);
-        auto* caption = new QLabel(words, page);
-        caption->setWordWrap(true);
-        caption->setToolTip(help);
-        picture->setToolTip(help);
-        picture->setWhatsThis(help);
-        auto* layout = new QVBoxLayout(page);
-        layout->setContentsMargins(0, 0, 0, 0);
-        layout->setSpacing(2);
-        layout->addWidget(picture, 1);
-        layout->addWidget(caption);
-        return page;
+        return captionedPicture(picture, words, help, this);
     };
     settingsPanel_ = new SettingsPanel(this);
     eyePanel_ = new EyePanel(this);

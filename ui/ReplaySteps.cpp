@@ -209,6 +209,26 @@ std::function<Action(const Json&, const QDir&)> writeStep(bool (MainWindow::*wri
     };
 }
 
+Action parseOrbitView(const Json& value, const QDir&) {
+    const long view = wholeNumber(value, 0, "an orbit view, counted from 0");
+    return [view](MainWindow& window) {
+        shownClusters(window);
+        if (!window.session().moveEyeToOrbitView(view))
+            throw std::runtime_error("the orbit has " + std::to_string(window.session().settings().views) +
+                                     " views (0 to " + std::to_string(window.session().settings().views - 1) + ")");
+    };
+}
+
+Action parsePick(const Json& value, const QDir&) {
+    const long cluster = wholeNumber(value, -1, "a cluster id, or -1 for none");
+    return [cluster](MainWindow& window) {
+        const size_t count = shownClusters(window).partition.clusterCount;
+        if (cluster >= long(count))
+            throw std::runtime_error("the mesh has " + std::to_string(count) + " clusters (0 to " + std::to_string(count - 1) + ")");
+        window.session().pickCluster(int(cluster));
+    };
+}
+
 struct StepKind {
     const char* name;
     // Checks the step's value (throws std::invalid_argument saying what it takes) and returns the
@@ -226,26 +246,8 @@ const std::vector<StepKind>& stepKinds() {
          }},
         {"set", parseSet},
         {"eye", parseEye},
-        {"orbit-view",
-         [](const Json& value, const QDir&) -> Action {
-             const long view = wholeNumber(value, 0, "an orbit view, counted from 0");
-             return [view](MainWindow& window) {
-                 shownClusters(window);
-                 if (!window.session().moveEyeToOrbitView(view))
-                     throw std::runtime_error("the orbit has " + std::to_string(window.session().settings().views) +
-                                              " views (0 to " + std::to_string(window.session().settings().views - 1) + ")");
-             };
-         }},
-        {"pick",
-         [](const Json& value, const QDir&) -> Action {
-             const long cluster = wholeNumber(value, -1, "a cluster id, or -1 for none");
-             return [cluster](MainWindow& window) {
-                 const size_t count = shownClusters(window).partition.clusterCount;
-                 if (cluster >= long(count))
-                     throw std::runtime_error("the mesh has " + std::to_string(count) + " clusters (0 to " + std::to_string(count - 1) + ")");
-                 window.session().pickCluster(int(cluster));
-             };
-         }},
+        {"orbit-view", parseOrbitView},
+        {"pick", parsePick},
         {"pin",
          [](const Json& value, const QDir&) -> Action {
              if (value != Json("A")) throw std::invalid_argument("takes \"A\"");

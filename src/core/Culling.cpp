@@ -137,6 +137,38 @@ std::vector<uint8_t> cullClusters(const CullingInput& input, const Eye& eye, Cul
     return cullBatch(makeClusterBatch(input.bounds), eye.position, test);
 }
 
+// The vertices test's points: each vertex, whether it sees the cluster's back, and the smallest
+// v.V1 over them (returned).
+static double explainVertices(const CullingInput& input, uint32_t cluster, const Eye& eye, CullExplanation& why) {
+    const ClusterBounds& bounds = input.bounds;
+    const ConeOfNormals& cone = bounds.cones[cluster];
+    double tightest = std::numeric_limits<double>::infinity();
+    for (uint32_t i = bounds.vertexStarts[cluster]; i < bounds.vertexStarts[cluster + 1]; ++i) {
+        ++why.pointsTested;
+        const glm::dvec3 vertex(input.world[bounds.vertexIds[i]]);
+        const glm::dvec3 view = eye.orthographic ? eye.direction : vertex - eye.position;
+        const bool back = cone.cullable && vectorSeesBack(cone, view);
+        why.pointsBack += back;
+        why.vertices.push_back(vertex);
+        why.vertexBack.push_back(back);
+        const double length = glm::length(view);
+        tightest = std::min(tightest, length > 0.0 ? glm::dot(view, cone.axis) / length : 0.0);
+    }
+    return tightest;
+}
+
+// The cluster's faces as the eye sees them: front, back or degenerate.
+static void countFacing(const CullingInput& input, uint32_t cluster, const Eye& eye, CullExplanation& why) {
+    const ClusterFaces& rows = input.bounds.faces;
+    for (uint32_t i = rows.starts[cluster]; i < rows.starts[cluster + 1]; ++i) {
+        switch (classifyFace(input.mesh, input.world, input.faces, rows.faces[i], eye)) {
+            case Facing::Front: ++why.frontFaces; break;
+            case Facing::Back: ++why.backFaces; break;
+            case Facing::Degenerate: ++why.degenerateFaces; break;
+        }
+    }
+}
+
 CullExplanation explainCull(const CullingInput& input, uint32_t cluster, const Eye& eye, CullTest test) {
     CullExplanation why;
     const ClusterBounds& bounds = input.bounds;
@@ -181,18 +213,7 @@ CullExplanation explainCull(const CullingInput& input, uint32_t cluster, const E
     // The tightest point of the test: its v.V1 less the threshold (the smallest over the points).
     double tightest = why.viewDotAxis;
     if (test == CullTest::Vertices) {
-        tightest = std::numeric_limits<double>::infinity();
-        for (uint32_t i = bounds.vertexStarts[cluster]; i < bounds.vertexStarts[cluster + 1]; ++i) {
-            ++why.pointsTested;
-            const glm::dvec3 vertex(input.world[bounds.vertexIds[i]]);
-            const glm::dvec3 view = eye.orthographic ? eye.direction : vertex - eye.position;
-            const bool back = cone.cullable && vectorSeesBack(cone, view);
-            why.pointsBack += back;
-            why.vertices.push_back(vertex);
-            why.vertexBack.push_back(back);
-            const double length = glm::length(view);
-            tightest = std::min(tightest, length > 0.0 ? glm::dot(view, cone.axis) / length : 0.0);
-        }
+        tightest = explainVertices(input, cluster, eye, why);
     } else if (test == CullTest::Aabb || test == CullTest::AabbFast) {
         why.pointsTested = 8;
         why.pointsBack = size_t(std::count(why.cornerBack.begin(), why.cornerBack.end(), true));
@@ -219,14 +240,7 @@ CullExplanation explainCull(const CullingInput& input, uint32_t cluster, const E
         why.margin = std::numeric_limits<double>::quiet_NaN();
     // The records' own tests compare their own numbers, whatever the displayed cone.
     if (readsOwnRecord(test)) why.margin = ownRecordMargin({input.mesh, input.world, input.faces, input.bounds}, cluster, eye, test);
-    const ClusterFaces& rows = bounds.faces;
-    for (uint32_t i = rows.starts[cluster]; i < rows.starts[cluster + 1]; ++i) {
-        switch (classifyFace(input.mesh, input.world, input.faces, rows.faces[i], eye)) {
-            case Facing::Front: ++why.frontFaces; break;
-            case Facing::Back: ++why.backFaces; break;
-            case Facing::Degenerate: ++why.degenerateFaces; break;
-        }
-    }
+    countFacing(input, cluster, eye, why);
     return why;
 }
 

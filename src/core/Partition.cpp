@@ -35,6 +35,15 @@ Partition renumberClusters(std::vector<uint32_t> clusterOfFace) {
     return {std::move(clusterOfFace), uint32_t(renumber.size())};
 }
 
+// Seed next to the previous cluster when possible, so clusters tile the surface without gaps; else
+// the first face not yet in a cluster (kUnassigned when none is left).
+static uint32_t nextSeed(const std::vector<uint32_t>& leftovers, const std::vector<uint32_t>& clusterOfFace, size_t& nextUnassigned) {
+    for (uint32_t f : leftovers)
+        if (clusterOfFace[f] == kUnassigned) return f;
+    while (nextUnassigned < clusterOfFace.size() && clusterOfFace[nextUnassigned] != kUnassigned) ++nextUnassigned;
+    return nextUnassigned == clusterOfFace.size() ? kUnassigned : uint32_t(nextUnassigned);
+}
+
 Partition buildMeshlets(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits, double normalWeight) {
     const size_t faceCount = mesh.faceCount();
     const Rows facesAround = facesAroundVertices(mesh);
@@ -52,15 +61,8 @@ Partition buildMeshlets(const Mesh& mesh, const FaceGeometry& faces, const Meshl
     };
 
     while (true) {
-        // Seed next to the previous cluster when possible, so clusters tile the surface without gaps.
-        uint32_t seed = kUnassigned;
-        for (uint32_t f : leftovers)
-            if (clusterOfFace[f] == kUnassigned) { seed = f; break; }
-        if (seed == kUnassigned) {
-            while (nextUnassigned < faceCount && clusterOfFace[nextUnassigned] != kUnassigned) ++nextUnassigned;
-            if (nextUnassigned == faceCount) break;
-            seed = uint32_t(nextUnassigned);
-        }
+        const uint32_t seed = nextSeed(leftovers, clusterOfFace, nextUnassigned);
+        if (seed == kUnassigned) break;
         candidates.clear();
         size_t vertexCount = 0, triangleTotal = 0;
         glm::dvec3 normalSum(0.0);
@@ -119,6 +121,27 @@ Partition buildMeshlets(const Mesh& mesh, const FaceGeometry& faces, const Meshl
         ++cluster;
     }
     return {std::move(clusterOfFace), cluster};
+}
+
+// k-means' update step: each centre moves to the area-weighted mean of its faces (positions divided
+// by scale, normals times normalWeight); an emptied cluster keeps its old centre.
+static void moveCentersToMeans(const FaceGeometry& faces, const std::vector<uint32_t>& assignment, double scale, double normalWeight,
+                               std::vector<glm::dvec3>& centerPositions, std::vector<glm::dvec3>& centerNormals) {
+    const size_t clusterCount = centerPositions.size();
+    std::vector<glm::dvec3> positionSums(clusterCount, glm::dvec3(0.0)), normalSums(clusterCount, glm::dvec3(0.0));
+    std::vector<double> weights(clusterCount, 0.0);
+    for (size_t f = 0; f < assignment.size(); ++f) {
+        const double w = std::max(faces.areas[f], 1e-300);
+        positionSums[assignment[f]] += w * faces.centroids[f] / scale;
+        normalSums[assignment[f]] += w * faces.normals[f];
+        weights[assignment[f]] += w;
+    }
+    for (size_t k = 0; k < clusterCount; ++k) {
+        if (weights[k] <= 0.0) continue;
+        centerPositions[k] = positionSums[k] / weights[k];
+        const double length = glm::length(normalSums[k]);
+        centerNormals[k] = length > 0.0 ? normalSums[k] / length * normalWeight : glm::dvec3(0.0);
+    }
 }
 
 Partition buildKMeans(const Mesh& mesh, const FaceGeometry& faces, size_t clusterCount, double normalWeight,
@@ -191,21 +214,7 @@ Partition buildKMeans(const Mesh& mesh, const FaceGeometry& faces, size_t cluste
             }
             assignment[f] = bestCluster;
         }
-        // Update: area-weighted means; an emptied cluster keeps its old centre.
-        std::vector<glm::dvec3> positionSums(clusterCount, glm::dvec3(0.0)), normalSums(clusterCount, glm::dvec3(0.0));
-        std::vector<double> weights(clusterCount, 0.0);
-        for (size_t f = 0; f < faceCount; ++f) {
-            const double w = std::max(faces.areas[f], 1e-300);
-            positionSums[assignment[f]] += w * faces.centroids[f] / scale;
-            normalSums[assignment[f]] += w * faces.normals[f];
-            weights[assignment[f]] += w;
-        }
-        for (size_t k = 0; k < clusterCount; ++k) {
-            if (weights[k] <= 0.0) continue;
-            centerPositions[k] = positionSums[k] / weights[k];
-            const double length = glm::length(normalSums[k]);
-            centerNormals[k] = length > 0.0 ? normalSums[k] / length * normalWeight : glm::dvec3(0.0);
-        }
+        moveCentersToMeans(faces, assignment, scale, normalWeight, centerPositions, centerNormals);
     }
     return renumberClusters(std::move(assignment));
 }

@@ -62,15 +62,9 @@ double cullEfficiency(size_t trianglesCulled, size_t backFacingTriangles) {
     return backFacingTriangles == 0 ? 1.0 : double(trianglesCulled) / double(backFacingTriangles);
 }
 
-CullTestStatistics measureCulling(const CullingInput& input, const std::vector<Eye>& views, CullTest test,
-                              const ProgressCallback& progress) {
-    const ClusterBounds& bounds = input.bounds;
+// Each cluster's size, bounds and cone, with their means over the clusters: what no view changes.
+static void describeClusters(const ClusterBounds& bounds, CullTestStatistics& result) {
     const size_t clusterCount = bounds.count();
-    CullTestStatistics result;
-    result.cone = bounds.coneMethod;
-    result.test = test;
-    result.bytesPerCluster = recordBytes(test);
-    result.engineRecord = reproducesEngineRecord(test);
     result.clusters.resize(clusterCount);
     for (uint32_t c = 0; c < clusterCount; ++c) {
         ClusterStatistics& cluster = result.clusters[c];
@@ -93,6 +87,51 @@ CullTestStatistics measureCulling(const CullingInput& input, const std::vector<E
         result.meanClusterVertices /= double(clusterCount);
         result.meanSphereRadius /= double(clusterCount);
     }
+}
+
+// One view's culls against the truth, counted for the view and for each cluster: culled, missed by
+// the test (or by its quantisation), or lost to the partition.
+static void tallyView(const ClusterTruth& truth, const std::vector<uint8_t>& culled, const std::vector<uint8_t>& floatCulled,
+                      const std::vector<uint32_t>& triangles, ViewStatistics& view, std::vector<ClusterStatistics>& clusters) {
+    for (uint32_t c = 0; c < clusters.size(); ++c) {
+        const bool backFacing = truth.frontFaces[c] == 0 && truth.backTriangles[c] > 0;
+        view.backFacingTriangles += truth.backTriangles[c];
+        view.frontFacingTriangles += triangles[c] - truth.backTriangles[c];
+        view.backFacingClusters += backFacing;
+        ClusterStatistics& cluster = clusters[c];
+        cluster.timesBackFacing += backFacing;
+        if (culled[c]) {
+            ++view.clustersCulled;
+            ++cluster.timesCulled;
+            view.trianglesCulled += truth.backTriangles[c];
+            if (truth.frontFaces[c] > 0) ++view.falseCulls, ++cluster.falseCulls;
+        } else if (truth.frontFaces[c] == 0) {
+            // Every face away (or degenerate), yet drawn: the test's loss.
+            view.missedClusters += backFacing;
+            cluster.timesMissed += backFacing;
+            view.testLossTriangles += truth.backTriangles[c];
+            cluster.testLossTriangles += truth.backTriangles[c];
+            if (!floatCulled.empty() && floatCulled[c]) {
+                view.quantisationLossTriangles += truth.backTriangles[c];
+                cluster.quantisationLossTriangles += truth.backTriangles[c];
+            }
+        } else {
+            view.partitionLossTriangles += truth.backTriangles[c];
+            cluster.partitionLossTriangles += truth.backTriangles[c];
+        }
+    }
+}
+
+CullTestStatistics measureCulling(const CullingInput& input, const std::vector<Eye>& views, CullTest test,
+                              const ProgressCallback& progress) {
+    const ClusterBounds& bounds = input.bounds;
+    const size_t clusterCount = bounds.count();
+    CullTestStatistics result;
+    result.cone = bounds.coneMethod;
+    result.test = test;
+    result.bytesPerCluster = recordBytes(test);
+    result.engineRecord = reproducesEngineRecord(test);
+    describeClusters(bounds, result);
 
     // The batched kernel reads the bounds as float arrays: made once for all the views.
     // The compact octagon's float original is the batched octagon test.
@@ -116,33 +155,7 @@ CullTestStatistics measureCulling(const CullingInput& input, const std::vector<E
         view.view = v;
         view.eye = eye;
         view.nanosecondsPerCluster = clusterCount ? nanoseconds / double(clusterCount) : 0.0;
-        for (uint32_t c = 0; c < clusterCount; ++c) {
-            const bool backFacing = truth.frontFaces[c] == 0 && truth.backTriangles[c] > 0;
-            view.backFacingTriangles += truth.backTriangles[c];
-            view.frontFacingTriangles += bounds.triangles[c] - truth.backTriangles[c];
-            view.backFacingClusters += backFacing;
-            ClusterStatistics& cluster = result.clusters[c];
-            cluster.timesBackFacing += backFacing;
-            if (culled[c]) {
-                ++view.clustersCulled;
-                ++cluster.timesCulled;
-                view.trianglesCulled += truth.backTriangles[c];
-                if (truth.frontFaces[c] > 0) ++view.falseCulls, ++cluster.falseCulls;
-            } else if (truth.frontFaces[c] == 0) {
-                // Every face away (or degenerate), yet drawn: the test's loss.
-                view.missedClusters += backFacing;
-                cluster.timesMissed += backFacing;
-                view.testLossTriangles += truth.backTriangles[c];
-                cluster.testLossTriangles += truth.backTriangles[c];
-                if (!floatCulled.empty() && floatCulled[c]) {
-                    view.quantisationLossTriangles += truth.backTriangles[c];
-                    cluster.quantisationLossTriangles += truth.backTriangles[c];
-                }
-            } else {
-                view.partitionLossTriangles += truth.backTriangles[c];
-                cluster.partitionLossTriangles += truth.backTriangles[c];
-            }
-        }
+        tallyView(truth, culled, floatCulled, bounds.triangles, view, result.clusters);
         view.efficiency = cullEfficiency(view.trianglesCulled, view.backFacingTriangles);
         result.meanViewEfficiency += view.efficiency / double(views.size());
         result.testLossTriangles += view.testLossTriangles;

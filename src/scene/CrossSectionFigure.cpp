@@ -167,12 +167,8 @@ void normalBars(const Pen& pen, const CrossSection& section) {
                   SceneColours::lessonNormal);
 }
 
-void diagram(const Pen& pen, const CrossSection& section, double bottom) {
-    const bool cone = section.cone;
-    const std::string& v = section.viewName;
-    // The band of view vectors that cull, under everything else.
-    for (const AngleRange& range : section.cullRegion) pen.triangles(ring(bandFrom, bandTo, range[0], range[1]), bandBlue);
-    // The unit circle, above the diagram's bottom.
+// The unit circle, above the diagram's bottom.
+void unitCircle(const Pen& pen, double bottom) {
     std::vector<glm::dvec2> circle;
     for (const glm::dvec2& p : arc(1.0, -pi, pi)) {
         if (p.y >= bottom + 0.05) {
@@ -183,26 +179,37 @@ void diagram(const Pen& pen, const CrossSection& section, double bottom) {
         }
     }
     if (circle.size() > 1) pen.line(circle, circleGrey, 1.0);
-    // What the test measures the band with.
+}
+
+// What the round tests measure the band with: angle B (narrowed by the sphere or r/d when they take some).
+void roundMeasure(const Pen& pen, const CrossSection& section) {
+    if (section.rule != CullRegionRule::Round || !section.cone) return;
     const double edge = section.regionHalfAngle;
-    if (section.rule == CullRegionRule::Round && cone) {
-        const bool narrowed = section.narrowing > 0.0;
-        if (narrowed) {
-            for (double side : {-1.0, 1.0}) pen.dashed({1.0 * direction(side * section.angleB), outerArcRadius * direction(side * section.angleB)}, blueInk, 1.5);
-            pen.line(arc(outerArcRadius, 0.0, section.angleB), blueInk, 1.5);
-            pen.label("B = " + angleText(section.angleB), outerArcRadius * direction(0.5 * section.angleB), direction(0.5 * section.angleB), blueInk);
-            const double from = std::max(0.0, section.angleB - section.narrowing);
-            pen.line(arc(arcRadius, from, section.angleB), blueInk, 2.5);
-            const std::string name = section.test == CullTest::Sphere ? "asin(r/d) = " : "r/d takes ";
-            pen.label(name + angleText(section.angleB - from), arcRadius * direction(0.5 * (from + section.angleB)),
-                      direction(0.5 * (from + section.angleB) + 0.4), blueInk);
-        } else {
-            pen.line(arc(arcRadius, 0.0, edge), blueInk, 1.5);
-            pen.label("B = " + angleText(edge), arcRadius * direction(0.5 * edge), direction(0.5 * edge), blueInk);
-        }
-        if (edge > 0.0)
-            for (double side : {-1.0, 1.0}) pen.line({barsTo * direction(side * edge), (bandTo + 0.04) * direction(side * edge)}, blueInk, 1.5);
+    const bool narrowed = section.narrowing > 0.0;
+    if (narrowed) {
+        for (double side : {-1.0, 1.0}) pen.dashed({1.0 * direction(side * section.angleB), outerArcRadius * direction(side * section.angleB)}, blueInk, 1.5);
+        pen.line(arc(outerArcRadius, 0.0, section.angleB), blueInk, 1.5);
+        pen.label("B = " + angleText(section.angleB), outerArcRadius * direction(0.5 * section.angleB), direction(0.5 * section.angleB), blueInk);
+        const double from = std::max(0.0, section.angleB - section.narrowing);
+        pen.line(arc(arcRadius, from, section.angleB), blueInk, 2.5);
+        const std::string name = section.test == CullTest::Sphere ? "asin(r/d) = " : "r/d takes ";
+        pen.label(name + angleText(section.angleB - from), arcRadius * direction(0.5 * (from + section.angleB)),
+                  direction(0.5 * (from + section.angleB) + 0.4), blueInk);
+    } else {
+        pen.line(arc(arcRadius, 0.0, edge), blueInk, 1.5);
+        pen.label("B = " + angleText(edge), arcRadius * direction(0.5 * edge), direction(0.5 * edge), blueInk);
     }
+    if (edge > 0.0)
+        for (double side : {-1.0, 1.0}) pen.line({barsTo * direction(side * edge), (bandTo + 0.04) * direction(side * edge)}, blueInk, 1.5);
+}
+
+void diagram(const Pen& pen, const CrossSection& section, double bottom) {
+    const bool cone = section.cone;
+    const std::string& v = section.viewName;
+    // The band of view vectors that cull, under everything else.
+    for (const AngleRange& range : section.cullRegion) pen.triangles(ring(bandFrom, bandTo, range[0], range[1]), bandBlue);
+    unitCircle(pen, bottom);
+    roundMeasure(pen, section);
     if (section.rule == CullRegionRule::Octagon && cone) {
         for (double side : {-1.0, 1.0}) pen.dashed({1.0 * direction(side * section.angleB), bandTo * direction(side * section.angleB)}, circleGrey, 1.5);
         if (section.hasRegion()) {

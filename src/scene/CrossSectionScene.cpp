@@ -136,6 +136,22 @@ vtkSmartPointer<vtkActor> actorOf(vtkPolyData* data, double width) {
 
 }  // namespace
 
+// The shapes in order (the figure's, then the labels' leaders), one actor for each run of the same
+// kind and width.
+static std::vector<vtkSmartPointer<vtkActor>> actorsOf(const std::vector<FigureShape>& shapes, const std::vector<FigureShape>& leaders) {
+    std::vector<const FigureShape*> all;
+    for (const FigureShape& shape : shapes) all.push_back(&shape);
+    for (const FigureShape& shape : leaders) all.push_back(&shape);
+    std::vector<vtkSmartPointer<vtkActor>> actors;
+    for (size_t start = 0; start < all.size();) {
+        size_t end = start + 1;
+        while (end < all.size() && all[end]->filled == all[start]->filled && all[end]->width == all[start]->width) ++end;
+        actors.push_back(actorOf(cellsOf({all.begin() + long(start), all.begin() + long(end)}, start), all[start]->width));
+        start = end;
+    }
+    return actors;
+}
+
 struct CrossSectionScene::Impl {
     std::optional<CrossSection> section;
     bool captionVisible = true, textVisible = true;
@@ -270,16 +286,7 @@ void CrossSectionScene::Impl::layOut(int dpi) {
         }
         if (!placed) leftOut.push_back(label.text);
     }
-    // The shapes in order, one actor for each run of the same kind and width.
-    std::vector<const FigureShape*> all;
-    for (const FigureShape& shape : figure.shapes) all.push_back(&shape);
-    for (const FigureShape& shape : leaders) all.push_back(&shape);
-    for (size_t start = 0; start < all.size();) {
-        size_t end = start + 1;
-        while (end < all.size() && all[end]->filled == all[start]->filled && all[end]->width == all[start]->width) ++end;
-        actors.push_back(actorOf(cellsOf({all.begin() + long(start), all.begin() + long(end)}, start), all[start]->width));
-        start = end;
-    }
+    actors = actorsOf(figure.shapes, leaders);
 }
 
 void CrossSectionScene::addTo(vtkRenderer* renderer) {
