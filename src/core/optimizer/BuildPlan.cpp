@@ -66,8 +66,8 @@ void chooseFinish(BuildPlan& plan, const BuildFacts& facts) {
 }
 
 // On small meshes an explicit balanced budget climbs from the fewest clusters, so one more cluster
-// never culls less in expectation (searched alone, CGAL's pinion culled 0.413 at 18 clusters and
-// 0.346 at 19). Which budgets climb depends on the mesh and limits only.
+// never culls less in expectation (searched alone, one more cluster could cull less: the budget
+// sweep in docs/dev/benchmarks-log.md). Which budgets climb depends on the mesh and limits only.
 bool climbs(const BuildPlan& plan, const BuildFacts& facts) {
     if (plan.effort != Effort::Balanced || plan.budget == 0 || !facts.meshoptLimits) return false;
     const size_t highest = highestClimb(facts.meshletCount);

@@ -349,8 +349,8 @@ Partition climbed(const BuildInputs& in, const BuildPlan& plan, const ProgressCa
 // The best level's search, then the balanced one's, and the better kept: nearer the budget, then
 // more culled in expectation over far views and from the default orbit's distance (the best
 // level's larger clusters of like normals can cull less from up close). Its longer search from
-// grown clusters can end in a worse basin than the balanced one's (a coconut tree 0.068 against
-// 0.362), so it never culls less in expectation nor makes more clusters than the default. The
+// grown clusters can end in a worse basin than the balanced one's (on foliage: docs/benchmarks.md),
+// so it never culls less in expectation nor makes more clusters than the default. The
 // balanced run takes the last tenth of the progress; where it is kept it is heard as one part.
 Partition bestOfBoth(const BuildInputs& in, const BuildPlan& plan, const ProgressCallback& progress, const PartClusters& partDone) {
     Partition best = atBudget(in, plan, progressShare(progress, 0.0, 0.9), partDone);

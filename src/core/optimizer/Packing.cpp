@@ -23,8 +23,8 @@ namespace {
 constexpr int kLloydRounds = 4;
 // How much a turned normal counts against a face, in cell radii at a right angle (1 - cos): cells
 // that follow the normals cull more but hold fewer triangles in their vertices. The largest weight
-// that still reaches the budget is searched for among these (knot2 at 124 clusters culls 0.136 of
-// back faces at weight 0, 0.172 at 0.25; Sweet Home 3D's square-dimmer at 7, 0.02 and 0.098 at 1/16).
+// that still reaches the budget is searched for among these (a turn weight helps packed cells cull:
+// docs/dev/benchmarks-log.md, "Real props, polygons, double-sided meshes and budgets").
 constexpr double kTurnWeights[] = {0.0, 0.0625, 0.25, 1.0, 4.0, 16.0};
 
 // Below this many faces packing is tried whatever the budget asks per cluster: it costs little.

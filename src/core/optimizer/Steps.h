@@ -56,8 +56,7 @@ void refineAround(State& state, const std::vector<uint32_t>& moved);
 std::vector<uint32_t> anneal(State& state, size_t sweeps);
 // LocalSearch.cpp: `start` annealed `sweeps` times, then greedy moves where faces moved (`start`
 // itself when `sweeps` is 0). Annealing accepts losses: the caller keeps the better of the two.
-// Compact packed cells gain much from it (knot2 at 124 clusters: expected efficiency 0.096 after
-// 2 sweeps, 0.187 after 100).
+// Compact packed cells gain much from it (docs/dev/benchmarks-log.md has the sweeps' figures).
 Partition annealedFurther(State& state, const Partition& start, size_t sweeps);
 
 // Packing.cpp: for an explicit budget the other steps missed (`made`): `target` compact clusters
