@@ -1,5 +1,5 @@
 // conescope._conescope: the C++ side of the Python module. Every function here calls what the CLI's
-// commands call (cli/MeshRuns.h, cli/BatchJob.h) and returns the CLI's own text (its JSON, read by
+// commands call (batch/MeshRuns.h, batch/BatchJob.h) and returns the CLI's own text (its JSON, read by
 // json.loads in conescope/__init__.py) or its own cells, so a notebook gets the CLI's numbers. Settings
 // arrive as (name, text) pairs and are read by the settings schema, as the command line's are.
 #include <pybind11/numpy.h>
@@ -14,10 +14,10 @@
 #include <set>
 #include <sstream>
 
-#include "cli/BatchInputs.h"
-#include "cli/BatchJob.h"
-#include "cli/MeshRuns.h"
-#include "cli/OutputFiles.h"
+#include "batch/BatchInputs.h"
+#include "batch/BatchJob.h"
+#include "batch/MeshRuns.h"
+#include "batch/OutputFiles.h"
 #include "core/Granularity.h"
 #include "core/SettingsSchema.h"
 #include "core/lod/LodCut.h"

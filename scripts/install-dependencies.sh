@@ -11,7 +11,7 @@ packages=(
   libassimp-dev assimp-testmodels
   # METIS partitions graphs: the LOD bench groups clusters with it to measure ConeScope's grouping
   libmetis-dev
-  # content hashes of meshes, so a batch run again skips what it has done (src/cli/BatchInputs.cpp)
+  # content hashes of meshes, so a batch run again skips what it has done (src/batch/BatchInputs.cpp)
   libxxhash-dev
   xvfb xauth clang libclang-rt-14-dev
   time python3

@@ -1,5 +1,5 @@
 // How long the last eye step took on the GUI thread, part by part: the readout of View > Show frame
-// times and the figures of bench/eye_step.cpp (docs/benchmarks.md).
+// times and the figures of tests/ui/EyeStepBench.cpp (docs/benchmarks.md).
 #pragma once
 
 #include <QString>

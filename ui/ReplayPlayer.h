@@ -23,7 +23,6 @@ public:
     void play(std::vector<ReplayStep> steps);
     // Plays and returns when done: empty, or the failure's message.
     QString playBlocking(std::vector<ReplayStep> steps);
-    bool playing() const { return playing_; }
 
 signals:
     void stepFinished(size_t number);

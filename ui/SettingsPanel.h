@@ -29,11 +29,8 @@ public:
     QComboBox* builderBox() const { return builder_; }
     QComboBox* coneBox() const { return cone_; }
     QComboBox* testBox() const { return test_; }
-    QComboBox* sphereBox() const { return sphere_; }
     QComboBox* projectionBox() const { return projection_; }
-    QSpinBox* maxVerticesBox() const { return maxVertices_; }
     QSpinBox* maxTrianglesBox() const { return maxTriangles_; }
-    QSpinBox* clusterCountBox() const { return clusterCount_; }
     QComboBox* effortBox() const { return effort_; }
     QCheckBox* fixWindingBox() const { return fixWinding_; }
 

@@ -19,9 +19,9 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/Batch.h"
-#include "cli/BatchJob.h"
+#include "batch/BatchJob.h"
 #include "cli/BatchProgress.h"
-#include "cli/OutputFiles.h"
+#include "batch/OutputFiles.h"
 #include "cli/WorkerPool.h"
 #include "core/SettingsSchema.h"
 #include "io/BatchReport.h"

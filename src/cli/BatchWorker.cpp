@@ -10,7 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/Batch.h"
-#include "cli/BatchJob.h"
+#include "batch/BatchJob.h"
 
 namespace conescope::cli {
 

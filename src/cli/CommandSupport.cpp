@@ -6,8 +6,8 @@
 
 #include <unistd.h>
 
-#include "cli/MeshRuns.h"
-#include "cli/OutputFiles.h"
+#include "batch/MeshRuns.h"
+#include "batch/OutputFiles.h"
 #include "io/ClusterFiles.h"
 #include "io/MeshReader.h"
 

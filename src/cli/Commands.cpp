@@ -7,8 +7,8 @@
 #include <unistd.h>
 
 #include "cli/CommandSupport.h"
-#include "cli/MeshRuns.h"
-#include "cli/OutputFiles.h"
+#include "batch/MeshRuns.h"
+#include "batch/OutputFiles.h"
 #include "core/ClusterRanking.h"
 #include "core/MeshChecks.h"
 #include "core/Pipeline.h"

@@ -3,7 +3,7 @@
 
 #include "cli/CommandSupport.h"
 #include "cli/Commands.h"
-#include "cli/MeshRuns.h"
+#include "batch/MeshRuns.h"
 #include "core/Comparison.h"
 #include "io/ClusterIdFile.h"
 #include "io/ComparisonIO.h"

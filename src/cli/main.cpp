@@ -7,7 +7,7 @@
 
 #include "cli/Batch.h"
 #include "cli/Commands.h"
-#include "cli/OutputFiles.h"
+#include "batch/OutputFiles.h"
 #include "core/ClusterRanking.h"
 #include "core/Comparison.h"
 #include "core/LargeArrays.h"

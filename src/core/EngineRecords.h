@@ -22,7 +22,6 @@ class EngineRecords {
 public:
     // A meshlet file's meshoptimizer bounds, one per cluster: used instead of the partition's.
     void useStoredMeshoptBounds(const std::vector<MeshletBounds>& stored);
-    bool meshoptStored() const { return !stored_.empty(); }
 
     const std::vector<MeshletBounds>& meshopt(const CullingInput& input) const;
     // The mesh's world box: the grid of cadscene's boxes and of the compact octagon's apexes.

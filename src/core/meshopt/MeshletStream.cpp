@@ -3,8 +3,6 @@
 #include "Reproduction.h"
 
 #include <algorithm>
-#include <atomic>
-#include <chrono>
 #include <condition_variable>
 #include <exception>
 #include <mutex>
@@ -24,9 +22,6 @@ namespace {
 constexpr size_t kPartsFromFaces = size_t(1) << 11;
 constexpr size_t kFacesPerPart = 640;
 constexpr size_t kMostShares = 64;
-
-// How long finishWork watches for the other thread's end before it waits to be woken.
-constexpr std::chrono::microseconds kWorkWatch(300);
 
 // (face, meshlet) pairs by face, each face once: a radix sort on the face's bytes, as many as the
 // face count needs (two below 65,536 faces), linear where a comparison sort was a tenth of a
@@ -85,7 +80,6 @@ struct MeshletStream::State {
     size_t partsMade_ = 0;
     bool stopping_ = false, workDone_ = false;
     bool workAsked_ = false;  // a piece of work was handed over and not yet finished (finishWork)
-    std::atomic<bool> workFinished_{false};  // workDone_, readable without the lock (finishWork watches it)
     std::function<void()> work_;
     std::exception_ptr buildError_, workError_;
     CoreSplit cores_;
@@ -131,7 +125,6 @@ MeshletStream::State::State(std::shared_ptr<const Mesh> mesh, const MeshletLimit
             lock.lock();
             workError_ = error;
             workDone_ = true;
-            workFinished_.store(true, std::memory_order_release);
             changed_.notify_all();
         }
     });
@@ -277,27 +270,13 @@ void MeshletStream::runAfterwards(std::function<void()> work) {
     s.work_ = std::move(work);
     s.workAsked_ = true;
     s.workDone_ = false;
-    s.workFinished_.store(false, std::memory_order_release);
     s.changed_.notify_all();
 }
 
 void MeshletStream::finishWork() {
     State& s = *state_;
-    {
-        std::lock_guard<std::mutex> lock(s.mutex_);
-        if (!s.workAsked_) return;
-    }
-    // The other thread is on its last part, which takes a small mesh's part a tenth of a
-    // millisecond: watched for that long, its end is seen at once, where waking from a wait took
-    // about 0.04 ms here. The watch yields the core, in case both threads share one.
-    const auto watchUntil = std::chrono::steady_clock::now() + kWorkWatch;
-    for (unsigned i = 1; !s.workFinished_.load(std::memory_order_acquire); ++i) {
-        if (i % 64 == 0) {
-            if (std::chrono::steady_clock::now() > watchUntil) break;
-            std::this_thread::yield();
-        }
-    }
     std::unique_lock<std::mutex> lock(s.mutex_);
+    if (!s.workAsked_) return;
     s.changed_.wait(lock, [&s] { return s.workDone_; });
     s.workAsked_ = false;
     if (s.workError_) std::rethrow_exception(std::exchange(s.workError_, nullptr));

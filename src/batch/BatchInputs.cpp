@@ -1,4 +1,4 @@
-#include "cli/BatchInputs.h"
+#include "batch/BatchInputs.h"
 
 #include <algorithm>
 #include <array>
@@ -14,7 +14,7 @@
 #define XXH_INLINE_ALL
 #include <xxhash.h>
 
-#include "cli/OutputFiles.h"
+#include "batch/OutputFiles.h"
 #include "io/MeshReader.h"
 
 namespace conescope::cli {

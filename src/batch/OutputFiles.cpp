@@ -1,4 +1,4 @@
-#include "cli/OutputFiles.h"
+#include "batch/OutputFiles.h"
 
 #include <algorithm>
 #include <cctype>

@@ -1,4 +1,4 @@
-#include "cli/MeshRuns.h"
+#include "batch/MeshRuns.h"
 
 #include <memory>
 

@@ -8,7 +8,7 @@
 #include <functional>
 #include <string>
 
-#include "cli/BatchInputs.h"
+#include "batch/BatchInputs.h"
 #include "io/BatchTable.h"
 
 namespace conescope::cli {

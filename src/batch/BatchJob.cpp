@@ -1,4 +1,4 @@
-#include "cli/BatchJob.h"
+#include "batch/BatchJob.h"
 
 #include <chrono>
 #include <csignal>
@@ -9,8 +9,8 @@
 #include <new>
 #include <sstream>
 
-#include "cli/MeshRuns.h"
-#include "cli/OutputFiles.h"
+#include "batch/MeshRuns.h"
+#include "batch/OutputFiles.h"
 #include "core/Comparison.h"
 #include "core/Granularity.h"
 #include "io/ClusterIdFile.h"
