@@ -26,6 +26,7 @@
 #include <QVTKOpenGLNativeWidget.h>
 #include <vtkRenderWindow.h>
 
+#include "core/meshopt/Meshopt.h"
 #include "MainWindow.h"
 #include "SettingsPanel.h"
 #include "StatisticsPanel.h"
@@ -489,4 +490,3 @@ int main(int argc, char** argv) {
 }
 
 #include "FileWindowTests.moc"
-#include "core/meshopt/Meshopt.h"

@@ -237,8 +237,9 @@ private slots:
         // The glossary's tests and cones are exactly the descriptor tables' rows, in their order.
         QStringList tests, cones, expectedTests, expectedCones;
         for (const GlossaryEntry& entry : glossary()) {
-            if (entry.key.startsWith(QStringLiteral("test "))) tests << entry.key.mid(5);
-            if (entry.key.startsWith(QStringLiteral("cone "))) cones << entry.key.mid(5);
+            // The choices' entries (a term such as "test loss" shares the prefix, not the title).
+            if (entry.term.startsWith(QStringLiteral("Test: "))) tests << entry.key.mid(5);
+            if (entry.term.startsWith(QStringLiteral("Cone: "))) cones << entry.key.mid(5);
         }
         for (const CullTestDescriptor& row : cullTestDescriptors()) expectedTests << QString::fromUtf8(row.name);
         for (const ConeDescriptor& row : coneDescriptors()) expectedCones << QString::fromUtf8(row.name);

@@ -7,6 +7,7 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include "core/meshopt/Meshopt.h"
 #include "ClusterReport.h"
 #include "CommandLine.h"
 #include "Datasets.h"
@@ -371,4 +372,3 @@ private slots:
 
 QTEST_GUILESS_MAIN(PipelineTests)
 #include "PipelineTests.moc"
-#include "core/meshopt/Meshopt.h"
