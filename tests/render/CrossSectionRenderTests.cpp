@@ -97,14 +97,20 @@ void checkJson(const json& drawn, const Lesson& lesson, const Size& size, const 
         double lowest = 2.0;
         for (int i = 0; i < 8 && lesson.test != CullTest::Vertices; ++i) lowest = std::min(lowest, why.cornerDotAxis[i]);
         if (lesson.test == CullTest::Vertices) lowest = why.margin + why.threshold;
-        if (std::isfinite(lowest)) EXPECT_NEAR(std::cos(glm::radians(v)), lowest, 1e-9) << context;
+        if (std::isfinite(lowest)) {
+            EXPECT_NEAR(std::cos(glm::radians(v)), lowest, 1e-9) << context;
+        }
     } else {
         EXPECT_NEAR(v, degreesTo(why.view, axis), 1e-9) << context;
     }
     const bool asked = drawn["cull_region_rule"] == "asked";
     const bool decided = asked ? why.culled == why.exactCulled : !std::isnan(why.margin) && std::abs(why.margin) > 1e-7;
-    if (decided) EXPECT_EQ(inside(drawn["cull_region_deg"], v), why.culled) << context << " v " << v;
-    if (!decided && !asked) EXPECT_FALSE(inside(drawn["cull_region_deg"], v)) << context;
+    if (decided) {
+        EXPECT_EQ(inside(drawn["cull_region_deg"], v), why.culled) << context << " v " << v;
+    }
+    if (!decided && !asked) {
+        EXPECT_FALSE(inside(drawn["cull_region_deg"], v)) << context;
+    }
     // Every text in the picture, none over another, none left out.
     const json& labels = drawn["labels"];
     EXPECT_GE(labels.size(), 3u) << context;

@@ -180,8 +180,12 @@ TEST(LessonLayerStructure, AClusterWithoutAConeGetsNoAxisAndNoApex) {
             EXPECT_EQ(legend.find("cone axis V1") != std::string::npos, cone && step != 4) << step << legend;
             EXPECT_EQ(legend.find("apex") != std::string::npos, cone && step >= 4) << step << legend;
             // The axis: a white line (the lesson's at step 3, the test layer's at step 5); the apex: a yellow point.
-            if (step != 4) EXPECT_EQ(drawnIn(scene, SceneColours::normalTip, true), cone ? 1u : 0u) << step;
-            if (step == 4) EXPECT_EQ(drawnIn(scene, SceneColours::highlight, false), cone ? 1u : 0u);
+            if (step != 4) {
+                EXPECT_EQ(drawnIn(scene, SceneColours::normalTip, true), cone ? 1u : 0u) << step;
+            }
+            if (step == 4) {
+                EXPECT_EQ(drawnIn(scene, SceneColours::highlight, false), cone ? 1u : 0u);
+            }
         }
     }
 }
