@@ -12,6 +12,9 @@
     is included only inside the folder;
   - README.md has fewer than 250 lines (the rest goes to docs/user/ and docs/dev/);
   - every relative link and image of every .md file names a file that exists, and a #heading in it;
+  - each layer includes only the layers below it (LAYER_INCLUDES): the core nothing but itself, the
+    readers the core, batch runs the readers, the command line batch runs, the window the scene and
+    readers, never the command line;
   - no function in src/ or ui/ runs over 80 lines, from its signature to its closing brace (lambdas count
     with the function around them; a short allowlist names the few left and why).
 
@@ -34,6 +37,16 @@ MAX_FUNCTION_LINES = 80
 # None today.
 LONG_FUNCTIONS_ALLOWED = {}
 SOURCE_SUFFIXES = (".h", ".cpp")
+# Per folder, the folders its quoted includes ("io/MeshReader.h") may name besides its own; the
+# core's own headers are named without a folder or through core/ and meshopt/.
+LAYER_INCLUDES = {
+    "src/core": {"core", "meshopt", "lod", "optimizer"},
+    "src/io": {"core", "io"},
+    "src/batch": {"core", "io", "batch"},
+    "src/scene": {"core", "scene"},
+    "src/cli": {"core", "io", "batch", "cli"},
+    "ui": {"core", "io", "scene"},
+}
 
 
 def source_files(root, folders):
@@ -247,6 +260,18 @@ def include_loops(root, files):
         yield "include loop: " + " -> ".join(loop)
 
 
+def layer_includes(files):
+    """Quoted includes that reach a layer above (src/batch naming cli/, src/core naming io/, ...)."""
+    for path, lines in files:
+        layer = next((folder for folder in LAYER_INCLUDES if path.startswith(folder + "/")), None)
+        if layer is None:
+            continue
+        for number, line in enumerate(lines, 1):
+            match = re.match(r'\s*#\s*include\s*"(\w+)/', line)
+            if match and match.group(1) not in LAYER_INCLUDES[layer]:
+                yield f"{path}:{number}: {layer} includes {match.group(1)}/ (a layer above it)"
+
+
 def long_readme(root):
     lines = open(os.path.join(root, "README.md"), encoding="utf-8").read().count("\n")
     if lines >= MAX_README_LINES:
@@ -287,7 +312,7 @@ def main():
     root = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), ".."))
     files = list(source_files(root, ["src", "ui"]))
     breaches = [*meshoptimizer_includes(files), *shared_class_names(files), *long_comments(files), *long_files(files),
-                *include_loops(root, files), *meshopt_door_includes(files), *long_readme(root), *broken_doc_links(root)]
+                *include_loops(root, files), *meshopt_door_includes(files), *layer_includes(files), *long_readme(root), *broken_doc_links(root)]
     breaches += long_functions(files)
     for breach in breaches:
         print(breach)
