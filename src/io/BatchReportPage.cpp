@@ -170,7 +170,10 @@ function scatter(id, caption, points, x, y, options) {
     point.append(svgElement("title", {}, `${row.file}\n${options.xLabel}: ${options.log ? count(x(row)) : percent(x(row))}\n${options.yLabel}: ${percent(y(row))}`));
     point.addEventListener("click", () => select(row));
     svg.append(point);
-    if (options.labels) svg.append(svgElement("text", {x: toX(x(row)) + 7, y: toY(y(row)) + 4}, row.name));
+    // A label near the right edge goes to the left of its point, so the plot never clips it.
+    const leftOfPoint = toX(x(row)) > width - right - 90;
+    if (options.labels) svg.append(svgElement("text", {x: toX(x(row)) + (leftOfPoint ? -7 : 7), y: toY(y(row)) + 4,
+      "text-anchor": leftOfPoint ? "end" : "start"}, row.name));
   }
   figure.append(svg);
   if (points.length > MAX_POINTS) figure.append(element("div", {class: "muted"}, `${count(MAX_POINTS)} of ${count(points.length)} meshes drawn`));
