@@ -149,6 +149,18 @@ TEST(CliLod, BinaryHierarchyRoundTripsAsTheJson) {
     EXPECT_NE(refused.err.find("starts with the 8 bytes 'CLUSTLOD'"), std::string::npos) << refused.err;
 }
 
+// A mesh of polygons: level 0 read back is the mesh with its polygons whole, as built, so every
+// number (the K-cone sub-groups split faces) and the file written again are the same.
+TEST(CliLod, PolygonMeshHierarchyRoundTripsWithItsPolygons) {
+    clitest::ScratchDirectory scratch;
+    const std::string mesh = std::string(CONESCOPE_TESTDATA_DIR) + "/props/bread.obj", file = scratch.file("bread.lod"), again = scratch.file("again.lod");
+    nlohmann::json built = runLodJson({mesh, "--views", "16", "--cones", "4", "--write-hierarchy", file});
+    nlohmann::json read = runLodJson({mesh, "--views", "16", "--cones", "4", "--hierarchy", file, "--write-hierarchy", again});
+    built.erase("build_seconds"), read.erase("build_seconds");
+    EXPECT_EQ(built, read);
+    EXPECT_EQ(clitest::readTextFile(again), clitest::readTextFile(file));
+}
+
 // --cones K: level 0 is granularity's cones-K row on the same partition and views; no false culls
 // at any level or in the cut; the cut's numbers are the sums of its views', and at threshold 0 the
 // cut is level 0. Without --cones nothing changes.
