@@ -1,6 +1,8 @@
 // Every reader behind readMesh, on arbitrary bytes: the first byte picks the format, the rest is the
 // file. Either a valid mesh or a MeshReadError. Formats 8 and 9 are meshlet files (JSON, binary) put
-// on a 2 x 2 grid of squares: either a partition of its faces or a ClusterFileError.
+// on a 2 x 2 grid of squares: either a partition of its faces or a ClusterFileError. Formats 10 and
+// 11 are cluster LOD hierarchy files (JSON, binary) of the same grid: either a hierarchy whose every
+// level covers the grid or a MeshletFileError / HierarchyError.
 #include <unistd.h>
 
 #include <cstddef>
@@ -8,8 +10,10 @@
 #include <fstream>
 #include <string>
 
+#include "core/lod/HierarchyRecords.h"
 #include "io/ClusterFiles.h"
 #include "io/MeshReader.h"
+#include "io/MeshletFiles.h"
 
 namespace {
 
@@ -40,16 +44,32 @@ void meshletFile(const std::string& path) {
     }
 }
 
+void hierarchyFile(const std::string& path) {
+    static const conescope::PreparedMesh prepared = conescope::prepareMesh(std::make_shared<const conescope::Mesh>(grid()), "grid", false);
+    try {
+        const conescope::ClusterHierarchy hierarchy = conescope::hierarchyFromRecords(prepared, conescope::readHierarchyFile(path), {});
+        if (hierarchy.levels.empty()) __builtin_trap();
+        for (const conescope::LodLevel& level : hierarchy.levels)
+            if (level.place.size() != level.clusters.partition.clusterCount) __builtin_trap();
+    } catch (const conescope::MeshletFileError&) {
+    } catch (const conescope::HierarchyError&) {
+    }
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     if (size == 0) return 0;
-    static const char* const extensions[] = {".off", ".ply", ".obj", ".stl", ".vtp", ".vtk", ".gltf", ".glb", ".json", ".meshlets"};
-    const size_t format = data[0] % 10;
+    static const char* const extensions[] = {".off", ".ply", ".obj", ".stl", ".vtp", ".vtk", ".gltf", ".glb", ".json", ".meshlets", ".json", ".lod"};
+    const size_t format = data[0] % 12;
     const std::string path = "/tmp/conescope-fuzz-" + std::to_string(getpid()) + extensions[format];
     {
         std::ofstream out(path, std::ios::binary | std::ios::trunc);
         out.write(reinterpret_cast<const char*>(data + 1), std::streamsize(size - 1));
+    }
+    if (format >= 10) {
+        hierarchyFile(path);
+        return 0;
     }
     if (format >= 8) {
         meshletFile(path);

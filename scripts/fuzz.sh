@@ -29,7 +29,8 @@ for target in "${targets[@]}"; do
     fuzz_off_parser) find "$root/datasets" "$root/tests/data" -name '*.off' -size -200k -exec cp {} "$corpus/" \; ;;
     fuzz_mesh_readers)
       # The first byte picks the reader: 0 off, 1 ply, 2 obj, 3 stl, 4 vtp, 5 vtk, 6 gltf, 7 glb,
-      # 8 and 9 meshlet files (JSON, binary) on the target's own grid (tests/data/meshlets).
+      # 8 and 9 meshlet files (JSON, binary) on the target's own grid (tests/data/meshlets), 10 and
+      # 11 hierarchy files (JSON, binary) of the same grid.
       # (A .gltf seed whose buffer is a file beside it has no such file in the fuzzer's folder; the
       # embedded ones and the .glb carry their data.)
       index=0
@@ -38,6 +39,9 @@ for target in "${targets[@]}"; do
           { printf "\\x$(printf %02x $index)"; cat "$file"; } > "$corpus/$(basename "$file").seed"
         done < <(find "$root/datasets" "$root/tests/data" -name "*.$extension" -size -200k -print0)
         index=$((index + 1))
+      done
+      for seed in 10:grid-hierarchy.json 11:grid-hierarchy.lod; do
+        { printf "\\x$(printf %02x "${seed%%:*}")"; cat "$root/tests/data/meshlets/${seed#*:}"; } > "$corpus/${seed#*:}.hierarchy.seed"
       done ;;
     fuzz_mesh_ingestion)
       # The target reads raw bytes as counts, floats and indices: the first 4 KB of each bundled

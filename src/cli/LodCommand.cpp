@@ -64,11 +64,12 @@ void runLod(const LodCommandOptions& options) {
         }
     }
     if (!options.writeHierarchy.empty()) {
-        writeText(options.writeHierarchy, hierarchyJson(hierarchyRecordsOf(hierarchy, firstFileVertices(mesh))));
+        const HierarchyRecords records = hierarchyRecordsOf(hierarchy, firstFileVertices(mesh));
+        writeText(options.writeHierarchy, isHierarchyBinaryPath(options.writeHierarchy) ? hierarchyBinary(records) : hierarchyJson(records));
         note(options.quiet, "wrote " + options.writeHierarchy);
     }
     if (!options.writeLevels.empty()) writeLevelMeshes(hierarchy, settings, options);
-    const LodStatistics statistics = measureHierarchy(hierarchy, settings, options.threshold, progressWithin(progress, 0.6, 1.0));
+    const LodStatistics statistics = measureHierarchy(hierarchy, settings, options.threshold, progressWithin(progress, 0.6, 1.0), options.cones);
     std::ostringstream text;
     if (format == "csv")
         writeLodCsv(statistics, text);

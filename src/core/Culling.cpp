@@ -28,6 +28,13 @@ std::vector<Facing> classifyFaces(const Mesh& mesh, const std::vector<glm::vec3>
     return facing;
 }
 
+size_t backFacingTriangles(const Mesh& mesh, const std::vector<Facing>& facing) {
+    size_t total = 0;
+    for (size_t f = 0; f < facing.size(); ++f)
+        if (facing[f] == Facing::Back) total += mesh.faceSize(f) - 2;
+    return total;
+}
+
 bool viewDirectionSeesBack(const ConeOfNormals& cone, const glm::dvec3& unitView) {
     return cone.cullable && glm::dot(unitView, cone.axis) > cone.sinHalfAngle + kCullMargin;
 }

@@ -23,6 +23,9 @@ Facing classifyFace(const Mesh& mesh, const std::vector<glm::vec3>& world, const
 std::vector<Facing> classifyFaces(const Mesh& mesh, const std::vector<glm::vec3>& world, const FaceGeometry& faces,
                                   const Eye& eye);
 
+// Fan triangles of the faces classifyFaces found back-facing.
+size_t backFacingTriangles(const Mesh& mesh, const std::vector<Facing>& facing);
+
 
 // One cluster, one eye, one test.
 bool cullCluster(const CullingInput& input, uint32_t cluster, const Eye& eye, CullTest test);

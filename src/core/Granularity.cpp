@@ -18,35 +18,9 @@ void finishRow(GranularityRow& row, size_t clusters, size_t triangles, size_t vi
 
 // One K-cone record (float or compact) as it is counted over the views.
 struct MultiConeRecord {
-    const MultiCones* multi = nullptr;
-    std::vector<ConeOfNormals> cones;
-    const std::vector<Sphere>* spheres = nullptr;
-    ClusterBatch batch;
+    SubGroupRecord record;
     GranularityRow row;
 };
-
-// Adds one view of one record, as the product tests it (batched): triangles in culled sub-groups, and the culled sub-groups holding a
-// face the oracle did not find back-facing.
-void countView(MultiConeRecord& record, const std::vector<Facing>& facing, const Eye& eye) {
-    const MultiCones& multi = *record.multi;
-    const std::vector<uint8_t> culled = cullSubGroupsBatched(record.batch, record.cones, *record.spheres, multi.conesPerCluster, eye);
-    for (size_t g = 0; g < culled.size(); ++g) {
-        if (!culled[g]) continue;
-        record.row.trianglesCulled += multi.groupTriangles[g];
-        for (uint32_t i = multi.groupStarts[g]; i < multi.groupStarts[g + 1]; ++i)
-            if (facing[multi.faces[i]] != Facing::Back) {
-                ++record.row.falseCulls;
-                break;
-            }
-    }
-}
-
-size_t backFacingTriangles(const Mesh& mesh, const std::vector<Facing>& facing) {
-    size_t total = 0;
-    for (size_t f = 0; f < facing.size(); ++f)
-        if (facing[f] == Facing::Back) total += mesh.faceSize(f) - 2;
-    return total;
-}
 
 size_t largestClusterTriangles(const Mesh& mesh, const ClusterBounds& bounds) {
     size_t largest = 0;
@@ -103,10 +77,7 @@ std::vector<GranularityRow> finerRows(const PreparedMesh& prepared, const Cluste
     for (size_t i = 0; i < multis.size(); ++i)
         for (bool compact : {false, true}) {
             MultiConeRecord record;
-            record.multi = &multis[i];
-            record.cones = compact ? compacts[i].cones : multis[i].cones;
-            record.spheres = compact ? &compacts[i].spheres : &bounds.spheres;
-            record.batch = subGroupBatch(record.cones, *record.spheres, multis[i].conesPerCluster);
+            record.record = subGroupRecord(multis[i], compact ? compacts[i].cones : multis[i].cones, compact ? compacts[i].spheres : bounds.spheres);
             const uint32_t k = multis[i].conesPerCluster;
             record.row.record = "cones-" + std::to_string(k) + (compact ? "-compact" : "");
             record.row.bytesPerCluster = multiConeRecordBytes(k, largest, compact);
@@ -133,7 +104,9 @@ std::vector<GranularityRow> finerRows(const PreparedMesh& prepared, const Cluste
         const size_t back = backFacingTriangles(mesh, facing);
         for (MultiConeRecord& record : records) {
             record.row.backFacingTriangles += back;
-            countView(record, facing, views[v]);
+            const SubGroupCulling counted = countSubGroupCulling(record.record, facing, views[v]);
+            record.row.trianglesCulled += counted.trianglesCulled;
+            record.row.falseCulls += counted.falseCulls;
         }
         const std::vector<uint8_t> culled = cullClusters(input, views[v], clusterTest);
         triangleTests += double(bounds.count());

@@ -295,4 +295,30 @@ size_t culledTriangles(const MultiCones& multi, const std::vector<uint8_t>& cull
     return total;
 }
 
+SubGroupRecord subGroupRecord(const MultiCones& multi, std::vector<ConeOfNormals> cones, const std::vector<Sphere>& spheres) {
+    SubGroupRecord record;
+    record.multi = &multi;
+    record.cones = std::move(cones);
+    record.spheres = &spheres;
+    record.batch = subGroupBatch(record.cones, spheres, multi.conesPerCluster);
+    return record;
+}
+
+SubGroupCulling countSubGroupCulling(const SubGroupRecord& record, const std::vector<Facing>& facing, const Eye& eye,
+                                     const std::vector<uint8_t>& clusters) {
+    const MultiCones& multi = *record.multi;
+    const std::vector<uint8_t> culled = cullSubGroupsBatched(record.batch, record.cones, *record.spheres, multi.conesPerCluster, eye);
+    SubGroupCulling counted;
+    for (size_t g = 0; g < culled.size(); ++g) {
+        if (!culled[g] || (!clusters.empty() && !clusters[g / multi.conesPerCluster])) continue;
+        counted.trianglesCulled += multi.groupTriangles[g];
+        for (uint32_t i = multi.groupStarts[g]; i < multi.groupStarts[g + 1]; ++i)
+            if (facing[multi.faces[i]] != Facing::Back) {
+                ++counted.falseCulls;
+                break;
+            }
+    }
+    return counted;
+}
+
 }  // namespace conescope

@@ -9,6 +9,7 @@
 
 #include "BatchCulling.h"
 #include "ClusterBounds.h"
+#include "Culling.h"
 #include "Views.h"
 
 namespace conescope {
@@ -76,5 +77,25 @@ ClusterBatch subGroupBatch(const std::vector<ConeOfNormals>& cones, const std::v
 // test culls, minus a sliver at its threshold), the exact test for an orthographic one.
 std::vector<uint8_t> cullSubGroupsBatched(const ClusterBatch& batch, const std::vector<ConeOfNormals>& cones,
                                           const std::vector<Sphere>& spheres, uint32_t conesPerCluster, const Eye& eye);
+
+// One K-cone record (the float cones and the clusters' spheres, or the compact record's) ready to be
+// tested from many eyes as the product tests it, batched. `multi` and `spheres` must outlive it.
+struct SubGroupRecord {
+    const MultiCones* multi = nullptr;
+    std::vector<ConeOfNormals> cones;
+    const std::vector<Sphere>* spheres = nullptr;
+    ClusterBatch batch;
+};
+SubGroupRecord subGroupRecord(const MultiCones& multi, std::vector<ConeOfNormals> cones, const std::vector<Sphere>& spheres);
+
+// What one eye's test does to a record: triangles in culled sub-groups, and culled sub-groups holding
+// a face that is not back-facing (`facing` from classifyFaces). Only the sub-groups of clusters
+// whose entry in `clusters` is 1 count (empty: every cluster), as for the clusters a LOD cut draws.
+struct SubGroupCulling {
+    size_t trianglesCulled = 0;
+    size_t falseCulls = 0;
+};
+SubGroupCulling countSubGroupCulling(const SubGroupRecord& record, const std::vector<Facing>& facing, const Eye& eye,
+                                     const std::vector<uint8_t>& clusters = {});
 
 }  // namespace conescope

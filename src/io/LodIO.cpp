@@ -35,6 +35,37 @@ const std::vector<LevelColumn>& levelColumns() {
     return columns;
 }
 
+// The K-cone columns, in the CSV only when K cones were measured; the JSON nests them under
+// "multi_cone" (addMultiCone).
+const std::vector<NamedColumn<LodMultiConeCulling>>& multiConeColumns() {
+    using Column = NamedColumn<LodMultiConeCulling>;
+    static const std::vector<Column> columns{
+        {"cones_per_cluster", [](const LodMultiConeCulling& m) { return m.cones; }},
+        {"efficiency", [](const LodMultiConeCulling& m) { return m.efficiency; }},
+        {"false_culls", [](const LodMultiConeCulling& m) { return m.falseCulls; }},
+        {"triangles_culled", [](const LodMultiConeCulling& m) { return m.trianglesCulled; }},
+        {"back_facing_triangles", [](const LodMultiConeCulling& m) { return m.backFacingTriangles; }},
+    };
+    return columns;
+}
+
+// Adds "multi_cone" to a level's, the cut's or a view's object when K cones were measured.
+void addMultiCone(nlohmann::json& json, const LodMultiConeCulling& multi) {
+    if (multi.cones > 0) json["multi_cone"] = rowToJson(multiConeColumns(), multi);
+}
+
+// The CSV's columns: the level's, then with K cones measured "multi_cone_" and each K-cone key.
+std::vector<LevelColumn> csvColumns(bool multi) {
+    std::vector<LevelColumn> columns = levelColumns();
+    if (!multi) return columns;
+    static std::vector<std::string> keys;
+    if (keys.empty())
+        for (const auto& column : multiConeColumns()) keys.push_back(std::string("multi_cone_") + column.key);
+    for (size_t i = 0; i < keys.size(); ++i)
+        columns.push_back({keys[i].c_str(), [i](const LodLevelStatistics& l) { return multiConeColumns()[i].value(l.multiCones); }});
+    return columns;
+}
+
 nlohmann::json thresholdToJson(const LodThreshold& threshold) {
     nlohmann::json json{{"value", threshold.value}, {"unit", threshold.worldUnits ? "world" : "pixels"}};
     if (!threshold.worldUnits) json["screen_height"] = threshold.screenHeight, json["fov_degrees"] = threshold.fovDegrees;
@@ -42,7 +73,7 @@ nlohmann::json thresholdToJson(const LodThreshold& threshold) {
 }
 
 nlohmann::json cutViewToJson(const LodCutView& view) {
-    return {{"view", view.view},
+    nlohmann::json json{{"view", view.view},
             {"eye", {view.eye.position.x, view.eye.position.y, view.eye.position.z}},
             {"clusters", view.clusters},
             {"triangles", view.triangles},
@@ -52,6 +83,8 @@ nlohmann::json cutViewToJson(const LodCutView& view) {
             {"efficiency", view.efficiency},
             {"false_culls", view.falseCulls},
             {"clusters_per_level", view.clustersPerLevel}};
+    addMultiCone(json, view.multiCones);
+    return json;
 }
 
 
@@ -64,7 +97,10 @@ nlohmann::json lodStatisticsToJson(const LodStatistics& statistics, const Settin
     json["build_seconds"] = statistics.buildSeconds;
     json["views"] = statistics.cut.views.size();
     nlohmann::json& levels = json["levels"] = nlohmann::json::array();
-    for (const LodLevelStatistics& level : statistics.levels) levels.push_back(rowToJson(levelColumns(), level));
+    for (const LodLevelStatistics& level : statistics.levels) {
+        levels.push_back(rowToJson(levelColumns(), level));
+        addMultiCone(levels.back(), level.multiCones);
+    }
     const LodCutStatistics& cut = statistics.cut;
     json["cut"] = {{"triangles", cut.meanTriangles},
                    {"clusters", cut.meanClusters},
@@ -73,6 +109,7 @@ nlohmann::json lodStatisticsToJson(const LodStatistics& statistics, const Settin
                    {"efficiency", cut.efficiency},
                    {"false_culls", cut.falseCulls},
                    {"levels_used", cut.levelsUsed}};
+    addMultiCone(json["cut"], cut.multiCones);
     if (perView) {
         nlohmann::json& views = json["cut"]["views"] = nlohmann::json::array();
         for (const LodCutView& view : cut.views) views.push_back(cutViewToJson(view));
@@ -81,18 +118,19 @@ nlohmann::json lodStatisticsToJson(const LodStatistics& statistics, const Settin
 }
 
 void writeLodCsv(const LodStatistics& statistics, std::ostream& out) {
-    const std::vector<LevelColumn>& columns = levelColumns();
+    const std::vector<LevelColumn> columns = csvColumns(statistics.cut.multiCones.cones > 0);
     writeCsvHeader(columns, out);
     for (const LodLevelStatistics& level : statistics.levels) writeCsvRow(columns, level, out);
     // The cut: its mean size over the views, its culling summed over them; no groups, cones or errors.
     const LodCutStatistics& cut = statistics.cut;
-    const std::map<std::string, nlohmann::json> cells{{"level", "cut"},
+    std::map<std::string, nlohmann::json> cells{{"level", "cut"},
                                                       {"clusters", cut.meanClusters},
                                                       {"triangles", cut.meanTriangles},
                                                       {"efficiency", cut.efficiency},
                                                       {"false_culls", cut.falseCulls},
                                                       {"triangles_culled", cut.trianglesCulled},
                                                       {"back_facing_triangles", cut.backFacingTriangles}};
+    for (const auto& column : multiConeColumns()) cells[std::string("multi_cone_") + column.key] = column.value(cut.multiCones);
     for (size_t i = 0; i < columns.size(); ++i) {
         const auto at = cells.find(columns[i].key);
         out << (i ? "," : "") << (at == cells.end() ? "" : csvCell(at->second));
@@ -104,17 +142,24 @@ void writeLodText(const LodStatistics& statistics, const Settings& settings, std
     out << "LOD hierarchy: " << statistics.levels.size() << " levels, built in " << std::fixed << std::setprecision(2)
         << statistics.buildSeconds << " s; " << toString(displayedCone(settings)) << " cone, " << toString(displayedTest(settings))
         << " test, " << statistics.cut.views.size() << " views\n";
-    out << "level  clusters  triangles  mean alpha  efficiency  expected  false culls\n";
-    for (const LodLevelStatistics& level : statistics.levels)
+    const uint32_t cones = statistics.cut.multiCones.cones;
+    out << "level  clusters  triangles  mean alpha  efficiency  expected  false culls";
+    if (cones > 0) out << "  " << cones << " cones  false culls";
+    out << "\n";
+    for (const LodLevelStatistics& level : statistics.levels) {
         out << std::setw(5) << level.level << std::setw(10) << level.clusters << std::setw(11) << level.triangles << std::setw(11)
             << std::setprecision(1) << level.meanHalfAngleDegrees << "\u00b0" << std::setw(11) << std::setprecision(4)
-            << level.culling.efficiency << std::setw(10) << level.culling.expectedEfficiency << std::setw(13) << level.culling.falseCulls
-            << "\n";
+            << level.culling.efficiency << std::setw(10) << level.culling.expectedEfficiency << std::setw(13) << level.culling.falseCulls;
+        if (cones > 0) out << std::setw(9 + (cones > 9)) << level.multiCones.efficiency << std::setw(13) << level.multiCones.falseCulls;
+        out << "\n";
+    }
     const LodCutStatistics& cut = statistics.cut;
     out << "cut at " << std::setprecision(2) << statistics.threshold.value << (statistics.threshold.worldUnits ? " world units" : " px")
         << ": " << std::setprecision(0) << cut.meanTriangles << " triangles and " << cut.meanClusters << " clusters drawn per view from levels";
     for (size_t level : cut.levelsUsed) out << " " << level;
-    out << "; efficiency " << std::setprecision(4) << cut.efficiency << ", false culls " << cut.falseCulls << "\n";
+    out << "; efficiency " << std::setprecision(4) << cut.efficiency << ", false culls " << cut.falseCulls;
+    if (cones > 0) out << "; with " << cones << " cones " << cut.multiCones.efficiency << ", false culls " << cut.multiCones.falseCulls;
+    out << "\n";
 }
 
 }  // namespace conescope

@@ -16,6 +16,10 @@ namespace {
 
 constexpr char kMagic[8] = {'M', 'E', 'S', 'H', 'L', 'E', 'T', 'S'};
 constexpr size_t kHeaderBytes = 32, kMeshletBytes = 16, kBoundsBytes = 48;
+// A hierarchy's binary form: its own magic, the same header size and meshlet arrays, then 8-byte
+// aligned records per cluster and per group (docs/user/engine-meshlets.md).
+constexpr char kHierarchyMagic[8] = {'C', 'L', 'U', 'S', 'T', 'L', 'O', 'D'};
+constexpr size_t kClusterRecordBytes = 56, kGroupRecordBytes = 48;
 
 // --- JSON ------------------------------------------------------------------------------------------
 
@@ -110,6 +114,53 @@ void putF32(std::string& bytes, float value) {
 }
 
 size_t paddedToFour(size_t count) { return (count + 3) & ~size_t(3); }
+uint64_t paddedToEight(uint64_t count) { return (count + 7) & ~uint64_t(7); }
+
+double f64At(const std::string& bytes, size_t offset) {
+    const uint64_t bits = uint64_t(u32At(bytes, offset)) | uint64_t(u32At(bytes, offset + 4)) << 32;
+    double value = 0.0;
+    std::memcpy(&value, &bits, 8);
+    return value;
+}
+
+void putF64(std::string& bytes, double value) {
+    uint64_t bits = 0;
+    std::memcpy(&bits, &value, 8);
+    putU32(bytes, uint32_t(bits)), putU32(bytes, uint32_t(bits >> 32));
+}
+
+// The start both binary forms share: `magic`, a whole 32-byte header, version 1. A file without the
+// magic is refused as not a `kind` file.
+void checkBinaryHeader(const std::string& bytes, const std::string& source, const char* magic, const std::string& kind) {
+    if (bytes.compare(0, 8, magic, 8) != 0)
+        throw MeshletFileError(source + ": not a " + kind + " file: a binary one starts with the 8 bytes '" + std::string(magic, 8) +
+                               "', this one with " + quotedForMessage(bytes.substr(0, 8)) + " (and a JSON one with '{')");
+    if (bytes.size() < kHeaderBytes)
+        throw MeshletFileError(source + ": truncated: the file ends at byte " + std::to_string(bytes.size()) + ", inside the 32-byte header");
+    const uint32_t version = u32At(bytes, 8);
+    if (version != 1) throw MeshletFileError(source + ": byte 8: version " + std::to_string(version) + ", this reader knows version 1");
+}
+
+// meshoptimizer's three arrays from byte 32, their sizes already checked against the file's; the
+// byte after the triangles.
+size_t binaryMeshletArrays(const std::string& bytes, uint64_t meshletCount, uint64_t vertexCount, uint64_t triangleBytes, MeshletArrays& arrays) {
+    size_t at = kHeaderBytes;
+    arrays.meshlets.resize(meshletCount);
+    for (auto& meshlet : arrays.meshlets)
+        for (uint32_t& field : meshlet) field = u32At(bytes, at), at += 4;
+    arrays.vertices.resize(vertexCount);
+    for (uint32_t& vertex : arrays.vertices) vertex = u32At(bytes, at), at += 4;
+    arrays.triangles.assign(bytes.begin() + long(at), bytes.begin() + long(at + triangleBytes));
+    return at + triangleBytes;
+}
+
+// The arrays as both binary forms lay them after the header, the triangles unpadded.
+void putMeshletArrays(std::string& bytes, const MeshletArrays& arrays) {
+    for (const auto& meshlet : arrays.meshlets)
+        for (uint32_t field : meshlet) putU32(bytes, field);
+    for (uint32_t vertex : arrays.vertices) putU32(bytes, vertex);
+    bytes.append(arrays.triangles.begin(), arrays.triangles.end());
+}
 
 // Whether the bytes start, after white space, as a JSON object does.
 bool startsAsJson(const std::string& bytes) {
@@ -187,13 +238,8 @@ MeshletArrays parseMeshletJson(const std::string& text, const std::string& sourc
 }
 
 MeshletArrays parseMeshletBinary(const std::string& bytes, const std::string& source) {
-    if (bytes.compare(0, 8, kMagic, 8) != 0)
-        throw MeshletFileError(source + ": not a meshlet file: a binary one starts with the 8 bytes 'MESHLETS', this one with " +
-                               quotedForMessage(bytes.substr(0, 8)) + " (and a JSON one with '{')");
-    if (bytes.size() < kHeaderBytes)
-        throw MeshletFileError(source + ": the file ends at byte " + std::to_string(bytes.size()) + ", inside the 32-byte header");
-    const uint32_t version = u32At(bytes, 8), flags = u32At(bytes, 12);
-    if (version != 1) throw MeshletFileError(source + ": byte 8: version " + std::to_string(version) + ", this reader knows version 1");
+    checkBinaryHeader(bytes, source, kMagic, "meshlet");
+    const uint32_t flags = u32At(bytes, 12);
     if (flags > 1) throw MeshletFileError(source + ": byte 12: unknown flags " + std::to_string(flags) + " (only bit 0, bounds, is defined)");
     const uint64_t meshletCount = u32At(bytes, 16), vertexCount = u32At(bytes, 20), triangleBytes = u32At(bytes, 24);
     const bool hasBounds = flags & 1;
@@ -204,14 +250,7 @@ MeshletArrays parseMeshletBinary(const std::string& bytes, const std::string& so
                                " meshlet_vertices and " + std::to_string(triangleBytes) + " triangle bytes" + (hasBounds ? " with bounds" : "") +
                                " (" + std::to_string(expected) + " bytes) but the file has " + std::to_string(bytes.size()));
     MeshletArrays arrays;
-    size_t at = kHeaderBytes;
-    arrays.meshlets.resize(meshletCount);
-    for (auto& meshlet : arrays.meshlets)
-        for (uint32_t& field : meshlet) field = u32At(bytes, at), at += 4;
-    arrays.vertices.resize(vertexCount);
-    for (uint32_t& vertex : arrays.vertices) vertex = u32At(bytes, at), at += 4;
-    arrays.triangles.assign(bytes.begin() + long(at), bytes.begin() + long(at + triangleBytes));
-    at += paddedToFour(triangleBytes);
+    size_t at = kHeaderBytes + paddedToFour(binaryMeshletArrays(bytes, meshletCount, vertexCount, triangleBytes, arrays) - kHeaderBytes);
     if (hasBounds) {
         arrays.bounds.resize(meshletCount);
         for (size_t m = 0; m < meshletCount; ++m, at += kBoundsBytes) {
@@ -272,10 +311,7 @@ std::string meshletBinary(const MeshletArrays& arrays) {
     for (uint64_t value : {uint64_t(1), uint64_t(arrays.bounds.empty() ? 0 : 1), uint64_t(arrays.meshlets.size()),
                            uint64_t(arrays.vertices.size()), uint64_t(arrays.triangles.size()), uint64_t(0)})
         putU32(bytes, uint32_t(value));
-    for (const auto& meshlet : arrays.meshlets)
-        for (uint32_t field : meshlet) putU32(bytes, field);
-    for (uint32_t vertex : arrays.vertices) putU32(bytes, vertex);
-    bytes.append(arrays.triangles.begin(), arrays.triangles.end());
+    putMeshletArrays(bytes, arrays);
     bytes.resize(bytes.size() + paddedToFour(arrays.triangles.size()) - arrays.triangles.size(), '\0');
     for (const MeshletBounds& b : arrays.bounds) {
         for (float value : b.center) putF32(bytes, value);
@@ -332,6 +368,95 @@ HierarchyRecords parseHierarchyJson(const std::string& text, const std::string& 
     return records;
 }
 
+namespace {
+
+// A hierarchy binary's fault: the path, the byte offset, who (a cluster or group, when one) and what.
+[[noreturn]] void failBinary(const std::string& source, size_t offset, const std::string& what) {
+    throw MeshletFileError(source + ": byte " + std::to_string(offset) + ": " + what);
+}
+
+// A sphere and an error at `at` (five doubles), each finite and the radius and error 0 or more.
+template <typename Record>
+void readBound(const std::string& bytes, size_t at, const std::string& source, const std::string& who, Record& record) {
+    double fields[5];
+    for (int k = 0; k < 5; ++k) {
+        fields[k] = f64At(bytes, at + 8 * k);
+        if (!std::isfinite(fields[k])) failBinary(source, at + 8 * k, who + ": " + (k < 3 ? "its centre" : k == 3 ? "its radius" : "its error") + " is not a finite number");
+    }
+    record.sphere = {glm::dvec3(fields[0], fields[1], fields[2]), fields[3]};
+    record.error = fields[4];
+}
+
+}  // namespace
+
+HierarchyRecords parseHierarchyBinary(const std::string& bytes, const std::string& source) {
+    checkBinaryHeader(bytes, source, kHierarchyMagic, "hierarchy");
+    const uint32_t flags = u32At(bytes, 12);
+    if (flags != 0) failBinary(source, 12, "flags " + std::to_string(flags) + ", none are defined (0)");
+    const uint64_t clusterCount = u32At(bytes, 16), vertexCount = u32At(bytes, 20), triangleBytes = u32At(bytes, 24), groupCount = u32At(bytes, 28);
+    const uint64_t recordsAt = paddedToEight(kHeaderBytes + clusterCount * kMeshletBytes + vertexCount * 4 + triangleBytes);
+    const uint64_t expected = recordsAt + clusterCount * kClusterRecordBytes + groupCount * kGroupRecordBytes;
+    if (expected != bytes.size())
+        throw MeshletFileError(source + ": " + (bytes.size() < expected ? "truncated: " : "") + "the header promises " + std::to_string(clusterCount) +
+                               " clusters, " + std::to_string(vertexCount) + " meshlet_vertices, " + std::to_string(triangleBytes) +
+                               " triangle bytes and " + std::to_string(groupCount) + " groups (" + std::to_string(expected) +
+                               " bytes) but the file has " + std::to_string(bytes.size()));
+    HierarchyRecords records;
+    size_t at = binaryMeshletArrays(bytes, clusterCount, vertexCount, triangleBytes, records.arrays);
+    for (; at < recordsAt; ++at)
+        if (bytes[at] != 0) failBinary(source, at, "padding after meshlet_triangles is not zero");
+    const auto level = [&](size_t offset, const std::string& who) {
+        const uint32_t value = u32At(bytes, offset);
+        if (value > clusterCount) failBinary(source, offset, who + ": level " + std::to_string(value) + " is above the cluster count " + std::to_string(clusterCount));
+        return value;
+    };
+    const auto groupIndex = [&](size_t offset, const std::string& who, const char* what) {
+        const int64_t value = int32_t(u32At(bytes, offset));
+        if (value < -1 || value >= int64_t(groupCount))
+            failBinary(source, offset, who + ": " + what + " " + std::to_string(value) + " is not a group (-1 or below " + std::to_string(groupCount) + ")");
+        return value;
+    };
+    records.clusters.resize(clusterCount);
+    for (size_t m = 0; m < clusterCount; ++m, at += kClusterRecordBytes) {
+        const std::string who = "cluster " + std::to_string(m);
+        HierarchyClusterRecord& record = records.clusters[m];
+        record.level = level(at, who);
+        record.group = groupIndex(at + 4, who, "group");
+        record.refined = groupIndex(at + 8, who, "refined group");
+        if (u32At(bytes, at + 12) != 0) failBinary(source, at + 12, who + ": its reserved field is not 0");
+        readBound(bytes, at + 16, source, who, record);
+    }
+    records.groups.resize(groupCount);
+    for (size_t g = 0; g < groupCount; ++g, at += kGroupRecordBytes) {
+        const std::string who = "group " + std::to_string(g);
+        records.groups[g].level = level(at, who);
+        if (u32At(bytes, at + 4) != 0) failBinary(source, at + 4, who + ": its reserved field is not 0");
+        readBound(bytes, at + 8, source, who, records.groups[g]);
+    }
+    return records;
+}
+
+std::string hierarchyBinary(const HierarchyRecords& records) {
+    const MeshletArrays& arrays = records.arrays;
+    std::string bytes(kHierarchyMagic, 8);
+    for (size_t value : {size_t(1), size_t(0), arrays.meshlets.size(), arrays.vertices.size(), arrays.triangles.size(), records.groups.size()})
+        putU32(bytes, uint32_t(value));
+    putMeshletArrays(bytes, arrays);
+    bytes.resize(paddedToEight(bytes.size()), '\0');
+    const auto putBound = [&](const Sphere& sphere, double error) {
+        for (double value : {sphere.center.x, sphere.center.y, sphere.center.z, sphere.radius, error}) putF64(bytes, value);
+    };
+    for (const HierarchyClusterRecord& c : records.clusters) {
+        for (int64_t value : {int64_t(c.level), c.group, c.refined, int64_t(0)}) putU32(bytes, uint32_t(value));
+        putBound(c.sphere, c.error);
+    }
+    for (const HierarchyGroupRecord& g : records.groups) {
+        putU32(bytes, g.level), putU32(bytes, 0);
+        putBound(g.sphere, g.error);
+    }
+    return bytes;
+}
+
 HierarchyRecords readHierarchyFile(const std::string& path) {
     std::string bytes;
     try {
@@ -339,7 +464,13 @@ HierarchyRecords readHierarchyFile(const std::string& path) {
     } catch (const std::exception& error) {
         throw MeshletFileError(error.what());
     }
-    return parseHierarchyJson(bytes, path);
+    if (startsAsJson(bytes)) return parseHierarchyJson(bytes, path);
+    return parseHierarchyBinary(bytes, path);
+}
+
+bool isHierarchyBinaryPath(const std::string& path) {
+    const std::string extension = lowerCaseExtension(path);
+    return extension == ".lod" || extension == ".bin";
 }
 
 std::string hierarchyJson(const HierarchyRecords& records) {

@@ -38,8 +38,17 @@ std::string meshletBinary(const MeshletArrays& arrays);
 // meshlet arrays of every level as above, "clusters": [{"level", "group", "refined", "center",
 // "radius", "error"}], "groups": [{"level", "center", "radius", "error"}]}. Reading checks the
 // structure (types, ranges); hierarchyFromRecords checks the rest. Throws MeshletFileError.
+// The binary form holds the same records, little-endian: a 32-byte header ('CLUSTLOD', version 1,
+// flags 0, the cluster, meshlet_vertices, triangle-byte and group counts), the three arrays, zero
+// bytes to a multiple of 8, then 56 bytes per cluster and 48 per group; its size must be exactly
+// what the header promises. readHierarchyFile tells the two apart by the first bytes.
 HierarchyRecords readHierarchyFile(const std::string& path);
 HierarchyRecords parseHierarchyJson(const std::string& text, const std::string& sourceName);
+HierarchyRecords parseHierarchyBinary(const std::string& bytes, const std::string& sourceName);
 std::string hierarchyJson(const HierarchyRecords& records);
+std::string hierarchyBinary(const HierarchyRecords& records);
+
+// Whether a hierarchy written to `path` takes the binary form: a name ending in .lod or .bin.
+bool isHierarchyBinaryPath(const std::string& path);
 
 }  // namespace conescope

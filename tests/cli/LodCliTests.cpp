@@ -108,13 +108,110 @@ TEST(CliLod, LevelMeshesReadBackWithTheirClusters) {
 
 TEST(CliLod, BadThresholdsAreUsageErrors) {
     for (const std::vector<std::string>& bad : {std::vector<std::string>{"--threshold", "-1"}, {"--fov", "180"}, {"--screen-height", "0"},
-                                                 {"--group-size", "1"}}) {
+                                                 {"--group-size", "1"}, {"--cones", "3"}}) {
         std::vector<std::string> command{"lod", "--quiet", dataset("torus.off")};
         command.insert(command.end(), bad.begin(), bad.end());
         const CliRun run = runCli(command);
         EXPECT_EQ(run.exitCode, 2) << bad[0];
         EXPECT_NE(run.err.find(bad[0]), std::string::npos) << run.err;
     }
+}
+
+// The binary form (.lod) written and read back gives the same numbers as the built hierarchy and as
+// the JSON of the same hierarchy; a truncated or foreign file is refused, saying so.
+TEST(CliLod, BinaryHierarchyRoundTripsAsTheJson) {
+    clitest::ScratchDirectory scratch;
+    const std::string binary = scratch.file("h.lod"), json = scratch.file("h.json");
+    const std::vector<std::string> run = {dataset("elephant.off"), "--views", "12", "--cones", "4"};
+    const auto with = [&](std::vector<std::string> more) {
+        more.insert(more.begin(), run.begin(), run.end());
+        nlohmann::json lod = runLodJson(more);
+        lod.erase("build_seconds");
+        return lod;
+    };
+    const nlohmann::json built = with({"--write-hierarchy", binary});
+    EXPECT_EQ(with({"--write-hierarchy", json}), built);
+    EXPECT_EQ(with({"--hierarchy", binary}), built);
+    EXPECT_EQ(with({"--hierarchy", json}), built);
+    const std::string bytes = clitest::readTextFile(binary);
+    EXPECT_EQ(bytes.substr(0, 8), "CLUSTLOD");
+    EXPECT_EQ(nlohmann::json::parse(clitest::readTextFile(json))["format"], "conescope-cluster-lod");
+    // The JSON read and written again as binary is the same file.
+    const std::string again = scratch.file("again.lod");
+    with({"--hierarchy", json, "--write-hierarchy", again});
+    EXPECT_EQ(clitest::readTextFile(again), bytes);
+    std::ofstream(binary, std::ios::binary | std::ios::trunc) << bytes.substr(0, bytes.size() - 9);
+    CliRun refused = runCli({"lod", "--quiet", dataset("elephant.off"), "--hierarchy", binary});
+    EXPECT_EQ(refused.exitCode, 1);
+    EXPECT_NE(refused.err.find("h.lod: truncated: the header promises"), std::string::npos) << refused.err;
+    std::ofstream(binary, std::ios::binary | std::ios::trunc) << "MESHLETS" << bytes.substr(8);
+    refused = runCli({"lod", "--quiet", dataset("elephant.off"), "--hierarchy", binary});
+    EXPECT_NE(refused.err.find("starts with the 8 bytes 'CLUSTLOD'"), std::string::npos) << refused.err;
+}
+
+// A mesh of polygons: level 0 read back is the mesh with its polygons whole, as built, so every
+// number (the K-cone sub-groups split faces) and the file written again are the same.
+TEST(CliLod, PolygonMeshHierarchyRoundTripsWithItsPolygons) {
+    clitest::ScratchDirectory scratch;
+    const std::string mesh = std::string(CONESCOPE_TESTDATA_DIR) + "/props/bread.obj", file = scratch.file("bread.lod"), again = scratch.file("again.lod");
+    nlohmann::json built = runLodJson({mesh, "--views", "16", "--cones", "4", "--write-hierarchy", file});
+    nlohmann::json read = runLodJson({mesh, "--views", "16", "--cones", "4", "--hierarchy", file, "--write-hierarchy", again});
+    built.erase("build_seconds"), read.erase("build_seconds");
+    EXPECT_EQ(built, read);
+    EXPECT_EQ(clitest::readTextFile(again), clitest::readTextFile(file));
+}
+
+// --cones K: level 0 is granularity's cones-K row on the same partition and views; no false culls
+// at any level or in the cut; the cut's numbers are the sums of its views', and at threshold 0 the
+// cut is level 0. Without --cones nothing changes.
+TEST(CliLod, ConesPerClusterAsGranularityAndConservative) {
+    const nlohmann::json lod = runLodJson({dataset("elephant.off"), "--views", "16", "--threshold", "1", "--cones", "4"});
+    const nlohmann::json granularity = clitest::runJsonCommand("granularity", {dataset("elephant.off"), "--views", "16", "--format", "json"});
+    const nlohmann::json* row = nullptr;
+    for (const nlohmann::json& r : granularity["rows"])
+        if (r["record"] == "cones-4") row = &r;
+    ASSERT_NE(row, nullptr);
+    const nlohmann::json& level0 = lod["levels"][0]["multi_cone"];
+    EXPECT_EQ(level0["cones_per_cluster"], 4);
+    EXPECT_EQ(level0["triangles_culled"], (*row)["triangles_culled"]);
+    EXPECT_EQ(level0["back_facing_triangles"], (*row)["back_facing_triangles"]);
+    EXPECT_EQ(level0["efficiency"], (*row)["efficiency"]);
+    for (const nlohmann::json& level : lod["levels"]) {
+        EXPECT_EQ(level["multi_cone"]["false_culls"], 0) << level["level"];
+        EXPECT_EQ(level["multi_cone"]["back_facing_triangles"], level["back_facing_triangles"]) << level["level"];
+    }
+    const nlohmann::json& cut = lod["cut"];
+    size_t culled = 0, back = 0;
+    for (const nlohmann::json& view : cut["views"]) {
+        culled += view["multi_cone"]["triangles_culled"].get<size_t>();
+        back += view["multi_cone"]["back_facing_triangles"].get<size_t>();
+        EXPECT_EQ(view["multi_cone"]["false_culls"], 0);
+        EXPECT_EQ(view["multi_cone"]["back_facing_triangles"], view["back_facing_triangles"]);
+    }
+    EXPECT_EQ(cut["multi_cone"]["triangles_culled"], culled);
+    EXPECT_EQ(cut["multi_cone"]["back_facing_triangles"], back);
+    EXPECT_EQ(cut["multi_cone"]["false_culls"], 0);
+    EXPECT_GT(culled, 0u);
+    const nlohmann::json zero = runLodJson({dataset("elephant.off"), "--views", "16", "--threshold", "0", "--cones", "4"});
+    EXPECT_EQ(zero["cut"]["multi_cone"]["triangles_culled"], zero["levels"][0]["multi_cone"]["triangles_culled"]);
+    EXPECT_EQ(zero["cut"]["multi_cone"]["efficiency"], zero["levels"][0]["multi_cone"]["efficiency"]);
+    const nlohmann::json plain = runLodJson({dataset("elephant.off"), "--views", "16", "--threshold", "1"});
+    EXPECT_FALSE(plain["levels"][0].contains("multi_cone"));
+    EXPECT_FALSE(plain["cut"].contains("multi_cone"));
+    EXPECT_EQ(plain["levels"][2]["efficiency"], lod["levels"][2]["efficiency"]);
+    EXPECT_EQ(plain["cut"]["efficiency"], lod["cut"]["efficiency"]);
+}
+
+// The CSV has the K-cone columns, the cut's row filled, only with --cones.
+TEST(CliLod, CsvHasTheConesColumnsOnlyWhenAsked) {
+    const CliRun with = runCli({"lod", "--quiet", dataset("torus.off"), "--views", "8", "--cones", "2", "--format", "csv"});
+    ASSERT_EQ(with.exitCode, 0) << with.err;
+    const std::vector<std::string> lines = splitLines(with.out);
+    EXPECT_NE(lines.front().find(",multi_cone_cones_per_cluster,multi_cone_efficiency,multi_cone_false_culls"), std::string::npos) << lines.front();
+    EXPECT_EQ(lines.back().rfind("cut,", 0), 0u);
+    EXPECT_NE(lines.back().find(",2,"), std::string::npos) << lines.back();
+    const CliRun without = runCli({"lod", "--quiet", dataset("torus.off"), "--views", "8", "--format", "csv"});
+    EXPECT_EQ(splitLines(without.out).front().find("multi_cone"), std::string::npos);
 }
 
 }  // namespace

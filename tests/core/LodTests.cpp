@@ -10,6 +10,7 @@
 #include <set>
 
 #include "TestMeshes.h"
+#include "core/Granularity.h"
 #include "core/lod/HierarchyRecords.h"
 #include "core/lod/LodCut.h"
 
@@ -200,6 +201,55 @@ TEST_F(LodHierarchy, CoarseLevelsCullLessAndTheCutIsConservative) {
     EXPECT_LT(lod.cut.meanTriangles, double(sphere_->triangles));
     EXPECT_GT(lod.cut.levelsUsed.size(), 0u);
     EXPECT_NE(lod.cut.levelsUsed, std::vector<size_t>{0});
+}
+
+// K cones per cluster: level 0 is granularity's cones-K row on the same partition and views; no
+// false cull at any level or in the cut, from far and from eyes near the surface; the cut's numbers
+// are its views' sums, and at threshold 0 its level 0's. Cancelling stops between views.
+TEST_F(LodHierarchy, ConesPerClusterOnLevelsAndCut) {
+    for (const double distance : {6.0, 1.3}) {
+        Settings settings;
+        settings.views = 24;
+        settings.distance = distance;
+        LodThreshold pixels;
+        pixels.value = 2.0;
+        const LodStatistics lod = measureHierarchy(*hierarchy_, settings, pixels, {}, 8);
+        const LodLevel& level0 = hierarchy_->levels[0];
+        size_t compared = 0;
+        for (const GranularityRow& row : finerRows(level0.prepared, level0.clusters, viewsFor(settings, level0.prepared.box), settings))
+            if (row.record == "cones-8") {
+                EXPECT_EQ(lod.levels[0].multiCones.trianglesCulled, row.trianglesCulled);
+                EXPECT_EQ(lod.levels[0].multiCones.backFacingTriangles, row.backFacingTriangles);
+                ++compared;
+            }
+        EXPECT_EQ(compared, 1u);
+        for (const LodLevelStatistics& level : lod.levels) {
+            EXPECT_EQ(level.multiCones.cones, 8u);
+            EXPECT_EQ(level.multiCones.falseCulls, 0u) << level.level;
+            EXPECT_EQ(level.multiCones.backFacingTriangles, level.culling.backFacingTriangles) << level.level;
+        }
+        LodMultiConeCulling sum;
+        for (const LodCutView& view : lod.cut.views) {
+            sum.trianglesCulled += view.multiCones.trianglesCulled, sum.falseCulls += view.multiCones.falseCulls;
+            EXPECT_LE(view.multiCones.trianglesCulled, view.backFacingTriangles);
+            EXPECT_EQ(view.multiCones.backFacingTriangles, view.backFacingTriangles);
+        }
+        EXPECT_EQ(lod.cut.multiCones.trianglesCulled, sum.trianglesCulled);
+        EXPECT_EQ(lod.cut.multiCones.backFacingTriangles, lod.cut.backFacingTriangles);
+        EXPECT_EQ(sum.falseCulls, 0u);
+        EXPECT_GT(sum.trianglesCulled, 0u) << distance;
+        LodThreshold zero;
+        zero.value = 0.0;
+        const LodStatistics flat = measureHierarchy(*hierarchy_, settings, zero, {}, 8);
+        EXPECT_EQ(flat.cut.multiCones.trianglesCulled, flat.levels[0].multiCones.trianglesCulled);
+        EXPECT_EQ(flat.cut.multiCones.efficiency, flat.levels[0].multiCones.efficiency);
+    }
+    size_t heard = 0;
+    const ProgressCallback cancelLate = [&](double fraction, const std::string&) { return ++heard < 40 || fraction < 0.0; };
+    EXPECT_THROW(measureHierarchy(*hierarchy_, Settings{}, {}, cancelLate, 4), OperationCancelled);
+    const LodStatistics none = measureHierarchy(*hierarchy_, Settings{}, {});
+    EXPECT_EQ(none.cut.multiCones.cones, 0u);
+    EXPECT_EQ(none.levels[0].multiCones.cones, 0u);
 }
 
 // The records give back the same hierarchy: every level's clusters, places and numbers.

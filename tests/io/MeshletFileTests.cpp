@@ -309,7 +309,7 @@ TEST(MeshletFiles, ReadErrorsNameThePlace) {
     EXPECT_HAS(binaryError(bytes.substr(0, bytes.size() - 4)), "but the file has 132");
     EXPECT_HAS(binaryError("MESHLETX" + bytes.substr(8)),
                "m.meshlets: not a meshlet file: a binary one starts with the 8 bytes 'MESHLETS', this one with 'MESHLETX'");
-    EXPECT_HAS(binaryError(bytes.substr(0, 20)), "m.meshlets: the file ends at byte 20, inside the 32-byte header");
+    EXPECT_HAS(binaryError(bytes.substr(0, 20)), "m.meshlets: truncated: the file ends at byte 20, inside the 32-byte header");
     std::string version = bytes;
     version[8] = 2;
     EXPECT_HAS(binaryError(version), "byte 8: version 2");

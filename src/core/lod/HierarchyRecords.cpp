@@ -1,7 +1,11 @@
 #include "HierarchyRecords.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <limits>
+#include <map>
+#include <optional>
 #include <string>
 
 namespace conescope {
@@ -72,6 +76,48 @@ uint32_t checkRecords(const HierarchyRecords& records) {
     return top + 1;
 }
 
+// A triangle as its corners turned to start at the smallest: the same key for the same triangle
+// wound the same way, another for its back-to-back twin.
+std::array<uint32_t, 3> orientedKey(uint32_t a, uint32_t b, uint32_t c) {
+    if (b < a && b < c) return {b, c, a};
+    if (c < a && c < b) return {c, a, b};
+    return {a, b, c};
+}
+
+// Level 0 as the mesh itself, polygons whole, when the records' level-0 triangles are exactly its
+// faces' fans (as meshletsOfPartition writes them) with each face's in one cluster: the level a
+// hierarchy built from the mesh has, so a hierarchy written and read back measures the same (K-cone
+// sub-groups split faces, not triangles). Empty when they are not: the level is then its triangles.
+std::optional<LodLevel> levelZeroOnMesh(const PreparedMesh& prepared, const std::vector<uint32_t>& triangles,
+                                        const std::vector<uint32_t>& clusterOfTriangle, size_t clusterCount, const Settings& settings) {
+    const Mesh& mesh = prepared.mesh();
+    std::map<std::array<uint32_t, 3>, uint32_t> faceOfTriangle;
+    for (size_t f = 0; f < mesh.faceCount(); ++f) {
+        const uint32_t* corners = mesh.faceBegin(f);
+        for (size_t k = 1; k + 1 < mesh.faceSize(f); ++k)
+            if (!faceOfTriangle.emplace(orientedKey(corners[0], corners[k], corners[k + 1]), uint32_t(f)).second) return std::nullopt;
+    }
+    if (faceOfTriangle.size() != clusterOfTriangle.size()) return std::nullopt;
+    constexpr uint32_t kNone = std::numeric_limits<uint32_t>::max();
+    ClusterSet given;
+    given.builtWith = settings;
+    given.partition.clusterCount = uint32_t(clusterCount);
+    given.partition.clusterOfFace.assign(mesh.faceCount(), kNone);
+    for (size_t t = 0; t < clusterOfTriangle.size(); ++t) {
+        const auto found = faceOfTriangle.find(orientedKey(triangles[3 * t], triangles[3 * t + 1], triangles[3 * t + 2]));
+        if (found == faceOfTriangle.end()) return std::nullopt;
+        uint32_t& cluster = given.partition.clusterOfFace[found->second];
+        if (cluster != kNone && cluster != clusterOfTriangle[t]) return std::nullopt;
+        cluster = clusterOfTriangle[t];
+    }
+    // As many triangles as fans, each on a face: a face left out means another's was given twice.
+    if (std::count(given.partition.clusterOfFace.begin(), given.partition.clusterOfFace.end(), kNone) > 0) return std::nullopt;
+    LodLevel level;
+    level.prepared = prepared;
+    level.clusters = buildClusters(prepared, settings, &given);  // the partition given, bounds as the settings make them
+    return level;
+}
+
 }  // namespace
 
 HierarchyRecords hierarchyRecordsOf(const ClusterHierarchy& hierarchy, const std::vector<uint32_t>& fileVertexOf) {
@@ -140,7 +186,8 @@ ClusterHierarchy hierarchyFromRecords(const PreparedMesh& prepared, const Hierar
             }
             if (record.refined >= 0) cluster.sourceGroup = uint32_t(record.refined) - firstGroup[l - 1];
         }
-        LodLevel level = lodLevelOf(prepared, triangles, clusterOfTriangle, settings);
+        std::optional<LodLevel> onMesh = l == 0 ? levelZeroOnMesh(prepared, triangles, clusterOfTriangle, place.size(), settings) : std::nullopt;
+        LodLevel level = onMesh ? std::move(*onMesh) : lodLevelOf(prepared, triangles, clusterOfTriangle, settings);
         level.place = std::move(place);
         level.groups = firstGroup[l + 1] - firstGroup[l];
         hierarchy.levels.push_back(std::move(level));

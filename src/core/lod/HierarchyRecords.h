@@ -45,7 +45,9 @@ HierarchyRecords hierarchyRecordsOf(const ClusterHierarchy& hierarchy, const std
 // The hierarchy the records describe on `prepared` (vertex ids through its mesh's fileVertices), its
 // clusters bounded with the cone and sphere of `settings`. Checks what the cut needs: levels from 0
 // without a gap, groups of one level with members and clusters made from them, every cluster below
-// the top in a group, errors and spheres that hold their members'. Throws HierarchyError.
+// the top in a group, errors and spheres that hold their members'. Level 0 is the mesh itself, its
+// polygons whole, when its triangles are the faces' fans (as written from a built hierarchy), else a
+// mesh of its triangles like the levels above. Throws HierarchyError.
 ClusterHierarchy hierarchyFromRecords(const PreparedMesh& prepared, const HierarchyRecords& records, const Settings& settings);
 
 }  // namespace conescope

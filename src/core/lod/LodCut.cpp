@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "core/MultiCones.h"
+
 namespace conescope {
 
 namespace {
@@ -30,8 +32,10 @@ void describeLevel(LodLevelStatistics& level, const LodLevel& source) {
 }
 
 // What the test does to the cut's clusters of one level from one eye, added to `view`: the
-// level's own decisions (measureEye) and the faces' facing, counted over the clusters in the cut.
-void cullCutOfLevel(const LodLevel& level, const std::vector<uint8_t>& inCut, const Eye& eye, CullTest test, LodCutView& view) {
+// level's own decisions (measureEye) and the faces' facing, counted over the clusters in the cut;
+// with `multi`, also its K cones' culling of the same clusters.
+void cullCutOfLevel(const LodLevel& level, const std::vector<uint8_t>& inCut, const Eye& eye, CullTest test, const SubGroupRecord* multi,
+                    LodCutView& view) {
     const EyeMeasurement measured = measureEye(level.prepared, level.clusters, eye, test);
     const Mesh& mesh = level.prepared.mesh();
     const std::vector<Facing> facing = classifyFaces(mesh, level.prepared.world, level.prepared.faces, eye);
@@ -54,6 +58,37 @@ void cullCutOfLevel(const LodLevel& level, const std::vector<uint8_t>& inCut, co
         ++view.clustersCulled;
         view.falseCulls += holdsFront[c];
     }
+    if (multi) {
+        const SubGroupCulling counted = countSubGroupCulling(*multi, facing, eye, inCut);
+        view.multiCones.trianglesCulled += counted.trianglesCulled;
+        view.multiCones.falseCulls += counted.falseCulls;
+    }
+}
+
+// Adds `part` (one view's or level's counts) to `total`, and sets both's efficiency.
+void addMultiCones(LodMultiConeCulling& total, LodMultiConeCulling& part) {
+    part.efficiency = cullEfficiency(part.trianglesCulled, part.backFacingTriangles);
+    total.trianglesCulled += part.trianglesCulled;
+    total.backFacingTriangles += part.backFacingTriangles;
+    total.falseCulls += part.falseCulls;
+    total.efficiency = cullEfficiency(total.trianglesCulled, total.backFacingTriangles);
+}
+
+// One level from every view with K cones per cluster; `progress` hears of every view and may cancel.
+LodMultiConeCulling cullLevelWithCones(const LodLevel& level, const SubGroupRecord& multi, const std::vector<Eye>& views,
+                                       const ProgressCallback& progress) {
+    LodMultiConeCulling total;
+    total.cones = multi.multi->conesPerCluster;
+    const Mesh& mesh = level.prepared.mesh();
+    for (size_t v = 0; v < views.size(); ++v) {
+        reportProgress(progress, double(v) / double(views.size()), "levels");
+        const Eye& eye = views[v];
+        const std::vector<Facing> facing = classifyFaces(mesh, level.prepared.world, level.prepared.faces, eye);
+        const SubGroupCulling counted = countSubGroupCulling(multi, facing, eye);
+        LodMultiConeCulling view{total.cones, counted.trianglesCulled, backFacingTriangles(mesh, facing), counted.falseCulls, 0.0};
+        addMultiCones(total, view);
+    }
+    return total;
 }
 
 }  // namespace
@@ -103,7 +138,7 @@ Mesh meshOfCut(const ClusterHierarchy& hierarchy, const std::vector<std::vector<
 }
 
 LodStatistics measureHierarchy(const ClusterHierarchy& hierarchy, const Settings& settings, const LodThreshold& threshold,
-                               const ProgressCallback& progress) {
+                               const ProgressCallback& progress, uint32_t conesPerCluster) {
     LodStatistics statistics;
     statistics.threshold = threshold;
     statistics.buildSeconds = hierarchy.buildSeconds;
@@ -111,13 +146,25 @@ LodStatistics measureHierarchy(const ClusterHierarchy& hierarchy, const Settings
     const CullTest test = displayedTest(settings);
     const std::vector<Eye> views = viewsFor(settings, hierarchy.levels.front().prepared.box);
     const size_t levelCount = hierarchy.levels.size();
+    // Each level's K sub-groups per cluster and their float record, when asked for.
+    std::vector<MultiCones> multis;
+    std::vector<SubGroupRecord> records;
+    multis.reserve(levelCount);
+    for (const LodLevel& level : hierarchy.levels) {
+        if (conesPerCluster == 0) break;
+        multis.push_back(computeMultiCones(level.prepared.mesh(), level.prepared.faces, level.clusters.bounds, conesPerCluster));
+        records.push_back(subGroupRecord(multis.back(), multis.back().cones, level.clusters.bounds.spheres));
+    }
     for (size_t l = 0; l < levelCount; ++l) {
         const LodLevel& level = hierarchy.levels[l];
         LodLevelStatistics& row = statistics.levels.emplace_back();
         row.level = l;
-        row.culling = measureCulling(cullingInput(level.prepared, level.clusters), views,
-                                     test, progressWithin(progress, 0.5 * double(l) / double(levelCount), 0.5 * double(l + 1) / double(levelCount), "levels"));
+        // The level's share of the first half: its one-cone run, then (when asked) its K cones.
+        const double begin = 0.5 * double(l) / double(levelCount), end = 0.5 * double(l + 1) / double(levelCount);
+        const double split = records.empty() ? end : 0.5 * (begin + end);
+        row.culling = measureCulling(cullingInput(level.prepared, level.clusters), views, test, progressWithin(progress, begin, split, "levels"));
         describeLevel(row, level);
+        if (!records.empty()) row.multiCones = cullLevelWithCones(level, records[l], views, progressWithin(progress, split, end));
     }
     LodCutStatistics& cut = statistics.cut;
     std::vector<uint8_t> used(levelCount, 0);
@@ -132,9 +179,14 @@ LodStatistics measureHierarchy(const ClusterHierarchy& hierarchy, const Settings
             view.clustersPerLevel[l] = size_t(std::count(drawn[l].begin(), drawn[l].end(), uint8_t(1)));
             if (view.clustersPerLevel[l] == 0) continue;
             used[l] = 1;
-            cullCutOfLevel(hierarchy.levels[l], drawn[l], views[v], test, view);
+            cullCutOfLevel(hierarchy.levels[l], drawn[l], views[v], test, records.empty() ? nullptr : &records[l], view);
         }
         view.efficiency = cullEfficiency(view.trianglesCulled, view.backFacingTriangles);
+        if (!records.empty()) {
+            view.multiCones.cones = cut.multiCones.cones = conesPerCluster;
+            view.multiCones.backFacingTriangles = view.backFacingTriangles;
+            addMultiCones(cut.multiCones, view.multiCones);
+        }
         cut.trianglesCulled += view.trianglesCulled;
         cut.backFacingTriangles += view.backFacingTriangles;
         cut.falseCulls += view.falseCulls;

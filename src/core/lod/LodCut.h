@@ -33,6 +33,14 @@ std::vector<std::vector<uint8_t>> cutFrom(const ClusterHierarchy& hierarchy, con
 // arrays "cluster_id" (numbered level after level) and "level".
 Mesh meshOfCut(const ClusterHierarchy& hierarchy, const std::vector<std::vector<uint8_t>>& drawn);
 
+// K cones per cluster (MultiCones.h: the float record, tested batched as the product does) over the
+// same views as the one-cone numbers beside it; cones 0 when not measured.
+struct LodMultiConeCulling {
+    uint32_t cones = 0;
+    size_t trianglesCulled = 0, backFacingTriangles = 0, falseCulls = 0;
+    double efficiency = 0.0;  // trianglesCulled / backFacingTriangles
+};
+
 // One level over the views: its size, how wide its cones are, and the displayed test's culling.
 struct LodLevelStatistics {
     size_t level = 0;
@@ -41,6 +49,7 @@ struct LodLevelStatistics {
     double maxHalfAngleDegrees = 0.0;
     double minError = 0.0, maxError = 0.0;  // own errors, world units
     CullTestStatistics culling;         // measureCulling of the level alone
+    LodMultiConeCulling multiCones;     // the level alone with K cones per cluster
 };
 
 // The cut from one eye: what it draws and what the test culls of it.
@@ -51,6 +60,7 @@ struct LodCutView {
     size_t clustersCulled = 0, trianglesCulled = 0, backFacingTriangles = 0, falseCulls = 0;
     std::vector<size_t> clustersPerLevel;
     double efficiency = 0.0;
+    LodMultiConeCulling multiCones;     // the cut's clusters with K cones each
 };
 
 struct LodCutStatistics {
@@ -59,6 +69,7 @@ struct LodCutStatistics {
     double meanTriangles = 0.0, meanClusters = 0.0;
     double efficiency = 0.0;       // culled / back-facing over all the views
     std::vector<size_t> levelsUsed;  // levels drawn from at least one view
+    LodMultiConeCulling multiCones;  // summed over the views
 };
 
 struct LodStatistics {
@@ -69,9 +80,10 @@ struct LodStatistics {
 };
 
 // Each level and the cut over the views of `settings` (its orbit or its one eye) with the displayed
-// cone and test. Cancellable between views.
+// cone and test, and with `conesPerCluster` cones per cluster when it is above 0. Cancellable
+// between views.
 LodStatistics measureHierarchy(const ClusterHierarchy& hierarchy, const Settings& settings, const LodThreshold& threshold,
-                               const ProgressCallback& progress = {});
+                               const ProgressCallback& progress = {}, uint32_t conesPerCluster = 0);
 
 // The whole job from a mesh, as `conescope-cli lod` runs it without a hierarchy file: prepareMesh,
 // buildClusterHierarchy, measureHierarchy. What batch --lod computes per mesh.
