@@ -162,24 +162,24 @@ void plotLevels(vtkChartXY* chart, const LodStatistics* statistics) {
         vtkPlot* measured = chart->AddPlot(vtkChart::BAR);
         measured->SetInputData(table, 0, 1);
         measured->SetColor(40, 110, 220, 255);
-        measured->SetLabel("efficiency, measured over the views");
+        measured->SetLabel("efficiency, measured");
         vtkPlot* expected = chart->AddPlot(vtkChart::LINE);
         expected->SetInputData(table, 0, 2);
         expected->SetColor(20, 50, 120, 255);
         expected->SetWidth(2.0);
         expected->GetPen()->SetLineType(vtkPen::DASH_LINE);
-        expected->SetLabel("efficiency the cone widths predict");
+        expected->SetLabel("efficiency, predicted by the cones");
         vtkPlot* coneless = chart->AddPlot(vtkChart::LINE);
         coneless->SetInputData(table, 0, 4);
         coneless->SetColor(90, 90, 90, 255);
         coneless->SetWidth(2.5);
         coneless->GetPen()->SetLineType(vtkPen::DASH_DOT_LINE);
-        coneless->SetLabel("share of clusters without a cone");
+        coneless->SetLabel("clusters without a cone (share)");
         vtkPlot* angle = chart->AddPlot(vtkChart::LINE);
         angle->SetInputData(table, 0, 3);
         angle->SetColor(230, 100, 20, 255);
         angle->SetWidth(3.0);
-        angle->SetLabel("mean half-angle of the cones (degrees, right axis)");
+        angle->SetLabel("mean cone half-angle (right axis)");
         if (auto* points = vtkPlotPoints::SafeDownCast(angle)) points->SetMarkerStyle(vtkPlotPoints::CIRCLE);
         // The angle on the right axis (bottom-right corner), in degrees.
         chart->SetPlotCorner(angle, 1);
