@@ -88,6 +88,7 @@ TEST(LodLesson, WordsQuoteTheNumbers) {
         EXPECT_TRUE(says(lesson, std::to_string(level->clusters) + " clusters")) << level->level;
     }
     EXPECT_TRUE(says(lesson, percent(statistics.cut.efficiency)));
+    EXPECT_TRUE(says(lesson, "drew " + std::to_string(std::lround(statistics.cut.meanTriangles)) + " triangles"));
     EXPECT_TRUE(says(lesson, "level " + std::to_string(lesson.coarse.level)));
     EXPECT_TRUE(says(lesson, std::to_string(statistics.levels.size()) + " levels"));
 }
@@ -101,6 +102,32 @@ TEST(LodLesson, SaysCoarseClustersCullLessWhereTheyDo) {
     EXPECT_TRUE(says(lesson, "the coarser clusters cull less"));
     EXPECT_FALSE(says(lesson, "culls no less"));
     EXPECT_FALSE(says(lesson, "are not wider"));
+}
+
+// Where the coarse level's remaining cones are narrower but more of its clusters have none (as on
+// CGAL's anchor), the lesson says so rather than that the cones widened; where the coarse level culls
+// no less, it does not claim it does.
+TEST(LodLesson, WordsFollowTheNumbersTheyQuote) {
+    LodStatistics statistics;
+    for (size_t l = 0; l < 2; ++l) {
+        LodLevelStatistics& level = statistics.levels.emplace_back();
+        level.level = l;
+        level.clusters = 10;
+        level.triangles = 1000 / (l + 1);
+        level.culling.views.resize(4);
+    }
+    LodLevelStatistics &fine = statistics.levels[0], &coarse = statistics.levels[1];
+    fine.meanHalfAngleDegrees = 54.0, coarse.meanHalfAngleDegrees = 46.0;
+    fine.culling.uncullableClusters = 5, coarse.culling.uncullableClusters = 8;
+    fine.culling.expectedEfficiency = 0.09, coarse.culling.expectedEfficiency = 0.04;
+    fine.culling.efficiency = 0.10, coarse.culling.efficiency = 0.04;
+    LodLesson lesson = makeLodLesson(statistics, "made up", 1);
+    EXPECT_TRUE(says(lesson, "The cones left are not wider here"));
+    EXPECT_TRUE(says(lesson, "as the widths of their cones predicted"));
+    coarse.culling.efficiency = 0.12;
+    lesson = makeLodLesson(statistics, "made up", 1);
+    EXPECT_TRUE(says(lesson, "here the coarser level culls no less"));
+    EXPECT_FALSE(says(lesson, "the coarser clusters cull less"));
 }
 
 TEST(LodLesson, RefusesLevelsItCannotCompare) {

@@ -43,14 +43,18 @@ std::string sizeStep(const LodLesson& lesson) {
 std::string spreadStep(const LodLesson& lesson) {
     const LodLessonLevel &fine = lesson.fine, &coarse = lesson.coarse;
     std::string text = "A larger patch of a curved surface bends more, so its face normals spread further over the Gauss "
-                       "sphere and the cone that holds them must open wider. ";
-    text += "The mean half-angle \u03b1 of the clusters that have a cone (weighted by triangles) is " + degrees(fine.meanHalfAngleDegrees) + " at level 0 and " +
-            degrees(coarse.meanHalfAngleDegrees) + " at " + levelName(coarse) + "; the widest cones open " +
-            degrees(fine.maxHalfAngleDegrees) + " and " + degrees(coarse.maxHalfAngleDegrees) + ". ";
-    if (!(coarse.meanHalfAngleDegrees > fine.meanHalfAngleDegrees))
-        text += "On this mesh the coarse cones are not wider: its coarse patches stay about as flat as the fine ones. ";
-    return text + percent(fine.uncullableShare) + " of level 0's clusters and " + percent(coarse.uncullableShare) + " of " +
-           levelName(coarse) + "'s have no cone narrower than a hemisphere: no eye can cull those.";
+                       "sphere and the cone that holds them must open wider, until no cone narrower than a hemisphere holds "
+                       "them and no eye can cull the cluster. ";
+    text += percent(fine.uncullableShare) + " of level 0's clusters and " + percent(coarse.uncullableShare) + " of " +
+            levelName(coarse) + "'s have no such cone. The mean half-angle \u03b1 of those that have one (weighted by "
+            "triangles) is " + degrees(fine.meanHalfAngleDegrees) + " at level 0 and " + degrees(coarse.meanHalfAngleDegrees) +
+            " at " + levelName(coarse) + "; the widest open " + degrees(fine.maxHalfAngleDegrees) + " and " +
+            degrees(coarse.maxHalfAngleDegrees) + ".";
+    const bool moreConeless = coarse.uncullableShare > fine.uncullableShare;
+    if (coarse.meanHalfAngleDegrees > fine.meanHalfAngleDegrees) return text;
+    if (moreConeless)
+        return text + " The cones left are not wider here: the widest ones were lost altogether, to clusters with no cone.";
+    return text + " On this mesh the coarse cones are not wider: its coarse patches stay about as flat as the fine ones.";
 }
 
 std::string cullStep(const LodLesson& lesson) {
@@ -59,15 +63,17 @@ std::string cullStep(const LodLesson& lesson) {
     std::string text = "Seen from far away, a cone of half-angle \u03b1 is culled from (1 \u2212 sin \u03b1)/2 of all directions: " +
                        share(fine.meanHalfAngleDegrees) + " at " + degrees(fine.meanHalfAngleDegrees) + ", " +
                        share(coarse.meanHalfAngleDegrees) + " at " + degrees(coarse.meanHalfAngleDegrees) + ". " +
-                       "Summed over the clusters, \u03a3 T(1 \u2212 sin \u03b1)/2 / T, level 0's cones cull " +
+                       "Summed over the clusters, \u03a3 T(1 \u2212 sin \u03b1)/2 / T (a cluster without a cone adds nothing), level 0's "
+                       "cones cull " +
                        percent(fine.expectedCulledShare) + " of all triangles from a random direction and " + levelName(coarse) +
                        "'s " + percent(coarse.expectedCulledShare) + "; half the triangles face away, so that is an expected " +
                        "efficiency of " + percent(fine.expectedEfficiency) + " against " + percent(coarse.expectedEfficiency) + ". ";
     text += "Measured from the " + count(fine.views, "view", "views") + ", the test culled " + percent(fine.efficiency) +
             " of level 0's back faces and " + percent(coarse.efficiency) + " of " + levelName(coarse) + "'s";
-    if (coarse.efficiency < fine.efficiency)
-        return text + ": the coarser clusters cull less, as their wider cones said they would.";
-    return text + ": here the coarser level culls no less.";
+    if (!(coarse.efficiency < fine.efficiency)) return text + ": here the coarser level culls no less.";
+    if (coarse.expectedEfficiency < fine.expectedEfficiency)
+        return text + ": the coarser clusters cull less, as the widths of their cones predicted.";
+    return text + ": the coarser clusters cull less, although the widths of their cones predicted no loss.";
 }
 
 std::string engineStep(const LodLesson& lesson) {
@@ -77,7 +83,7 @@ std::string engineStep(const LodLesson& lesson) {
                                                                                                 : (one ? " pixel" : " pixels"));
     std::string text = "An engine does not draw one level: from each eye it draws a cut, the coarsest clusters whose error "
                        "looks smaller than a threshold there, and only the cut is culled. From the same views with an error of at "
-                       "most " + threshold + ", the cut drew " + number(lesson.cutMeanTriangles) + " triangles on average (level 0 has " +
+                       "most " + threshold + ", the cut drew " + std::to_string(std::lround(lesson.cutMeanTriangles)) + " triangles on average (level 0 has " +
                        std::to_string(fine.triangles) + "), from " + levelList(lesson.cutLevels) + ", and the cone test culled " +
                        percent(lesson.cutEfficiency) + " of its back faces, against " + percent(fine.efficiency) + " of level 0's. ";
     if (lesson.cutEfficiency < fine.efficiency)
