@@ -90,8 +90,7 @@ std::string engineStep(const LodLesson& lesson) {
         return text + "The hierarchy saves triangles by drawing coarse clusters far away, and the cones lose the most exactly "
                       "there: the farther the eye, the coarser the cut and the less a normal cone can skip. Engines that store "
                       "no cone at all lose all of it.";
-    return text + "Here the cut keeps level 0's culling: it draws mostly fine clusters from these views. Engines that store no "
-                  "cone at all lose all of it.";
+    return text + "From these views the cut culls no less than level 0. Engines that store no cone at all lose all of it.";
 }
 
 }  // namespace
