@@ -55,6 +55,18 @@ void LodLessonView::showLesson(const LodLesson* lesson) {
     next_->setEnabled(false);
 }
 
+void LodLessonView::showStatistics(const LodStatistics* statistics, const std::string& meshName) {
+    if (statistics && statistics->levels.size() >= 2) {
+        const LodLesson lesson = makeLodLesson(*statistics, meshName);
+        showLesson(&lesson);
+        return;
+    }
+    showLesson(nullptr);
+    if (statistics)
+        text_->setPlainText(tr("This hierarchy has a single level: simplification stopped before making a coarser one, so there "
+                               "is nothing to compare level 0 with."));
+}
+
 bool LodLessonView::showStep(int step) {
     if (!lesson_ || step < 1 || step > int(lesson_->steps.size())) return false;
     step_ = step;

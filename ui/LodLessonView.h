@@ -5,6 +5,7 @@
 #pragma once
 
 #include <optional>
+#include <string>
 
 #include <QWidget>
 
@@ -23,6 +24,9 @@ public:
 
     // The lesson to show from its first step; null: what to do to have one.
     void showLesson(const LodLesson* lesson);
+    // The lesson of a hierarchy's statistics (makeLodLesson, level 0 beside its default coarser level)
+    // from its first step; null, or a single level, says what it needs instead.
+    void showStatistics(const LodStatistics* statistics, const std::string& meshName);
     // Step 1 to kLodLessonStepCount; false (and nothing changes) outside them or without a lesson.
     bool showStep(int step);
     int step() const { return step_; }

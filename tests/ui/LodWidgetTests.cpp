@@ -103,6 +103,17 @@ private slots:
         view.showLesson(nullptr);
         QCOMPARE(view.step(), 0);
         QVERIFY(view.text().contains(QStringLiteral("Build the LOD hierarchy")));
+        // From the statistics directly, as the window gives them: the same lesson; one level is not enough.
+        view.showStatistics(&elephantLevels(), "elephant.off");
+        QCOMPARE(view.step(), 1);
+        QCOMPARE(view.text(), QString::fromStdString(lesson.steps[0].text));
+        LodStatistics single;
+        single.levels.push_back(elephantLevels().levels.front());
+        view.showStatistics(&single, "elephant.off");
+        QCOMPARE(view.step(), 0);
+        QVERIFY(view.text().contains(QStringLiteral("single level")));
+        view.showStatistics(nullptr, {});
+        QVERIFY(view.text().contains(QStringLiteral("Build the LOD hierarchy")));
     }
 };
 
