@@ -37,19 +37,29 @@ const ExampleButton exampleButtons[] = {
 
 }  // namespace
 
-LessonView::LessonView(QWidget* parent) : QWidget(parent) {
-    setObjectName(QStringLiteral("lessonView"));
-    title_ = new QLabel(this);
-    title_->setWordWrap(true);
-    QFont bold = title_->font();
+QLabel* makeLessonTitle(QWidget* parent) {
+    auto* title = new QLabel(parent);
+    title->setWordWrap(true);
+    QFont bold = title->font();
     bold.setBold(true);
     bold.setPointSizeF(bold.pointSizeF() * 1.15);
-    title_->setFont(bold);
+    title->setFont(bold);
+    return title;
+}
+
+QTextBrowser* makeLessonText(QWidget* parent) {
+    auto* text = new QTextBrowser(parent);
+    text->setOpenLinks(false);
+    text->setMinimumHeight(60);
+    return text;
+}
+
+LessonView::LessonView(QWidget* parent) : QWidget(parent) {
+    setObjectName(QStringLiteral("lessonView"));
+    title_ = makeLessonTitle(this);
     progress_ = new QLabel(this);
-    text_ = new QTextBrowser(this);
+    text_ = makeLessonText(this);
     text_->setObjectName(QStringLiteral("lessonText"));
-    text_->setOpenLinks(false);
-    text_->setMinimumHeight(60);
     // Tool buttons: as wide as their words, so the dock leaves the 3D view its width on a small screen.
     const auto button = [this](const QString& text) {
         auto* made = new QToolButton(this);

@@ -20,6 +20,10 @@ namespace conescope {
 
 class Session;
 
+// What the lesson docks share: a bold, slightly larger title that wraps, and a text pane that follows no link.
+QLabel* makeLessonTitle(QWidget* parent);
+QTextBrowser* makeLessonText(QWidget* parent);
+
 class LessonView : public QWidget {
     Q_OBJECT
 public:

@@ -29,6 +29,12 @@ PlotsView::PlotsView(QWidget* parent) : QTabWidget(parent) {
                          tr("Clusters per cone half-angle \u03b1: narrow cones are culled from more places."),
                          tr("How many clusters have a cone of each half-angle \u03b1. Narrow cones are culled from more "
                             "places; a cluster whose normals need 90\u00b0 or more can never be culled."));
+    levels_ = addPlot(tr("Levels"), "No hierarchy built", QString(),
+                      tr("Per level of the LOD hierarchy (0: the finest): the share of the back faces the test culled over the "
+                         "views (bars), the share the cones' widths promise, \u03a3 T(1 \u2212 sin \u03b1) / T (dashed), and the "
+                         "triangle-weighted mean cone half-angle \u03b1 on the right axis. Coarser clusters cover more surface, "
+                         "their normals spread wider and their cones cull from fewer places."));
+    showLevels(nullptr);
     connect(this, &QTabWidget::currentChanged, this, [this]() { render(); });
     // A click on the efficiency plot moves the eye to that view; a drag still pans the chart. The
     // chart takes the press, so the clicks are watched passively.
@@ -83,6 +89,7 @@ PlotsView::Plot PlotsView::addPlot(const QString& tab, const char* title, const 
     layout->setSpacing(2);
     layout->addWidget(plot.widget, 1);
     layout->addWidget(words);
+    plot.caption = words;
     plot.context = vtkSmartPointer<vtkContextView>::New();
     plot.context->SetRenderWindow(plot.widget->renderWindow());
     plot.context->SetInteractor(plot.widget->interactor());
@@ -105,9 +112,23 @@ void PlotsView::showHalfAngles(const std::vector<ClusterStatistics>& clusters) {
     render(histogram_);
 }
 
+void PlotsView::showLevels(const LodStatistics* statistics) {
+    plotLevels(levels_.chart, statistics);
+    const bool shown = statistics && !statistics->levels.empty();
+    levels_.caption->setText(shown ? tr("Per level (0: the finest): the share of the back faces culled, what the cones' widths "
+                                        "predict, the share of clusters without a cone, and the mean half-angle of those with one.")
+                                   : tr("No hierarchy built: build the LOD hierarchy to see culling level by level."));
+    render(levels_);
+}
+
+vtkChartXY* PlotsView::levelsChart() const { return levels_.chart; }
+
+QString PlotsView::levelsCaption() const { return levels_.caption->text(); }
+
 void PlotsView::render() {
     render(efficiency_);
     render(histogram_);
+    render(levels_);
 }
 
 void PlotsView::render(const Plot& plot) {

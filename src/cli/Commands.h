@@ -64,6 +64,8 @@ struct LodCommandOptions {
     std::string hierarchy;             // a hierarchy file to read instead of building one
     std::string writeHierarchy;        // where to write the hierarchy measured
     std::string writeLevels;           // a folder for each level and the cut as meshes with cluster_id
+    std::string writeLesson;           // where to write the lesson on why coarse clusters cull less (Markdown)
+    long lessonLevel = -1;             // the level it compares with level 0 (-1: lodLessonCoarseLevel)
     bool perView = true;
     std::string format;                // "json", "csv", "text" or empty: as for stats
     std::string output;                // empty = stdout

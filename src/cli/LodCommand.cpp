@@ -6,6 +6,7 @@
 #include "cli/CommandSupport.h"
 #include "cli/Commands.h"
 #include "core/lod/LodCut.h"
+#include "core/lod/LodLesson.h"
 #include "io/ClusterFiles.h"
 #include "io/ClusterIdFile.h"
 #include "io/MeshWriter.h"
@@ -34,6 +35,16 @@ void writeLevelMeshes(const ClusterHierarchy& hierarchy, const Settings& setting
     writePolyData(meshOfCut(hierarchy, cutFrom(hierarchy, eye.position, options.threshold)),
                   (std::filesystem::path(options.writeLevels) / "cut.vtp").string());
     note(options.quiet, "wrote " + std::to_string(hierarchy.levels.size()) + " levels and the cut to " + options.writeLevels);
+}
+
+// The lesson on why coarse clusters cull less, from this run's levels, as Markdown.
+void writeLesson(const LodStatistics& statistics, const std::string& meshName, const LodCommandOptions& options) {
+    const LodLesson lesson = options.lessonLevel < 0 ? makeLodLesson(statistics, meshName)
+                                                     : makeLodLesson(statistics, meshName, size_t(options.lessonLevel));
+    std::string text = "# Why coarse clusters cull less: " + meshName + ", level 0 and level " + std::to_string(lesson.coarse.level) + "\n";
+    for (const LessonStep& step : lesson.steps) text += "\n## " + step.title + "\n\n" + step.text + "\n";
+    writeText(options.writeLesson, text);
+    note(options.quiet, "wrote " + options.writeLesson);
 }
 
 }  // namespace
@@ -70,6 +81,7 @@ void runLod(const LodCommandOptions& options) {
     }
     if (!options.writeLevels.empty()) writeLevelMeshes(hierarchy, settings, options);
     const LodStatistics statistics = measureHierarchy(hierarchy, settings, options.threshold, progressWithin(progress, 0.6, 1.0), options.cones);
+    if (!options.writeLesson.empty()) writeLesson(statistics, prepared.name, options);
     std::ostringstream text;
     if (format == "csv")
         writeLodCsv(statistics, text);

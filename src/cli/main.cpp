@@ -163,6 +163,10 @@ CLI::App* addLodCommand(CLI::App& app, LodCommandOptions& lod, const std::string
         ->check(CLI::IsMember({2, 4, 8}));
     command->add_option("--hierarchy", lod.hierarchy, "Read the hierarchy from this file (conescope-cluster-lod JSON or its binary form, made for MESH) instead of building one");
     command->add_option("--write-levels", lod.writeLevels, "Write each level (level-NN.vtp) and the cut from the first view (cut.vtp) to this folder, with cluster_id and level per face");
+    command->add_option("--write-lesson", lod.writeLesson,
+                        "Write the lesson on why coarse clusters cull less, with this mesh's numbers, to this Markdown file");
+    command->add_option("--lesson-level", lod.lessonLevel,
+                        "The level the lesson compares with level 0 (default: the coarsest with at least 8 clusters)");
     command->add_option("--write-hierarchy", lod.writeHierarchy, "Write the hierarchy measured to this file (conescope-cluster-lod: meshoptimizer's meshlet arrays of every level, clusters and groups; binary for .lod or .bin, else JSON)");
     command->add_flag_callback("--no-per-view", [&lod] { lod.perView = false; }, "Leave the cut of each view out of the JSON");
     command->add_option("--format", lod.format, "Output format (default: from the output's extension; on a terminal text, else json)")

@@ -5,6 +5,7 @@
 #include <string>
 
 #include <vtkAxis.h>
+#include <vtkChartLegend.h>
 #include <vtkChartXY.h>
 #include <vtkDoubleArray.h>
 #include <vtkNew.h>
@@ -128,6 +129,76 @@ void plotHalfAngleHistogram(vtkChartXY* chart, const std::vector<ClusterStatisti
     fixRange(chart->GetAxis(vtkAxis::BOTTOM), 0.0, 90.0 + histogram.binDegrees);
     fixRange(chart->GetAxis(vtkAxis::LEFT), 0.0, std::max(1.0, largest * 1.05));
     chart->SetShowLegend(true);
+    chart->Modified();
+}
+
+vtkSmartPointer<vtkTable> levelTable(const LodStatistics& statistics) {
+    auto table = vtkSmartPointer<vtkTable>::New();
+    for (const char* name : {"level", "efficiency", "expected efficiency", "mean half-angle", "without a cone"}) {
+        vtkNew<vtkDoubleArray> column;
+        column->SetName(name);
+        table->AddColumn(column);
+    }
+    table->SetNumberOfRows(vtkIdType(statistics.levels.size()));
+    for (size_t row = 0; row < statistics.levels.size(); ++row) {
+        const LodLevelStatistics& level = statistics.levels[row];
+        // A level whose clusters all lack a cone has no half-angle to show (its mean reads 0).
+        const bool anyCone = level.culling.uncullableClusters < level.clusters;
+        const double values[] = {double(level.level), level.culling.efficiency, level.culling.expectedEfficiency,
+                                 anyCone ? level.meanHalfAngleDegrees : std::nan(""),
+                                 uncullableShare(level.culling.uncullableClusters, level.clusters)};
+        for (vtkIdType column = 0; column < 5; ++column) table->SetValue(vtkIdType(row), column, values[column]);
+    }
+    return table;
+}
+
+void plotLevels(vtkChartXY* chart, const LodStatistics* statistics) {
+    chart->ClearPlots();
+    const size_t levels = statistics ? statistics->levels.size() : 0;
+    chart->SetTitle(levels > 0 ? "Culling by LOD level: efficiency (left axis), mean cone half-angle (right axis)"
+                               : "No hierarchy built");
+    if (levels > 0) {
+        const vtkSmartPointer<vtkTable> table = levelTable(*statistics);
+        vtkPlot* measured = chart->AddPlot(vtkChart::BAR);
+        measured->SetInputData(table, 0, 1);
+        measured->SetColor(40, 110, 220, 255);
+        measured->SetLabel("efficiency, measured");
+        vtkPlot* expected = chart->AddPlot(vtkChart::LINE);
+        expected->SetInputData(table, 0, 2);
+        expected->SetColor(20, 50, 120, 255);
+        expected->SetWidth(2.0);
+        expected->GetPen()->SetLineType(vtkPen::DASH_LINE);
+        expected->SetLabel("efficiency, predicted by the cones");
+        vtkPlot* coneless = chart->AddPlot(vtkChart::LINE);
+        coneless->SetInputData(table, 0, 4);
+        coneless->SetColor(90, 90, 90, 255);
+        coneless->SetWidth(2.5);
+        coneless->GetPen()->SetLineType(vtkPen::DASH_DOT_LINE);
+        coneless->SetLabel("clusters without a cone (share)");
+        vtkPlot* angle = chart->AddPlot(vtkChart::LINE);
+        angle->SetInputData(table, 0, 3);
+        angle->SetColor(230, 100, 20, 255);
+        angle->SetWidth(3.0);
+        angle->SetLabel("mean cone half-angle (right axis)");
+        if (auto* points = vtkPlotPoints::SafeDownCast(angle)) points->SetMarkerStyle(vtkPlotPoints::CIRCLE);
+        // The angle on the right axis (bottom-right corner), in degrees.
+        chart->SetPlotCorner(angle, 1);
+    }
+    setAxes(chart, "level (0 = finest)", "efficiency");
+    chart->GetAxis(vtkAxis::RIGHT)->SetTitle("mean half-angle (degrees)");
+    fixRange(chart->GetAxis(vtkAxis::LEFT), 0.0, 1.0);
+    fixRange(chart->GetAxis(vtkAxis::RIGHT), 0.0, 90.0);
+    vtkAxis* bottom = chart->GetAxis(vtkAxis::BOTTOM);
+    fixRange(bottom, -0.5, std::max(0.5, double(levels) - 0.5));
+    // One tick per level, at the whole numbers.
+    vtkNew<vtkDoubleArray> ticks;
+    for (size_t level = 0; level < levels; ++level) ticks->InsertNextValue(double(level));
+    bottom->SetCustomTickPositions(levels > 0 ? ticks.GetPointer() : nullptr);
+    chart->SetBarWidthFraction(0.6f);
+    chart->SetShowLegend(levels > 0);
+    // Top left: the bars stay low there and the rising lines reach the top on the right.
+    chart->GetLegend()->SetHorizontalAlignment(vtkChartLegend::LEFT);
+    chart->GetLegend()->SetVerticalAlignment(vtkChartLegend::TOP);
     chart->Modified();
 }
 

@@ -1,14 +1,18 @@
 // Charts of cull statistics for a vtkChartXY (in a vtkContextView): efficiency per view along the
-// orbit, and the histogram of cone half-angles. The numbers come from the core's statistics rows;
-// the charts only bin and draw them.
+// orbit, the histogram of cone half-angles, and culling level by level of an LOD hierarchy. The
+// numbers come from the core's statistics rows; the charts only bin and draw them.
 #pragma once
 
 #include <cstddef>
 #include <vector>
 
+#include <vtkSmartPointer.h>
+
 #include "core/Statistics.h"
+#include "core/lod/LodCut.h"
 
 class vtkChartXY;
+class vtkTable;
 
 namespace conescope {
 
@@ -31,5 +35,15 @@ void plotEfficiencyPerView(vtkChartXY* chart, const std::vector<ViewStatistics>&
 // Replaces the chart's plots: bars of halfAngleHistogram at the bin centres, and one bar for the
 // uncullable clusters past 90 degrees in another colour. Axes: half-angle (degrees), clusters.
 void plotHalfAngleHistogram(vtkChartXY* chart, const std::vector<ClusterStatistics>& clusters, double binDegrees = 5.0);
+
+// One row per level of `statistics`, in level order: "level", "efficiency" (measured over the views),
+// "expected efficiency" (sum T (1 - sin alpha) / T), "mean half-angle" (degrees, triangle-weighted over
+// the clusters with a cone; NaN when none has one) and "without a cone" (the share of clusters).
+vtkSmartPointer<vtkTable> levelTable(const LodStatistics& statistics);
+
+// Replaces the chart's plots: per level, the measured efficiency as bars, the expected one and the
+// share of clusters without a cone as lines on the left axis [0, 1], the mean cone half-angle as a
+// line on the right axis [0, 90] degrees. Null: no plots, and a title saying no hierarchy is built.
+void plotLevels(vtkChartXY* chart, const LodStatistics* statistics);
 
 }  // namespace conescope

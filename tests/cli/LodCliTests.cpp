@@ -106,6 +106,32 @@ TEST(CliLod, LevelMeshesReadBackWithTheirClusters) {
     EXPECT_EQ(cut["clusters"], lod["cut"]["views"][0]["clusters"]);
 }
 
+// The lesson on why coarse clusters cull less quotes the run's own levels, as the JSON has them.
+TEST(CliLod, LessonQuotesTheRunsLevels) {
+    clitest::ScratchDirectory scratch;
+    const std::string lessonFile = scratch.file("lesson.md");
+    const nlohmann::json lod = runLodJson({dataset("elephant.off"), "--views", "16", "--write-lesson", lessonFile, "--lesson-level", "2"});
+    const std::string lesson = clitest::readTextFile(lessonFile);
+    const auto percent = [](double share) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%.1f%%", 100.0 * share);
+        return std::string(text);
+    };
+    EXPECT_NE(lesson.find("level 0 and level 2"), std::string::npos) << lesson;
+    for (size_t l : {0, 2}) {
+        const nlohmann::json& level = lod["levels"][l];
+        EXPECT_NE(lesson.find(percent(level["efficiency"].get<double>())), std::string::npos) << l << lesson;
+        EXPECT_NE(lesson.find(percent(level["expected_efficiency"].get<double>())), std::string::npos) << l << lesson;
+        EXPECT_NE(lesson.find(std::to_string(level["triangles"].get<size_t>()) + " triangles"), std::string::npos) << l << lesson;
+    }
+    EXPECT_NE(lesson.find(percent(lod["cut"]["efficiency"].get<double>())), std::string::npos) << lesson;
+    // A level the hierarchy does not have is refused, naming it.
+    const CliRun bad = runCli({"lod", "--quiet", dataset("torus.off"), "--views", "4", "--write-lesson", scratch.file("bad.md"),
+                               "--lesson-level", "99"});
+    EXPECT_NE(bad.exitCode, 0);
+    EXPECT_NE(bad.err.find("level 99"), std::string::npos) << bad.err;
+}
+
 TEST(CliLod, BadThresholdsAreUsageErrors) {
     for (const std::vector<std::string>& bad : {std::vector<std::string>{"--threshold", "-1"}, {"--fov", "180"}, {"--screen-height", "0"},
                                                  {"--group-size", "1"}, {"--cones", "3"}}) {
