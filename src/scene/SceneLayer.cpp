@@ -133,6 +133,8 @@ std::vector<Rgb> glyphLegendColours(FaceColoring coloring) {
     if (coloring == FaceColoring::CullDecision || coloring == FaceColoring::Loss || coloring == FaceColoring::Comparison)
         return {SceneColours::culled, SceneColours::missedCull, SceneColours::drawn};
     if (coloring == FaceColoring::CullFraction || coloring == FaceColoring::OracleFraction) return fractionLegendColours();
+    if (coloring == FaceColoring::LodCut) return {SceneColours::cutDrawn, SceneColours::cutCoarser, SceneColours::cutFiner};
+    if (coloring == FaceColoring::LodLevel) return {lodLevelColour(0), lodLevelColour(1), lodLevelColour(2), lodLevelColour(3)};
     return clusterLegendColours();
 }
 

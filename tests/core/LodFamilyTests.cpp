@@ -78,6 +78,17 @@ TEST_F(LodFamilyTest, CutAsOneLevelCullsAsTheCut) {
             EXPECT_EQ(measured.view().trianglesCulled, statistics.cut.views[0].trianglesCulled);
             EXPECT_EQ(measured.view().backFacingTriangles, statistics.cut.views[0].backFacingTriangles);
             if (threshold == 0.0) EXPECT_EQ(origin.size(), hierarchy_->levels[0].place.size());
+            // The classes say what the cut draws: 0 exactly for its clusters; above a drawn cluster a finer
+            // level is drawn, below it a coarser one.
+            const std::vector<std::vector<uint8_t>> classes = cutClassesFrom(*hierarchy_, eye, rule);
+            for (size_t l = 0; l < drawn.size(); ++l)
+                for (uint32_t c = 0; c < drawn[l].size(); ++c) {
+                    EXPECT_EQ(classes[l][c] == 0, drawn[l][c] == 1);
+                    if (!drawn[l][c]) continue;
+                    const LodFamily family = lodFamilyOf(*hierarchy_, {l, c});
+                    for (uint32_t parent : family.parents) EXPECT_EQ(classes[l + 1][parent], 2);
+                    for (uint32_t child : family.children) EXPECT_EQ(classes[l - 1][child], 1);
+                }
         }
 }
 

@@ -33,6 +33,18 @@ LodFamily lodFamilyOf(const ClusterHierarchy& hierarchy, LodClusterId id) {
     return family;
 }
 
+std::vector<std::vector<uint8_t>> cutClassesFrom(const ClusterHierarchy& hierarchy, const glm::dvec3& eye, const LodThreshold& threshold) {
+    const std::vector<std::vector<uint8_t>> drawn = cutFrom(hierarchy, eye, threshold);
+    std::vector<std::vector<uint8_t>> classes(drawn.size());
+    for (size_t l = 0; l < drawn.size(); ++l)
+        for (size_t c = 0; c < drawn[l].size(); ++c) {
+            const LodCluster& place = hierarchy.levels[l].place[c];
+            const bool coarser = projectedError(place.parentError, place.parentSphere, eye, threshold) <= threshold.value;
+            classes[l].push_back(drawn[l][c] ? 0 : coarser ? 1 : 2);
+        }
+    return classes;
+}
+
 LodLevel levelOfCut(const ClusterHierarchy& hierarchy, const std::vector<std::vector<uint8_t>>& drawn, const Settings& settings,
                     std::vector<LodClusterId>& origin) {
     if (hierarchy.levels.empty() || drawn.size() != hierarchy.levels.size()) throw std::invalid_argument("levelOfCut: one flag list per level expected");

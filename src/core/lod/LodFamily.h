@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "ClusterHierarchy.h"
+#include "LodCut.h"
 
 namespace conescope {
 
@@ -26,6 +27,11 @@ struct LodFamily {
     std::vector<uint32_t> groupMates, parents, children;
 };
 LodFamily lodFamilyOf(const ClusterHierarchy& hierarchy, LodClusterId id);
+
+// Per level, per cluster, where the cut from `eye` stands to it: 0 it draws the cluster (cutFrom's
+// rule), 1 a coarser level is drawn there (its group's error is within the threshold), 2 a finer one
+// (its own error is not). What a viewer colours a level by.
+std::vector<std::vector<uint8_t>> cutClassesFrom(const ClusterHierarchy& hierarchy, const glm::dvec3& eye, const LodThreshold& threshold);
 
 // The clusters a cut draws (cutFrom's per level flags) as one level over level 0's positions: every
 // drawn face (fanned into triangles) with its cluster, the clusters numbered in order (level after
