@@ -68,9 +68,13 @@ LodPanel::LodPanel(QWidget* parent) : QWidget(parent) {
     coloring_->setToolTip(tr("Colour the clusters by their level, their group, or whether the cut from the eye draws them (or a coarser "
                              "or finer level there); decision: as the test decides."));
     form->addRow(tr("Colour by"), coloring_);
+    export_ = new QPushButton(tr("Export LOD statistics..."), this);
+    export_->setToolTip(tr("The levels and the cut from the cull eye as conescope-cli lod --eye writes them (JSON, or CSV by the extension)."));
+    form->addRow(export_);
     showHierarchy(nullptr, kLodNone, FaceColoring::CullDecision, false);
 
     connect(build_, &QPushButton::clicked, this, &LodPanel::buildRequested);
+    connect(export_, &QPushButton::clicked, this, &LodPanel::exportRequested);
     connect(level_, qOverload<int>(&QComboBox::activated), this, [this](int index) { emit levelChosen(level_->itemData(index).toInt()); });
     connect(coloring_, qOverload<int>(&QComboBox::activated), this,
             [this](int index) { emit coloringChosen(FaceColoring(coloring_->itemData(index).toInt())); });
@@ -113,6 +117,7 @@ void LodPanel::showHierarchy(const ClusterHierarchy* hierarchy, int shown, FaceC
     }
     level_->setEnabled(hierarchy != nullptr);
     coloring_->setEnabled(hierarchy != nullptr);
+    export_->setEnabled(hierarchy != nullptr);
     {
         const QSignalBlocker blocker(coloring_);
         coloring_->setCurrentIndex(std::max(0, coloring_->findData(int(coloring))));

@@ -32,6 +32,7 @@ public:
 
 signals:
     void buildRequested();
+    void exportRequested();
     void levelChosen(int level);  // kLodNone, kLodCut or a level
     void thresholdChanged(const conescope::LodThreshold& threshold);
     void coloringChosen(conescope::FaceColoring coloring);
@@ -40,6 +41,7 @@ private:
     void showHierarchy(const ClusterHierarchy* hierarchy, int shown, FaceColoring coloring, bool meshLoaded);
 
     QPushButton* build_ = nullptr;
+    QPushButton* export_ = nullptr;
     QLabel* summary_ = nullptr;
     QComboBox* level_ = nullptr;
     QComboBox* coloring_ = nullptr;

@@ -8,6 +8,7 @@
 #include <QDockWidget>
 #include <QDragEnterEvent>
 #include <QDropEvent>
+#include <QFileDialog>
 #include <QFileInfo>
 #include <QGuiApplication>
 #include <QScreen>
@@ -214,6 +215,10 @@ void MainWindow::connectControls() {
         return {};
     });
     connect(lodPanel_, &LodPanel::buildRequested, &session_, &Session::buildLodHierarchy);
+    connect(lodPanel_, &LodPanel::exportRequested, this, [this]() {
+        const QString path = QFileDialog::getSaveFileName(this, tr("Export LOD statistics"), QString(), tr("JSON (*.json);;CSV (*.csv)"));
+        if (!path.isEmpty()) session_.exportLodStatistics(path, statisticsFormatOf(path.toStdString()));
+    });
     connect(lodPanel_, &LodPanel::levelChosen, &session_, &Session::showLodLevel);
     connect(lodPanel_, &LodPanel::thresholdChanged, &session_, &Session::setLodThreshold);
     connect(lodPanel_, &LodPanel::coloringChosen, &session_, &Session::setFaceColoring);

@@ -187,6 +187,9 @@ public:
     void setLodThreshold(const LodThreshold& threshold);
     // A cluster of the LOD scene shown (-1: none).
     void pickLodCluster(int cluster);
+    // The LOD statistics shown (lodStatistics) as `conescope-cli lod --eye` writes them for the cull eye
+    // and threshold; false (and errorOccurred) without a hierarchy or when it cannot be written.
+    bool exportLodStatistics(const QString& path, StatisticsFormat format);
     const ClusterHierarchy* lodHierarchy() const;
     // Each level and the cut from the cull eye with the shown settings and threshold; null without a
     // hierarchy or a measured eye.

@@ -130,6 +130,21 @@ void Session::pickLodCluster(int cluster) {
     emit lodChanged(nullptr);
 }
 
+bool Session::exportLodStatistics(const QString& path, StatisticsFormat format) {
+    if (!lod_->statistics) {
+        emit errorOccurred(tr("Cannot export the LOD statistics"), tr("Build the LOD hierarchy first (LOD hierarchy dock)."));
+        return false;
+    }
+    try {
+        conescope::exportLodStatistics(*lod_->statistics, exportSettings(shown_.settings, eyePosition_), path.toStdString(), format);
+    } catch (const std::exception& error) {
+        emit errorOccurred(tr("Cannot export the LOD statistics"), QString::fromStdString(error.what()));
+        return false;
+    }
+    emit notice(tr("Wrote %1").arg(path), 6000);
+    return true;
+}
+
 const ClusterHierarchy* Session::lodHierarchy() const { return lod_->hierarchy.get(); }
 const LodStatistics* Session::lodStatistics() const { return lod_->statistics ? &*lod_->statistics : nullptr; }
 const LodThreshold& Session::lodThreshold() const { return lod_->threshold; }

@@ -108,6 +108,13 @@ private slots:
             QCOMPARE(level["mean_half_angle_deg"].get<double>(), shown->levels[l].meanHalfAngleDegrees);
             QCOMPARE(rows[int(l)], StatisticsPanel::lodLevelLine(shown->levels[l]));
         }
+        // The export is the CLI's document for that eye and threshold (only the build time differs).
+        const QString exported = temporary_.filePath(QStringLiteral("window-lod.json"));
+        QVERIFY(session().exportLodStatistics(exported, StatisticsFormat::Json));
+        nlohmann::json fromWindow = readJsonFile(exported), fromCli = cli;
+        fromWindow.erase("build_seconds");
+        fromCli.erase("build_seconds");
+        QVERIFY2(fromWindow == fromCli, (fromWindow.dump(1) + "\n---\n" + fromCli.dump(1)).substr(0, 3000).c_str());
         // The picture: the cut's scene draws the cut's clusters and culls what the numbers count.
         const LodLevel* drawn = session().lodLevelOnShow();
         QVERIFY(drawn && session().lodScene());
