@@ -115,9 +115,10 @@ vtkLookupTable* ClusterTables::forGlyphs(FaceColoring coloring) const {
     case FaceColoring::Comparison: return decision;
     case FaceColoring::CullFraction: return cullFraction;
     case FaceColoring::OracleFraction: return oracleFraction;
-    case FaceColoring::LodLevel: return lodLevel;
-    case FaceColoring::LodGroup: return lodGroup;
-    case FaceColoring::LodCut: return lodCut;
+    // Without a LOD level or cut the clusters keep their palette.
+    case FaceColoring::LodLevel: return hasLod_ ? lodLevel : palette;
+    case FaceColoring::LodGroup: return hasLod_ ? lodGroup : palette;
+    case FaceColoring::LodCut: return hasLod_ ? lodCut : palette;
     case FaceColoring::Cluster:
     case FaceColoring::FaceFacing: return palette;
     }

@@ -51,7 +51,7 @@ public:
     const std::array<size_t, 3>& lodCutCounts() const { return lodCutCounts_; }
 
     // The table the per-cluster glyphs are coloured with: the decisions in decision and loss mode,
-    // the fraction in fraction modes, else the palette.
+    // the fraction in fraction modes, the LOD tables in LOD modes once set, else the palette.
     vtkLookupTable* forGlyphs(FaceColoring coloring) const;
 
     vtkSmartPointer<vtkLookupTable> palette;   // K entries: the cluster palette

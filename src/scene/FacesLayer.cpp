@@ -89,7 +89,7 @@ void FacesLayer::addLegendEntries(FaceColoring coloring, std::vector<LegendEntry
 void FacesLayer::addLodLegendEntries(FaceColoring coloring, std::vector<LegendEntry>& entries) const {
     const ClusterTables& tables = data_.tables;
     if (!tables.hasLod()) {
-        entries.push_back({"no LOD level or cut shown", {SceneColours::undecided}});
+        entries.push_back({"clusters" + countLabel(data_.palette.size()) + ", no LOD level or cut shown", clusterLegendColours()});
         return;
     }
     if (coloring == FaceColoring::LodLevel) {

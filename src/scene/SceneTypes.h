@@ -103,7 +103,7 @@ struct SceneColours {
     static constexpr Rgb culledByBoth{0.62, 0.62, 0.66};
     static constexpr Rgb culledByNeither{0.36, 0.38, 0.46};
     // The LOD cut colouring: drawn by the cut from the eye, a coarser level drawn there, a finer one.
-    static constexpr Rgb cutDrawn{0.20, 0.75, 0.30};
+    static constexpr Rgb cutDrawn{0.20, 0.45, 1.00};  // blue, as a drawn cluster
     static constexpr Rgb cutCoarser{0.55, 0.35, 0.15};
     static constexpr Rgb cutFiner{0.45, 0.80, 0.95};
 };
