@@ -155,10 +155,10 @@ void WindowActions::createViewMenu(QDockWidget* eyeViewDock, QDockWidget* plotsD
     }
     QMenu* coloring = view->addMenu(tr("&Colour faces by"));
     auto* coloringGroup = new QActionGroup(this);
-    // Ctrl+1 .. Ctrl+6 in the order of allFaceColorings.
+    // Ctrl+1 .. Ctrl+9 in the order of allFaceColorings.
     int key = 1;
     for (FaceColoring mode : allFaceColorings()) {
-        // Ctrl+1 .. Ctrl+9; the last LOD colouring is in the menu and the LOD dock only.
+        // The last LOD colouring is in the menu and the LOD dock only.
         const QKeySequence shortcut = key <= 9 ? QKeySequence(tr("Ctrl+%1").arg(key)) : QKeySequence();
         ++key;
         QAction* action = add(coloring, tr("Colour by %1").arg(QString::fromStdString(toString(mode))), shortcut,
