@@ -122,8 +122,12 @@ private slots:
         QCOMPARE(drawn->triangles(), cut.triangles);
         QCOMPARE(session().lodMeasurement()->view().trianglesCulled, cut.trianglesCulled);
         QCOMPARE(session().lodMeasurement()->view().backFacingTriangles, cut.backFacingTriangles);
+        window_->resetCamera();
         window_->setFaceColoring(FaceColoring::LodLevel);
         QVERIFY(window_->saveScreenshot(QDir(outputDir_).filePath(QStringLiteral("lod-cut-by-level.png"))));
+        choose(2);
+        QVERIFY(window_->saveScreenshot(QDir(outputDir_).filePath(QStringLiteral("lod-level-2-by-level.png"))));
+        choose(kLodCut);
     }
 
     // A new eye or threshold cuts again, and the numbers follow the CLI's.
@@ -158,6 +162,7 @@ private slots:
         QVERIFY2(html.contains(QStringLiteral("LOD level 1, cluster 3")), qPrintable(html));
         QVERIFY(html.contains(QStringLiteral("Parents (level 2)")));
         QVERIFY(html.contains(QStringLiteral("Children (level 0")));
+        window_->resetCamera();
         window_->setFaceColoring(FaceColoring::LodCut);
         QVERIFY(window_->saveScreenshot(QDir(outputDir_).filePath(QStringLiteral("lod-level-1-by-cut.png"))));
         window_->setFaceColoring(FaceColoring::LodGroup);
