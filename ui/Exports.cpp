@@ -15,6 +15,7 @@
 
 #include "io/ClusterIdFile.h"
 #include "io/ComparisonIO.h"
+#include "io/LodIO.h"
 #include "io/MeshWriter.h"
 #include "io/StatisticsIO.h"
 
@@ -49,6 +50,13 @@ RunStatistics exportStatistics(const PreparedMesh& prepared, const ClusterSet& c
         writeFile(path, [&run](std::ostream& out) { writeStatisticsJson(run, out); });
     }
     return run;
+}
+
+void exportLodStatistics(const LodStatistics& statistics, const Settings& settings, const std::string& path, StatisticsFormat format) {
+    writeFile(path, [&](std::ostream& out) {
+        if (format == StatisticsFormat::Csv) writeLodCsv(statistics, out);
+        else out << lodStatisticsToJson(statistics, settings).dump(2) << "\n";
+    });
 }
 
 Comparison exportComparison(const PreparedMesh& prepared, const ClusterConfiguration& a, const ClusterConfiguration& b,

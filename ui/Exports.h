@@ -7,6 +7,7 @@
 
 #include "core/Comparison.h"
 #include "core/Pipeline.h"
+#include "core/lod/LodCut.h"
 
 class vtkRenderWindow;
 
@@ -30,6 +31,10 @@ RunStatistics exportStatistics(const PreparedMesh& prepared, const ClusterSet& c
 // its per-view table. Returns the comparison. Throws as exportStatistics.
 Comparison exportComparison(const PreparedMesh& prepared, const ClusterConfiguration& a, const ClusterConfiguration& b,
                             const std::string& path, StatisticsFormat format, const ProgressCallback& progress = {});
+
+// A LOD hierarchy's statistics (measureHierarchy with `settings`) as `conescope-cli lod` writes them
+// with the same settings (io/LodIO.h): JSON with `levels` and `cut`, or its CSV. Throws as exportStatistics.
+void exportLodStatistics(const LodStatistics& statistics, const Settings& settings, const std::string& path, StatisticsFormat format);
 
 // The culled mesh with cluster_id and the per-cluster cone and bound arrays per face
 // (partitionFaceArrays, cull_fraction for `test`), through writePolyData: .vtp or .vtk keep the

@@ -87,6 +87,16 @@ const Term kTerms[] = {
     {"degenerate face", "Degenerate face",
      "A face without area (its corners on one line): it has no normal, faces nowhere and never decides a cull."},
     {"visible face", "Visible face", "A face the cull eye may see: it faces the eye, or is seen edge-on."},
+    {"lod level", "LOD level",
+     "A level of a cluster LOD hierarchy: level 0 is the partition, each level above merges groups of neighbouring "
+     "clusters, simplifies them to about half the triangles and splits them again. Coarse clusters are wider, so they "
+     "cull less."},
+    {"lod group", "LOD group",
+     "Neighbouring clusters of one level simplified together; the level above makes its parents from them, and the "
+     "cut draws either all of a group or its parents."},
+    {"lod cut", "LOD cut",
+     "The clusters an engine draws from the eye: per region the coarsest level whose simplification error, in pixels "
+     "from the eye, is within the threshold (and whose group's is not)."},
     {"not measured", "Not measured yet", "Nothing to show in this colouring yet: it appears once the eye (or A) is measured."},
 };
 
@@ -160,6 +170,9 @@ QString explain(FaceColoring coloring) {
         case FaceColoring::OracleFraction: return explain(QStringLiteral("oracle fraction"));
         case FaceColoring::Loss: return tr("Each face from the cull eye: culled, lost to the test, lost to the partition, or visible.");
         case FaceColoring::Comparison: return tr("With A pinned: what only A culls, only B, both or neither.");
+        case FaceColoring::LodLevel: return explain(QStringLiteral("lod level"));
+        case FaceColoring::LodGroup: return explain(QStringLiteral("lod group"));
+        case FaceColoring::LodCut: return explain(QStringLiteral("lod cut"));
     }
     return {};
 }
@@ -168,7 +181,8 @@ QString explainLegendLabel(const std::string& label) {
     // Longest prefixes first: "culled by A only" before "culled".
     static const std::vector<std::pair<std::string, QString>> prefixes = {
         {"culled with front faces", "false cull"}, {"culled back face", "back-facing"}, {"culled by", ""}, {"culled", "cluster"},
-        {"missed cull", "missed cull"}, {"drawn", "cluster"}, {"lost to the test", "test loss"},
+        {"missed cull", "missed cull"}, {"drawn by the LOD cut", "lod cut"}, {"LOD cut", "lod cut"}, {"LOD level", "lod level"},
+        {"LOD groups", "lod group"}, {"drawn", "cluster"}, {"lost to the test", "test loss"},
         {"lost to the partition", "partition loss"}, {"cull fraction", "cull fraction"}, {"oracle fraction", "oracle fraction"},
         {"uncullable", "normal cone"}, {"face normals", "face normal"}, {"its face normals", "face normal"},
         {"normals from one point", "gauss sphere"}, {"cone axis", "axis"}, {"view vector", "view vector"}, {"cull eye", "cull eye"},

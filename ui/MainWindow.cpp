@@ -8,6 +8,7 @@
 #include <QDockWidget>
 #include <QDragEnterEvent>
 #include <QDropEvent>
+#include <QFileDialog>
 #include <QFileInfo>
 #include <QGuiApplication>
 #include <QScreen>
@@ -28,6 +29,7 @@
 #include "GaussMapView.h"
 #include "Glossary.h"
 #include "LessonView.h"
+#include "LodPanel.h"
 #include "PickedClusterView.h"
 #include "WorstClustersView.h"
 #include "PlotsView.h"
@@ -135,6 +137,12 @@ void MainWindow::createDocks() {
     tabifyDockWidget(sideDocks_[2], lessonDock_);
     sideDocks_[2]->raise();
 
+    // The LOD hierarchy's controls behind the settings (its numbers go to the statistics).
+    lodPanel_ = new LodPanel(this);
+    lodDock_ = dock(tr("LOD hierarchy"), "lodDock", scrolled(lodPanel_), Qt::LeftDockWidgetArea);
+    tabifyDockWidget(sideDocks_[0], lodDock_);
+    sideDocks_[0]->raise();
+
     plots_ = new PlotsView(this);
     plotsDock_ = dock(tr("Plots"), "plotsDock", plots_, Qt::BottomDockWidgetArea);
     eyeView_ = new EyeView(this);
@@ -179,6 +187,7 @@ void MainWindow::connectSession() {
         actions_->coloringAction(coloring)->setChecked(true);
         if (session_.scene()) render();
     });
+    connect(&session_, &Session::lodChanged, this, &MainWindow::showLod);
     connect(&session_, &Session::errorOccurred, this, &MainWindow::showError);
     connect(&session_, &Session::notice, statusBar(), &QStatusBar::showMessage);
 }
@@ -205,6 +214,14 @@ void MainWindow::connectControls() {
             if (display.y() >= text.box[1] - 2 && display.y() <= text.box[3] + 2) return explainLegendLabel(text.text);
         return {};
     });
+    connect(lodPanel_, &LodPanel::buildRequested, &session_, &Session::buildLodHierarchy);
+    connect(lodPanel_, &LodPanel::exportRequested, this, [this]() {
+        const QString path = QFileDialog::getSaveFileName(this, tr("Export LOD statistics"), QString(), tr("JSON (*.json);;CSV (*.csv)"));
+        if (!path.isEmpty()) session_.exportLodStatistics(path, statisticsFormatOf(path.toStdString()));
+    });
+    connect(lodPanel_, &LodPanel::levelChosen, &session_, &Session::showLodLevel);
+    connect(lodPanel_, &LodPanel::thresholdChanged, &session_, &Session::setLodThreshold);
+    connect(lodPanel_, &LodPanel::coloringChosen, &session_, &Session::setFaceColoring);
     connect(worstClusters_, &WorstClustersView::clusterChosen, this, &MainWindow::chooseCluster);
     connect(lessonView_, &LessonView::stepRequested, this, &MainWindow::showLessonStep);
     connect(lessonView_, &LessonView::exampleRequested, this, [this](LessonOutcome outcome) {
@@ -230,6 +247,19 @@ void MainWindow::showScene(const ClusterScene* previous, bool newMesh) {
     const EyeMeasurement* measurement = session_.measurement();
     plots_->showHalfAngles(measurement ? measurement->statistics.clusters : std::vector<ClusterStatistics>{});
     showOrbit();
+}
+
+void MainWindow::showLod(const ClusterScene* previousScene) {
+    // The observer view shows the LOD scene in place of the partition's while a level or cut is shown.
+    const ClusterScene* lodScene = session_.lodScene();
+    if (session_.scene() && (previousScene || lodScene)) {
+        view_->showScene(previousScene, *session_.scene());
+        if (lodScene) view_->showScene(session_.scene(), *lodScene);
+    }
+    lodPanel_->showLod(session_);
+    statisticsPanel_->showLod(session_.lodStatistics());
+    clusterView_->showPick(session_);
+    view_->render();
 }
 
 void MainWindow::showEyeMeasurement() {
@@ -330,6 +360,11 @@ void MainWindow::setInitialEye(const glm::dvec3& position) { session_.setInitial
 
 int MainWindow::pickDisplay(const QPoint& display) {
     if (!session_.scene()) return -1;
+    if (const ClusterScene* lodScene = session_.lodScene()) {
+        const int cluster = view_->clusterAt(*lodScene, display);
+        session_.pickLodCluster(cluster);
+        return cluster;
+    }
     const int cluster = view_->clusterAt(*session_.scene(), display);
     pickCluster(cluster);
     return cluster;

@@ -35,6 +35,7 @@ class CrossSectionView;
 class EyePanel;
 class EyeView;
 class LessonView;
+class LodPanel;
 class ObserverView;
 class PickedClusterView;
 class GaussMapView;
@@ -121,6 +122,7 @@ public:
     SettingsPanel* settingsPanel() const { return settingsPanel_; }
     EyePanel* eyePanel() const { return eyePanel_; }
     StatisticsPanel* statisticsPanel() const { return statisticsPanel_; }
+    LodPanel* lodPanel() const { return lodPanel_; }
     // Every action with a shortcut, in menu order (what the help dialog lists).
     QList<QAction*> shortcutActions() const;
     QAction* animateAction() const;
@@ -206,6 +208,8 @@ private:
     // What the views show when the session has something new.
     void showScene(const ClusterScene* previous, bool newMesh);
     void showEyeMeasurement();
+    // The LOD scene in the observer view (or the partition's back), the LOD dock, statistics and pick.
+    void showLod(const ClusterScene* previousScene);
     void showOrbit();
     void showMesh(const QString& path, const QString& loadMessage);
     void showError(const QString& title, const QString& message);
@@ -234,6 +238,8 @@ private:
     LessonView* lessonView_ = nullptr;
     QDockWidget* lessonDock_ = nullptr;
     CrossSectionView* crossSection_ = nullptr;
+    LodPanel* lodPanel_ = nullptr;
+    QDockWidget* lodDock_ = nullptr;
     QDockWidget* crossSectionDock_ = nullptr;
     // What the window showed before the lesson, put back when it ends.
     std::optional<std::map<Layer, bool>> layersBeforeLesson_;

@@ -14,7 +14,36 @@ PickedClusterView::PickedClusterView(QWidget* parent) : QTextBrowser(parent) {
     setHtml(emptyClusterReportHtml());
 }
 
+namespace {
+
+QString clusterList(const std::vector<uint32_t>& clusters) {
+    if (clusters.empty()) return QObject::tr("none");
+    QStringList ids;
+    for (uint32_t c : clusters) ids << QString::number(c);
+    return ids.join(QStringLiteral(", "));
+}
+
+// Where a LOD cluster sits: its level and group, the group's other clusters, its parents and children.
+QString familyHtml(const LodFamily& family, size_t levelCount) {
+    const size_t level = family.cluster.level;
+    QString html = QObject::tr("<h3>LOD level %1, cluster %2</h3><p>").arg(level).arg(family.cluster.cluster);
+    html += family.group == kNoGroup ? QObject::tr("Top level: in no group.<br>")
+                                     : QObject::tr("Group %1, with clusters %2.<br>").arg(family.group).arg(clusterList(family.groupMates));
+    if (level + 1 < levelCount) html += QObject::tr("Parents (level %1): %2.<br>").arg(level + 1).arg(clusterList(family.parents));
+    if (level > 0)
+        html += QObject::tr("Children (level %1, group %2): %3.").arg(level - 1).arg(family.sourceGroup).arg(clusterList(family.children));
+    else
+        html += QObject::tr("Level 0: the partition's own cluster.");
+    return html + QStringLiteral("</p>");
+}
+
+}  // namespace
+
 void PickedClusterView::showPick(const Session& session) {
+    if (session.lodScene()) {
+        showLodPick(session);
+        return;
+    }
     const int picked = session.pickedCluster();
     const EyeMeasurement* measurement = session.measurement();
     if (picked < 0 || !session.clusters() || !measurement) {
@@ -40,6 +69,23 @@ void PickedClusterView::showPick(const Session& session) {
         underA = pinnedClusterHtml(a);
     }
     showPage(picked, clusterReportHtml(input, underA));
+}
+
+void PickedClusterView::showLodPick(const Session& session) {
+    const std::optional<LodFamily> family = session.lodPick();
+    const LodLevel* level = session.lodLevelOnShow();
+    const EyeMeasurement* measurement = session.lodMeasurement();
+    if (!family || !level || !measurement) {
+        showPage(-1, tr("<p>Click a cluster of the LOD level or cut shown to see its group, parents and children.</p>"));
+        return;
+    }
+    ClusterReportInput input;
+    input.cluster = uint32_t(session.lodPickedCluster());
+    input.bounds = &level->clusters.bounds;
+    input.eye = measurement->eye;
+    input.test = measurement->statistics.test;
+    input.explanation = explainCull(cullingInput(level->prepared, level->clusters), input.cluster, input.eye, input.test);
+    showPage(int(input.cluster), familyHtml(*family, session.lodHierarchy()->levels.size()) + clusterReportHtml(input, QString()));
 }
 
 void PickedClusterView::showPage(int cluster, const QString& html) {

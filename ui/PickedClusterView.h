@@ -19,6 +19,8 @@ public:
 
 private:
     void showPage(int cluster, const QString& html);
+    // A cluster of the LOD level or cut shown: its family, then its report for the eye.
+    void showLodPick(const Session& session);
 
     int shownCluster_ = -1;
 };

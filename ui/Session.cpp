@@ -67,7 +67,7 @@ std::optional<Session::OrbitComparison> Session::measureSnapshot(Snapshot& b, co
     return result;
 }
 
-Session::Session(QObject* parent) : QObject(parent), layers_(firstLookLayers()) {
+Session::Session(QObject* parent) : QObject(parent), layers_(firstLookLayers()), lod_(std::make_unique<SessionLod>()) {
     animationTimer_.setInterval(animationIntervalMs);
     connect(&animationTimer_, &QTimer::timeout, this, [this]() { stepOrbit(1); });
     connect(&runner_, &TaskRunner::taskStarted, this, [this](const QString& title) {
@@ -338,6 +338,7 @@ void Session::showSceneResult(SceneResult& result, bool newMesh) {
     }
     measureCurrentEye();
     emit sceneReplaced(previous.get(), newMesh);
+    updateLod();
     emit eyeMoved();
     emit eyeMeasured();
     emit orbitChanged();

@@ -25,6 +25,7 @@
 #include <QTimer>
 
 #include "Exports.h"
+#include "SessionLod.h"
 #include "TaskRunner.h"
 #include "core/Comparison.h"
 #include "core/Lesson.h"
@@ -175,6 +176,40 @@ public:
     // A's cluster holding the first face of the current partition's `cluster`; -1 without a pin.
     int pinnedClusterOf(int cluster) const;
 
+    // --- The cluster LOD hierarchy (SessionLod.cpp) ------------------------------------------------
+    // Builds the hierarchy of the shown snapshot in the background (progress, Cancel); lodChanged()
+    // when it is ready. New clusters drop it.
+    void buildLodHierarchy();
+    // Shows level `level`, the cut from the cull eye (kLodCut) or the snapshot's partition (kLodNone)
+    // in the observer view; false, and nothing changes, without a hierarchy or for a missing level.
+    bool showLodLevel(int level);
+    // The cut's error bound: measured and cut again at once.
+    void setLodThreshold(const LodThreshold& threshold);
+    // A cluster of the LOD scene shown (-1: none).
+    void pickLodCluster(int cluster);
+    // The LOD statistics shown (lodStatistics) as `conescope-cli lod --eye` writes them for the cull eye
+    // and threshold; false (and errorOccurred) without a hierarchy or when it cannot be written.
+    bool exportLodStatistics(const QString& path, StatisticsFormat format);
+    const ClusterHierarchy* lodHierarchy() const;
+    // Each level and the cut from the cull eye with the shown settings and threshold; null without a
+    // hierarchy or a measured eye.
+    const LodStatistics* lodStatistics() const;
+    const LodThreshold& lodThreshold() const;
+    int lodLevelShown() const;  // kLodNone, kLodCut or a level
+    // The cut from the cull eye: per level, per cluster, 1 when drawn (empty without a hierarchy).
+    const std::vector<std::vector<uint8_t>>& lodCut() const;
+    // The scene of the level or cut shown; null while the partition is shown.
+    const ClusterScene* lodScene() const;
+    // The level (or the cut as one level) the LOD scene shows, and its measurement from the cull eye;
+    // null while the partition is shown.
+    const LodLevel* lodLevelOnShow() const;
+    const EyeMeasurement* lodMeasurement() const;
+    int lodPickedCluster() const;  // a cluster of lodLevelOnShow(), -1 for none
+    // The picked LOD cluster's family (its level, group, parents, children); none without a pick.
+    std::optional<LodFamily> lodPick() const;
+    // What the LOD scene's cluster `cluster` is in the hierarchy (the cut's clusters come from levels).
+    std::optional<LodClusterId> lodClusterOf(int cluster) const;
+
 signals:
     // A pin was set, swapped or cleared, or its comparison with the current settings was measured.
     void comparisonChanged();
@@ -203,6 +238,9 @@ signals:
     void taskStarted(const QString& title);
     void progressChanged(double fraction, const QString& stage);
     void idle();
+    // The hierarchy, what is shown of it, its threshold, its measurement or its pick changed.
+    // `previousScene` (the LOD scene shown before, or null) is still alive: views take its actors out.
+    void lodChanged(const conescope::ClusterScene* previousScene);
 
 private:
     // A against B over B's orbit, with A and B as they were compared (their clusters and settings).
@@ -251,6 +289,11 @@ private:
     // Drops A without touching the colouring: a new mesh, or A made for another prepared mesh.
     void dropPin();
     void dropStalePin();
+    // The hierarchy measured from the cull eye, the cut and the LOD scene again (dropped when the
+    // snapshot's clusters are not the ones it was built from).
+    void updateLod();
+    // The scene of what the LOD view shows, from the measured cut.
+    void makeLodScene(std::unique_ptr<ClusterScene>& previous);
 
     TaskRunner runner_;
     Snapshot shown_;
@@ -277,6 +320,7 @@ private:
     std::optional<Snapshot> pin_;
     std::optional<Comparison> eyeComparison_;
     std::optional<OrbitComparison> orbitComparison_;
+    std::unique_ptr<SessionLod> lod_;
 };
 
 }  // namespace conescope

@@ -76,6 +76,7 @@ void Session::updateEye() {
     if (!shown_.clusters || !scene_) return;
     measureCurrentEye();
     emit eyeMeasured();
+    updateLod();
 }
 
 void Session::measureCurrentEye() {
@@ -109,6 +110,7 @@ void Session::measureCurrentEye() {
 void Session::setLayerVisible(Layer layer, bool visible) {
     layers_[layer] = visible;
     if (scene_) scene_->setLayerVisible(layer, visible);
+    if (lod_->scene) lod_->scene->setLayerVisible(layer, visible);
 }
 
 void Session::fitLegend(int viewHeight, double pixelRatio) {
@@ -123,6 +125,7 @@ void Session::setFaceColoring(FaceColoring coloring) {
         scene_->setFaceColoring(coloring);
         if (measurement_) showEyeColouring(*scene_, *shown_.prepared, *shown_.clusters, *measurement_, coloring);
     }
+    if (lod_->scene) updateLod();
     emit faceColoringChanged(coloring);
 }
 

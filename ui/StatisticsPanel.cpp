@@ -59,7 +59,10 @@ StatisticsPanel::StatisticsPanel(QWidget* parent) : QWidget(parent) {
                              "lost over the orbit", "expected efficiency", "cull / oracle fraction", "cluster fill",
                              "sphere radius"})
         addRow(QString::fromLatin1(name));
+    // The LOD hierarchy's cut from the eye and its levels (LOD dock), last: shown once it is built.
+    for (const QString& name : lodRows()) addRow(name);
     showComparison(nullptr, nullptr, nullptr);
+    showLod(nullptr);
     clear();
 }
 
@@ -112,6 +115,15 @@ QString aboutRow(const QString& row) {
                                             "the clusters, over half the triangles.")},
         {"cull / oracle fraction", explain(QStringLiteral("cull fraction")) + QStringLiteral(" ") + explain(QStringLiteral("oracle fraction"))},
         {"cluster fill", QObject::tr("How full the clusters are on average, against the limits (Max vertices, Max triangles).")},
+        {"LOD cut", QObject::tr("The clusters and triangles the LOD hierarchy's cut from this eye draws: per region the "
+                                "coarsest level whose error, seen from the eye, is within the threshold.")},
+        {"LOD levels used", QObject::tr("The levels the cut draws clusters from, with how many of each.")},
+        {"LOD culled", QObject::tr("Of the cut's triangles: those in clusters the test culls, and those facing away from the eye.")},
+        {"LOD efficiency", QObject::tr("The cut's triangles culled / its back-facing triangles: how much of what the hierarchy draws "
+                                       "the cone test still skips.")},
+        {"LOD false culls", QObject::tr("Culled clusters of the cut holding a front-facing face: must be 0.")},
+        {"LOD levels", QObject::tr("Per level from this eye: clusters, triangles, the mean cone half-angle (triangle-weighted) "
+                                   "and the test's efficiency on the whole level.")},
         {"sphere radius", QObject::tr("The clusters' bounding spheres: how far a cluster sprawls (what frustum and occlusion "
                                       "culling see).")},
     };
@@ -168,6 +180,41 @@ QStringList StatisticsPanel::rows() const {
 QString StatisticsPanel::value(const QString& row) const {
     auto found = values_.find(row);
     return found == values_.end() ? QString() : found->second->text();
+}
+
+QStringList StatisticsPanel::lodRows() {
+    return {QStringLiteral("LOD cut"), QStringLiteral("LOD levels used"), QStringLiteral("LOD culled"), QStringLiteral("LOD efficiency"),
+            QStringLiteral("LOD false culls"), QStringLiteral("LOD levels")};
+}
+
+QString StatisticsPanel::lodLevelLine(const LodLevelStatistics& level) {
+    return tr("level %1: %2 clusters, %3 triangles, mean half-angle %4 deg, efficiency %5")
+        .arg(level.level)
+        .arg(level.clusters)
+        .arg(level.triangles)
+        .arg(level.meanHalfAngleDegrees, 0, 'f', 1)
+        .arg(percent(level.culling.efficiency));
+}
+
+void StatisticsPanel::showLod(const LodStatistics* lod) {
+    const FitHeightsAfter fit(*this);
+    for (const QString& row : lodRows()) {
+        values_[row]->setVisible(lod != nullptr);
+        form_->labelForField(values_[row])->setVisible(lod != nullptr);
+    }
+    if (!lod || lod->cut.views.empty()) return;
+    const LodCutView& cut = lod->cut.views.front();
+    values_["LOD cut"]->setText(tr("%1 clusters, %2 triangles").arg(cut.clusters).arg(cut.triangles));
+    QStringList used;
+    for (size_t l = 0; l < cut.clustersPerLevel.size(); ++l)
+        if (cut.clustersPerLevel[l]) used << tr("%1 (%2)").arg(l).arg(cut.clustersPerLevel[l]);
+    values_["LOD levels used"]->setText(used.join(QStringLiteral(", ")));
+    values_["LOD culled"]->setText(tr("%1 of %2 back-facing triangles").arg(cut.trianglesCulled).arg(cut.backFacingTriangles));
+    values_["LOD efficiency"]->setText(percent(cut.efficiency));
+    values_["LOD false culls"]->setText(QString::number(cut.falseCulls));
+    QStringList levels;
+    for (const LodLevelStatistics& level : lod->levels) levels << lodLevelLine(level);
+    values_["LOD levels"]->setText(levels.join(QLatin1Char('\n')));
 }
 
 void StatisticsPanel::clear() {

@@ -8,6 +8,7 @@
 
 #include "core/Comparison.h"
 #include "core/Pipeline.h"
+#include "core/lod/LodCut.h"
 
 class QFormLayout;
 class QLabel;
@@ -29,6 +30,10 @@ public:
     // orbit, and the cluster-count warning; `a` null hides the comparison rows.
     void showComparison(const Settings* a, const Comparison* eye, const Comparison* orbit);
     void clear();
+    // The LOD hierarchy's cut from the eye and its per-level rows (Session::lodStatistics); null hides them.
+    void showLod(const LodStatistics* lod);
+    // One level's row as the "LOD levels" value shows it.
+    static QString lodLevelLine(const LodLevelStatistics& level);
 
     // The label text of a row, by its name ("clusters culled", "false culls", ...), for tests.
     QString value(const QString& row) const;
@@ -45,6 +50,7 @@ private:
     void fitHeight(QLabel* label);
     void fitHeights();
     static QStringList comparisonRows();
+    static QStringList lodRows();
 
     QFormLayout* form_ = nullptr;
     std::map<QString, QLabel*> values_;

@@ -11,5 +11,6 @@ inline const QString clusters = QStringLiteral("clusters");
 inline const QString orbit = QStringLiteral("orbit");
 inline const QString exports = QStringLiteral("export");
 inline const QString comparison = QStringLiteral("comparison");
+inline const QString lod = QStringLiteral("lod");
 
 }  // namespace conescope::taskgroups

@@ -155,11 +155,13 @@ void WindowActions::createViewMenu(QDockWidget* eyeViewDock, QDockWidget* plotsD
     }
     QMenu* coloring = view->addMenu(tr("&Colour faces by"));
     auto* coloringGroup = new QActionGroup(this);
-    // Ctrl+1 .. Ctrl+6 in the order of allFaceColorings.
+    // Ctrl+1 .. Ctrl+9 in the order of allFaceColorings.
     int key = 1;
     for (FaceColoring mode : allFaceColorings()) {
-        QAction* action = add(coloring, tr("Colour by %1").arg(QString::fromStdString(toString(mode))),
-                              QKeySequence(tr("Ctrl+%1").arg(key++)),
+        // The last LOD colouring is in the menu and the LOD dock only.
+        const QKeySequence shortcut = key <= 9 ? QKeySequence(tr("Ctrl+%1").arg(key)) : QKeySequence();
+        ++key;
+        QAction* action = add(coloring, tr("Colour by %1").arg(QString::fromStdString(toString(mode))), shortcut,
                               [this, mode = mode]() { session_->setFaceColoring(mode); }, explain(mode));
         action->setCheckable(true);
         action->setChecked(mode == session_->faceColoring());

@@ -156,6 +156,11 @@ void ClusterScene::setFaceComparison(const std::vector<FaceDiff>& comparison, co
     impl_->updateLegend();
 }
 
+void ClusterScene::setClusterLod(const ClusterLodClasses& lod) {
+    impl_->data.tables.setLod(lod);
+    impl_->updateLegend();
+}
+
 void ClusterScene::setClusterFractions(const std::vector<double>& cullFraction, const std::vector<double>& oracleFraction,
                                        const std::vector<uint8_t>& cullable) {
     impl_->data.tables.setFractions(cullFraction, oracleFraction, cullable);

@@ -90,6 +90,10 @@ public:
     void setClusterFractions(const std::vector<double>& cullFraction, const std::vector<double>& oracleFraction,
                              const std::vector<uint8_t>& cullable);
 
+    // Per cluster its LOD level, group and cut class for the LOD colourings. Rewrites K table entries.
+    // Throws std::invalid_argument on a size mismatch.
+    void setClusterLod(const ClusterLodClasses& lod);
+
     // The picked cluster's test in 3D (Layer::Test; makeTestDrawing); a drawing with cluster -1 clears it.
     // Throws std::out_of_range for a cluster outside [-1, K).
     void setTestDrawing(const CullTestDrawing& drawing);

@@ -31,6 +31,7 @@ ClusterTables::ClusterTables(const std::vector<Rgb>& clusterColours)
     : palette(indexedTable(clusterColours.size())), decision(indexedTable(clusterColours.size())),
       visible(indexedTable(clusterColours.size())), facing(indexedTable(4)), cullFraction(indexedTable(clusterColours.size())),
       oracleFraction(indexedTable(clusterColours.size())), loss(indexedTable(5)), comparison(indexedTable(5)),
+      lodLevel(indexedTable(clusterColours.size())), lodGroup(indexedTable(clusterColours.size())), lodCut(indexedTable(clusterColours.size())),
       colours_(clusterColours) {
     for (size_t c = 0; c < colours_.size(); ++c) setEntry(palette, c, colours_[c]);
     fill(nullptr, nullptr);
@@ -38,10 +39,9 @@ ClusterTables::ClusterTables(const std::vector<Rgb>& clusterColours)
     setEntry(facing, size_t(Facing::Back), SceneColours::back);
     setEntry(facing, size_t(Facing::Degenerate), SceneColours::degenerate);
     setEntry(facing, 3, SceneColours::unclassified);
-    for (size_t c = 0; c < colours_.size(); ++c) {
-        setEntry(cullFraction, c, SceneColours::undecided);
-        setEntry(oracleFraction, c, SceneColours::undecided);
-    }
+    for (size_t c = 0; c < colours_.size(); ++c)
+        for (vtkLookupTable* table : {cullFraction.Get(), oracleFraction.Get(), lodLevel.Get(), lodGroup.Get(), lodCut.Get()})
+            setEntry(table, c, SceneColours::undecided);
     // The loss classes in the decision colours: the same meaning per face as per cluster.
     setEntry(loss, 0, SceneColours::drawn);
     setEntry(loss, 1, SceneColours::culled);
@@ -71,6 +71,28 @@ void ClusterTables::setFractions(const std::vector<double>& cull, const std::vec
     hasFractions_ = true;
 }
 
+void ClusterTables::setLod(const ClusterLodClasses& lod) {
+    const size_t clusterCount = colours_.size();
+    if (lod.level.size() != clusterCount || lod.group.size() != clusterCount || lod.cut.size() != clusterCount)
+        throw std::invalid_argument("setClusterLod: expected " + std::to_string(clusterCount) + " values per array");
+    static const Rgb cutColours[] = {SceneColours::cutDrawn, SceneColours::cutCoarser, SceneColours::cutFiner};
+    lodCutCounts_ = {};
+    std::vector<uint32_t> groups;
+    for (size_t c = 0; c < clusterCount; ++c) {
+        setEntry(lodLevel, c, lodLevelColour(lod.level[c]));
+        // Groups in the palette's hues, by their number: neighbouring groups mostly differ.
+        setEntry(lodGroup, c, colourOfClass(lod.group[c] % uint32_t(baseHues().size())));
+        setEntry(lodCut, c, cutColours[std::min<uint8_t>(lod.cut[c], 2)]);
+        ++lodCutCounts_[std::min<uint8_t>(lod.cut[c], 2)];
+        groups.push_back(lod.group[c]);
+    }
+    std::sort(groups.begin(), groups.end());
+    lodGroups_ = size_t(std::unique(groups.begin(), groups.end()) - groups.begin());
+    lodLevels_ = lod.levelCount;
+    for (vtkLookupTable* table : {lodLevel.Get(), lodGroup.Get(), lodCut.Get()}) table->Modified();
+    hasLod_ = true;
+}
+
 void ClusterTables::setDecisions(const std::vector<uint8_t>& culled, const std::vector<uint8_t>& allBackFacing) {
     const size_t clusterCount = colours_.size();
     if (culled.size() != clusterCount || allBackFacing.size() != clusterCount)
@@ -93,6 +115,10 @@ vtkLookupTable* ClusterTables::forGlyphs(FaceColoring coloring) const {
     case FaceColoring::Comparison: return decision;
     case FaceColoring::CullFraction: return cullFraction;
     case FaceColoring::OracleFraction: return oracleFraction;
+    // Without a LOD level or cut the clusters keep their palette.
+    case FaceColoring::LodLevel: return hasLod_ ? lodLevel : palette;
+    case FaceColoring::LodGroup: return hasLod_ ? lodGroup : palette;
+    case FaceColoring::LodCut: return hasLod_ ? lodCut : palette;
     case FaceColoring::Cluster:
     case FaceColoring::FaceFacing: return palette;
     }

@@ -3,6 +3,7 @@
 // per-face array: the scene stays interactive on meshes of a million triangles.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -41,8 +42,16 @@ public:
     bool hasFractions() const { return hasFractions_; }
     size_t uncullableClusters() const { return uncullable_; }
 
+    // Per cluster its LOD level, group and cut class (ClusterLodClasses) into the LOD tables. Throws
+    // std::invalid_argument on a size mismatch.
+    void setLod(const ClusterLodClasses& lod);
+    bool hasLod() const { return hasLod_; }
+    size_t lodLevelCount() const { return lodLevels_; }
+    size_t lodGroupCount() const { return lodGroups_; }
+    const std::array<size_t, 3>& lodCutCounts() const { return lodCutCounts_; }
+
     // The table the per-cluster glyphs are coloured with: the decisions in decision and loss mode,
-    // the fraction in fraction modes, else the palette.
+    // the fraction in fraction modes, the LOD tables in LOD modes once set, else the palette.
     vtkLookupTable* forGlyphs(FaceColoring coloring) const;
 
     vtkSmartPointer<vtkLookupTable> palette;   // K entries: the cluster palette
@@ -52,6 +61,7 @@ public:
     vtkSmartPointer<vtkLookupTable> cullFraction, oracleFraction;  // K entries each: the fraction ramp
     vtkSmartPointer<vtkLookupTable> loss;      // 5 entries: one per FaceLoss value and "not measured"
     vtkSmartPointer<vtkLookupTable> comparison;  // 5 entries: one per FaceDiff value and "not compared"
+    vtkSmartPointer<vtkLookupTable> lodLevel, lodGroup, lodCut;  // K entries each: the LOD colourings
 
 private:
     void fill(const std::vector<uint8_t>* culled, const std::vector<uint8_t>* allBackFacing);
@@ -61,6 +71,9 @@ private:
     bool hasDecisions_ = false;
     bool hasFractions_ = false;
     size_t uncullable_ = 0;
+    bool hasLod_ = false;
+    size_t lodLevels_ = 0, lodGroups_ = 0;
+    std::array<size_t, 3> lodCutCounts_{};
 };
 
 }  // namespace conescope

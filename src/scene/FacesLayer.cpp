@@ -57,6 +57,8 @@ void FacesLayer::addLegendEntries(FaceColoring coloring, std::vector<LegendEntry
         entries.push_back({std::string(cull ? "cull fraction: share of views the test culls from" : "oracle fraction: share of views all faces face away"),
                            fractionBarColours(), std::array<double, 2>{0.0, maxClusterFraction}});
         if (cull) entries.push_back({"uncullable: no cone" + countLabel(data_.tables.uncullableClusters()), {SceneColours::uncullable}});
+    } else if (coloring == FaceColoring::LodLevel || coloring == FaceColoring::LodGroup || coloring == FaceColoring::LodCut) {
+        addLodLegendEntries(coloring, entries);
     } else if (coloring == FaceColoring::Loss) {
         if (!hasLoss_) entries.push_back({"no eye measured yet", {SceneColours::unclassified}});
         entries.push_back({"culled back face" + countLabel(lossCounts_[1]), {SceneColours::culled}});
@@ -81,6 +83,27 @@ void FacesLayer::addLegendEntries(FaceColoring coloring, std::vector<LegendEntry
         entries.push_back({"front-facing face", {SceneColours::front}});
         entries.push_back({"back-facing face", {SceneColours::back}});
         entries.push_back({"degenerate face", {SceneColours::degenerate}});
+    }
+}
+
+void FacesLayer::addLodLegendEntries(FaceColoring coloring, std::vector<LegendEntry>& entries) const {
+    const ClusterTables& tables = data_.tables;
+    if (!tables.hasLod()) {
+        entries.push_back({"clusters" + countLabel(data_.palette.size()) + ", no LOD level or cut shown", clusterLegendColours()});
+        return;
+    }
+    if (coloring == FaceColoring::LodLevel) {
+        // A bar of the levels' colours, level 0 at its left end.
+        std::vector<Rgb> colours;
+        for (size_t l = 0; l < std::max<size_t>(tables.lodLevelCount(), 1); ++l) colours.push_back(lodLevelColour(l));
+        entries.push_back({"LOD level of each cluster", colours, std::array<double, 2>{0.0, double(colours.size() - 1)}});
+    } else if (coloring == FaceColoring::LodGroup) {
+        entries.push_back({"LOD groups" + countLabel(tables.lodGroupCount()), clusterLegendColours()});
+    } else {
+        const std::array<size_t, 3>& counts = tables.lodCutCounts();
+        entries.push_back({"drawn by the LOD cut" + countLabel(counts[0]), {SceneColours::cutDrawn}});
+        entries.push_back({"LOD cut draws a coarser level" + countLabel(counts[1]), {SceneColours::cutCoarser}});
+        entries.push_back({"LOD cut draws a finer level" + countLabel(counts[2]), {SceneColours::cutFiner}});
     }
 }
 

@@ -33,6 +33,9 @@ public:
     void setFaceComparison(const std::vector<FaceDiff>& comparison, const std::string& warning);
 
 private:
+    // The LOD colourings' entries: the level bar, the groups, or the cut's three classes.
+    void addLodLegendEntries(FaceColoring coloring, std::vector<LegendEntry>& entries) const;
+
     vtkSmartPointer<vtkPolyDataMapper> mapper_;
     vtkSmartPointer<vtkActor> actor_;
     bool hasFacing_ = false;

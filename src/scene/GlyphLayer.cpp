@@ -18,7 +18,7 @@ GlyphLayer::GlyphLayer(const SceneData& data, vtkSmartPointer<vtkPolyData> glyph
 void GlyphLayer::recolour(FaceColoring coloring) { mapper_->SetLookupTable(data_.tables.forGlyphs(coloring)); }
 
 void GlyphLayer::addLegendEntries(FaceColoring coloring, std::vector<LegendEntry>& entries) const {
-    entries.push_back({legendLabel_, glyphLegendColours(coloring)});
+    entries.push_back({legendLabel_, glyphLegendColours(coloring, data_.tables.hasLod())});
 }
 
 GlyphLayer conesLayer(const SceneData& data) {

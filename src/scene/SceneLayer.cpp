@@ -129,10 +129,13 @@ std::vector<Rgb> fractionLegendColours() {
 }
 
 // Glyphs take the faces' cluster colours, or the decision colours in decision mode.
-std::vector<Rgb> glyphLegendColours(FaceColoring coloring) {
+std::vector<Rgb> glyphLegendColours(FaceColoring coloring, bool lodShown) {
     if (coloring == FaceColoring::CullDecision || coloring == FaceColoring::Loss || coloring == FaceColoring::Comparison)
         return {SceneColours::culled, SceneColours::missedCull, SceneColours::drawn};
     if (coloring == FaceColoring::CullFraction || coloring == FaceColoring::OracleFraction) return fractionLegendColours();
+    if (!lodShown) return clusterLegendColours();
+    if (coloring == FaceColoring::LodCut) return {SceneColours::cutDrawn, SceneColours::cutCoarser, SceneColours::cutFiner};
+    if (coloring == FaceColoring::LodLevel) return {lodLevelColour(0), lodLevelColour(1), lodLevelColour(2), lodLevelColour(3)};
     return clusterLegendColours();
 }
 

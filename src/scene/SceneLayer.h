@@ -93,7 +93,8 @@ void setInput(vtkActor* actor, vtkPolyData* data);
 std::string countLabel(size_t n);
 // The legend's colours for "a colour per cluster", and for the glyphs in the given face colouring.
 std::vector<Rgb> clusterLegendColours();
-std::vector<Rgb> glyphLegendColours(FaceColoring coloring);
+// `lodShown`: the LOD colourings were given their classes (else they keep the palette).
+std::vector<Rgb> glyphLegendColours(FaceColoring coloring, bool lodShown);
 // The fraction ramp from 0 to maxClusterFraction in a few steps (a swatch), and finely (a colour bar).
 std::vector<Rgb> fractionLegendColours();
 std::vector<Rgb> fractionBarColours();

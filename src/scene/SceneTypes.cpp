@@ -32,7 +32,8 @@ const std::vector<FaceColoring>& allFaceColorings() {
     static const std::vector<FaceColoring> colorings = {FaceColoring::Cluster,      FaceColoring::CullDecision,
                                                         FaceColoring::FaceFacing,   FaceColoring::CullFraction,
                                                         FaceColoring::OracleFraction, FaceColoring::Loss,
-                                                        FaceColoring::Comparison};
+                                                        FaceColoring::Comparison,   FaceColoring::LodLevel,
+                                                        FaceColoring::LodGroup,     FaceColoring::LodCut};
     return colorings;
 }
 
@@ -47,6 +48,12 @@ Rgb fractionRamp(double t) {
     return colour;
 }
 
+Rgb lodLevelColour(size_t level) {
+    static const Rgb hues[] = {{0.30, 0.75, 0.35}, {0.95, 0.85, 0.30}, {0.95, 0.55, 0.20}, {0.85, 0.25, 0.25},
+                               {0.70, 0.25, 0.60}, {0.40, 0.30, 0.75}, {0.25, 0.55, 0.85}, {0.25, 0.75, 0.75}};
+    return hues[level % 8];
+}
+
 std::string toString(FaceColoring coloring) {
     switch (coloring) {
     case FaceColoring::Cluster: return "cluster";
@@ -56,6 +63,9 @@ std::string toString(FaceColoring coloring) {
     case FaceColoring::OracleFraction: return "oracle-fraction";
     case FaceColoring::Loss: return "loss";
     case FaceColoring::Comparison: return "compare";
+    case FaceColoring::LodLevel: return "lod-level";
+    case FaceColoring::LodGroup: return "lod-group";
+    case FaceColoring::LodCut: return "lod-cut";
     }
     return "unknown";
 }

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -52,9 +53,23 @@ enum class FaceColoring {
     OracleFraction,  // per cluster, the share from which every face faces away (setClusterFractions)
     Loss,          // per face for the eye: visible / culled / test loss / partition loss (setFaceLoss)
     Comparison,    // per face for the eye: culled by A only / B only / both / neither (setFaceComparison)
+    // A level or cut of a cluster LOD hierarchy (setClusterLod; before it every cluster is undecided):
+    LodLevel,      // per cluster its level, lodLevelColour: coarse levels stand out on a cut
+    LodGroup,      // per cluster its group (the clusters simplified together), the cluster palette by group
+    LodCut,        // per cluster whether the cut from the eye draws it, or a coarser or a finer level there
 };
 const std::vector<FaceColoring>& allFaceColorings();
 std::string toString(FaceColoring);
+
+// What the LOD colourings show per cluster (ClusterScene::setClusterLod). `cut`: 0 the cut from the
+// eye draws the cluster, 1 a coarser level is drawn there (its group's error is small enough), 2 a
+// finer one (its own error is not).
+struct ClusterLodClasses {
+    std::vector<uint32_t> level, group;  // group: its colour index (kNoGroup-free: the top's own id)
+    std::vector<uint8_t> cut;
+    size_t levelCount = 0;
+};
+enum class LodCutClass : uint8_t { Drawn = 0, CoarserDrawn = 1, FinerDrawn = 2 };
 
 // The colours the legend lists, fixed so screenshots of different runs compare. Each means one
 // thing: no two of the colours one legend can list together are alike (tested).
@@ -87,7 +102,13 @@ struct SceneColours {
     static constexpr Rgb onlyB{0.15, 0.75, 0.95};
     static constexpr Rgb culledByBoth{0.62, 0.62, 0.66};
     static constexpr Rgb culledByNeither{0.36, 0.38, 0.46};
+    // The LOD cut colouring: drawn by the cut from the eye, a coarser level drawn there, a finer one.
+    static constexpr Rgb cutDrawn{0.20, 0.45, 1.00};  // blue, as a drawn cluster
+    static constexpr Rgb cutCoarser{0.55, 0.35, 0.15};
+    static constexpr Rgb cutFiner{0.45, 0.80, 0.95};
 };
+// A LOD level's colour: eight fixed hues from level 0 (green) through warm to cool, repeating above.
+Rgb lodLevelColour(size_t level);
 // The colour ramp of the fraction colourings at t in [0, 1] (dark blue through teal to yellow), and
 // the largest fraction a cluster can have: (1 - sin 0) / 2, a flat cluster.
 Rgb fractionRamp(double t);

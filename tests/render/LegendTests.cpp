@@ -227,6 +227,15 @@ TEST(Legend, EachColourMeansOneThingInAnyLegend) {
             expectOneMeaningPerColour(scene.legend().entries(), toString(coloring) + " with the " + toString(test) + " test");
         }
     }
+    // A LOD level's classes: the cut's three colours mean one thing each beside every other entry.
+    ClusterLodClasses lod;
+    for (uint32_t c = 0; c < count; ++c) lod.level.push_back(c % 3), lod.group.push_back(c / 4), lod.cut.push_back(uint8_t(c % 3));
+    lod.levelCount = 3;
+    scene.setClusterLod(lod);
+    for (FaceColoring coloring : {FaceColoring::LodLevel, FaceColoring::LodGroup, FaceColoring::LodCut}) {
+        scene.setFaceColoring(coloring);
+        expectOneMeaningPerColour(scene.legend().entries(), toString(coloring) + " with LOD classes");
+    }
     // The Gauss map's legend: its view vector is not any cone method's colour.
     GaussMapScene gauss;
     gauss.show(gaussMapOf(prepared, torus.clusters, 5, explainCull(input, 5, eye, CullTest::Apex)), ConeMethod::Minimal, 5);
