@@ -29,6 +29,7 @@
 #include "GaussMapView.h"
 #include "Glossary.h"
 #include "LessonView.h"
+#include "LodLessonView.h"
 #include "LodPanel.h"
 #include "PickedClusterView.h"
 #include "WorstClustersView.h"
@@ -135,6 +136,9 @@ void MainWindow::createDocks() {
     lessonView_ = new LessonView(this);
     lessonDock_ = dock(tr("Lesson"), "lessonDock", lessonView_, Qt::RightDockWidgetArea);
     tabifyDockWidget(sideDocks_[2], lessonDock_);
+    // Why coarse clusters cull less, with the built hierarchy's own numbers.
+    lodLessonView_ = new LodLessonView(this);
+    tabifyDockWidget(sideDocks_[2], dock(tr("LOD lesson"), "lodLessonDock", lodLessonView_, Qt::RightDockWidgetArea));
     sideDocks_[2]->raise();
 
     // The LOD hierarchy's controls behind the settings (its numbers go to the statistics).
@@ -258,6 +262,8 @@ void MainWindow::showLod(const ClusterScene* previousScene) {
     }
     lodPanel_->showLod(session_);
     statisticsPanel_->showLod(session_.lodStatistics());
+    plots_->showLevels(session_.lodStatistics());
+    lodLessonView_->showStatistics(session_.lodStatistics(), session_.preparedMesh() ? session_.preparedMesh()->name : std::string());
     clusterView_->showPick(session_);
     view_->render();
 }

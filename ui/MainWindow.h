@@ -36,6 +36,7 @@ class EyePanel;
 class EyeView;
 class LessonView;
 class LodPanel;
+class LodLessonView;
 class ObserverView;
 class PickedClusterView;
 class GaussMapView;
@@ -123,6 +124,7 @@ public:
     EyePanel* eyePanel() const { return eyePanel_; }
     StatisticsPanel* statisticsPanel() const { return statisticsPanel_; }
     LodPanel* lodPanel() const { return lodPanel_; }
+    LodLessonView* lodLessonView() const { return lodLessonView_; }
     // Every action with a shortcut, in menu order (what the help dialog lists).
     QList<QAction*> shortcutActions() const;
     QAction* animateAction() const;
@@ -239,6 +241,7 @@ private:
     QDockWidget* lessonDock_ = nullptr;
     CrossSectionView* crossSection_ = nullptr;
     LodPanel* lodPanel_ = nullptr;
+    LodLessonView* lodLessonView_ = nullptr;
     QDockWidget* lodDock_ = nullptr;
     QDockWidget* crossSectionDock_ = nullptr;
     // What the window showed before the lesson, put back when it ends.

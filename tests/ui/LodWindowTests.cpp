@@ -8,9 +8,15 @@
 #include <QtTest>
 
 #include <QVTKOpenGLNativeWidget.h>
+#include <vtkChartXY.h>
+#include <vtkPlot.h>
+#include <vtkTable.h>
+#include <vtkVariant.h>
 
 #include "LodPanel.h"
+#include "LodLessonView.h"
 #include "MainWindow.h"
+#include "PlotsView.h"
 #include "StatisticsPanel.h"
 #include "UiTestSupport.h"
 #include "WindowTestSupport.h"
@@ -108,6 +114,14 @@ private slots:
             QCOMPARE(level["mean_half_angle_deg"].get<double>(), shown->levels[l].meanHalfAngleDegrees);
             QCOMPARE(rows[int(l)], StatisticsPanel::lodLevelLine(shown->levels[l]));
         }
+        // The Levels plot draws the CLI's levels, and the LOD lesson quotes them.
+        vtkTable* plotted = window_->plotsView()->levelsChart()->GetPlot(0)->GetInput();
+        QCOMPARE(size_t(plotted->GetNumberOfRows()), cli["levels"].size());
+        for (size_t l = 0; l < cli["levels"].size(); ++l)
+            QCOMPARE(plotted->GetValueByName(vtkIdType(l), "efficiency").ToDouble(), cli["levels"][l]["efficiency"].get<double>());
+        QVERIFY(window_->lodLessonView()->step() == 1);
+        QVERIFY2(window_->lodLessonView()->text().contains(QString::number(cli["levels"][0]["clusters"].get<size_t>())),
+                 qPrintable(window_->lodLessonView()->text()));
         // The export is the CLI's document for that eye and threshold (only the build time differs).
         const QString exported = temporary_.filePath(QStringLiteral("window-lod.json"));
         QVERIFY(session().exportLodStatistics(exported, StatisticsFormat::Json));
