@@ -190,7 +190,7 @@ Json jsonDocument(const std::string& text, const std::string& source, const char
     Json document;
     try {
         document = Json::parse(text);
-    } catch (const Json::parse_error& error) {
+    } catch (const Json::exception& error) {  // parse_error, and out_of_range for a number past a double
         throw MeshletFileError(source + ": not valid JSON (" + error.what() + ")");
     }
     if (!document.is_object()) failJson(source, "the document", "is not a JSON object");
