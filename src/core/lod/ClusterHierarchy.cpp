@@ -6,6 +6,7 @@
 #include <map>
 #include <unordered_map>
 
+#include "core/Parallel.h"
 #include "core/meshopt/Meshopt.h"
 
 namespace conescope {
@@ -44,16 +45,16 @@ LocalTriangles localTriangles(const std::vector<uint32_t>& indices, const std::v
     return local;
 }
 
-// The simplified triangles of a group split into clusters within the limits, as engines split them:
-// meshoptimizer's builder at cone weight 1 (ConeScope's greedy one where meshoptimizer refuses the
-// limits): per local triangle its cluster.
-Partition splitGroup(const LocalTriangles& local, const std::vector<uint32_t>& indices, const Settings& settings) {
+// The simplified triangles of a group split into clusters within the limits by level 0's builder
+// (the optimized one for a partition read from a file) at `effort`: per local triangle its cluster.
+Partition splitGroup(const LocalTriangles& local, const std::vector<uint32_t>& indices, const Settings& settings, Effort effort) {
     Mesh mesh;
     mesh.positions = local.positions;
     for (size_t t = 0; t + 2 < indices.size(); t += 3) mesh.addFace(&indices[t], 3);
     Settings own = settings;
     if (own.builder == Builder::File) own.builder = Builder::Optimized;
     own.clusterCount = 0;
+    own.effort = effort;
     return buildPartition(mesh, computeFaceGeometry(mesh), own);
 }
 
@@ -68,6 +69,34 @@ std::shared_ptr<Mesh> levelMesh(const Mesh& original, const std::vector<uint32_t
     for (size_t t = 0; t < mesh->faceStarts.size(); ++t) mesh->faceStarts[t] = uint32_t(3 * t);
     mesh->faceArrays["cluster_id"].assign(clusterOfTriangle.begin(), clusterOfTriangle.end());
     return mesh;
+}
+
+// One group of the level above: its triangles simplified (ids into the level's positions) in order of
+// their clusters, numbered in order of first use, and the simplification's error.
+struct SplitGroup {
+    std::vector<uint32_t> triangles, clusterOfTriangle;
+    uint32_t clusterCount = 0;
+    double error = 0.0;
+};
+SplitGroup simplifyAndSplit(const std::vector<uint32_t>& groupTriangles, const std::vector<glm::vec3>& world,
+                            const LodBuildOptions& options, const Settings& settings) {
+    const LocalTriangles local = localTriangles(groupTriangles, world);
+    const size_t count = local.indices.size() / 3;
+    const size_t target = std::max<size_t>(1, size_t(std::ceil(double(count) * options.reduction)));
+    SimplifiedTriangles simplified = simplifyWithLockedBorder(local.positions, local.indices, target);
+    if (simplified.indices.empty()) simplified = {local.indices, 0.0};  // nothing left: keep the group as it was
+    const Partition split = splitGroup(local, simplified.indices, settings, options.splitEffort);
+    std::vector<std::vector<uint32_t>> byCluster(split.clusterCount);
+    for (size_t t = 0; t < split.clusterOfFace.size(); ++t) byCluster[split.clusterOfFace[t]].push_back(uint32_t(t));
+    SplitGroup out;
+    out.clusterCount = split.clusterCount;
+    out.error = simplified.error;
+    for (uint32_t c = 0; c < split.clusterCount; ++c)
+        for (uint32_t t : byCluster[c]) {
+            for (int k = 0; k < 3; ++k) out.triangles.push_back(local.globalVertex[simplified.indices[3 * t + k]]);
+            out.clusterOfTriangle.push_back(c);
+        }
+    return out;
 }
 
 // Level 0's places: no error, each cluster measured from its own bounding sphere.
@@ -100,17 +129,18 @@ NextLevel simplifyLevel(LodLevel& below, const Settings& settings, const LodBuil
     }
     for (size_t c = 0; c < groupOf.size(); ++c) groupClusters[groupOf[c]].push_back(uint32_t(c));
 
+    // Each group simplified and split on its own (on all cores; the same result on any number), then
+    // appended in group order.
+    std::vector<SplitGroup> splits(below.groups);
+    forEachInParallel(below.groups, [&](size_t g, size_t worker) {
+        if (worker == 0) reportProgress(progress, double(g) / double(below.groups), stage);
+        splits[g] = simplifyAndSplit(groupTriangles[g], below.prepared.world, options, settings);
+    });
     NextLevel next;
     for (size_t g = 0; g < below.groups; ++g) {
-        if (g % 16 == 0) reportProgress(progress, double(g) / double(below.groups), stage);
-        const LocalTriangles local = localTriangles(groupTriangles[g], below.prepared.world);
-        const size_t count = local.indices.size() / 3;
-        const size_t target = std::max<size_t>(1, size_t(std::ceil(double(count) * options.reduction)));
-        SimplifiedTriangles simplified = simplifyWithLockedBorder(local.positions, local.indices, target);
-        if (simplified.indices.empty()) simplified = {local.indices, 0.0};  // nothing left: keep the group as it was
         // The group's error and sphere hold its members', and the error grows by at least `step` a
         // level: strictly monotone going up, so that threshold 0 cuts exactly level 0.
-        double error = simplified.error, members = 0.0;
+        double error = splits[g].error, members = 0.0;
         std::vector<Sphere> spheres;
         for (uint32_t c : groupClusters[g]) {
             members = std::max(members, below.place[c].error);
@@ -123,22 +153,14 @@ NextLevel simplifyLevel(LodLevel& below, const Settings& settings, const LodBuil
             below.place[c].parentError = error;
             below.place[c].parentSphere = sphere;
         }
-        // Split, then appended cluster by cluster so that ids come in order of first use.
-        const Partition split = splitGroup(local, simplified.indices, settings);
         const uint32_t first = uint32_t(next.place.size());
-        std::vector<std::vector<uint32_t>> byCluster(split.clusterCount);
-        for (size_t t = 0; t < split.clusterOfFace.size(); ++t) byCluster[split.clusterOfFace[t]].push_back(uint32_t(t));
-        for (uint32_t c = 0; c < split.clusterCount; ++c) {
-            for (uint32_t t : byCluster[c]) {
-                for (int k = 0; k < 3; ++k) next.triangles.push_back(local.globalVertex[simplified.indices[3 * t + k]]);
-                next.clusterOfTriangle.push_back(first + c);
-            }
-            LodCluster made;
-            made.sourceGroup = uint32_t(g);
-            made.error = error;
-            made.errorSphere = sphere;
-            next.place.push_back(made);
-        }
+        next.triangles.insert(next.triangles.end(), splits[g].triangles.begin(), splits[g].triangles.end());
+        for (uint32_t c : splits[g].clusterOfTriangle) next.clusterOfTriangle.push_back(first + c);
+        LodCluster made;
+        made.sourceGroup = uint32_t(g);
+        made.error = error;
+        made.errorSphere = sphere;
+        next.place.insert(next.place.end(), splits[g].clusterCount, made);
     }
     return next;
 }

@@ -11,6 +11,7 @@
 #include <memory>
 #include <vector>
 
+#include "core/Effort.h"
 #include "core/Pipeline.h"
 #include "core/Spheres.h"
 
@@ -62,6 +63,10 @@ struct LodBuildOptions {
     double reduction = 0.5;
     double stallShare = 0.85;
     size_t maxLevels = 24;
+    // How long the optimized builder searches when it splits a simplified group (level 0 is built
+    // with the settings' own effort): fast keeps a 50,000-triangle hierarchy within 3x a default
+    // run; balanced culls a little more per level at about twice the build time (docs/benchmarks.md).
+    Effort splitEffort = Effort::Fast;
 };
 
 // Builds the hierarchy of `prepared`: level 0 by buildClusters with `settings`, the levels above from
