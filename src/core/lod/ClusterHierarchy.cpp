@@ -73,12 +73,12 @@ std::shared_ptr<Mesh> levelMesh(const Mesh& original, const std::vector<uint32_t
 
 // One group of the level above: its triangles simplified (ids into the level's positions) in order of
 // their clusters, numbered in order of first use, and the simplification's error.
-struct SplitGroup {
+struct SimplifiedGroup {
     std::vector<uint32_t> triangles, clusterOfTriangle;
     uint32_t clusterCount = 0;
     double error = 0.0;
 };
-SplitGroup simplifyAndSplit(const std::vector<uint32_t>& groupTriangles, const std::vector<glm::vec3>& world,
+SimplifiedGroup simplifyAndSplit(const std::vector<uint32_t>& groupTriangles, const std::vector<glm::vec3>& world,
                             const LodBuildOptions& options, const Settings& settings) {
     const LocalTriangles local = localTriangles(groupTriangles, world);
     const size_t count = local.indices.size() / 3;
@@ -88,7 +88,7 @@ SplitGroup simplifyAndSplit(const std::vector<uint32_t>& groupTriangles, const s
     const Partition split = splitGroup(local, simplified.indices, settings, options.splitEffort);
     std::vector<std::vector<uint32_t>> byCluster(split.clusterCount);
     for (size_t t = 0; t < split.clusterOfFace.size(); ++t) byCluster[split.clusterOfFace[t]].push_back(uint32_t(t));
-    SplitGroup out;
+    SimplifiedGroup out;
     out.clusterCount = split.clusterCount;
     out.error = simplified.error;
     for (uint32_t c = 0; c < split.clusterCount; ++c)
@@ -131,7 +131,7 @@ NextLevel simplifyLevel(LodLevel& below, const Settings& settings, const LodBuil
 
     // Each group simplified and split on its own (on all cores; the same result on any number), then
     // appended in group order.
-    std::vector<SplitGroup> splits(below.groups);
+    std::vector<SimplifiedGroup> splits(below.groups);
     forEachInParallel(below.groups, [&](size_t g, size_t worker) {
         if (worker == 0) reportProgress(progress, double(g) / double(below.groups), stage);
         splits[g] = simplifyAndSplit(groupTriangles[g], below.prepared.world, options, settings);
