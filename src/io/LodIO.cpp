@@ -147,9 +147,15 @@ void writeLodText(const LodStatistics& statistics, const Settings& settings, std
     if (cones > 0) out << "  " << cones << " cones  false culls";
     out << "\n";
     for (const LodLevelStatistics& level : statistics.levels) {
-        out << std::setw(5) << level.level << std::setw(10) << level.clusters << std::setw(11) << level.triangles << std::setw(11)
-            << std::setprecision(1) << level.meanHalfAngleDegrees << "\u00b0" << std::setw(11) << std::setprecision(4)
-            << level.culling.efficiency << std::setw(10) << level.culling.expectedEfficiency << std::setw(13) << level.culling.falseCulls;
+        // A level none of whose clusters can be culled has no cone width to average (its JSON reads 0).
+        std::ostringstream alpha;
+        if (level.culling.uncullableClusters == level.clusters)
+            alpha << "none";
+        else
+            alpha << std::fixed << std::setprecision(1) << level.meanHalfAngleDegrees << "\u00b0";
+        out << std::setw(5) << level.level << std::setw(10) << level.clusters << std::setw(11) << level.triangles
+            << std::setw(alpha.str() == "none" ? 12 : 13) << alpha.str() << std::setw(11) << std::setprecision(4) << level.culling.efficiency
+            << std::setw(10) << level.culling.expectedEfficiency << std::setw(13) << level.culling.falseCulls;
         if (cones > 0) out << std::setw(9 + (cones > 9)) << level.multiCones.efficiency << std::setw(13) << level.multiCones.falseCulls;
         out << "\n";
     }
