@@ -16,7 +16,8 @@ namespace conescope {
 // culled with probability (1 - sin alpha) / 2, and half of all triangles face away, so a cluster
 // of T triangles contributes T (1 - sin alpha) to sum_c T_c (1 - sin alpha_c) / T, the estimate of
 // the fraction of back-facing triangles culled.
-inline double expectedCulledTriangles(double triangles, double sinHalfAngle) { return triangles * (1.0 - sinHalfAngle); }
+// A cone at the hemisphere (sin alpha rounded a hair above 1) counts 0, never a sliver below.
+inline double expectedCulledTriangles(double triangles, double sinHalfAngle) { return triangles * std::max(0.0, 1.0 - sinHalfAngle); }
 
 // The share of far view directions from which such a cone is culled: (1 - sin alpha) / 2, the area
 // of the cap of half-angle 90 - alpha (CullMap.h: every cluster's cull_fraction).
