@@ -48,10 +48,12 @@ using PartClusters = std::function<void(size_t part, size_t parts, const std::ve
 // `meshlets`: meshoptimizer's meshlets of this mesh at these limits when startsFromMeshoptMeshlets,
 // already started (say while the mesh was being prepared); started here when needed and not given.
 // Its thread helps with the parts once its meshlets are made, so a stream serves one build.
+// `conesPerCluster` > 1: at the balanced and best efforts the partition is built for that many cones
+// per cluster (optimizer/ForCones.h), and no part is heard.
 Partition buildOptimizedClusters(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits,
                                  size_t targetClusters = 0, const ProgressCallback& progress = {},
                                  Effort effort = Effort::Balanced, MeshletStream* meshlets = nullptr,
-                                 const PartClusters& partDone = {});
+                                 const PartClusters& partDone = {}, uint32_t conesPerCluster = 1);
 
 // The annealing sweeps buildOptimizedClusters makes at `effort` on a mesh of `faceCount` faces
 // from meshoptimizer's meshlets in `meshletParts` parts (meshletPartsFor), on each part when there

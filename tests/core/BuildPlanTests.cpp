@@ -76,6 +76,20 @@ TEST(BuildPlan, TheBestLevelGrowsAndRunsTheBalancedPlanToo) {
     EXPECT_FALSE(planBuild(Effort::Balanced, 50, facts).climb);
 }
 
+TEST(BuildPlan, BalancedAndBestAimAtKConesFastDoesNot) {
+    BuildFacts facts = factsOf(5000, 0, 41);
+    EXPECT_EQ(planBuild(Effort::Balanced, 0, facts).forCones, 1u);
+    facts.conesPerCluster = 4;
+    EXPECT_EQ(planBuild(Effort::Fast, 0, facts).forCones, 1u);
+    const BuildPlan balanced = planBuild(Effort::Balanced, 0, facts), best = planBuild(Effort::Best, 0, facts);
+    EXPECT_EQ(balanced.forCones, 4u);
+    EXPECT_EQ(balanced.forConesTryBelow, 0.0);
+    EXPECT_EQ(best.forCones, 4u);
+    EXPECT_EQ(best.forConesTryBelow, kForConesTryBelowBest);
+    // Everything else is the plan for one cone.
+    EXPECT_EQ(balanced.start, planBuild(Effort::Balanced, 0, factsOf(5000, 0, 41)).start);
+}
+
 TEST(BuildPlan, LargeMeshesSkipTheFinish) {
     const BuildPlan plan = planBuild(Effort::Balanced, 500, factsOf(kPackingFacesAtMost + 1, 600, 300));
     EXPECT_FALSE(plan.annealFurther || plan.packWhenMissed);

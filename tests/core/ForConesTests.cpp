@@ -65,5 +65,25 @@ TEST(ForCones, TryingMoreMovesGainsAtLeastAsMuchHereAndIsRepeatable) {
     EXPECT_GE(objective(thorough.mesh, thorough.faces, thorough.partition, 2), objective(quick.mesh, quick.faces, quick.partition, 2));
 }
 
+TEST(ForCones, TheBuilderAimedAtKConesKeepsTheDefaultCountAndGains) {
+    const Elephant e;
+    std::vector<size_t> heard;
+    const PartClusters hear = [&](size_t part, size_t, const std::vector<uint32_t>&, const Partition&) { heard.push_back(part); };
+    const Partition aimed = buildOptimizedClusters(e.mesh, e.faces, kLimits, 0, {}, Effort::Balanced, nullptr, hear, 4);
+    EXPECT_TRUE(heard.empty()) << "faces move across parts afterwards: a part heard would be bounded stale";
+    EXPECT_EQ(aimed.clusterCount, e.partition.clusterCount);
+    expectValidWithinLimits(e.mesh, aimed, kLimits);
+    EXPECT_GT(objective(e.mesh, e.faces, aimed, 4), objective(e.mesh, e.faces, e.partition, 4));
+    // The fast effort is not aimed: the default partition.
+    EXPECT_EQ(buildOptimizedClusters(e.mesh, e.faces, kLimits, 0, {}, Effort::Fast, nullptr, {}, 4).clusterOfFace,
+              buildOptimizedClusters(e.mesh, e.faces, kLimits, 0, {}, Effort::Fast).clusterOfFace);
+}
+
+TEST(ForCones, CancelStopsTheMoves) {
+    Elephant e;
+    const ProgressCallback cancel = [](double fraction, const std::string&) { return fraction <= 0.0; };  // stops at the second report
+    EXPECT_THROW(refineForCones(e.mesh, e.faces, kLimits, 4, e.partition, 6, 0.0, cancel), OperationCancelled);
+}
+
 }  // namespace
 }  // namespace conescope

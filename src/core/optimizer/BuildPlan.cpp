@@ -86,6 +86,10 @@ BuildPlan planBuild(Effort effort, size_t budget, const BuildFacts& facts) {
     chooseFinish(plan, facts);
     plan.climb = climbs(plan, facts);
     plan.alsoBalanced = effort == Effort::Best;
+    if (facts.conesPerCluster > 1 && effort != Effort::Fast) {
+        plan.forCones = facts.conesPerCluster;
+        plan.forConesTryBelow = effort == Effort::Best ? kForConesTryBelowBest : 0.0;
+    }
     return plan;
 }
 

@@ -24,16 +24,23 @@ constexpr size_t kPackingFacesAtMost = size_t(1) << 17;
 constexpr size_t kClimbWork = size_t(1) << 17;
 constexpr size_t kClimbStrideAtMost = 8;
 constexpr double kClimbAboveCount = 1.25;
+// A partition built for K cones: sweeps over the faces at most, and how far below zero a move
+// weighed with the kept sub-groups is still tried at the best effort (docs/benchmarks.md,
+// "A partition built for K cones").
+constexpr int kForConesPasses = 6;
+constexpr double kForConesTryBelowBest = 2.0;
 
 // What the build knows before it starts: the mesh's faces, whether meshoptimizer takes the limits,
 // its meshlet count there (0 where no explicit budget is set against it: asking waits for every
-// meshlet), the fewest clusters the limits allow and the default orbit's distance.
+// meshlet), the fewest clusters the limits allow, the default orbit's distance and the cones per
+// cluster the record will have.
 struct BuildFacts {
     size_t faces = 0;
     bool meshoptLimits = false;
     size_t meshletCount = 0;
     size_t fewest = 0;
     double viewDistance = 0.0;
+    uint32_t conesPerCluster = 1;
 };
 
 // Where a build starts: meshoptimizer's meshlets (searched at the budget), the same split to a
@@ -59,6 +66,11 @@ struct BuildPlan {
     bool climb = false;
     // The best level runs the balanced plan too and keeps the better (never below the default).
     bool alsoBalanced = false;
+    // For K > 1 cones per cluster, balanced and best move faces afterwards while the K sub-groups'
+    // expected culling rises (optimizer/ForCones.h); best also tries moves the kept sub-groups
+    // weigh at down to -kForConesTryBelowBest triangles. 1: not aimed at K cones.
+    uint32_t forCones = 1;
+    double forConesTryBelow = 0.0;
 };
 
 // How each effort searches (sweeps, growth where meshlets leave clusters with no cone).

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "BuildPlan.h"
+#include "ForCones.h"
 #include "Parts.h"
 #include "Runs.h"
 #include "State.h"
@@ -370,10 +371,10 @@ Partition bestOfBoth(const BuildInputs& in, const BuildPlan& plan, const Progres
 
 Partition buildOptimizedClusters(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits,
                                  size_t targetClusters, const ProgressCallback& progress, Effort effort,
-                                 MeshletStream* meshlets, const PartClusters& partDone) {
+                                 MeshletStream* meshlets, const PartClusters& partDone, uint32_t conesPerCluster) {
     if (mesh.faceCount() == 0) return {};
     const double viewDistance = kOrbitDistance * double(computeAabb(mesh.positions).halfDiagonal());
-    BuildInputs in{mesh, faces, limits, meshlets, {mesh.faceCount(), meshoptTakesLimits(limits), 0, fewestClustersWithin(mesh, limits), viewDistance}};
+    BuildInputs in{mesh, faces, limits, meshlets, {mesh.faceCount(), meshoptTakesLimits(limits), 0, fewestClustersWithin(mesh, limits), viewDistance, conesPerCluster}};
     // One stream of meshoptimizer's meshlets for every step; its count (which waits for every
     // meshlet) is asked for only where an explicit budget is set against it.
     std::unique_ptr<MeshletStream> ownStream;
@@ -382,9 +383,18 @@ Partition buildOptimizedClusters(const Mesh& mesh, const FaceGeometry& faces, co
         if (targetClusters != 0) in.facts.meshletCount = in.meshlets->meshletCount();
     }
     const BuildPlan plan = planBuild(effort, targetClusters, in.facts);
-    if (plan.alsoBalanced) return bestOfBoth(in, plan, progress, partDone);
-    if (plan.climb) return climbed(in, plan, progress, partDone);
-    return atBudget(in, plan, progress, partDone);
+    // Aimed at K cones, faces move across the parts afterwards: no part is heard.
+    const PartClusters none;
+    const PartClusters& heard = plan.forCones > 1 ? none : partDone;
+    const double built = plan.forCones > 1 ? 0.8 : 1.0;  // the moves for K cones take the rest
+    const ProgressCallback building = built < 1.0 ? progressShare(progress, 0.0, built) : progress;
+    Partition partition = plan.alsoBalanced ? bestOfBoth(in, plan, building, heard)
+                          : plan.climb      ? climbed(in, plan, building, heard)
+                                            : atBudget(in, plan, building, heard);
+    if (plan.forCones > 1)
+        refineForCones(mesh, faces, limits, plan.forCones, partition, kForConesPasses, plan.forConesTryBelow,
+                       progressShare(progress, built, 1.0));
+    return partition;
 }
 
 }  // namespace conescope

@@ -1,6 +1,7 @@
 #include "ForCones.h"
 
 #include <algorithm>
+#include <string>
 
 #include "core/Adjacency.h"
 #include "core/MultiCones.h"
@@ -132,7 +133,7 @@ ConeGroupSplit splitClusterForCones(const Mesh& mesh, const FaceGeometry& faces,
 }
 
 size_t refineForCones(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits, uint32_t conesPerCluster,
-                      Partition& partition, int passes, double tryBelow) {
+                      Partition& partition, int passes, double tryBelow, const ProgressCallback& progress) {
     std::vector<uint32_t>& clusterOf = partition.clusterOfFace;
     std::vector<std::vector<uint32_t>> members(partition.clusterCount);
     for (uint32_t f = 0; f < clusterOf.size(); ++f) members[clusterOf[f]].push_back(f);
@@ -162,6 +163,9 @@ size_t refineForCones(const Mesh& mesh, const FaceGeometry& faces, const Meshlet
     for (int pass = 0; pass < passes; ++pass) {
         double passGain = 0.0;
         for (uint32_t f = 0; f < clusterOf.size(); ++f) {
+            if (f % 4096 == 0)
+                reportProgress(progress, (pass + double(f) / double(clusterOf.size())) / passes,
+                               "clusters for " + std::to_string(conesPerCluster) + " cones");
             const uint32_t from = clusterOf[f];
             if (faces.degenerate[f] || clusters.splits[from].faces.size() < 2) continue;
             uint32_t best = UINT32_MAX;

@@ -11,6 +11,7 @@
 #include "core/Cones.h"
 #include "core/Mesh.h"
 #include "core/Partition.h"
+#include "core/Progress.h"
 
 namespace conescope {
 
@@ -32,8 +33,9 @@ ConeGroupSplit splitClusterForCones(const Mesh& mesh, const FaceGeometry& faces,
 // gains under a ten-thousandth. A move is first weighed with both clusters' sub-groups as they are
 // (cheap: no split) and tried only when that gains more than -`tryBelow` triangles; it is made when
 // the two clusters split again gain (a split may find bundles the kept sub-groups miss, so a larger
-// `tryBelow` finds more moves in more time). Returns the moves made.
+// `tryBelow` finds more moves in more time). Returns the moves made. `progress` hears the sweeps
+// ("clusters for K cones"); returning false throws OperationCancelled.
 size_t refineForCones(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits, uint32_t conesPerCluster,
-                      Partition& partition, int passes = 6, double tryBelow = 0.0);
+                      Partition& partition, int passes = 6, double tryBelow = 0.0, const ProgressCallback& progress = {});
 
 }  // namespace conescope
