@@ -1,10 +1,17 @@
 #include "Charts.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <functional>
 #include <string>
 
 #include <vtkAxis.h>
+#include <vtkContext2D.h>
+#include <vtkObjectFactory.h>
+#include <vtkStringArray.h>
+#include <vtkTransform2D.h>
+#include <vtkVariant.h>
 #include <vtkChartLegend.h>
 #include <vtkChartXY.h>
 #include <vtkDoubleArray.h>
@@ -199,6 +206,148 @@ void plotLevels(vtkChartXY* chart, const LodStatistics* statistics) {
     // Top left: the bars stay low there and the rising lines reach the top on the right.
     chart->GetLegend()->SetHorizontalAlignment(vtkChartLegend::LEFT);
     chart->GetLegend()->SetVerticalAlignment(vtkChartLegend::TOP);
+    chart->Modified();
+}
+
+}  // namespace conescope
+
+namespace conescope {
+
+namespace {
+
+// Writes each row's "record" beside its point, in pixels off the point and clear of the labels
+// placed before it: vtkChartXY draws no labels of its own.
+class PointLabels : public vtkPlot {
+public:
+    static PointLabels* New();
+    vtkTypeMacro(PointLabels, vtkPlot);
+
+    bool Paint(vtkContext2D* painter) override {
+        vtkTable* table = GetInput();
+        auto* names = table ? vtkStringArray::SafeDownCast(table->GetColumnByName("record")) : nullptr;
+        if (!names) return false;
+        const bool logX = GetXAxis() && GetXAxis()->GetLogScaleActive();
+        std::vector<std::array<float, 2>> screen;
+        for (vtkIdType row = 0; row < table->GetNumberOfRows(); ++row) {
+            const double x = table->GetValueByName(row, "bytes per cluster").ToDouble();
+            float point[2] = {float(logX ? std::log10(x) : x), float(table->GetValueByName(row, "culled share").ToDouble())};
+            float placed[2];
+            painter->GetTransform()->TransformPoints(point, placed, 1);
+            screen.push_back({placed[0], placed[1]});
+        }
+        painter->PushMatrix();
+        vtkNew<vtkTransform2D> identity;
+        painter->SetTransform(identity);
+        painter->GetTextProp()->SetFontSize(11);
+        painter->GetTextProp()->SetColor(0.1, 0.1, 0.1);
+        painter->GetTextProp()->SetJustificationToLeft();
+        painter->GetTextProp()->SetVerticalJustificationToCentered();
+        std::vector<std::array<float, 4>> taken;  // x0, y0, x1, y1 of each label drawn
+        for (size_t row = 0; row < screen.size(); ++row) {
+            const std::string label = names->GetValue(vtkIdType(row));
+            const float width = 6.5f * float(label.size()), height = 13.0f;
+            float x = screen[row][0] + 7.0f, y = screen[row][1];
+            const auto clashes = [&](float top) {
+                for (const auto& box : taken)
+                    if (x < box[2] && x + width > box[0] && top - height / 2 < box[3] && top + height / 2 > box[1]) return true;
+                return false;
+            };
+            for (int step = 1; step < 12 && clashes(y); ++step) y = screen[row][1] + (step % 2 ? -1.0f : 1.0f) * height * float((step + 1) / 2);
+            taken.push_back({x, y - height / 2, x + width, y + height / 2});
+            painter->DrawString(x, y, label);
+        }
+        painter->PopMatrix();
+        return true;
+    }
+};
+vtkStandardNewMacro(PointLabels);
+
+// The rows of `report` whose record passes `keep`, as a table for one plot.
+vtkSmartPointer<vtkTable> rowsWhere(const GranularityReport& report, const std::function<bool(const std::string&)>& keep) {
+    GranularityReport kept;
+    for (const GranularityRow& row : report.rows)
+        if (keep(row.record)) kept.rows.push_back(row);
+    return granularityTable(kept);
+}
+
+vtkPlot* addSeries(vtkChartXY* chart, int type, vtkTable* table, const char* label, const unsigned char (&colour)[3]) {
+    vtkPlot* plot = chart->AddPlot(type);
+    plot->SetInputData(table, "bytes per cluster", "culled share");
+    plot->SetColor(colour[0], colour[1], colour[2], 255);
+    plot->SetWidth(2.0);
+    plot->SetLabel(label);
+    if (auto* points = vtkPlotPoints::SafeDownCast(plot)) {
+        points->SetMarkerStyle(vtkPlotPoints::CIRCLE);
+        points->SetMarkerSize(8.0);
+    }
+    return plot;
+}
+
+}  // namespace
+
+vtkSmartPointer<vtkTable> granularityTable(const GranularityReport& report) {
+    auto table = vtkSmartPointer<vtkTable>::New();
+    for (const char* name : {"bytes per cluster", "culled share"}) {
+        vtkNew<vtkDoubleArray> column;
+        column->SetName(name);
+        table->AddColumn(column);
+    }
+    vtkNew<vtkStringArray> records;
+    records->SetName("record");
+    table->AddColumn(records);
+    table->SetNumberOfRows(vtkIdType(report.rows.size()));
+    for (size_t row = 0; row < report.rows.size(); ++row) {
+        table->SetValue(vtkIdType(row), 0, double(report.rows[row].bytesPerCluster));
+        table->SetValue(vtkIdType(row), 1, report.rows[row].culledShare);
+        table->SetValue(vtkIdType(row), 2, vtkVariant(report.rows[row].record));
+    }
+    return table;
+}
+
+void plotGranularity(vtkChartXY* chart, const GranularityReport* report) {
+    chart->ClearPlots();
+    const bool shown = report && !report->rows.empty();
+    chart->SetTitle(shown ? "Culled share of all triangles against bytes per cluster" : "Granularity not measured");
+    double lowest = 8.0, highest = 64.0, top = 0.5, ceiling = 0.0;
+    if (shown) {
+        const auto isMulti = [](const std::string& record, bool compact) {
+            return record.rfind("cones-", 0) == 0 && (record.find("-compact") != std::string::npos) == compact;
+        };
+        addSeries(chart, vtkChart::POINTS, rowsWhere(*report, [&](const std::string& r) { return r != "triangle" && r.rfind("cones-", 0) != 0; }),
+                  "one cone per cluster", {40, 110, 220});
+        addSeries(chart, vtkChart::LINE, rowsWhere(*report, [&](const std::string& r) { return isMulti(r, false); }), "2, 4, 8 cones (float)",
+                  {230, 100, 20});
+        addSeries(chart, vtkChart::LINE, rowsWhere(*report, [&](const std::string& r) { return isMulti(r, true); }), "2, 4, 8 cones (compact)",
+                  {30, 150, 70});
+        addSeries(chart, vtkChart::POINTS, rowsWhere(*report, [](const std::string& r) { return r == "triangle"; }), "per triangle",
+                  {120, 40, 160});
+        lowest = highest = double(report->rows.front().bytesPerCluster);
+        for (const GranularityRow& row : report->rows) {
+            lowest = std::min(lowest, double(row.bytesPerCluster));
+            highest = std::max(highest, double(row.bytesPerCluster));
+            top = std::max(top, row.culledShare);
+            if (row.record == "triangle") ceiling = row.culledShare;
+        }
+        lowest = std::max(1.0, lowest / 1.3), highest *= 2.0;
+        GranularityReport line;
+        line.rows = {GranularityRow{"", size_t(lowest), 0, 0, 0, 0, ceiling}, GranularityRow{"", size_t(highest), 0, 0, 0, 0, ceiling}};
+        vtkPlot* limit = addSeries(chart, vtkChart::LINE, granularityTable(line), "the ceiling: every back face", {120, 40, 160});
+        limit->GetPen()->SetLineType(vtkPen::DASH_LINE);
+        if (auto* points = vtkPlotPoints::SafeDownCast(limit)) points->SetMarkerStyle(vtkPlotPoints::NONE);
+        vtkNew<PointLabels> labels;
+        labels->SetInputData(granularityTable(*report), "bytes per cluster", "culled share");
+        labels->SetLegendVisibility(false);
+        chart->AddPlot(labels);
+    }
+    setAxes(chart, "bytes per cluster (log scale)", "culled share of all triangles");
+    vtkAxis* bottom = chart->GetAxis(vtkAxis::BOTTOM);
+    bottom->SetLogScale(true);
+    bottom->SetBehavior(vtkAxis::FIXED);
+    bottom->SetUnscaledRange(lowest, highest);
+    fixRange(chart->GetAxis(vtkAxis::LEFT), 0.0, std::min(1.0, top * 1.15));
+    chart->SetShowLegend(shown);
+    chart->GetLegend()->SetHorizontalAlignment(vtkChartLegend::RIGHT);
+    chart->GetLegend()->SetVerticalAlignment(vtkChartLegend::BOTTOM);
     chart->Modified();
 }
 
