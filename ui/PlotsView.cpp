@@ -128,8 +128,9 @@ void PlotsView::showLevels(const LodStatistics* statistics) {
 
 void PlotsView::showGranularity(const GranularityReport* report) {
     plotGranularity(granularity_.chart, report);
-    granularity_.caption->setText(report ? tr("Culled share of all triangles against bytes per cluster; dashed: per-triangle culling, "
-                                              "the ceiling.")
+    granularity_.caption->setText(report ? tr("Culled share of all triangles against bytes per cluster. Blue: one cone per cluster "
+                                              "(each test); orange: 2, 4, 8 cones; green: the same, compact; purple, dashed: per "
+                                              "triangle, the ceiling.")
                                          : tr("Measure the granularity (Granularity dock) to plot what each record culls and costs."));
     render(granularity_);
 }

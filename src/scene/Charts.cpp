@@ -235,25 +235,50 @@ public:
             painter->GetTransform()->TransformPoints(point, placed, 1);
             screen.push_back({placed[0], placed[1]});
         }
+        // The plot's left and right edges on screen: labels stay between them.
+        float edges[4] = {float(GetXAxis() ? GetXAxis()->GetMinimum() : 0.0), 0.0f, float(GetXAxis() ? GetXAxis()->GetMaximum() : 0.0), 0.0f};
+        painter->GetTransform()->TransformPoints(edges, edges, 2);
         painter->PushMatrix();
         vtkNew<vtkTransform2D> identity;
         painter->SetTransform(identity);
-        painter->GetTextProp()->SetFontSize(11);
+        painter->GetTextProp()->SetFontSize(10);
         painter->GetTextProp()->SetColor(0.1, 0.1, 0.1);
         painter->GetTextProp()->SetJustificationToLeft();
         painter->GetTextProp()->SetVerticalJustificationToCentered();
         std::vector<std::array<float, 4>> taken;  // x0, y0, x1, y1 of each label drawn
-        for (size_t row = 0; row < screen.size(); ++row) {
+        const auto clashes = [&taken, &edges](float x, float y, float width, float height) {
+            if (x < edges[0] || x + width > edges[2]) return true;
+            for (const auto& box : taken)
+                if (x < box[2] && x + width > box[0] && y - height / 2 < box[3] && y + height / 2 > box[1]) return true;
+            return false;
+        };
+        // The finer records (K cones, per triangle) are labelled first: on a small chart they keep theirs.
+        std::vector<size_t> order(screen.size());
+        for (size_t row = 0; row < order.size(); ++row) order[row] = row;
+        std::stable_partition(order.begin(), order.end(), [names](size_t row) {
+            const std::string record = names->GetValue(vtkIdType(row));
+            return record == "triangle" || record.rfind("cones-", 0) == 0;
+        });
+        for (size_t row : order) {
             const std::string label = names->GetValue(vtkIdType(row));
-            const float width = 6.5f * float(label.size()), height = 13.0f;
-            float x = screen[row][0] + 7.0f, y = screen[row][1];
-            const auto clashes = [&](float top) {
-                for (const auto& box : taken)
-                    if (x < box[2] && x + width > box[0] && top - height / 2 < box[3] && top + height / 2 > box[1]) return true;
-                return false;
-            };
-            for (int step = 1; step < 12 && clashes(y); ++step) y = screen[row][1] + (step % 2 ? -1.0f : 1.0f) * height * float((step + 1) / 2);
+            const float width = 6.0f * float(label.size()), height = 12.0f;
+            const float px = screen[row][0], py = screen[row][1];
+            // Right of the point, else left of it, else a line or two up or down with a line back to the
+            // point; where none is free (a small chart) no label: the point's tooltip names it.
+            float x = px + 7.0f, y = py;
+            if (clashes(x, y, width, height)) x = px - 7.0f - width;
+            int step = 1;
+            for (; step < 9 && clashes(x, y, width, height); ++step) {
+                x = step % 4 < 2 ? px + 7.0f : px - 7.0f - width;
+                y = py + (step % 2 ? -1.0f : 1.0f) * height * float((step + 3) / 4);
+            }
+            if (step == 9) continue;
             taken.push_back({x, y - height / 2, x + width, y + height / 2});
+            if (y != py) {
+                painter->GetPen()->SetColor(140, 140, 140);
+                painter->GetPen()->SetWidth(1.0f);
+                painter->DrawLine(px, py, x < px ? x + width : x, y);
+            }
             painter->DrawString(x, y, label);
         }
         painter->PopMatrix();
@@ -276,6 +301,8 @@ vtkPlot* addSeries(vtkChartXY* chart, int type, vtkTable* table, const char* lab
     plot->SetColor(colour[0], colour[1], colour[2], 255);
     plot->SetWidth(2.0);
     plot->SetLabel(label);
+    plot->SetIndexedLabels(vtkStringArray::SafeDownCast(table->GetColumnByName("record")));
+    plot->SetTooltipLabelFormat("%i: %x bytes per cluster, culled share %y");
     if (auto* points = vtkPlotPoints::SafeDownCast(plot)) {
         points->SetMarkerStyle(vtkPlotPoints::CIRCLE);
         points->SetMarkerSize(8.0);
@@ -307,7 +334,8 @@ vtkSmartPointer<vtkTable> granularityTable(const GranularityReport& report) {
 void plotGranularity(vtkChartXY* chart, const GranularityReport* report) {
     chart->ClearPlots();
     const bool shown = report && !report->rows.empty();
-    chart->SetTitle(shown ? "Culled share of all triangles against bytes per cluster" : "Granularity not measured");
+    // The caption under the chart says what it shows and which colour is which: the labels need the room.
+    chart->SetTitle(shown ? "" : "Granularity not measured");
     double lowest = 8.0, highest = 64.0, top = 0.5, ceiling = 0.0;
     if (shown) {
         const auto isMulti = [](const std::string& record, bool compact) {
@@ -328,7 +356,7 @@ void plotGranularity(vtkChartXY* chart, const GranularityReport* report) {
             top = std::max(top, row.culledShare);
             if (row.record == "triangle") ceiling = row.culledShare;
         }
-        lowest = std::max(1.0, lowest / 1.3), highest *= 2.0;
+        lowest = std::max(1.0, lowest / 1.3), highest *= 1.8;
         GranularityReport line;
         line.rows = {GranularityRow{"", size_t(lowest), 0, 0, 0, 0, ceiling}, GranularityRow{"", size_t(highest), 0, 0, 0, 0, ceiling}};
         vtkPlot* limit = addSeries(chart, vtkChart::LINE, granularityTable(line), "the ceiling: every back face", {120, 40, 160});
@@ -339,15 +367,13 @@ void plotGranularity(vtkChartXY* chart, const GranularityReport* report) {
         labels->SetLegendVisibility(false);
         chart->AddPlot(labels);
     }
-    setAxes(chart, "bytes per cluster (log scale)", "culled share of all triangles");
+    setAxes(chart, "bytes per cluster (log scale)", "culled share");
     vtkAxis* bottom = chart->GetAxis(vtkAxis::BOTTOM);
     bottom->SetLogScale(true);
     bottom->SetBehavior(vtkAxis::FIXED);
     bottom->SetUnscaledRange(lowest, highest);
     fixRange(chart->GetAxis(vtkAxis::LEFT), 0.0, std::min(1.0, top * 1.15));
-    chart->SetShowLegend(shown);
-    chart->GetLegend()->SetHorizontalAlignment(vtkChartLegend::RIGHT);
-    chart->GetLegend()->SetVerticalAlignment(vtkChartLegend::BOTTOM);
+    chart->SetShowLegend(false);
     chart->Modified();
 }
 
