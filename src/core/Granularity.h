@@ -27,7 +27,7 @@ struct GranularityRow {
 // How wide the cones of K sub-groups per cluster open (K = 1: each cluster's own minimal cone).
 struct GranularityConeWidths {
     uint32_t cones = 1;
-    double meanHalfAngleDegrees = 0.0;  // triangle-weighted over the sub-groups with a cone; 0 when none has one
+    double meanHalfAngleDegrees = 0.0;  // triangle-weighted over the sub-groups with a cone; 0 when none has one (conelessShare 1)
     double conelessShare = 0.0;         // of all triangles: in sub-groups no cone narrower than a hemisphere holds
     double expectedCulledShare = 0.0;   // sum T (1 - sin alpha) / 2 / T: culled from a random far direction
 };

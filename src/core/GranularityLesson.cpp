@@ -76,16 +76,18 @@ std::string widthStep(const LessonNumbers& n) {
     bool narrowing = true;
     for (size_t i = 0; i < widths.size(); ++i) {
         const std::string sep = i == 0 ? "" : i + 1 == widths.size() ? " and " : ", ";
-        angles += sep + degrees(widths[i].meanHalfAngleDegrees);
+        // No sub-group with a cone: no width to quote (its mean reads 0).
+        angles += sep + (widths[i].conelessShare >= 1.0 ? std::string("none") : degrees(widths[i].meanHalfAngleDegrees));
         coneless += sep + percent(widths[i].conelessShare);
         expected += sep + percent(widths[i].expectedCulledShare);
         counts += sep + std::to_string(widths[i].cones);
-        if (i > 0 && !(widths[i].meanHalfAngleDegrees < widths[i - 1].meanHalfAngleDegrees)) narrowing = false;
+        if (widths[i].conelessShare >= 1.0 || (i > 0 && !(widths[i].meanHalfAngleDegrees < widths[i - 1].meanHalfAngleDegrees)))
+            narrowing = false;
     }
     return "Split each cluster's triangles into K sub-groups of similar normals, each with a cone of its own and the "
            "cluster's sphere: each cone holds fewer normals, and a sub-group facing away is culled even when another "
            "sub-group of its cluster faces the eye. With " + counts + " cones per cluster the mean half-angle \u03b1 of the "
-           "cones (weighted by triangles) is " + angles + (narrowing ? ": the more cones, the narrower. " : ". ") +
+           "cones (weighted by triangles, over the sub-groups that have one) is " + angles + (narrowing ? ": the more cones, the narrower. " : ". ") +
            "The sub-groups no cone narrower than a hemisphere holds (never culled) hold " + coneless + " of all triangles. "
            "A cone of half-angle \u03b1 is culled from (1 \u2212 sin \u03b1)/2 of the far view directions, so the cones promise " +
            expected + " of all triangles culled from a random direction.";
@@ -115,7 +117,7 @@ std::string costStep(const LessonNumbers& n) {
             " points of all triangles";
     if (steps.back() < steps[steps.size() - 2])
         return text + ": the last doubling gains less than the one before, while its cones cost bytes in every cluster.";
-    return text + ": on this mesh the last doubling still gains as much as the one before.";
+    return text + ": on this mesh the last doubling still gains no less than the one before.";
 }
 
 std::string ceilingStep(const LessonNumbers& n) {

@@ -95,3 +95,17 @@ TEST(GranularityLesson, ReportWithoutItsRowsIsRefused) {
     report.widths.clear();
     EXPECT_THROW(makeGranularityLesson(report), std::invalid_argument);
 }
+
+// A cube is one cluster whose normals no cone narrower than a hemisphere holds: the lesson quotes no
+// width for it and claims no narrowing it did not measure.
+TEST(GranularityLesson, AClusterWithoutAConeHasNoWidth) {
+    Settings settings;
+    settings.views = 16;
+    const GranularityReport report = runGranularity(testmesh::quadCube(), settings, "cube");
+    ASSERT_EQ(report.run.clusters, 1u);
+    EXPECT_EQ(report.widths[0].conelessShare, 1.0);
+    const GranularityLesson lesson = makeGranularityLesson(report);
+    EXPECT_NE(lesson.steps[1].text.find("is none, "), std::string::npos) << lesson.steps[1].text;
+    EXPECT_EQ(lesson.steps[1].text.find("the more cones, the narrower"), std::string::npos) << lesson.steps[1].text;
+    EXPECT_EQ(lesson.steps[0].text.find("culled 0.0% of the back faces"), lesson.steps[0].text.find("culled ")) << lesson.steps[0].text;
+}
