@@ -15,6 +15,7 @@
 
 #include "io/ClusterIdFile.h"
 #include "io/ComparisonIO.h"
+#include "io/GranularityIO.h"
 #include "io/LodIO.h"
 #include "io/MeshWriter.h"
 #include "io/StatisticsIO.h"
@@ -56,6 +57,13 @@ void exportLodStatistics(const LodStatistics& statistics, const Settings& settin
     writeFile(path, [&](std::ostream& out) {
         if (format == StatisticsFormat::Csv) writeLodCsv(statistics, out);
         else out << lodStatisticsToJson(statistics, settings).dump(2) << "\n";
+    });
+}
+
+void exportGranularity(const GranularityReport& report, const std::string& path, StatisticsFormat format) {
+    writeFile(path, [&](std::ostream& out) {
+        if (format == StatisticsFormat::Csv) writeGranularityCsv(report, out);
+        else out << granularityToJson(report).dump(2) << "\n";
     });
 }
 

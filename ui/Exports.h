@@ -6,6 +6,7 @@
 #include <string>
 
 #include "core/Comparison.h"
+#include "core/Granularity.h"
 #include "core/Pipeline.h"
 #include "core/lod/LodCut.h"
 
@@ -35,6 +36,10 @@ Comparison exportComparison(const PreparedMesh& prepared, const ClusterConfigura
 // A LOD hierarchy's statistics (measureHierarchy with `settings`) as `conescope-cli lod` writes them
 // with the same settings (io/LodIO.h): JSON with `levels` and `cut`, or its CSV. Throws as exportStatistics.
 void exportLodStatistics(const LodStatistics& statistics, const Settings& settings, const std::string& path, StatisticsFormat format);
+
+// A granularity report as `conescope-cli granularity` writes it (io/GranularityIO.h): JSON with its
+// `rows`, or one CSV row per record. Throws as exportStatistics.
+void exportGranularity(const GranularityReport& report, const std::string& path, StatisticsFormat format);
 
 // The culled mesh with cluster_id and the per-cluster cone and bound arrays per face
 // (partitionFaceArrays, cull_fraction for `test`), through writePolyData: .vtp or .vtk keep the

@@ -30,6 +30,8 @@
 #include "Glossary.h"
 #include "LessonView.h"
 #include "LodLessonView.h"
+#include "GranularityLessonView.h"
+#include "GranularityPanel.h"
 #include "LodPanel.h"
 #include "PickedClusterView.h"
 #include "WorstClustersView.h"
@@ -139,6 +141,11 @@ void MainWindow::createDocks() {
     // Why coarse clusters cull less, with the built hierarchy's own numbers.
     lodLessonView_ = new LodLessonView(this);
     tabifyDockWidget(sideDocks_[2], dock(tr("LOD lesson"), "lodLessonDock", lodLessonView_, Qt::RightDockWidgetArea));
+    // What each record granularity culls and costs, and why, behind the statistics.
+    granularityPanel_ = new GranularityPanel(this);
+    tabifyDockWidget(sideDocks_[2], dock(tr("Granularity"), "granularityDock", granularityPanel_, Qt::RightDockWidgetArea));
+    granularityLessonView_ = new GranularityLessonView(this);
+    tabifyDockWidget(sideDocks_[2], dock(tr("Granularity lesson"), "granularityLessonDock", granularityLessonView_, Qt::RightDockWidgetArea));
     sideDocks_[2]->raise();
 
     // The LOD hierarchy's controls behind the settings (its numbers go to the statistics).
@@ -192,6 +199,7 @@ void MainWindow::connectSession() {
         if (session_.scene()) render();
     });
     connect(&session_, &Session::lodChanged, this, &MainWindow::showLod);
+    connect(&session_, &Session::granularityChanged, this, &MainWindow::showGranularity);
     connect(&session_, &Session::errorOccurred, this, &MainWindow::showError);
     connect(&session_, &Session::notice, statusBar(), &QStatusBar::showMessage);
 }
@@ -223,6 +231,11 @@ void MainWindow::connectControls() {
         const QString path = QFileDialog::getSaveFileName(this, tr("Export LOD statistics"), QString(), tr("JSON (*.json);;CSV (*.csv)"));
         if (!path.isEmpty()) session_.exportLodStatistics(path, statisticsFormatOf(path.toStdString()));
     });
+    connect(granularityPanel_, &GranularityPanel::measureRequested, &session_, &Session::measureGranularity);
+    connect(granularityPanel_, &GranularityPanel::exportRequested, this, [this]() {
+        const QString path = QFileDialog::getSaveFileName(this, tr("Export granularity"), QString(), tr("JSON (*.json);;CSV (*.csv)"));
+        if (!path.isEmpty()) session_.exportGranularity(path, statisticsFormatOf(path.toStdString()));
+    });
     connect(lodPanel_, &LodPanel::levelChosen, &session_, &Session::showLodLevel);
     connect(lodPanel_, &LodPanel::thresholdChanged, &session_, &Session::setLodThreshold);
     connect(lodPanel_, &LodPanel::coloringChosen, &session_, &Session::setFaceColoring);
@@ -251,6 +264,14 @@ void MainWindow::showScene(const ClusterScene* previous, bool newMesh) {
     const EyeMeasurement* measurement = session_.measurement();
     plots_->showHalfAngles(measurement ? measurement->statistics.clusters : std::vector<ClusterStatistics>{});
     showOrbit();
+    showGranularity();
+}
+
+void MainWindow::showGranularity() {
+    const GranularityReport* report = session_.granularity();
+    granularityPanel_->showReport(report, session_.clusters() != nullptr);
+    plots_->showGranularity(report);
+    granularityLessonView_->showReport(report);
 }
 
 void MainWindow::showLod(const ClusterScene* previousScene) {

@@ -35,6 +35,8 @@ class CrossSectionView;
 class EyePanel;
 class EyeView;
 class LessonView;
+class GranularityLessonView;
+class GranularityPanel;
 class LodPanel;
 class LodLessonView;
 class ObserverView;
@@ -125,6 +127,8 @@ public:
     StatisticsPanel* statisticsPanel() const { return statisticsPanel_; }
     LodPanel* lodPanel() const { return lodPanel_; }
     LodLessonView* lodLessonView() const { return lodLessonView_; }
+    GranularityPanel* granularityPanel() const { return granularityPanel_; }
+    GranularityLessonView* granularityLessonView() const { return granularityLessonView_; }
     // Every action with a shortcut, in menu order (what the help dialog lists).
     QList<QAction*> shortcutActions() const;
     QAction* animateAction() const;
@@ -212,6 +216,8 @@ private:
     void showEyeMeasurement();
     // The LOD scene in the observer view (or the partition's back), the LOD dock, statistics and pick.
     void showLod(const ClusterScene* previousScene);
+    // The granularity report (or none) in its dock, the plots and its lesson.
+    void showGranularity();
     void showOrbit();
     void showMesh(const QString& path, const QString& loadMessage);
     void showError(const QString& title, const QString& message);
@@ -242,6 +248,8 @@ private:
     CrossSectionView* crossSection_ = nullptr;
     LodPanel* lodPanel_ = nullptr;
     LodLessonView* lodLessonView_ = nullptr;
+    GranularityPanel* granularityPanel_ = nullptr;
+    GranularityLessonView* granularityLessonView_ = nullptr;
     QDockWidget* lodDock_ = nullptr;
     QDockWidget* crossSectionDock_ = nullptr;
     // What the window showed before the lesson, put back when it ends.

@@ -35,6 +35,11 @@ PlotsView::PlotsView(QWidget* parent) : QTabWidget(parent) {
                          "triangle-weighted mean cone half-angle \u03b1 on the right axis. Coarser clusters cover more surface, "
                          "their normals spread wider and their cones cull from fewer places."));
     showLevels(nullptr);
+    granularity_ = addPlot(tr("Granularity"), "Granularity not measured", QString(),
+                           tr("For each record measured (Granularity dock): the share of all triangles it culled over the orbit's "
+                              "views against the bytes it stores per cluster. One cone per cluster for each test, 2, 4 and 8 cones "
+                              "per cluster as float and compact records, and per-triangle culling: every back face, the ceiling."));
+    showGranularity(nullptr);
     connect(this, &QTabWidget::currentChanged, this, [this]() { render(); });
     // A click on the efficiency plot moves the eye to that view; a drag still pans the chart. The
     // chart takes the press, so the clicks are watched passively.
@@ -121,6 +126,17 @@ void PlotsView::showLevels(const LodStatistics* statistics) {
     render(levels_);
 }
 
+void PlotsView::showGranularity(const GranularityReport* report) {
+    plotGranularity(granularity_.chart, report);
+    granularity_.caption->setText(report ? tr("Culled share of all triangles against bytes per cluster. Blue: one cone per cluster "
+                                              "(each test); orange: 2, 4, 8 cones; green: the same, compact; purple, dashed: per "
+                                              "triangle, the ceiling.")
+                                         : tr("Measure the granularity (Granularity dock) to plot what each record culls and costs."));
+    render(granularity_);
+}
+
+vtkChartXY* PlotsView::granularityChart() const { return granularity_.chart; }
+
 vtkChartXY* PlotsView::levelsChart() const { return levels_.chart; }
 
 QString PlotsView::levelsCaption() const { return levels_.caption->text(); }
@@ -129,6 +145,7 @@ void PlotsView::render() {
     render(efficiency_);
     render(histogram_);
     render(levels_);
+    render(granularity_);
 }
 
 void PlotsView::render(const Plot& plot) {

@@ -10,6 +10,7 @@
 
 #include <vtkSmartPointer.h>
 
+#include "core/Granularity.h"
 #include "core/Statistics.h"
 #include "core/lod/LodCut.h"
 
@@ -32,6 +33,11 @@ public:
     // The "Levels" tab: efficiency and mean cone half-angle per level of a measured hierarchy
     // (plotLevels); null empties it and says that no hierarchy is built.
     void showLevels(const LodStatistics* statistics);
+    // The "Granularity" tab: culled share against bytes per cluster of each record (plotGranularity);
+    // null empties it and says that nothing is measured.
+    void showGranularity(const GranularityReport* report);
+    vtkChartXY* granularityChart() const;
+    QVTKOpenGLNativeWidget* granularityWidget() const { return granularity_.widget; }
     // Renders the plot on screen, if any.
     void render();
     // The orbit view under a point of the efficiency plot (VTK display coordinates, x from the
@@ -61,6 +67,7 @@ private:
     Plot efficiency_;
     Plot histogram_;
     Plot levels_;
+    Plot granularity_;
     size_t viewCount_ = 0;
     int pressX_ = 0, pressY_ = 0;
 };

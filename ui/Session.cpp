@@ -184,6 +184,7 @@ void Session::setShownSettings(const Settings& settings) {
     shown_.settings = settings;
     // A is seen from the same eyes as B.
     if (pin_) pin_->settings = withSharedOptions(pin_->settings, settings);
+    dropStaleGranularity();
 }
 
 void Session::requestClusters() {

@@ -28,6 +28,7 @@
 #include "SessionLod.h"
 #include "TaskRunner.h"
 #include "core/Comparison.h"
+#include "core/Granularity.h"
 #include "core/Lesson.h"
 #include "core/Pipeline.h"
 #include "scene/ClusterScene.h"
@@ -210,7 +211,24 @@ public:
     // What the LOD scene's cluster `cluster` is in the hierarchy (the cut's clusters come from levels).
     std::optional<LodClusterId> lodClusterOf(int cluster) const;
 
+    // --- The granularity report (SessionGranularity.cpp) -------------------------------------------
+    // Measures the granularity report of the shown clusters with the shown settings over the orbit's
+    // views (measureGranularity) in the background, with progress and Cancel; granularityChanged()
+    // when it is shown.
+    void measureGranularity();
+    // The report of the shown clusters and settings; null before it is measured and as soon as the
+    // clusters or settings shown are others than it was measured with.
+    const GranularityReport* granularity() const;
+    // What the report is measured with: the shown settings for the orbit, every test with the shown
+    // one first (granularitySettings). `conescope-cli granularity` with them writes the same rows.
+    Settings granularityRunSettings() const;
+    // The report shown as `conescope-cli granularity` writes it; false (and errorOccurred) without one
+    // or when it cannot be written.
+    bool exportGranularity(const QString& path, StatisticsFormat format);
+
 signals:
+    // The granularity report was measured, or dropped with the clusters or settings it was made for.
+    void granularityChanged();
     // A pin was set, swapped or cleared, or its comparison with the current settings was measured.
     void comparisonChanged();
     // A new scene (new mesh or new clusters), its eye already measured. `previous` (null for the
@@ -321,6 +339,12 @@ private:
     std::optional<Comparison> eyeComparison_;
     std::optional<OrbitComparison> orbitComparison_;
     std::unique_ptr<SessionLod> lod_;
+    // The granularity report and what it was measured from.
+    std::shared_ptr<const GranularityReport> granularity_;
+    std::shared_ptr<const ClusterSet> granularityClusters_;
+    Settings granularitySettings_;
+    // Drops the report when the shown clusters or settings are not its own (granularityChanged()).
+    void dropStaleGranularity();
 };
 
 }  // namespace conescope

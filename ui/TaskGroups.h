@@ -12,5 +12,6 @@ inline const QString orbit = QStringLiteral("orbit");
 inline const QString exports = QStringLiteral("export");
 inline const QString comparison = QStringLiteral("comparison");
 inline const QString lod = QStringLiteral("lod");
+inline const QString granularity = QStringLiteral("granularity");
 
 }  // namespace conescope::taskgroups

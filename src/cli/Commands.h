@@ -77,6 +77,7 @@ struct GranularityOptions {
     SettingsOptions run;
     std::string format;                // "json", "csv", "text" or empty: as for stats
     std::string output;                // empty = stdout
+    std::string writeLesson;           // where to write the lesson on why more cones cull more (Markdown)
     bool quiet = false;
 };
 

@@ -5,6 +5,7 @@
 #include "cli/CommandSupport.h"
 #include "cli/Commands.h"
 #include "core/Granularity.h"
+#include "core/GranularityLesson.h"
 #include "io/ClusterIdFile.h"
 #include "io/GranularityIO.h"
 
@@ -28,6 +29,8 @@ CLI::App* addGranularityCommand(CLI::App& app, GranularityOptions& options, cons
     command->add_option("--format", options.format, "Output format (default: from the output's extension; on a terminal text, else json)")
         ->check(CLI::IsMember({"json", "csv", "text"}));
     command->add_option("-o,--output", options.output, "Output file, replaced only when the run succeeds (default: stdout)");
+    command->add_option("--write-lesson", options.writeLesson,
+                        "Write the lesson on why more cones cull more and what they cost, with this mesh's numbers, to this Markdown file");
     command->add_flag("-q,--quiet", options.quiet, "No progress messages on stderr");
     return command;
 }
@@ -46,6 +49,10 @@ void runGranularity(const GranularityOptions& options) {
         writeGranularityText(report, text);
     else
         text << granularityToJson(report).dump(2) << "\n";
+    if (!options.writeLesson.empty()) {
+        writeText(options.writeLesson, granularityLessonMarkdown(makeGranularityLesson(report)));
+        note(options.quiet, "wrote " + options.writeLesson);
+    }
     writeText(options.output, text.str());
     if (!options.output.empty()) note(options.quiet, "wrote " + options.output);
 }

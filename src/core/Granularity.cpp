@@ -1,7 +1,10 @@
 #include "Granularity.h"
 
 #include <algorithm>
+#include <cmath>
 #include <set>
+
+#include "ExpectedCull.h"
 
 #include "MultiCones.h"
 #include "RecordTests.h"
@@ -30,6 +33,29 @@ size_t largestClusterTriangles(const Mesh& mesh, const ClusterBounds& bounds) {
         largest = std::max(largest, triangles);
     }
     return largest;
+}
+
+GranularityConeWidths coneWidthsOf(const MultiCones& multi) {
+    GranularityConeWidths widths;
+    widths.cones = multi.conesPerCluster;
+    double triangles = 0.0, withCone = 0.0, angleSum = 0.0, coneless = 0.0, expected = 0.0;
+    for (size_t g = 0; g < multi.groupCount(); ++g) {
+        const double t = multi.groupTriangles[g];
+        const ConeOfNormals& cone = multi.cones[g];
+        triangles += t;
+        if (t == 0.0) continue;
+        if (!cone.cullable) {
+            coneless += t;
+            continue;
+        }
+        withCone += t;
+        angleSum += t * cone.halfAngle() * 180.0 / M_PI;
+        expected += t * coneCullShare(cone.sinHalfAngle);
+    }
+    widths.meanHalfAngleDegrees = withCone > 0.0 ? angleSum / withCone : 0.0;
+    widths.conelessShare = triangles > 0.0 ? coneless / triangles : 0.0;
+    widths.expectedCulledShare = triangles > 0.0 ? expected / triangles : 0.0;
+    return widths;
 }
 
 }  // namespace
@@ -61,7 +87,8 @@ std::vector<GranularityRow> oneConeRows(const RunStatistics& run) {
 }
 
 std::vector<GranularityRow> finerRows(const PreparedMesh& prepared, const ClusterSet& clusters, const std::vector<Eye>& views,
-                                      const Settings& settings, const ProgressCallback& progress) {
+                                      const Settings& settings, const ProgressCallback& progress,
+                                      std::vector<GranularityConeWidths>* widths) {
     const Mesh& mesh = prepared.mesh();
     const ClusterBounds& bounds = clusters.bounds;
     const size_t largest = largestClusterTriangles(mesh, bounds);
@@ -73,6 +100,10 @@ std::vector<GranularityRow> finerRows(const PreparedMesh& prepared, const Cluste
     for (uint32_t k : kGranularityCones) {
         multis.push_back(computeMultiCones(mesh, prepared.faces, bounds, k));
         compacts.push_back(compactMultiCones(prepared.faces, bounds, multis.back(), prepared.box));
+    }
+    if (widths) {
+        widths->assign(1, coneWidthsOf(computeMultiCones(mesh, prepared.faces, bounds, 1)));
+        for (const MultiCones& multi : multis) widths->push_back(coneWidthsOf(multi));
     }
     for (size_t i = 0; i < multis.size(); ++i)
         for (bool compact : {false, true}) {
@@ -132,7 +163,7 @@ GranularityReport measureGranularity(const PreparedMesh& prepared, const Cluster
     report.run = measureRun(prepared, clusters, settings, progressWithin(progress, 0.0, 0.5));
     report.rows = oneConeRows(report.run);
     const std::vector<GranularityRow> finer =
-        finerRows(prepared, clusters, viewsFor(settings, prepared.box), settings, progressWithin(progress, 0.5, 1.0));
+        finerRows(prepared, clusters, viewsFor(settings, prepared.box), settings, progressWithin(progress, 0.5, 1.0), &report.widths);
     report.rows.insert(report.rows.end(), finer.begin(), finer.end());
     return report;
 }

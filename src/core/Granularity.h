@@ -24,9 +24,18 @@ struct GranularityRow {
     size_t falseCulls = 0;         // culled clusters or sub-groups holding a visible face
 };
 
+// How wide the cones of K sub-groups per cluster open (K = 1: each cluster's own minimal cone).
+struct GranularityConeWidths {
+    uint32_t cones = 1;
+    double meanHalfAngleDegrees = 0.0;  // triangle-weighted over the sub-groups with a cone; 0 when none has one (conelessShare 1)
+    double conelessShare = 0.0;         // of all triangles: in sub-groups no cone narrower than a hemisphere holds
+    double expectedCulledShare = 0.0;   // sum T (1 - sin alpha) / 2 / T: culled from a random far direction
+};
+
 struct GranularityReport {
     RunStatistics run;             // the one-cone rows' statistics, as `stats` gives them
     std::vector<GranularityRow> rows;
+    std::vector<GranularityConeWidths> widths;  // K = 1 and each of kGranularityCones (measureGranularity)
 };
 
 // The sub-group counts the rows are made for.
@@ -43,9 +52,10 @@ std::vector<GranularityRow> oneConeRows(const RunStatistics& run);
 
 // The K-cone rows (float and compact record for each of kGranularityCones) and the per-triangle row
 // after `clusterTest` (the run's displayed test), over `views`: one pass of the oracle per view.
-// `progress` hears of every view and may cancel there.
+// `progress` hears of every view and may cancel there. `widths`, when given, gets each K's cone widths.
 std::vector<GranularityRow> finerRows(const PreparedMesh& prepared, const ClusterSet& clusters, const std::vector<Eye>& views,
-                                      const Settings& settings, const ProgressCallback& progress = {});
+                                      const Settings& settings, const ProgressCallback& progress = {},
+                                      std::vector<GranularityConeWidths>* widths = nullptr);
 
 // The whole report from prepared stages: measureRun for the one-cone rows, finerRows for the others.
 GranularityReport measureGranularity(const PreparedMesh& prepared, const ClusterSet& clusters, const Settings& settings,

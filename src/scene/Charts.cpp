@@ -1,10 +1,17 @@
 #include "Charts.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <functional>
 #include <string>
 
 #include <vtkAxis.h>
+#include <vtkContext2D.h>
+#include <vtkObjectFactory.h>
+#include <vtkStringArray.h>
+#include <vtkTransform2D.h>
+#include <vtkVariant.h>
 #include <vtkChartLegend.h>
 #include <vtkChartXY.h>
 #include <vtkDoubleArray.h>
@@ -199,6 +206,174 @@ void plotLevels(vtkChartXY* chart, const LodStatistics* statistics) {
     // Top left: the bars stay low there and the rising lines reach the top on the right.
     chart->GetLegend()->SetHorizontalAlignment(vtkChartLegend::LEFT);
     chart->GetLegend()->SetVerticalAlignment(vtkChartLegend::TOP);
+    chart->Modified();
+}
+
+}  // namespace conescope
+
+namespace conescope {
+
+namespace {
+
+// Writes each row's "record" beside its point, in pixels off the point and clear of the labels
+// placed before it: vtkChartXY draws no labels of its own.
+class PointLabels : public vtkPlot {
+public:
+    static PointLabels* New();
+    vtkTypeMacro(PointLabels, vtkPlot);
+
+    bool Paint(vtkContext2D* painter) override {
+        vtkTable* table = GetInput();
+        auto* names = table ? vtkStringArray::SafeDownCast(table->GetColumnByName("record")) : nullptr;
+        if (!names) return false;
+        const bool logX = GetXAxis() && GetXAxis()->GetLogScaleActive();
+        std::vector<std::array<float, 2>> screen;
+        for (vtkIdType row = 0; row < table->GetNumberOfRows(); ++row) {
+            const double x = table->GetValueByName(row, "bytes per cluster").ToDouble();
+            float point[2] = {float(logX ? std::log10(x) : x), float(table->GetValueByName(row, "culled share").ToDouble())};
+            float placed[2];
+            painter->GetTransform()->TransformPoints(point, placed, 1);
+            screen.push_back({placed[0], placed[1]});
+        }
+        // The plot's left and right edges on screen: labels stay between them.
+        float edges[4] = {float(GetXAxis() ? GetXAxis()->GetMinimum() : 0.0), 0.0f, float(GetXAxis() ? GetXAxis()->GetMaximum() : 0.0), 0.0f};
+        painter->GetTransform()->TransformPoints(edges, edges, 2);
+        painter->PushMatrix();
+        vtkNew<vtkTransform2D> identity;
+        painter->SetTransform(identity);
+        painter->GetTextProp()->SetFontSize(10);
+        painter->GetTextProp()->SetColor(0.1, 0.1, 0.1);
+        painter->GetTextProp()->SetJustificationToLeft();
+        painter->GetTextProp()->SetVerticalJustificationToCentered();
+        std::vector<std::array<float, 4>> taken;  // x0, y0, x1, y1 of each label drawn
+        const auto clashes = [&taken, &edges](float x, float y, float width, float height) {
+            if (x < edges[0] || x + width > edges[2]) return true;
+            for (const auto& box : taken)
+                if (x < box[2] && x + width > box[0] && y - height / 2 < box[3] && y + height / 2 > box[1]) return true;
+            return false;
+        };
+        // The finer records (K cones, per triangle) are labelled first: on a small chart they keep theirs.
+        std::vector<size_t> order(screen.size());
+        for (size_t row = 0; row < order.size(); ++row) order[row] = row;
+        std::stable_partition(order.begin(), order.end(), [names](size_t row) {
+            const std::string record = names->GetValue(vtkIdType(row));
+            return record == "triangle" || record.rfind("cones-", 0) == 0;
+        });
+        for (size_t row : order) {
+            const std::string label = names->GetValue(vtkIdType(row));
+            const float width = 6.0f * float(label.size()), height = 12.0f;
+            const float px = screen[row][0], py = screen[row][1];
+            // Right of the point, else left of it, else a line or two up or down with a line back to the
+            // point; where none is free (a small chart) no label: the point's tooltip names it.
+            float x = px + 7.0f, y = py;
+            if (clashes(x, y, width, height)) x = px - 7.0f - width;
+            int step = 1;
+            for (; step < 9 && clashes(x, y, width, height); ++step) {
+                x = step % 4 < 2 ? px + 7.0f : px - 7.0f - width;
+                y = py + (step % 2 ? -1.0f : 1.0f) * height * float((step + 3) / 4);
+            }
+            if (step == 9) continue;
+            taken.push_back({x, y - height / 2, x + width, y + height / 2});
+            if (y != py) {
+                painter->GetPen()->SetColor(140, 140, 140);
+                painter->GetPen()->SetWidth(1.0f);
+                painter->DrawLine(px, py, x < px ? x + width : x, y);
+            }
+            painter->DrawString(x, y, label);
+        }
+        painter->PopMatrix();
+        return true;
+    }
+};
+vtkStandardNewMacro(PointLabels);
+
+// The rows of `report` whose record passes `keep`, as a table for one plot.
+vtkSmartPointer<vtkTable> rowsWhere(const GranularityReport& report, const std::function<bool(const std::string&)>& keep) {
+    GranularityReport kept;
+    for (const GranularityRow& row : report.rows)
+        if (keep(row.record)) kept.rows.push_back(row);
+    return granularityTable(kept);
+}
+
+vtkPlot* addSeries(vtkChartXY* chart, int type, vtkTable* table, const char* label, const unsigned char (&colour)[3]) {
+    vtkPlot* plot = chart->AddPlot(type);
+    plot->SetInputData(table, "bytes per cluster", "culled share");
+    plot->SetColor(colour[0], colour[1], colour[2], 255);
+    plot->SetWidth(2.0);
+    plot->SetLabel(label);
+    plot->SetIndexedLabels(vtkStringArray::SafeDownCast(table->GetColumnByName("record")));
+    plot->SetTooltipLabelFormat("%i: %x bytes per cluster, culled share %y");
+    if (auto* points = vtkPlotPoints::SafeDownCast(plot)) {
+        points->SetMarkerStyle(vtkPlotPoints::CIRCLE);
+        points->SetMarkerSize(8.0);
+    }
+    return plot;
+}
+
+}  // namespace
+
+vtkSmartPointer<vtkTable> granularityTable(const GranularityReport& report) {
+    auto table = vtkSmartPointer<vtkTable>::New();
+    for (const char* name : {"bytes per cluster", "culled share"}) {
+        vtkNew<vtkDoubleArray> column;
+        column->SetName(name);
+        table->AddColumn(column);
+    }
+    vtkNew<vtkStringArray> records;
+    records->SetName("record");
+    table->AddColumn(records);
+    table->SetNumberOfRows(vtkIdType(report.rows.size()));
+    for (size_t row = 0; row < report.rows.size(); ++row) {
+        table->SetValue(vtkIdType(row), 0, double(report.rows[row].bytesPerCluster));
+        table->SetValue(vtkIdType(row), 1, report.rows[row].culledShare);
+        table->SetValue(vtkIdType(row), 2, vtkVariant(report.rows[row].record));
+    }
+    return table;
+}
+
+void plotGranularity(vtkChartXY* chart, const GranularityReport* report) {
+    chart->ClearPlots();
+    const bool shown = report && !report->rows.empty();
+    // The caption under the chart says what it shows and which colour is which: the labels need the room.
+    chart->SetTitle(shown ? "" : "Granularity not measured");
+    double lowest = 8.0, highest = 64.0, top = 0.5, ceiling = 0.0;
+    if (shown) {
+        const auto isMulti = [](const std::string& record, bool compact) {
+            return record.rfind("cones-", 0) == 0 && (record.find("-compact") != std::string::npos) == compact;
+        };
+        addSeries(chart, vtkChart::POINTS, rowsWhere(*report, [&](const std::string& r) { return r != "triangle" && r.rfind("cones-", 0) != 0; }),
+                  "one cone per cluster", {40, 110, 220});
+        addSeries(chart, vtkChart::LINE, rowsWhere(*report, [&](const std::string& r) { return isMulti(r, false); }), "2, 4, 8 cones (float)",
+                  {230, 100, 20});
+        addSeries(chart, vtkChart::LINE, rowsWhere(*report, [&](const std::string& r) { return isMulti(r, true); }), "2, 4, 8 cones (compact)",
+                  {30, 150, 70});
+        addSeries(chart, vtkChart::POINTS, rowsWhere(*report, [](const std::string& r) { return r == "triangle"; }), "per triangle",
+                  {120, 40, 160});
+        lowest = highest = double(report->rows.front().bytesPerCluster);
+        for (const GranularityRow& row : report->rows) {
+            lowest = std::min(lowest, double(row.bytesPerCluster));
+            highest = std::max(highest, double(row.bytesPerCluster));
+            top = std::max(top, row.culledShare);
+            if (row.record == "triangle") ceiling = row.culledShare;
+        }
+        lowest = std::max(1.0, lowest / 1.3), highest *= 1.8;
+        GranularityReport line;
+        line.rows = {GranularityRow{"", size_t(lowest), 0, 0, 0, 0, ceiling}, GranularityRow{"", size_t(highest), 0, 0, 0, 0, ceiling}};
+        vtkPlot* limit = addSeries(chart, vtkChart::LINE, granularityTable(line), "the ceiling: every back face", {120, 40, 160});
+        limit->GetPen()->SetLineType(vtkPen::DASH_LINE);
+        if (auto* points = vtkPlotPoints::SafeDownCast(limit)) points->SetMarkerStyle(vtkPlotPoints::NONE);
+        vtkNew<PointLabels> labels;
+        labels->SetInputData(granularityTable(*report), "bytes per cluster", "culled share");
+        labels->SetLegendVisibility(false);
+        chart->AddPlot(labels);
+    }
+    setAxes(chart, "bytes per cluster (log scale)", "culled share");
+    vtkAxis* bottom = chart->GetAxis(vtkAxis::BOTTOM);
+    bottom->SetLogScale(true);
+    bottom->SetBehavior(vtkAxis::FIXED);
+    bottom->SetUnscaledRange(lowest, highest);
+    fixRange(chart->GetAxis(vtkAxis::LEFT), 0.0, std::min(1.0, top * 1.15));
+    chart->SetShowLegend(false);
     chart->Modified();
 }
 

@@ -8,6 +8,7 @@
 
 #include <vtkSmartPointer.h>
 
+#include "core/Granularity.h"
 #include "core/Statistics.h"
 #include "core/lod/LodCut.h"
 
@@ -45,5 +46,15 @@ vtkSmartPointer<vtkTable> levelTable(const LodStatistics& statistics);
 // share of clusters without a cone as lines on the left axis [0, 1], the mean cone half-angle as a
 // line on the right axis [0, 90] degrees. Null: no plots, and a title saying no hierarchy is built.
 void plotLevels(vtkChartXY* chart, const LodStatistics* statistics);
+
+// One row per granularity row, in the report's order: "bytes per cluster", "culled share" and the
+// row's "record" name (a string column).
+vtkSmartPointer<vtkTable> granularityTable(const GranularityReport& report);
+
+// Replaces the chart's plots: culled share of all triangles (y) against bytes per cluster (x, log
+// scale), one marked point per row, each labelled with its record: the one-cone records, the float
+// and the compact K-cone records as two lines through 2, 4 and 8 cones, and the per-triangle row with
+// a dashed line at its share, the ceiling. Null: no plots, and a title saying nothing is measured.
+void plotGranularity(vtkChartXY* chart, const GranularityReport* report);
 
 }  // namespace conescope

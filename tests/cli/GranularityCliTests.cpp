@@ -7,6 +7,8 @@
 #include <nlohmann/json.hpp>
 
 #include "CliTestSupport.h"
+#include "core/GranularityLesson.h"
+#include "io/MeshReader.h"
 
 namespace conescope {
 namespace {
@@ -78,6 +80,26 @@ TEST(CliGranularity, CsvAndTextCarryTheRows) {
     EXPECT_EQ(lines.back().rfind("triangle,28,", 0), 0u);  // per-triangle after the apex test
     EXPECT_NE(textRun.out.find("cones-4-compact"), std::string::npos);
     EXPECT_NE(textRun.out.find("per-triangle culling after the minimal/apex cluster test"), std::string::npos);
+}
+
+// --write-lesson writes the core's lesson on the same report as Markdown, beside the rows.
+TEST(CliGranularity, WritesTheLessonOfItsReport) {
+    clitest::ScratchDirectory scratch;
+    const std::string lessonPath = scratch.file("lesson.md");
+    const CliRun run = runCli({"granularity", "--quiet", dataset("elephant.off"), "--views", "16", "--write-lesson", lessonPath, "-o",
+                               scratch.file("rows.json")});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    Settings settings = granularitySettings(Settings{}, false);
+    settings.views = 16;
+    const GranularityReport report = runGranularity(readMesh(dataset("elephant.off")), settings, "elephant.off");
+    const std::string lesson = clitest::readTextFile(lessonPath);
+    EXPECT_EQ(lesson, granularityLessonMarkdown(makeGranularityLesson(report)));
+    EXPECT_EQ(lesson.rfind("# Why more cones cull more, and what they cost: elephant.off\n", 0), 0u);
+    // It quotes the rows the command wrote.
+    const nlohmann::json rows = nlohmann::json::parse(clitest::readTextFile(scratch.file("rows.json")));
+    for (const nlohmann::json& row : rows["rows"])
+        if (row["record"] == "cones-4-compact")
+            EXPECT_NE(lesson.find(std::to_string(row["bytes_per_cluster"].get<int>()) + " bytes"), std::string::npos);
 }
 
 TEST(CliGranularity, BadMeshIsAnError) {
