@@ -118,7 +118,7 @@ void cullMeshoptLoop(benchmark::State& state, bool large, bool apex) {
     countClusters(state, culled.size());
 }
 
-// One pass of the K-cone record's sub-group tests (float record, sphere test per sub-group): the
+// One pass of the K-cone record's sub-group tests (float record, apex test per sub-group): the
 // exact double test, and the batched float kernel at each SIMD level.
 void cullMultiCones(benchmark::State& state, bool large, uint32_t k) {
     const Scene& s = scene(large);
@@ -134,11 +134,11 @@ void cullMultiCones(benchmark::State& state, bool large, uint32_t k) {
 void cullMultiConesBatched(benchmark::State& state, bool large, uint32_t k, SimdLevel level) {
     const Scene& s = scene(large);
     const MultiCones multi = computeMultiCones(s.mesh, s.faces, s.bounds, k);
-    const ClusterBatch batch = subGroupBatch(multi.cones, s.bounds.spheres, k);
+    const ClusterBatch batch = subGroupBatch(multi.cones, multi.apexes);
     std::vector<uint8_t> culled(batch.count);
     size_t view = 0;
     for (auto _ : state) {
-        cullSphereBatch(batch, s.eyes[view++ % s.eyes.size()].position, culled.data(), level);
+        cullApexBatch(batch, s.eyes[view++ % s.eyes.size()].position, culled.data(), level);
         benchmark::DoNotOptimize(culled.data());
         benchmark::ClobberMemory();
     }

@@ -35,13 +35,14 @@ std::vector<Eye> someEyes(std::mt19937_64& random) {
 
 }  // namespace
 
-TEST(MultiCones, OneConeEqualsTheSphereTest) {
+// One sub-group is the cluster: its minimal cone and the apex behind it from the sphere's centre.
+TEST(MultiCones, OneConeEqualsTheApexTest) {
     std::mt19937_64 random(7);
     const Clustered c(testmesh::torus(1.0, 0.4, 24, 12), 32);
     const MultiCones one = computeMultiCones(c.mesh, c.faces, c.bounds, 1);
     const CullingInput input{c.mesh, c.world, c.faces, c.bounds};
     for (const Eye& eye : someEyes(random))
-        EXPECT_EQ(cullSubGroups(c.bounds, one, eye), cullClustersExact(input, eye, CullTest::Sphere));
+        EXPECT_EQ(cullSubGroups(c.bounds, one, eye), cullClustersExact(input, eye, CullTest::Apex));
 }
 
 TEST(MultiCones, SubGroupsHoldEveryFaceOnce) {
