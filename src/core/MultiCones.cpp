@@ -52,12 +52,15 @@ std::vector<uint8_t> lloyd(const glm::dvec3* normals, const uint32_t* triangles,
     const uint32_t groups = uint32_t(seeds.size());
     std::vector<uint8_t> group(count, 0);
     for (int iteration = 0; iteration < 8; ++iteration) {
+        bool moved = iteration == 0;
         for (size_t i = 0; i < count; ++i) {
             uint8_t best = 0;
             for (uint32_t g = 1; g < groups; ++g)
                 if (glm::dot(normals[i], seeds[g]) > glm::dot(normals[i], seeds[best])) best = uint8_t(g);
+            moved |= group[i] != best;
             group[i] = best;
         }
+        if (!moved) break;  // settled: the means would not move again
         std::vector<glm::dvec3> sums(groups, glm::dvec3(0.0));
         for (size_t i = 0; i < count; ++i) sums[group[i]] += double(triangles[i]) * normals[i];
         for (uint32_t g = 0; g < groups; ++g)
@@ -105,21 +108,31 @@ double valueWithout(const SplitGroup& group, const glm::dvec3* normals, const ui
 // sub-group where the sum gains most, while a move gains: Lloyd balances directions, while the
 // culled share is decided by each cone's widest normal. The receiving cone is weighed around its
 // axis (a lower bound, so every move taken gains) and both minimal cones made again after a move.
-void refineOnBoundaries(const glm::dvec3* normals, const uint32_t* triangles, std::vector<SplitGroup>& split, int passes) {
+void refineOnBoundaries(const glm::dvec3* normals, const uint32_t* triangles, size_t count, std::vector<SplitGroup>& split, int passes) {
+    // A move changes two sub-groups: each value is kept with the version of the sub-group it was
+    // weighed in, and weighed again only once that sub-group has changed.
+    const size_t groups = split.size();
+    constexpr uint32_t kNever = ~0u;
+    std::vector<uint32_t> version(groups, 0), withoutVersion(count * groups, kNever), withVersion(count * groups, kNever);
+    std::vector<double> withoutValue(count * groups), withValue(count * groups);
     std::vector<glm::dvec3> tips;
     for (int pass = 0; pass < passes; ++pass) {
         double bestGain = 1e-9;
         size_t bestFrom = 0, bestTo = 0, bestFace = 0;
-        for (size_t from = 0; from < split.size(); ++from) {
+        for (size_t from = 0; from < groups; ++from) {
             const SplitGroup& source = split[from];
             if (!source.cone.cullable || source.members.size() < 2) continue;
             for (size_t i : source.members) {
                 if (glm::dot(normals[i], source.cone.axis) > source.cone.cosHalfAngle + 1e-6) continue;  // inside, not holding it
-                const double without = valueWithout(source, normals, triangles, i, tips);
-                for (size_t to = 0; to < split.size(); ++to) {
+                const size_t own = i * groups + from;
+                if (withoutVersion[own] != version[from])
+                    withoutValue[own] = valueWithout(source, normals, triangles, i, tips), withoutVersion[own] = version[from];
+                for (size_t to = 0; to < groups; ++to) {
                     if (to == from || split[to].members.empty()) continue;
-                    const double with = valueWithAroundAxis(split[to], normals, triangles, i, tips);
-                    const double gain = without + with - source.value - split[to].value;
+                    const size_t key = i * groups + to;
+                    if (withVersion[key] != version[to])
+                        withValue[key] = valueWithAroundAxis(split[to], normals, triangles, i, tips), withVersion[key] = version[to];
+                    const double gain = withoutValue[own] + withValue[key] - source.value - split[to].value;
                     if (gain > bestGain) bestGain = gain, bestFrom = from, bestTo = to, bestFace = i;
                 }
             }
@@ -130,6 +143,7 @@ void refineOnBoundaries(const glm::dvec3* normals, const uint32_t* triangles, st
         split[bestTo].members.push_back(bestFace);
         measureGroup(split[bestFrom], normals, triangles);
         measureGroup(split[bestTo], normals, triangles);
+        ++version[bestFrom], ++version[bestTo];
     }
 }
 
@@ -142,7 +156,7 @@ std::vector<uint8_t> splitForCones(const glm::dvec3* normals, const uint32_t* tr
     // Lloyd from spread seeds, refined on the cones' boundaries; kept where it beats one group.
     std::vector<SplitGroup> split =
         groupsOf(normals, triangles, count, lloyd(normals, triangles, count, farthestSeeds(normals, count, groups)), groups);
-    refineOnBoundaries(normals, triangles, split, int(2 * count));
+    refineOnBoundaries(normals, triangles, count, split, int(2 * count));
     if (!(totalValue(split) > totalValue(groupsOf(normals, triangles, count, single, 1)))) return single;
     std::vector<uint8_t> group(count, 0);
     for (size_t g = 0; g < split.size(); ++g)
