@@ -149,15 +149,30 @@ void refineOnBoundaries(const glm::dvec3* normals, const uint32_t* triangles, si
 
 }  // namespace
 
-std::vector<uint8_t> splitForCones(const glm::dvec3* normals, const uint32_t* triangles, size_t count, uint32_t groups) {
+std::vector<uint8_t> splitForCones(const glm::dvec3* normals, const uint32_t* triangles, size_t count, uint32_t groups,
+                                   std::vector<ConeOfNormals>* cones) {
     std::vector<uint8_t> single(count, 0);
+    if (cones) cones->assign(std::max<uint32_t>(groups, 1), ConeOfNormals{});
+    const uint32_t requested = groups;
     groups = uint32_t(std::min<size_t>(groups, count));
-    if (groups <= 1) return single;
+    auto keep = [&](const std::vector<SplitGroup>& split) {
+        if (cones)
+            for (size_t g = 0; g < split.size(); ++g) (*cones)[g] = split[g].members.empty() ? ConeOfNormals{} : split[g].cone;
+    };
+    if (groups <= 1) {
+        if (cones && count > 0 && requested > 0) keep(groupsOf(normals, triangles, count, single, 1));
+        return single;
+    }
     // Lloyd from spread seeds, refined on the cones' boundaries; kept where it beats one group.
     std::vector<SplitGroup> split =
         groupsOf(normals, triangles, count, lloyd(normals, triangles, count, farthestSeeds(normals, count, groups)), groups);
     refineOnBoundaries(normals, triangles, count, split, int(2 * count));
-    if (!(totalValue(split) > totalValue(groupsOf(normals, triangles, count, single, 1)))) return single;
+    const std::vector<SplitGroup> one = groupsOf(normals, triangles, count, single, 1);
+    if (!(totalValue(split) > totalValue(one))) {
+        keep(one);
+        return single;
+    }
+    keep(split);
     std::vector<uint8_t> group(count, 0);
     for (size_t g = 0; g < split.size(); ++g)
         for (size_t i : split[g].members) group[i] = uint8_t(g);
@@ -174,6 +189,7 @@ MultiCones computeMultiCones(const Mesh& mesh, const FaceGeometry& faces, const 
         std::vector<glm::dvec3> normals;
         std::vector<uint32_t> triangles, ids, degenerate;
         std::vector<uint8_t> group;
+        std::vector<ConeOfNormals> cones;  // each sub-group's minimal cone, from the split
     };
     std::vector<ClusterFacesSplit> clusters(bounds.count());
     forEachInParallel(bounds.count(), [&](size_t c, size_t) {
@@ -186,24 +202,23 @@ MultiCones computeMultiCones(const Mesh& mesh, const FaceGeometry& faces, const 
             split.ids.push_back(f);
         }
         if (!split.normals.empty())
-            split.group = splitForCones(split.normals.data(), split.triangles.data(), split.normals.size(), conesPerCluster);
+            split.group = splitForCones(split.normals.data(), split.triangles.data(), split.normals.size(), conesPerCluster, &split.cones);
     });
     MultiCones multi;
     multi.conesPerCluster = conesPerCluster;
     multi.groupStarts.push_back(0);
-    std::vector<glm::dvec3> members;
     for (size_t c = 0; c < clusters.size(); ++c) {
         const ClusterFacesSplit& split = clusters[c];
         const glm::dvec3 center = bounds.spheres[c].center;
         for (uint32_t g = 0; g < conesPerCluster; ++g) {
-            members.clear();
             const uint32_t start = uint32_t(multi.faces.size());
             uint32_t groupTris = 0;
             for (size_t i = 0; i < split.ids.size(); ++i)
-                if (split.group[i] == g) multi.faces.push_back(split.ids[i]), members.push_back(split.normals[i]), groupTris += split.triangles[i];
-            ConeOfNormals cone = minimalCone(members.data(), members.size());
-            if (members.empty()) cone = ConeOfNormals{};  // an empty group culls nothing and costs nothing
-            glm::dvec3 apex = coneApex(cone, center, mesh, world, faces, multi.faces.data() + start, members.size());
+                if (split.group[i] == g) multi.faces.push_back(split.ids[i]), groupTris += split.triangles[i];
+            const size_t members = multi.faces.size() - start;
+            // An empty group culls nothing and costs nothing.
+            ConeOfNormals cone = members == 0 ? ConeOfNormals{} : split.cones[g];
+            glm::dvec3 apex = coneApex(cone, center, mesh, world, faces, multi.faces.data() + start, members);
             if (g == 0 && !split.degenerate.empty()) {
                 // A degenerate face has no side: conservative tests never cull its group.
                 for (uint32_t f : split.degenerate) multi.faces.push_back(f), groupTris += uint32_t(mesh.faceSize(f) - 2);
