@@ -108,6 +108,10 @@ double valueWithout(const SplitGroup& group, const glm::dvec3* normals, const ui
 // sub-group where the sum gains most, while a move gains: Lloyd balances directions, while the
 // culled share is decided by each cone's widest normal. The receiving cone is weighed around its
 // axis (a lower bound, so every move taken gains) and both minimal cones made again after a move.
+// A move must gain this share of the cluster's triangles: smaller gains cost a move's minimal cones
+// for almost nothing (docs/benchmarks.md, the split's cost).
+constexpr double kSmallestMoveGain = 1e-3;
+
 void refineOnBoundaries(const glm::dvec3* normals, const uint32_t* triangles, size_t count, std::vector<SplitGroup>& split, int passes) {
     // A move changes two sub-groups: each value is kept with the version of the sub-group it was
     // weighed in, and weighed again only once that sub-group has changed.
@@ -116,8 +120,11 @@ void refineOnBoundaries(const glm::dvec3* normals, const uint32_t* triangles, si
     std::vector<uint32_t> version(groups, 0), withoutVersion(count * groups, kNever), withVersion(count * groups, kNever);
     std::vector<double> withoutValue(count * groups), withValue(count * groups);
     std::vector<glm::dvec3> tips;
+    double triangleCount = 0.0;
+    for (const SplitGroup& g : split) triangleCount += double(g.triangles);
+    const double smallestGain = std::max(1e-9, kSmallestMoveGain * triangleCount);
     for (int pass = 0; pass < passes; ++pass) {
-        double bestGain = 1e-9;
+        double bestGain = smallestGain;
         size_t bestFrom = 0, bestTo = 0, bestFace = 0;
         for (size_t from = 0; from < groups; ++from) {
             const SplitGroup& source = split[from];
@@ -137,7 +144,7 @@ void refineOnBoundaries(const glm::dvec3* normals, const uint32_t* triangles, si
                 }
             }
         }
-        if (bestGain <= 1e-9) return;
+        if (bestGain <= smallestGain) return;
         std::vector<size_t>& members = split[bestFrom].members;
         members.erase(std::find(members.begin(), members.end(), bestFace));
         split[bestTo].members.push_back(bestFace);
