@@ -63,8 +63,8 @@ def summary(group):
 
 
 text = ["64 orbit views at distance 3, the default partition (limits 64/124) of each mesh; one cone per cluster: "
-        "each test with the minimal cone; K cones: the cluster's faces in K sub-groups, a minimal cone each, the cluster's "
-        "sphere, the sphere test per sub-group; triangle: every back face culled after the default cluster test. "
+        "each test with the minimal cone; K cones: the cluster's faces in K sub-groups, a minimal cone and an apex on its axis "
+        "each, the apex test per sub-group; triangle: every back face culled after the default cluster test. "
         "Culled share: of all triangles, per view. × default: back faces culled over the default record's (minimal/octagon).", ""]
 for group, title in (("cgal", "CGAL demo meshes"), ("props", "Sweet Home 3D furniture")):
     count, lines = summary(group)

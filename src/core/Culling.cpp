@@ -64,6 +64,10 @@ bool sphereSeesBack(const ConeOfNormals& cone, const Sphere& sphere, const glm::
     return glm::dot(toCenter, cone.axis) / distance > std::cos(angleB - spread) + kCullMargin;
 }
 
+bool apexSeesBack(const ConeOfNormals& cone, const glm::dvec3& apex, const glm::dvec3& eye) {
+    return cone.cullable && vectorSeesBack(cone, apex - eye, apexRoundingSlack(apex, eye));
+}
+
 bool meshoptSphereSeesBack(const ConeOfNormals& cone, const Sphere& sphere, const glm::dvec3& eye) {
     if (!cone.cullable) return false;
     const glm::dvec3 toCenter = sphere.center - eye;
@@ -115,8 +119,7 @@ bool cullCluster(const CullingInput& input, uint32_t cluster, const Eye& eye, Cu
                 if (!pointSeesBackUnnormalised(cone, corner, eye.position)) return false;
             return true;
         case CullTest::Sphere: return sphereSeesBack(cone, bounds.spheres[cluster], eye.position);
-        case CullTest::Apex:
-            return vectorSeesBack(cone, bounds.apexes[cluster] - eye.position, apexRoundingSlack(bounds.apexes[cluster], eye.position));
+        case CullTest::Apex: return apexSeesBack(cone, bounds.apexes[cluster], eye.position);
         case CullTest::MeshoptSphere: return meshoptSphereSeesBack(cone, bounds.spheres[cluster], eye.position);
         case CullTest::Octagon:
             return octagonSeesBack(bounds.octagons[cluster], bounds.apexes[cluster] - eye.position,

@@ -48,6 +48,9 @@ bool culledInBatch(const Eye& eye, CullTest test);
 bool viewDirectionSeesBack(const ConeOfNormals& cone, const glm::dvec3& unitView);
 // Seed 000's bounding-sphere test: v.V1 > cos(B - asin(r/d)); never culls with the eye inside.
 bool sphereSeesBack(const ConeOfNormals& cone, const Sphere& sphere, const glm::dvec3& eye);
+// meshoptimizer's apex test: (a - e).V1 > sin(alpha) |a - e|, the apex a behind every face plane
+// (its threshold allows for the apex's rounding, apexRoundingSlack).
+bool apexSeesBack(const ConeOfNormals& cone, const glm::dvec3& apex, const glm::dvec3& eye);
 // meshoptimizer's sphere test: (c - e).V1 > sin(alpha) |c - e| + r.
 bool meshoptSphereSeesBack(const ConeOfNormals& cone, const Sphere& sphere, const glm::dvec3& eye);
 // Seed 000's box test without normalisation: for each corner k, (k - e).V1 > 0 and

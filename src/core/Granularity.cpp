@@ -98,7 +98,7 @@ std::vector<GranularityRow> finerRows(const PreparedMesh& prepared, const Cluste
     compacts.reserve(std::size(kGranularityCones));
     std::vector<MultiConeRecord> records;
     for (uint32_t k : kGranularityCones) {
-        multis.push_back(computeMultiCones(mesh, prepared.faces, bounds, k));
+        multis.push_back(computeMultiCones(mesh, prepared.faces, bounds, k, prepared.world));
         compacts.push_back(compactMultiCones(prepared.faces, bounds, multis.back(), prepared.box));
     }
     if (widths) {
@@ -108,7 +108,8 @@ std::vector<GranularityRow> finerRows(const PreparedMesh& prepared, const Cluste
     for (size_t i = 0; i < multis.size(); ++i)
         for (bool compact : {false, true}) {
             MultiConeRecord record;
-            record.record = subGroupRecord(multis[i], compact ? compacts[i].cones : multis[i].cones, compact ? compacts[i].spheres : bounds.spheres);
+            record.record = compact ? subGroupRecord(multis[i], compacts[i].cones, compacts[i].spheres, &compacts[i].apexes)
+                                    : subGroupRecord(multis[i], multis[i].cones, bounds.spheres);
             const uint32_t k = multis[i].conesPerCluster;
             record.row.record = "cones-" + std::to_string(k) + (compact ? "-compact" : "");
             record.row.bytesPerCluster = multiConeRecordBytes(k, largest, compact);

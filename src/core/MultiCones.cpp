@@ -52,12 +52,15 @@ std::vector<uint8_t> lloyd(const glm::dvec3* normals, const uint32_t* triangles,
     const uint32_t groups = uint32_t(seeds.size());
     std::vector<uint8_t> group(count, 0);
     for (int iteration = 0; iteration < 8; ++iteration) {
+        bool moved = iteration == 0;
         for (size_t i = 0; i < count; ++i) {
             uint8_t best = 0;
             for (uint32_t g = 1; g < groups; ++g)
                 if (glm::dot(normals[i], seeds[g]) > glm::dot(normals[i], seeds[best])) best = uint8_t(g);
+            moved |= group[i] != best;
             group[i] = best;
         }
+        if (!moved) break;  // settled: the means would not move again
         std::vector<glm::dvec3> sums(groups, glm::dvec3(0.0));
         for (size_t i = 0; i < count; ++i) sums[group[i]] += double(triangles[i]) * normals[i];
         for (uint32_t g = 0; g < groups; ++g)
@@ -105,58 +108,95 @@ double valueWithout(const SplitGroup& group, const glm::dvec3* normals, const ui
 // sub-group where the sum gains most, while a move gains: Lloyd balances directions, while the
 // culled share is decided by each cone's widest normal. The receiving cone is weighed around its
 // axis (a lower bound, so every move taken gains) and both minimal cones made again after a move.
-void refineOnBoundaries(const glm::dvec3* normals, const uint32_t* triangles, std::vector<SplitGroup>& split, int passes) {
+// A move must gain this share of the cluster's triangles: smaller gains cost a move's minimal cones
+// for almost nothing (docs/benchmarks.md, the split's cost).
+constexpr double kSmallestMoveGain = 1e-3;
+
+void refineOnBoundaries(const glm::dvec3* normals, const uint32_t* triangles, size_t count, std::vector<SplitGroup>& split, int passes) {
+    // A move changes two sub-groups: each value is kept with the version of the sub-group it was
+    // weighed in, and weighed again only once that sub-group has changed.
+    const size_t groups = split.size();
+    constexpr uint32_t kNever = ~0u;
+    std::vector<uint32_t> version(groups, 0), withoutVersion(count * groups, kNever), withVersion(count * groups, kNever);
+    std::vector<double> withoutValue(count * groups), withValue(count * groups);
     std::vector<glm::dvec3> tips;
+    double triangleCount = 0.0;
+    for (const SplitGroup& g : split) triangleCount += double(g.triangles);
+    const double smallestGain = std::max(1e-9, kSmallestMoveGain * triangleCount);
     for (int pass = 0; pass < passes; ++pass) {
-        double bestGain = 1e-9;
+        double bestGain = smallestGain;
         size_t bestFrom = 0, bestTo = 0, bestFace = 0;
-        for (size_t from = 0; from < split.size(); ++from) {
+        for (size_t from = 0; from < groups; ++from) {
             const SplitGroup& source = split[from];
             if (!source.cone.cullable || source.members.size() < 2) continue;
             for (size_t i : source.members) {
                 if (glm::dot(normals[i], source.cone.axis) > source.cone.cosHalfAngle + 1e-6) continue;  // inside, not holding it
-                const double without = valueWithout(source, normals, triangles, i, tips);
-                for (size_t to = 0; to < split.size(); ++to) {
+                const size_t own = i * groups + from;
+                if (withoutVersion[own] != version[from])
+                    withoutValue[own] = valueWithout(source, normals, triangles, i, tips), withoutVersion[own] = version[from];
+                for (size_t to = 0; to < groups; ++to) {
                     if (to == from || split[to].members.empty()) continue;
-                    const double with = valueWithAroundAxis(split[to], normals, triangles, i, tips);
-                    const double gain = without + with - source.value - split[to].value;
+                    const size_t key = i * groups + to;
+                    if (withVersion[key] != version[to])
+                        withValue[key] = valueWithAroundAxis(split[to], normals, triangles, i, tips), withVersion[key] = version[to];
+                    const double gain = withoutValue[own] + withValue[key] - source.value - split[to].value;
                     if (gain > bestGain) bestGain = gain, bestFrom = from, bestTo = to, bestFace = i;
                 }
             }
         }
-        if (bestGain <= 1e-9) return;
+        if (bestGain <= smallestGain) return;
         std::vector<size_t>& members = split[bestFrom].members;
         members.erase(std::find(members.begin(), members.end(), bestFace));
         split[bestTo].members.push_back(bestFace);
         measureGroup(split[bestFrom], normals, triangles);
         measureGroup(split[bestTo], normals, triangles);
+        ++version[bestFrom], ++version[bestTo];
     }
 }
 
 }  // namespace
 
-std::vector<uint8_t> splitForCones(const glm::dvec3* normals, const uint32_t* triangles, size_t count, uint32_t groups) {
+std::vector<uint8_t> splitForCones(const glm::dvec3* normals, const uint32_t* triangles, size_t count, uint32_t groups,
+                                   std::vector<ConeOfNormals>* cones) {
     std::vector<uint8_t> single(count, 0);
+    if (cones) cones->assign(std::max<uint32_t>(groups, 1), ConeOfNormals{});
+    const uint32_t requested = groups;
     groups = uint32_t(std::min<size_t>(groups, count));
-    if (groups <= 1) return single;
+    auto keep = [&](const std::vector<SplitGroup>& split) {
+        if (cones)
+            for (size_t g = 0; g < split.size(); ++g) (*cones)[g] = split[g].members.empty() ? ConeOfNormals{} : split[g].cone;
+    };
+    if (groups <= 1) {
+        if (cones && count > 0 && requested > 0) keep(groupsOf(normals, triangles, count, single, 1));
+        return single;
+    }
     // Lloyd from spread seeds, refined on the cones' boundaries; kept where it beats one group.
     std::vector<SplitGroup> split =
         groupsOf(normals, triangles, count, lloyd(normals, triangles, count, farthestSeeds(normals, count, groups)), groups);
-    refineOnBoundaries(normals, triangles, split, int(2 * count));
-    if (!(totalValue(split) > totalValue(groupsOf(normals, triangles, count, single, 1)))) return single;
+    refineOnBoundaries(normals, triangles, count, split, int(2 * count));
+    const std::vector<SplitGroup> one = groupsOf(normals, triangles, count, single, 1);
+    if (!(totalValue(split) > totalValue(one))) {
+        keep(one);
+        return single;
+    }
+    keep(split);
     std::vector<uint8_t> group(count, 0);
     for (size_t g = 0; g < split.size(); ++g)
         for (size_t i : split[g].members) group[i] = uint8_t(g);
     return group;
 }
 
-MultiCones computeMultiCones(const Mesh& mesh, const FaceGeometry& faces, const ClusterBounds& bounds, uint32_t conesPerCluster) {
+MultiCones computeMultiCones(const Mesh& mesh, const FaceGeometry& faces, const ClusterBounds& bounds, uint32_t conesPerCluster,
+                             const std::vector<glm::vec3>& givenWorld) {
+    const std::vector<glm::vec3> ownWorld = givenWorld.empty() ? worldPositions(mesh) : std::vector<glm::vec3>{};
+    const std::vector<glm::vec3>& world = givenWorld.empty() ? ownWorld : givenWorld;
     // Each cluster's faces with a side, their normals and triangles; degenerate faces apart (no
     // normal: kept in sub-group 0, where they stay visible).
     struct ClusterFacesSplit {
         std::vector<glm::dvec3> normals;
         std::vector<uint32_t> triangles, ids, degenerate;
         std::vector<uint8_t> group;
+        std::vector<ConeOfNormals> cones;  // each sub-group's minimal cone, from the split
     };
     std::vector<ClusterFacesSplit> clusters(bounds.count());
     forEachInParallel(bounds.count(), [&](size_t c, size_t) {
@@ -169,26 +209,31 @@ MultiCones computeMultiCones(const Mesh& mesh, const FaceGeometry& faces, const 
             split.ids.push_back(f);
         }
         if (!split.normals.empty())
-            split.group = splitForCones(split.normals.data(), split.triangles.data(), split.normals.size(), conesPerCluster);
+            split.group = splitForCones(split.normals.data(), split.triangles.data(), split.normals.size(), conesPerCluster, &split.cones);
     });
     MultiCones multi;
     multi.conesPerCluster = conesPerCluster;
     multi.groupStarts.push_back(0);
-    std::vector<glm::dvec3> members;
-    for (const ClusterFacesSplit& split : clusters) {
+    for (size_t c = 0; c < clusters.size(); ++c) {
+        const ClusterFacesSplit& split = clusters[c];
+        const glm::dvec3 center = bounds.spheres[c].center;
         for (uint32_t g = 0; g < conesPerCluster; ++g) {
-            members.clear();
+            const uint32_t start = uint32_t(multi.faces.size());
             uint32_t groupTris = 0;
             for (size_t i = 0; i < split.ids.size(); ++i)
-                if (split.group[i] == g) multi.faces.push_back(split.ids[i]), members.push_back(split.normals[i]), groupTris += split.triangles[i];
-            ConeOfNormals cone = minimalCone(members.data(), members.size());
+                if (split.group[i] == g) multi.faces.push_back(split.ids[i]), groupTris += split.triangles[i];
+            const size_t members = multi.faces.size() - start;
+            // An empty group culls nothing and costs nothing.
+            ConeOfNormals cone = members == 0 ? ConeOfNormals{} : split.cones[g];
+            glm::dvec3 apex = coneApex(cone, center, mesh, world, faces, multi.faces.data() + start, members);
             if (g == 0 && !split.degenerate.empty()) {
                 // A degenerate face has no side: conservative tests never cull its group.
                 for (uint32_t f : split.degenerate) multi.faces.push_back(f), groupTris += uint32_t(mesh.faceSize(f) - 2);
                 cone = ConeOfNormals{};
+                apex = center;
             }
-            if (members.empty()) cone = ConeOfNormals{};  // an empty group culls nothing and costs nothing
             multi.cones.push_back(cone);
+            multi.apexes.push_back(apex);
             multi.groupTriangles.push_back(groupTris);
             multi.groupStarts.push_back(uint32_t(multi.faces.size()));
         }
@@ -196,45 +241,41 @@ MultiCones computeMultiCones(const Mesh& mesh, const FaceGeometry& faces, const 
     return multi;
 }
 
-bool subGroupSeesBack(const ConeOfNormals& cone, const Sphere& sphere, const Eye& eye) {
+bool subGroupSeesBack(const ConeOfNormals& cone, const glm::dvec3& apex, const Eye& eye) {
     if (eye.orthographic) return viewDirectionSeesBack(cone, eye.direction);
-    return sphereSeesBack(cone, sphere, eye.position);
+    return apexSeesBack(cone, apex, eye.position);
 }
 
-std::vector<uint8_t> cullSubGroups(const std::vector<ConeOfNormals>& cones, const std::vector<Sphere>& spheres,
-                                   uint32_t conesPerCluster, const Eye& eye) {
+std::vector<uint8_t> cullSubGroups(const std::vector<ConeOfNormals>& cones, const std::vector<glm::dvec3>& apexes, const Eye& eye) {
     std::vector<uint8_t> culled(cones.size(), 0);
-    for (size_t g = 0; g < culled.size(); ++g)
-        culled[g] = subGroupSeesBack(cones[g], spheres[g / conesPerCluster], eye) ? 1 : 0;
+    for (size_t g = 0; g < culled.size(); ++g) culled[g] = subGroupSeesBack(cones[g], apexes[g], eye) ? 1 : 0;
     return culled;
 }
 
-std::vector<uint8_t> cullSubGroups(const ClusterBounds& bounds, const MultiCones& multi, const Eye& eye) {
-    return cullSubGroups(multi.cones, bounds.spheres, multi.conesPerCluster, eye);
+std::vector<uint8_t> cullSubGroups(const ClusterBounds&, const MultiCones& multi, const Eye& eye) {
+    return cullSubGroups(multi.cones, multi.apexes, eye);
 }
 
-ClusterBatch subGroupBatch(const std::vector<ConeOfNormals>& cones, const std::vector<Sphere>& spheres, uint32_t conesPerCluster) {
+ClusterBatch subGroupBatch(const std::vector<ConeOfNormals>& cones, const std::vector<glm::dvec3>& apexes) {
     ClusterBounds groups;
     groups.cones = cones;
-    for (size_t g = 0; g < cones.size(); ++g) {
-        groups.spheres.push_back(spheres[g / conesPerCluster]);
-        groups.apexes.push_back(spheres[g / conesPerCluster].center);  // no apex: the sphere's slack alone
-    }
+    groups.apexes = apexes;
+    for (const glm::dvec3& apex : apexes) groups.spheres.push_back(Sphere{apex, 0.0});  // only its slack is read
     groups.octagons.assign(cones.size(), OctagonCone{});
     return makeClusterBatch(groups);
 }
 
 std::vector<uint8_t> cullSubGroupsBatched(const ClusterBatch& batch, const std::vector<ConeOfNormals>& cones,
-                                          const std::vector<Sphere>& spheres, uint32_t conesPerCluster, const Eye& eye) {
-    if (eye.orthographic) return cullSubGroups(cones, spheres, conesPerCluster, eye);
+                                          const std::vector<glm::dvec3>& apexes, const Eye& eye) {
+    if (eye.orthographic) return cullSubGroups(cones, apexes, eye);
     std::vector<uint8_t> culled(batch.count, 0);
-    cullSphereBatch(batch, eye.position, culled.data());
+    cullApexBatch(batch, eye.position, culled.data());
     return culled;
 }
 
 size_t multiConeRecordBytes(uint32_t conesPerCluster, size_t maxClusterTriangles, bool compact) {
     const size_t offsets = (conesPerCluster - 1) * (maxClusterTriangles <= 255 ? 1 : 2);
-    const size_t bytes = compact ? 8 + 4 * conesPerCluster + offsets : 16 + 16 * conesPerCluster + offsets;
+    const size_t bytes = compact ? 8 + 5 * conesPerCluster + offsets : 16 + 20 * conesPerCluster + offsets;
     return (bytes + 3) / 4 * 4;
 }
 
@@ -276,15 +317,37 @@ ConeOfNormals compactCone(const ConeOfNormals& cone, const FaceGeometry& faces, 
     return decoded;
 }
 
+// The apex on `cone`'s decoded axis behind the decoded centre, at least as far back as the float
+// apex `apex` is from every face plane: n.(c - a) / n.V over the sub-group's normals, stored as
+// s = t cos(alpha) / r in 1/255 steps rounded up; s = 1 is the sphere test's apex, behind every plane
+// of faces in the sphere with normals in the cone, so t never needs more.
+glm::dvec3 compactApex(const ConeOfNormals& cone, const Sphere& sphere, const glm::dvec3& apex, const FaceGeometry& faces,
+                       const uint32_t* groupFaces, size_t count) {
+    double behind = 0.0;
+    for (size_t i = 0; i < count; ++i) {
+        const glm::dvec3& n = faces.normals[groupFaces[i]];
+        behind = std::max(behind, glm::dot(n, sphere.center - apex) / glm::dot(n, cone.axis));
+    }
+    const double scale = sphere.radius / cone.cosHalfAngle;
+    const double steps = std::min(255.0, std::ceil((behind + 1e-12 * sphere.radius) / scale * 255.0 * (1.0 + 1e-9)));
+    return sphere.center - cone.axis * (scale * steps / 255.0);
+}
+
 }  // namespace
 
 CompactMultiCones compactMultiCones(const FaceGeometry& faces, const ClusterBounds& bounds, const MultiCones& multi,
                                     const Aabb& meshBox) {
     CompactMultiCones compact;
     for (const Sphere& sphere : bounds.spheres) compact.spheres.push_back(compactSphere(sphere, meshBox));
-    for (size_t g = 0; g < multi.groupCount(); ++g)
-        compact.cones.push_back(compactCone(multi.cones[g], faces, multi.faces.data() + multi.groupStarts[g],
-                                            multi.groupStarts[g + 1] - multi.groupStarts[g]));
+    for (size_t g = 0; g < multi.groupCount(); ++g) {
+        const uint32_t* groupFaces = multi.faces.data() + multi.groupStarts[g];
+        const size_t count = multi.groupStarts[g + 1] - multi.groupStarts[g];
+        const Sphere& sphere = compact.spheres[g / multi.conesPerCluster];
+        ConeOfNormals cone = compactCone(multi.cones[g], faces, groupFaces, count);
+        if (!std::isfinite(sphere.radius)) cone = ConeOfNormals{};  // no sphere to place the apex from
+        compact.cones.push_back(cone);
+        compact.apexes.push_back(cone.cullable ? compactApex(cone, sphere, multi.apexes[g], faces, groupFaces, count) : sphere.center);
+    }
     return compact;
 }
 
@@ -295,19 +358,21 @@ size_t culledTriangles(const MultiCones& multi, const std::vector<uint8_t>& cull
     return total;
 }
 
-SubGroupRecord subGroupRecord(const MultiCones& multi, std::vector<ConeOfNormals> cones, const std::vector<Sphere>& spheres) {
+SubGroupRecord subGroupRecord(const MultiCones& multi, std::vector<ConeOfNormals> cones, const std::vector<Sphere>& spheres,
+                              const std::vector<glm::dvec3>* apexes) {
     SubGroupRecord record;
     record.multi = &multi;
     record.cones = std::move(cones);
+    record.apexes = apexes ? *apexes : multi.apexes;
     record.spheres = &spheres;
-    record.batch = subGroupBatch(record.cones, spheres, multi.conesPerCluster);
+    record.batch = subGroupBatch(record.cones, record.apexes);
     return record;
 }
 
 SubGroupCulling countSubGroupCulling(const SubGroupRecord& record, const std::vector<Facing>& facing, const Eye& eye,
                                      const std::vector<uint8_t>& clusters) {
     const MultiCones& multi = *record.multi;
-    const std::vector<uint8_t> culled = cullSubGroupsBatched(record.batch, record.cones, *record.spheres, multi.conesPerCluster, eye);
+    const std::vector<uint8_t> culled = cullSubGroupsBatched(record.batch, record.cones, record.apexes, eye);
     SubGroupCulling counted;
     for (size_t g = 0; g < culled.size(); ++g) {
         if (!culled[g] || (!clusters.empty() && !clusters[g / multi.conesPerCluster])) continue;

@@ -82,11 +82,11 @@ TEST(Granularity, MoreConesCullMoreAndTheTriangleRowIsTheCeiling) {
 }
 
 TEST(Granularity, RecordBytes) {
-    EXPECT_EQ(multiConeRecordBytes(4, 124, true), 28u);   // 8 sphere + 4 x 4 cones + 3 offsets, padded
+    EXPECT_EQ(multiConeRecordBytes(4, 124, true), 32u);    // 8 sphere + 4 x 5 cones and apexes + 3 offsets, padded
     EXPECT_EQ(multiConeRecordBytes(2, 124, true), 20u);
-    EXPECT_EQ(multiConeRecordBytes(8, 124, true), 48u);
-    EXPECT_EQ(multiConeRecordBytes(4, 124, false), 84u);  // 16 sphere + 4 x 16 cones + 3 offsets, padded
-    EXPECT_EQ(multiConeRecordBytes(4, 512, true), 32u);   // 2-byte offsets past 255 triangles
+    EXPECT_EQ(multiConeRecordBytes(8, 124, true), 56u);
+    EXPECT_EQ(multiConeRecordBytes(4, 124, false), 100u);  // 16 sphere + 4 x 20 cones and apexes + 3 offsets, padded
+    EXPECT_EQ(multiConeRecordBytes(4, 512, true), 36u);    // 2-byte offsets past 255 triangles
 }
 
 // The compact sphere holds the float one, and the compact cone every normal of its sub-group.

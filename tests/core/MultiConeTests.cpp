@@ -35,13 +35,14 @@ std::vector<Eye> someEyes(std::mt19937_64& random) {
 
 }  // namespace
 
-TEST(MultiCones, OneConeEqualsTheSphereTest) {
+// One sub-group is the cluster: its minimal cone and the apex behind it from the sphere's centre.
+TEST(MultiCones, OneConeEqualsTheApexTest) {
     std::mt19937_64 random(7);
     const Clustered c(testmesh::torus(1.0, 0.4, 24, 12), 32);
     const MultiCones one = computeMultiCones(c.mesh, c.faces, c.bounds, 1);
     const CullingInput input{c.mesh, c.world, c.faces, c.bounds};
     for (const Eye& eye : someEyes(random))
-        EXPECT_EQ(cullSubGroups(c.bounds, one, eye), cullClustersExact(input, eye, CullTest::Sphere));
+        EXPECT_EQ(cullSubGroups(c.bounds, one, eye), cullClustersExact(input, eye, CullTest::Apex));
 }
 
 TEST(MultiCones, SubGroupsHoldEveryFaceOnce) {
@@ -97,4 +98,40 @@ TEST(MultiCones, SplitSeparatesTwoOpposedFans) {
     EXPECT_EQ(group[0], group[2]);
     EXPECT_EQ(group[1], group[3]);
     EXPECT_NE(group[0], group[1]);
+}
+
+// Each sub-group's apex, float and compact, lies behind every plane of its faces (up to the apex's
+// own rounding slack), and the float apex test culls wherever the sphere test on the cluster's
+// sphere culls (that test is the apex test from r / cos(alpha) behind the centre).
+TEST(MultiCones, ApexesBehindEveryFacePlaneAndCullAtLeastTheSphereTest) {
+    std::mt19937_64 random(5);
+    for (const Mesh& m : {testmesh::torus(1.0, 0.3, 32, 16), testmesh::randomPatch(random, 16, 60.0)}) {
+        const Clustered c(m, 48);
+        const Aabb box = computeAabb(c.world);
+        for (uint32_t k : {2u, 4u}) {
+            const MultiCones multi = computeMultiCones(c.mesh, c.faces, c.bounds, k, c.world);
+            const CompactMultiCones compact = compactMultiCones(c.faces, c.bounds, multi, box);
+            for (size_t g = 0; g < multi.groupCount(); ++g)
+                for (const auto& [cone, apex] : {std::make_pair(multi.cones[g], multi.apexes[g]), std::make_pair(compact.cones[g], compact.apexes[g])}) {
+                    if (!cone.cullable) continue;
+                    for (uint32_t i = multi.groupStarts[g]; i < multi.groupStarts[g + 1]; ++i) {
+                        const uint32_t f = multi.faces[i];
+                        for (size_t v = 0; v < c.mesh.faceSize(f); ++v) {
+                            const glm::dvec3 q(c.world[c.mesh.faceBegin(f)[v]]);
+                            EXPECT_LE(glm::dot(c.faces.normals[f], apex - q), 1e-12) << "group " << g << " K=" << k;
+                        }
+                    }
+                }
+            size_t apexOnly = 0;
+            for (const Eye& eye : someEyes(random)) {
+                const std::vector<uint8_t> culled = cullSubGroups(c.bounds, multi, eye);
+                for (size_t g = 0; g < culled.size(); ++g) {
+                    const bool sphere = !eye.orthographic && sphereSeesBack(multi.cones[g], c.bounds.spheres[g / k], eye.position);
+                    EXPECT_TRUE(culled[g] || !sphere) << "sphere test culls sub-group " << g << " and the apex test does not";
+                    apexOnly += culled[g] && !sphere && !eye.orthographic;
+                }
+            }
+            EXPECT_GT(apexOnly, 0u);  // and culls more
+        }
+    }
 }

@@ -84,10 +84,10 @@ void checkMesh(std::mt19937_64& random, const Mesh& mesh, const Partition& parti
     std::vector<CompactMultiCones> compacts;
     std::vector<ClusterBatch> batches;  // float then compact of each K
     for (uint32_t k : kGranularityCones) {
-        multis.push_back(computeMultiCones(mesh, faces, minimal, k));
+        multis.push_back(computeMultiCones(mesh, faces, minimal, k, world));
         compacts.push_back(compactMultiCones(faces, minimal, multis.back(), computeAabb(world)));
-        batches.push_back(subGroupBatch(multis.back().cones, minimal.spheres, k));
-        batches.push_back(subGroupBatch(compacts.back().cones, compacts.back().spheres, k));
+        batches.push_back(subGroupBatch(multis.back().cones, multis.back().apexes));
+        batches.push_back(subGroupBatch(compacts.back().cones, compacts.back().apexes));
     }
     for (const Eye& eye : eyes) {
         const auto facing = classifyFaces(mesh, world, faces, eye);
@@ -123,10 +123,9 @@ void checkMesh(std::mt19937_64& random, const Mesh& mesh, const Partition& parti
             for (int form = 0; form < 4; ++form) {  // float, compact; exact, batched
                 const bool compact = form % 2 == 1;
                 const std::vector<ConeOfNormals>& cones = compact ? compacts[i].cones : multi.cones;
-                const std::vector<Sphere>& spheres = compact ? compacts[i].spheres : minimal.spheres;
-                const std::vector<uint8_t> culled =
-                    form < 2 ? cullSubGroups(cones, spheres, multi.conesPerCluster, eye)
-                             : cullSubGroupsBatched(batches[2 * i + (compact ? 1 : 0)], cones, spheres, multi.conesPerCluster, eye);
+                const std::vector<glm::dvec3>& apexes = compact ? compacts[i].apexes : multi.apexes;
+                const std::vector<uint8_t> culled = form < 2 ? cullSubGroups(cones, apexes, eye)
+                                                             : cullSubGroupsBatched(batches[2 * i + (compact ? 1 : 0)], cones, apexes, eye);
                 for (size_t g = 0; g < culled.size(); ++g) {
                     ++counts.decisions;
                     if (!culled[g]) continue;

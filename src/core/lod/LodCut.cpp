@@ -152,7 +152,8 @@ LodStatistics measureHierarchy(const ClusterHierarchy& hierarchy, const Settings
     multis.reserve(levelCount);
     for (const LodLevel& level : hierarchy.levels) {
         if (conesPerCluster == 0) break;
-        multis.push_back(computeMultiCones(level.prepared.mesh(), level.prepared.faces, level.clusters.bounds, conesPerCluster));
+        multis.push_back(computeMultiCones(level.prepared.mesh(), level.prepared.faces, level.clusters.bounds, conesPerCluster,
+                                             level.prepared.world));
         records.push_back(subGroupRecord(multis.back(), multis.back().cones, level.clusters.bounds.spheres));
     }
     for (size_t l = 0; l < levelCount; ++l) {
