@@ -213,6 +213,7 @@ private:
     // The LOD scene in the observer view (or the partition's back), the LOD dock, statistics and pick.
     void showLod(const ClusterScene* previousScene);
     void showOrbit();
+    void showMultiCones();  // the K-cone record's rows of the statistics panel
     void showMesh(const QString& path, const QString& loadMessage);
     void showError(const QString& title, const QString& message);
     int pickDisplay(const QPoint& display);
