@@ -231,7 +231,7 @@ void addMeasurementFields(std::vector<SettingField>& fields) {
     row(f);
 
     // Beside the tests, not one of them: the K-cone record keeps the cluster's sphere and splits its cone.
-    f = describe("cones_per_cluster", "cones", "K",
+    f = describe("cones_per_cluster", "cones-per-cluster", "K",
                  "Also cull with K cones per cluster, each its sub-group's cone and the cluster's sphere (1, 2, 4 or 8; 1: one cone only; granularity's cones-K record)",
                  SettingKind::Count, false, Stage::Measurement);
     f.minimum = 1, f.maximum = 8, f.omittedAtDefault = true;

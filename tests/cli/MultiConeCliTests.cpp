@@ -24,7 +24,7 @@ const char* const kMultiConeKeys[] = {"cones_per_cluster", "efficiency", "false_
                                       "back_facing_triangles", "bytes_per_cluster"};
 
 TEST(CliMultiCone, StatsWithFourConesIsTheCoresRun) {
-    const nlohmann::json stats = runStatsJson({dataset("fandisk.off"), "--views", "24", "--cones", "4", "--no-per-view", "--no-per-cluster"});
+    const nlohmann::json stats = runStatsJson({dataset("fandisk.off"), "--views", "24", "--cones-per-cluster", "4", "--no-per-view", "--no-per-cluster"});
     ASSERT_TRUE(stats.contains("multi_cone"));
     const nlohmann::json& multi = stats["multi_cone"];
     EXPECT_EQ(multi.size(), std::size(kMultiConeKeys));
@@ -60,8 +60,8 @@ TEST(CliMultiCone, StatsWithFourConesIsTheCoresRun) {
 }
 
 TEST(CliMultiCone, CsvAndTextCarryTheSameNumbers) {
-    const std::vector<std::string> options{"stats", "--quiet", dataset("torus.off"), "--views", "8", "--cones", "2", "--test", "octagon,sphere"};
-    const nlohmann::json json = runStatsJson({dataset("torus.off"), "--views", "8", "--cones", "2", "--test", "octagon,sphere"});
+    const std::vector<std::string> options{"stats", "--quiet", dataset("torus.off"), "--views", "8", "--cones-per-cluster", "2", "--test", "octagon,sphere"};
+    const nlohmann::json json = runStatsJson({dataset("torus.off"), "--views", "8", "--cones-per-cluster", "2", "--test", "octagon,sphere"});
     std::vector<std::string> csvOptions = options;
     csvOptions.insert(csvOptions.end(), {"--format", "csv"});
     const CliRun csv = runCli(csvOptions);
@@ -96,7 +96,7 @@ TEST(CliMultiCone, CsvAndTextCarryTheSameNumbers) {
 TEST(CliMultiCone, OneConeLeavesTheOutputAlone) {
     for (const char* format : {"json", "csv", "text"}) {
         const CliRun plain = runCli({"stats", "--quiet", dataset("torus.off"), "--views", "8", "--format", format});
-        const CliRun one = runCli({"stats", "--quiet", dataset("torus.off"), "--views", "8", "--cones", "1", "--format", format});
+        const CliRun one = runCli({"stats", "--quiet", dataset("torus.off"), "--views", "8", "--cones-per-cluster", "1", "--format", format});
         ASSERT_EQ(plain.exitCode, 0) << plain.err;
         ASSERT_EQ(one.exitCode, 0) << one.err;
         EXPECT_EQ(plain.out.find("multi_cone"), std::string::npos) << format;
@@ -114,11 +114,11 @@ TEST(CliMultiCone, OneConeLeavesTheOutputAlone) {
 
 TEST(CliMultiCone, RefusesOtherCounts) {
     for (const char* k : {"0", "3", "16"}) {
-        const CliRun run = runCli({"stats", "--quiet", dataset("torus.off"), "--cones", k});
+        const CliRun run = runCli({"stats", "--quiet", dataset("torus.off"), "--cones-per-cluster", k});
         EXPECT_NE(run.exitCode, 0) << k;
-        EXPECT_NE(run.err.find("--cones"), std::string::npos) << run.err;
+        EXPECT_NE(run.err.find("--cones-per-cluster"), std::string::npos) << run.err;
     }
-    const CliRun batch = runCli({"batch", "--quiet", dataset("torus.off"), "-o", "/nonexistent/never", "--cones", "4"});
+    const CliRun batch = runCli({"batch", "--quiet", dataset("torus.off"), "-o", "/nonexistent/never", "--cones-per-cluster", "4"});
     EXPECT_NE(batch.exitCode, 0);
     EXPECT_NE(batch.err.find("--granularity"), std::string::npos) << batch.err;
 }
