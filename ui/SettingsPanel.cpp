@@ -76,9 +76,12 @@ QComboBox* coneCountBox(QWidget* parent) {
     return box;
 }
 
-// The test's box, and beside it the K-cone choice measured with it.
+// "Test", the test's box, and beside it the K-cone choice measured with it.
 QHBoxLayout* besideTheTest(QComboBox* test, QComboBox* cones) {
     auto* row = new QHBoxLayout;
+    auto* label = new QLabel(QObject::tr("&Test"), test->parentWidget());
+    label->setBuddy(test);
+    row->addWidget(label);
     row->addWidget(test, 1);
     row->addWidget(new QLabel(QObject::tr("cones per cluster"), test->parentWidget()));
     row->addWidget(cones);
@@ -134,7 +137,7 @@ SettingsPanel::SettingsPanel(QWidget* parent) : QWidget(parent) {
     auto* cullingGroup = new QGroupBox(tr("Culling"), this);
     auto* cullingForm = new QFormLayout(cullingGroup);
     cullingForm->addRow(tr("&Cone"), cone_);
-    cullingForm->addRow(tr("&Test"), besideTheTest(test_, conesPerCluster_));
+    cullingForm->addRow(besideTheTest(test_, conesPerCluster_));
     cullingForm->addRow(tr("Sphere"), sphere_);
     cullingForm->addRow(tr("&Projection"), projection_);
 

@@ -324,12 +324,12 @@ void StatisticsPanel::showMultiCones(uint32_t cones, const MultiConeCulling* orb
     }
     if (cones <= 1) return;
     values_["K cones from the eye"]->setText(
-        eye ? tr("%1 of %2 sub-groups culled, %3 triangles, efficiency %4, false culls %5")
+        eye ? tr("%1 of %2 sub-groups, %3 triangles (%4), false culls %5")
                   .arg(count(eye->groupsCulled), count(eye->groups), count(eye->trianglesCulled),
                        percent(cullEfficiency(eye->trianglesCulled, eyeBackFacing)), count(eye->falseCulls))
             : tr("measuring..."));
     values_["K cones over the orbit"]->setText(
-        orbit ? tr("efficiency %1 (%2 of %3 back-facing triangles), false culls %4, %5 bytes a cluster")
+        orbit ? tr("%1 (%2 of %3), false culls %4, %5 bytes a cluster")
                     .arg(percent(orbit->efficiency), count(orbit->trianglesCulled), count(orbit->backFacingTriangles),
                          count(orbit->falseCulls), count(orbit->bytesPerCluster))
               : tr("measuring..."));

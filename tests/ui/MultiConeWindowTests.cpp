@@ -76,7 +76,7 @@ private slots:
         QCOMPARE(fromEye->counts.trianglesCulled, triangles);
         QCOMPARE(fromEye->counts.falseCulls, size_t(0));
         const QString eyeRow = window_->statisticsPanel()->value(QStringLiteral("K cones from the eye"));
-        QVERIFY2(eyeRow.startsWith(QStringLiteral("%1 of %2 sub-groups culled").arg(QLocale().toString(qulonglong(groups)),
+        QVERIFY2(eyeRow.startsWith(QStringLiteral("%1 of %2 sub-groups,").arg(QLocale().toString(qulonglong(groups)),
                                                                                      QLocale().toString(qulonglong(multi.groupCount())))),
                  qPrintable(eyeRow));
         // More cones cull at least what one cone culls from this eye on this mesh.
