@@ -16,6 +16,7 @@ FacesLayer::FacesLayer(const SceneData& data)
     : SceneLayer(data), mapper_(cellArrayMapper(data.meshData, clusterIdArrayName, data.tables.palette)),
       actor_(actorFor(mapper_)) {
     actor_->GetProperty()->SetInterpolationToFlat();
+    setSubGroups({}, {}, 0);
 }
 
 void FacesLayer::recolour(FaceColoring coloring) {
@@ -68,7 +69,7 @@ void FacesLayer::addLegendEntries(FaceColoring coloring, std::vector<LegendEntry
         addLodLegendEntries(coloring, entries);
     } else if (coloring == FaceColoring::SubGroup) {
         if (subGroupCones_ == 0) {
-            entries.push_back({"no sub-groups: choose 2, 4 or 8 cones per cluster", {SceneColours::undecided}});
+            entries.push_back({"no sub-groups (choose 2, 4 or 8 cones per cluster): clusters", clusterLegendColours()});
             return;
         }
         std::vector<Rgb> shades;
@@ -173,7 +174,7 @@ void FacesLayer::setSubGroups(const std::vector<uint8_t>& groupOfFace, const std
     uint8_t* rgb = data_.subGroup->GetPointer(0);
     for (size_t f = 0; f < faceCount; ++f) {
         const uint32_t c = data_.clusterOfFace[f];
-        Rgb colour = SceneColours::undecided;
+        Rgb colour = data_.palette[c];  // without sub-groups, the clusters
         if (cones > 0) {
             const bool culled = culledGroups[size_t(c) * cones + groupOfFace[f]] != 0;
             colour = culled ? SceneColours::culled : subGroupShade(data_.palette[c], groupOfFace[f], cones);
