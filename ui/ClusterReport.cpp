@@ -259,6 +259,23 @@ QString pinnedClusterHtml(const ClusterReportInput& a) {
     return table.html();
 }
 
+QString subGroupsHtml(const std::vector<SubGroupVerdict>& verdicts) {
+    QString html = QStringLiteral("<h3>%1 cones: the cluster's sub-groups from the eye</h3>"
+                                  "<table border='1' cellspacing='0' cellpadding='3'><tr><th>sub-group</th><th>triangles</th>"
+                                  "<th>half-angle &alpha;</th><th>verdict</th><th>every face faces away</th></tr>")
+                       .arg(verdicts.size());
+    for (size_t i = 0; i < verdicts.size(); ++i) {
+        const SubGroupVerdict& v = verdicts[i];
+        const QString verdict = v.faces == 0 ? QStringLiteral("empty") : v.culled ? QStringLiteral("<b>culled</b>") : QStringLiteral("drawn");
+        html += QStringLiteral("<tr><td>%1</td><td>%2</td><td>%3</td><td>%4</td><td>%5</td></tr>")
+                    .arg(i + 1)
+                    .arg(v.triangles)
+                    .arg(v.cullable ? degrees(v.halfAngleDegrees) : QStringLiteral("no cone"), verdict,
+                         v.faces == 0 ? QStringLiteral("-") : v.allBackFacing ? QStringLiteral("yes") : QStringLiteral("no"));
+    }
+    return html + QStringLiteral("</table>");
+}
+
 QString emptyClusterReportHtml() {
     return QStringLiteral("<html><body><p>Click a cluster in the view (without dragging) to see its cone, its bounds "
                           "and every number the cull test compares for the current eye.</p></body></html>");

@@ -6,6 +6,7 @@
 #include <QString>
 
 #include "core/Culling.h"
+#include "core/MultiConeCulling.h"
 
 namespace conescope {
 
@@ -23,6 +24,9 @@ QString clusterReportHtml(const ClusterReportInput& input, const QString& append
 // The same cluster's faces under the pinned configuration A, in short: A's cluster holding them, its
 // size, cone and decision from the same eye, after the page of B (the current configuration).
 QString pinnedClusterHtml(const ClusterReportInput& a);
+
+// The cluster's K sub-groups from the eye (subGroupVerdicts): triangles, cone, verdict, the oracle.
+QString subGroupsHtml(const std::vector<SubGroupVerdict>& verdicts);
 
 // The page shown before anything is picked.
 QString emptyClusterReportHtml();

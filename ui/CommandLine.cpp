@@ -274,6 +274,7 @@ int runHeadlessScreenshot(const AppOptions& options) {
         showMeasurement(scene, prepared, clusters, measurement);
         scene.setFaceColoring(options.coloring);
         showEyeColouring(scene, prepared, clusters, measurement, options.coloring);
+        showSubGroupsFromEye(scene, prepared, clusters, settings.conesPerCluster, measurement.eye);
         if (options.compare) {
             // A: the options changed by --compare; B: the clusters shown. The diff of this eye per face.
             const Settings settingsA = withClusterIds(parseConfiguration(*options.compare, settings));

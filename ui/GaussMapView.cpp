@@ -29,6 +29,12 @@ void GaussMapView::showPick(const Session& session, bool newPick) {
         // The eye's explanation is the test layer's: the same view vector the observer view draws.
         scene_.show(gaussMapOf(*session.preparedMesh(), *session.clusters(), uint32_t(cluster), clusterScene->testDrawing().why),
                     session.clusters()->bounds.coneMethod, cluster);
+        // With K cones per cluster, each sub-group's cone and its verdict from the eye.
+        std::vector<SubGroupCap> caps;
+        if (const std::optional<SubGroupsFromEye> fromEye = session.subGroupsFromEye())
+            for (const SubGroupVerdict& verdict : subGroupVerdicts(*fromEye->multi, uint32_t(cluster), fromEye->culled, fromEye->facing))
+                caps.push_back({fromEye->multi->cones[verdict.group], verdict.triangles, verdict.culled});
+        scene_.showSubGroups(caps);
     }
     if (newPick) scene_.placeCamera(renderer_->GetActiveCamera());
     render();

@@ -97,6 +97,10 @@ const Term kTerms[] = {
     {"lod cut", "LOD cut",
      "The clusters an engine draws from the eye: per region the coarsest level whose simplification error, in pixels "
      "from the eye, is within the threshold (and whose group's is not)."},
+    {"sub-group", "Sub-group (K cones per cluster)",
+     "One of the K parts a cluster's faces are split into, each with its own cone of normals and the cluster's bounding "
+     "sphere. A sub-group is skipped when its narrower cone faces away, so K cones cull more back faces than one, for a "
+     "few more bytes per cluster."},
     {"not measured", "Not measured yet", "Nothing to show in this colouring yet: it appears once the eye (or A) is measured."},
 };
 
@@ -173,6 +177,9 @@ QString explain(FaceColoring coloring) {
         case FaceColoring::LodLevel: return explain(QStringLiteral("lod level"));
         case FaceColoring::LodGroup: return explain(QStringLiteral("lod group"));
         case FaceColoring::LodCut: return explain(QStringLiteral("lod cut"));
+        case FaceColoring::SubGroup:
+            return tr("With K cones per cluster: each cluster's sub-groups in shades of its colour; grey: a sub-group the "
+                      "K-cone test culls from the cull eye.");
     }
     return {};
 }
@@ -180,7 +187,7 @@ QString explain(FaceColoring coloring) {
 QString explainLegendLabel(const std::string& label) {
     // Longest prefixes first: "culled by A only" before "culled".
     static const std::vector<std::pair<std::string, QString>> prefixes = {
-        {"culled with front faces", "false cull"}, {"culled back face", "back-facing"}, {"culled by", ""}, {"culled", "cluster"},
+        {"culled with front faces", "false cull"}, {"sub-group", "sub-group"}, {"culled back face", "back-facing"}, {"culled by", ""}, {"culled", "cluster"},
         {"missed cull", "missed cull"}, {"drawn by the LOD cut", "lod cut"}, {"LOD cut", "lod cut"}, {"LOD level", "lod level"},
         {"LOD groups", "lod group"}, {"drawn", "cluster"}, {"lost to the test", "test loss"},
         {"lost to the partition", "partition loss"}, {"cull fraction", "cull fraction"}, {"oracle fraction", "oracle fraction"},

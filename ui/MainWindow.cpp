@@ -300,6 +300,7 @@ void MainWindow::showEyeMeasurement() {
     statisticsPanel_->showComparison(session_.pinnedSettings(), session_.eyeComparison(), session_.orbitComparison());
     if (measurement) {
         statisticsPanel_->showEye(*measurement);
+        showMultiCones();
         eyeView_->showEye(*session_.scene());
         statusLine_->showSummary(session_);
     } else {
@@ -330,7 +331,18 @@ void MainWindow::showOrbit() {
     statisticsPanel_->showComparison(session_.pinnedSettings(), session_.eyeComparison(), session_.orbitComparison());
     worstClusters_->showOrbit(session_.orbitStatistics());
     statisticsPanel_->showOrbit(session_.orbitStatistics());
+    showMultiCones();
     statusLine_->showSummary(session_);
+}
+
+void MainWindow::showMultiCones() {
+    const OrbitMeasurement* orbit = session_.orbitMultiCones();
+    const std::optional<SubGroupsFromEye> eye = session_.subGroupsFromEye();
+    const EyeMeasurement* measurement = session_.measurement();
+    statisticsPanel_->showMultiCones(session_.settings().conesPerCluster, orbit ? &orbit->multiCones : nullptr,
+                                     eye ? &eye->counts : nullptr, measurement ? measurement->view().backFacingTriangles : 0);
+    clusterView_->showPick(session_);
+    gaussMap_->showPick(session_, false);
 }
 
 void MainWindow::showMesh(const QString& path, const QString& loadMessage) {

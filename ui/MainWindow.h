@@ -219,6 +219,7 @@ private:
     // The granularity report (or none) in its dock, the plots and its lesson.
     void showGranularity();
     void showOrbit();
+    void showMultiCones();  // the K-cone record's rows of the statistics panel
     void showMesh(const QString& path, const QString& loadMessage);
     void showError(const QString& title, const QString& message);
     int pickDisplay(const QPoint& display);

@@ -47,6 +47,7 @@ void PickedClusterView::showPick(const Session& session) {
     const int picked = session.pickedCluster();
     const EyeMeasurement* measurement = session.measurement();
     if (picked < 0 || !session.clusters() || !measurement) {
+        subGroups_.clear();
         showPage(-1, picked < 0 ? emptyClusterReportHtml() : tr("<p>Cluster %1: no valid eye to explain.</p>").arg(picked));
         return;
     }
@@ -67,6 +68,12 @@ void PickedClusterView::showPick(const Session& session) {
         a.test = displayedTest(*session.pinnedSettings());
         a.explanation = explainCull(cullingInput(*session.preparedMesh(), *session.pinnedClusters()), a.cluster, a.eye, a.test);
         underA = pinnedClusterHtml(a);
+    }
+    // With K cones per cluster, each sub-group of the cluster from the same eye.
+    subGroups_.clear();
+    if (const std::optional<SubGroupsFromEye> fromEye = session.subGroupsFromEye()) {
+        subGroups_ = subGroupVerdicts(*fromEye->multi, input.cluster, fromEye->culled, fromEye->facing);
+        underA = subGroupsHtml(subGroups_) + underA;
     }
     showPage(picked, clusterReportHtml(input, underA));
 }

@@ -2,7 +2,11 @@
 // page, from core explainCull), or what to do to pick one.
 #pragma once
 
+#include <vector>
+
 #include <QTextBrowser>
+
+#include "core/MultiConeCulling.h"
 
 namespace conescope {
 
@@ -16,6 +20,8 @@ public:
     // The session's picked cluster explained for its current eye and displayed test; the page keeps
     // its scroll position while the same cluster is shown.
     void showPick(const Session& session);
+    // The picked cluster's sub-groups the page lists (K cones per cluster), empty otherwise.
+    const std::vector<SubGroupVerdict>& subGroups() const { return subGroups_; }
 
 private:
     void showPage(int cluster, const QString& html);
@@ -23,6 +29,7 @@ private:
     void showLodPick(const Session& session);
 
     int shownCluster_ = -1;
+    std::vector<SubGroupVerdict> subGroups_;
 };
 
 }  // namespace conescope

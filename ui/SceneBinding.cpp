@@ -3,6 +3,7 @@
 #include "core/RecordTests.h"
 
 #include "core/CullMap.h"
+#include "core/MultiConeCulling.h"
 
 namespace conescope {
 
@@ -33,6 +34,12 @@ void showMeasurement(ClusterScene& scene, const PreparedMesh& prepared, const Cl
         cullable[c] = readsOwnRecord(test) ? cull[c] > 0.0 : clusters.bounds.cones[c].cullable || test == CullTest::Oracle;
     }
     scene.setClusterFractions(cull, clusters.cullMap.oracleFraction, cullable);
+}
+
+void showSubGroupsFromEye(ClusterScene& scene, const PreparedMesh& prepared, const ClusterSet& clusters, uint32_t cones, const Eye& eye) {
+    if (cones <= 1) return;
+    const MultiCones multi = computeMultiCones(prepared.mesh(), prepared.faces, clusters.bounds, cones);
+    scene.setSubGroups(subGroupOfFace(multi, prepared.mesh().faceCount()), cullSubGroups(clusters.bounds, multi, eye), cones);
 }
 
 void showEyeColouring(ClusterScene& scene, const PreparedMesh& prepared, const ClusterSet& clusters,

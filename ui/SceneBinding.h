@@ -26,6 +26,10 @@ void showMeasurement(ClusterScene& scene, const PreparedMesh& prepared, const Cl
 // The per-face colourings that depend on the eye, for the colouring shown: the oracle's facing
 // (classifyFaces) or the loss classes (faceLosses). Nothing for the others: classifying every face
 // at every eye move is left to the colourings that show it.
+// K cones per cluster (K > 1; else nothing) of the clusters from the eye into the sub-group colouring:
+// what the headless screenshot draws; the window keeps its split with the orbit (Session).
+void showSubGroupsFromEye(ClusterScene& scene, const PreparedMesh& prepared, const ClusterSet& clusters, uint32_t cones, const Eye& eye);
+
 void showEyeColouring(ClusterScene& scene, const PreparedMesh& prepared, const ClusterSet& clusters,
                       const EyeMeasurement& measurement, FaceColoring coloring);
 

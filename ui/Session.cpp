@@ -56,7 +56,16 @@ std::optional<Session::OrbitComparison> Session::measureSnapshot(Snapshot& b, co
     if (!b.orbitStatistics()) {
         auto orbit = std::make_shared<OrbitMeasurement>();
         orbit->settings = b.settings;
-        orbit->statistics = measureOrbit(*b.prepared, *b.clusters, b.settings, progressWithin(progress, 0.0, compare ? 0.5 : 1.0));
+        const double end = compare ? 0.5 : 1.0, split = b.settings.conesPerCluster > 1 ? 0.5 * end : end;
+        orbit->statistics = measureOrbit(*b.prepared, *b.clusters, b.settings, progressWithin(progress, 0.0, split));
+        if (b.settings.conesPerCluster > 1) {
+            const PreparedMesh& prepared = *b.prepared;
+            const ClusterBounds& bounds = b.clusters->bounds;
+            auto multi = std::make_shared<const MultiCones>(computeMultiCones(prepared.mesh(), prepared.faces, bounds, b.settings.conesPerCluster));
+            orbit->multiCones = measureMultiCones(prepared.mesh(), prepared.world, prepared.faces, subGroupRecord(*multi, multi->cones, bounds.spheres),
+                                                  orbitOf(b.settings, prepared.box), progressWithin(progress, split, end));
+            orbit->multi = std::move(multi);
+        }
         b.orbit = std::move(orbit);
     }
     if (!compare) return std::nullopt;
@@ -291,6 +300,7 @@ void Session::requestOrbit() {
             const Settings before = shown_.settings;
             setShownSettings(measured.first.settings);
             shown_.orbit = measured.first.orbit;
+            showSubGroups();
             adoptComparison(measured.second);
             if (displayedTest(before) != displayedTest(shown_.settings) || before.orthographic != shown_.settings.orthographic) updateEye();
             emit orbitChanged();

@@ -30,6 +30,7 @@
 #include "core/Comparison.h"
 #include "core/Granularity.h"
 #include "core/Lesson.h"
+#include "core/MultiConeCulling.h"
 #include "core/Pipeline.h"
 #include "scene/ClusterScene.h"
 
@@ -39,6 +40,18 @@ namespace conescope {
 struct OrbitMeasurement {
     Settings settings;
     CullTestStatistics statistics;
+    // settings.conesPerCluster > 1: the clusters split into K sub-groups and that record over the orbit.
+    std::shared_ptr<const MultiCones> multi;
+    MultiConeCulling multiCones;
+};
+
+// The K-cone record from the cull eye: each sub-group's verdict (cullSubGroups), the faces' facing
+// (classifyFaces) and the counts the panels show.
+struct SubGroupsFromEye {
+    std::shared_ptr<const MultiCones> multi;
+    std::vector<uint8_t> culled;
+    std::vector<Facing> facing;
+    SubGroupEyeCounts counts;
 };
 
 // Settings and the stages built with them: what is shown, or what is pinned as A.
@@ -131,6 +144,10 @@ public:
     const std::vector<ViewStatistics>& orbitRows() const;
     // The displayed test over the orbit with every cluster's counts and fractions; null before a mesh.
     const CullTestStatistics* orbitStatistics() const { return shown_.orbitStatistics(); }
+    // The K-cone record over the orbit and from the cull eye; null / empty with one cone per cluster
+    // or before the orbit is measured with these settings.
+    const OrbitMeasurement* orbitMultiCones() const;
+    std::optional<SubGroupsFromEye> subGroupsFromEye() const;
 
     // --- The cull eye -----------------------------------------------------------------------------
     glm::dvec3 eyePosition() const { return eyePosition_; }
@@ -261,6 +278,8 @@ signals:
     void lodChanged(const conescope::ClusterScene* previousScene);
 
 private:
+    // The K-cone record from the cull eye into the scene (the sub-group colouring), or none.
+    void showSubGroups();
     // A against B over B's orbit, with A and B as they were compared (their clusters and settings).
     struct OrbitComparison {
         Snapshot a, b;

@@ -8,6 +8,33 @@
 
 namespace conescope {
 
+const OrbitMeasurement* Session::orbitMultiCones() const {
+    return shown_.orbitStatistics() && shown_.orbit->multi ? shown_.orbit.get() : nullptr;
+}
+
+std::optional<SubGroupsFromEye> Session::subGroupsFromEye() const {
+    const OrbitMeasurement* orbit = orbitMultiCones();
+    if (!orbit || !measurement_) return std::nullopt;
+    const PreparedMesh& prepared = *shown_.prepared;
+    SubGroupsFromEye fromEye;
+    fromEye.multi = orbit->multi;
+    fromEye.culled = cullSubGroups(shown_.clusters->bounds, *orbit->multi, measurement_->eye);
+    fromEye.facing = classifyFaces(prepared.mesh(), prepared.world, prepared.faces, measurement_->eye);
+    fromEye.counts = countCulledSubGroups(*orbit->multi, fromEye.culled, fromEye.facing);
+    return fromEye;
+}
+
+void Session::showSubGroups() {
+    if (!scene_) return;
+    const std::optional<SubGroupsFromEye> fromEye = subGroupsFromEye();
+    if (!fromEye) {
+        scene_->setSubGroups({}, {}, 0);
+        return;
+    }
+    scene_->setSubGroups(subGroupOfFace(*fromEye->multi, shown_.prepared->mesh().faceCount()), fromEye->culled,
+                         fromEye->multi->conesPerCluster);
+}
+
 void Session::setInitialEye(const glm::dvec3& position) {
     eyePosition_ = position;
     eyeGiven_ = true;
@@ -99,6 +126,7 @@ void Session::measureCurrentEye() {
     eyeError_.clear();
     showMeasurement(*scene_, prepared, clusters, *measurement_);
     showEyeColouring(*scene_, prepared, clusters, *measurement_, coloring_);
+    showSubGroups();
     showTestDrawing(*scene_, prepared, clusters, picked_, *measurement_);
     measurePinnedEye();
     updateLesson();

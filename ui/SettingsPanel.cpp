@@ -9,6 +9,7 @@
 #include <QFormLayout>
 #include <QGroupBox>
 #include <QHBoxLayout>
+#include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
 #include <QSignalBlocker>
@@ -68,6 +69,25 @@ std::vector<Enum> withFirst(std::vector<Enum> list, Enum value) {
     return list;
 }
 
+// K cones per cluster: 1 (the test alone), 2, 4 or 8; the item data is K.
+QComboBox* coneCountBox(QWidget* parent) {
+    auto* box = new QComboBox(parent);
+    for (int k : {1, 2, 4, 8}) box->addItem(QString::number(k), k);
+    return box;
+}
+
+// "Test", the test's box, and beside it the K-cone choice measured with it.
+QHBoxLayout* besideTheTest(QComboBox* test, QComboBox* cones) {
+    auto* row = new QHBoxLayout;
+    auto* label = new QLabel(QObject::tr("&Test"), test->parentWidget());
+    label->setBuddy(test);
+    row->addWidget(label);
+    row->addWidget(test, 1);
+    row->addWidget(new QLabel(QObject::tr("cones per cluster"), test->parentWidget()));
+    row->addWidget(cones);
+    return row;
+}
+
 }  // namespace
 
 SettingsPanel::SettingsPanel(QWidget* parent) : QWidget(parent) {
@@ -89,6 +109,7 @@ SettingsPanel::SettingsPanel(QWidget* parent) : QWidget(parent) {
     cone_ = enumBox(allConeMethods(), this);
     test_ = enumBox(allCullTests(), this);
     sphere_ = enumBox(allSphereMethods(), this);
+    conesPerCluster_ = coneCountBox(this);
     projection_ = new QComboBox(this);
     projection_->addItem(tr("perspective"), false);
     projection_->addItem(tr("orthographic"), true);
@@ -116,7 +137,7 @@ SettingsPanel::SettingsPanel(QWidget* parent) : QWidget(parent) {
     auto* cullingGroup = new QGroupBox(tr("Culling"), this);
     auto* cullingForm = new QFormLayout(cullingGroup);
     cullingForm->addRow(tr("&Cone"), cone_);
-    cullingForm->addRow(tr("&Test"), test_);
+    cullingForm->addRow(besideTheTest(test_, conesPerCluster_));
     cullingForm->addRow(tr("Sphere"), sphere_);
     cullingForm->addRow(tr("&Projection"), projection_);
 
@@ -134,7 +155,7 @@ SettingsPanel::SettingsPanel(QWidget* parent) : QWidget(parent) {
     describeWidgets();
     setSettings(Settings{});
 
-    for (QComboBox* box : {builder_, effort_, cone_, test_, sphere_, projection_})
+    for (QComboBox* box : {builder_, effort_, cone_, test_, sphere_, projection_, conesPerCluster_})
         connect(box, qOverload<int>(&QComboBox::currentIndexChanged), this, &SettingsPanel::emitChanged);
     for (QSpinBox* box : {maxVertices_, maxTriangles_, clusterCount_, views_})
         connect(box, qOverload<int>(&QSpinBox::valueChanged), this, &SettingsPanel::emitChanged);
@@ -160,6 +181,7 @@ Settings SettingsPanel::settings() const {
     settings.cones = withFirst(base_.cones, enumOf<ConeMethod>(cone_));
     settings.tests = withFirst(base_.tests, enumOf<CullTest>(test_));
     settings.sphere = enumOf<SphereMethod>(sphere_);
+    settings.conesPerCluster = uint32_t(conesPerCluster_->currentData().toInt());
     settings.orthographic = projection_->currentData().toBool();
     settings.fixWinding = fixWinding_->isChecked();
     settings.views = size_t(views_->value());
@@ -179,7 +201,7 @@ void SettingsPanel::setSettings(const Settings& settings) {
         QSignalBlocker(clusterCount_), QSignalBlocker(effort_),      QSignalBlocker(clusterFile_), QSignalBlocker(normalWeight_),
         QSignalBlocker(coneWeight_),   QSignalBlocker(cone_),        QSignalBlocker(test_),
         QSignalBlocker(sphere_),       QSignalBlocker(projection_),  QSignalBlocker(fixWinding_),
-        QSignalBlocker(views_),        QSignalBlocker(distance_)};
+        QSignalBlocker(views_),        QSignalBlocker(distance_),    QSignalBlocker(conesPerCluster_)};
     selectEnum(builder_, settings.builder);
     maxVertices_->setValue(int(settings.limits.maxVertices));
     maxTriangles_->setValue(int(settings.limits.maxTriangles));
@@ -191,12 +213,13 @@ void SettingsPanel::setSettings(const Settings& settings) {
     if (!settings.cones.empty()) selectEnum(cone_, settings.cones.front());
     if (!settings.tests.empty()) selectEnum(test_, settings.tests.front());
     selectEnum(sphere_, settings.sphere);
+    conesPerCluster_->setCurrentIndex(std::max(0, conesPerCluster_->findData(int(settings.conesPerCluster))));
     projection_->setCurrentIndex(settings.orthographic ? 1 : 0);
     fixWinding_->setChecked(settings.fixWinding);
     views_->setValue(int(settings.views));
     distance_->setValue(settings.distance);
     enableForBuilder();
-    for (QComboBox* box : {builder_, effort_, cone_, test_, sphere_, projection_}) describeChoice(box);
+    for (QComboBox* box : {builder_, effort_, cone_, test_, sphere_, projection_, conesPerCluster_}) describeChoice(box);
 }
 
 void SettingsPanel::emitChanged() {
@@ -238,6 +261,9 @@ void SettingsPanel::describeWidgets() {
                                           "narrow cones.")}}},
         {"cones", {{cone_, explain(QStringLiteral("normal cone")) + tr(" How the cone is found:")}}},
         {"tests", {{test_, tr("The cheap test that decides from the cull eye whether a whole cluster faces away.")}}},
+        {"cones_per_cluster", {{conesPerCluster_, tr("Besides the test, each cluster's faces split into K sub-groups with a "
+                                                     "cone each and the cluster's sphere: the K-cone record's culling, from "
+                                                     "the eye and over the views (1: one cone only).")}}},
         {"sphere", {{sphere_, explain(QStringLiteral("bounding sphere")) + tr(" Ritter's is quick, minimal the smallest.")}}},
         {"orthographic", {{projection_, tr("Perspective: the eye is a point. Orthographic: the eye is infinitely far away and "
                                            "every view vector is the same direction.")}}},
@@ -267,9 +293,13 @@ void SettingsPanel::describeWidgets() {
     for (int i = 0; i < test_->count(); ++i) test_->setItemData(i, explain(CullTest(test_->itemData(i).toInt())), Qt::ToolTipRole);
     for (int i = 0; i < sphere_->count(); ++i)
         sphere_->setItemData(i, explain(SphereMethod(sphere_->itemData(i).toInt())), Qt::ToolTipRole);
+    for (int i = 0; i < conesPerCluster_->count(); ++i)
+        conesPerCluster_->setItemData(i, i == 0 ? tr("One cone per cluster: the test alone.")
+                                                : tr("%1 sub-groups per cluster, a cone each.").arg(conesPerCluster_->itemData(i).toInt()),
+                                      Qt::ToolTipRole);
     projection_->setItemData(0, tr("The eye is a point: each face is seen from its own direction."), Qt::ToolTipRole);
     projection_->setItemData(1, tr("The eye is infinitely far away: every face is seen from the same direction."), Qt::ToolTipRole);
-    for (QComboBox* box : {builder_, effort_, cone_, test_, sphere_, projection_}) {
+    for (QComboBox* box : {builder_, effort_, cone_, test_, sphere_, projection_, conesPerCluster_}) {
         connect(box, qOverload<int>(&QComboBox::currentIndexChanged), this, [this, box]() { describeChoice(box); });
         describeChoice(box);
     }

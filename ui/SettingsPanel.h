@@ -29,6 +29,7 @@ public:
     QComboBox* builderBox() const { return builder_; }
     QComboBox* coneBox() const { return cone_; }
     QComboBox* testBox() const { return test_; }
+    QComboBox* conesPerClusterBox() const { return conesPerCluster_; }
     QComboBox* projectionBox() const { return projection_; }
     QSpinBox* maxTrianglesBox() const { return maxTriangles_; }
     QComboBox* effortBox() const { return effort_; }
@@ -60,6 +61,7 @@ private:
     QComboBox* cone_ = nullptr;
     QComboBox* test_ = nullptr;
     QComboBox* sphere_ = nullptr;
+    QComboBox* conesPerCluster_ = nullptr;
     QComboBox* projection_ = nullptr;
     QCheckBox* fixWinding_ = nullptr;
     QSpinBox* views_ = nullptr;

@@ -54,6 +54,8 @@ StatisticsPanel::StatisticsPanel(QWidget* parent) : QWidget(parent) {
         addRow(QString::fromLatin1(name));
     // With a pin, A against B right under the eye's own numbers.
     for (const QString& name : comparisonRows()) addRow(name);
+    // With K cones per cluster, that record beside the one-cone test.
+    for (const QString& name : multiConeRows()) addRow(name);
     for (const char* name : {"mesh", "faces", "triangles", "degenerate faces", "mesh problems", "clusters",
                              "uncullable clusters", "builder", "cone / test", "build time", "orbit efficiency",
                              "lost over the orbit", "expected efficiency", "cull / oracle fraction", "cluster fill",
@@ -62,6 +64,7 @@ StatisticsPanel::StatisticsPanel(QWidget* parent) : QWidget(parent) {
     // The LOD hierarchy's cut from the eye and its levels (LOD dock), last: shown once it is built.
     for (const QString& name : lodRows()) addRow(name);
     showComparison(nullptr, nullptr, nullptr);
+    showMultiCones(0, nullptr, nullptr, 0);
     showLod(nullptr);
     clear();
 }
@@ -87,6 +90,11 @@ QString aboutRow(const QString& row) {
         {"efficiency", explain(QStringLiteral("efficiency"))},
         {"false culls", explain(QStringLiteral("false cull")) + QObject::tr(" Always 0 for ConeScope's own tests.")},
         {"missed clusters", explain(QStringLiteral("missed cull")) + QObject::tr(" The count from this eye.")},
+        {"K cones from the eye", QObject::tr("Each cluster split into K sub-groups with a cone each and the cluster's sphere: "
+                                             "sub-groups culled from this eye, the triangles in them and their share of the "
+                                             "back-facing triangles, beside the one-cone test above.")},
+        {"K cones over the orbit", QObject::tr("The K-cone record over every orbit eye: efficiency, false culls and the bytes "
+                                               "a cluster's record takes (what the statistics export's multi_cone says).")},
         {"time per test", QObject::tr("How long one cluster's test takes, measured over all clusters for this eye.")},
         {"A (pinned)", QObject::tr("The settings pinned as A: cone / test first (what A and B most often differ in), then the "
                                    "builder and the limits. The current settings are B.")},
@@ -299,6 +307,32 @@ void StatisticsPanel::showEye(const EyeMeasurement& measurement) {
     const QString about = aboutRow(QStringLiteral("uncullable clusters"));
     uncullable->setToolTip(note.isEmpty() ? about : about + QStringLiteral("\n\n") + note);
     uncullable->setStyleSheet(note.isEmpty() ? QString() : QStringLiteral("color: #a0400a; font-weight: bold;"));
+}
+
+QStringList StatisticsPanel::multiConeRows() {
+    return {QStringLiteral("K cones from the eye"), QStringLiteral("K cones over the orbit")};
+}
+
+void StatisticsPanel::showMultiCones(uint32_t cones, const MultiConeCulling* orbit, const SubGroupEyeCounts* eye, size_t eyeBackFacing) {
+    const FitHeightsAfter fit(*this);
+    for (const QString& row : multiConeRows()) {
+        values_[row]->setVisible(cones > 1);
+        if (auto* label = qobject_cast<QLabel*>(form_->labelForField(values_[row]))) {
+            label->setText(QString(row).replace(QLatin1Char('K'), QString::number(cones)));
+            label->setVisible(cones > 1);
+        }
+    }
+    if (cones <= 1) return;
+    values_["K cones from the eye"]->setText(
+        eye ? tr("%1 of %2 sub-groups, %3 triangles (%4), false culls %5")
+                  .arg(count(eye->groupsCulled), count(eye->groups), count(eye->trianglesCulled),
+                       percent(cullEfficiency(eye->trianglesCulled, eyeBackFacing)), count(eye->falseCulls))
+            : tr("measuring..."));
+    values_["K cones over the orbit"]->setText(
+        orbit ? tr("%1 (%2 of %3), false culls %4, %5 bytes a cluster")
+                    .arg(percent(orbit->efficiency), count(orbit->trianglesCulled), count(orbit->backFacingTriangles),
+                         count(orbit->falseCulls), count(orbit->bytesPerCluster))
+              : tr("measuring..."));
 }
 
 QStringList StatisticsPanel::comparisonRows() {

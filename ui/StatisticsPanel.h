@@ -29,6 +29,8 @@ public:
     // A against B (the pinned configuration against the current one) for the eye and over the
     // orbit, and the cluster-count warning; `a` null hides the comparison rows.
     void showComparison(const Settings* a, const Comparison* eye, const Comparison* orbit);
+    // The K-cone record (cones > 1) from the eye and over the orbit; null: being measured. Hidden for one cone.
+    void showMultiCones(uint32_t cones, const MultiConeCulling* orbit, const SubGroupEyeCounts* eye, size_t eyeBackFacing);
     void clear();
     // The LOD hierarchy's cut from the eye and its per-level rows (Session::lodStatistics); null hides them.
     void showLod(const LodStatistics* lod);
@@ -50,6 +52,7 @@ private:
     void fitHeight(QLabel* label);
     void fitHeights();
     static QStringList comparisonRows();
+    static QStringList multiConeRows();
     static QStringList lodRows();
 
     QFormLayout* form_ = nullptr;

@@ -330,6 +330,8 @@ BatchCommands addBatchCommands(CLI::App& app, BatchOptions& batch, BatchWorkerOp
 }
 
 int runBatch(const BatchOptions& options) {
+    if (options.run.toSettings().conesPerCluster != 1)
+        throw std::invalid_argument("--cones-per-cluster: a batch measures one cone per cluster; --granularity adds its rows with 2, 4 and 8 cones");
     const BatchConfig config =
         batchConfig(options.run.toSettings(), options.compareMeshopt ? kMeshoptPipeline : options.compare, options.detail,
                     options.granularity, options.lod);

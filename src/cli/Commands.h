@@ -60,7 +60,7 @@ struct LodCommandOptions {
     SettingsOptions run;
     LodThreshold threshold;
     size_t groupSize = 8;
-    uint32_t cones = 0;                // K cones per cluster measured beside the one cone (0: none)
+    uint32_t cones = 0;                // K cones per cluster measured beside the one cone (0: --cones-per-cluster's, if above 1)
     std::string hierarchy;             // a hierarchy file to read instead of building one
     std::string writeHierarchy;        // where to write the hierarchy measured
     std::string writeLevels;           // a folder for each level and the cut as meshes with cluster_id

@@ -80,7 +80,8 @@ void runLod(const LodCommandOptions& options) {
         note(options.quiet, "wrote " + options.writeHierarchy);
     }
     if (!options.writeLevels.empty()) writeLevelMeshes(hierarchy, settings, options);
-    const LodStatistics statistics = measureHierarchy(hierarchy, settings, options.threshold, progressWithin(progress, 0.6, 1.0), options.cones);
+    const LodStatistics statistics = measureHierarchy(hierarchy, settings, options.threshold, progressWithin(progress, 0.6, 1.0),
+                                                       options.cones > 0 ? options.cones : settings.conesPerCluster > 1 ? settings.conesPerCluster : 0);
     if (!options.writeLesson.empty()) writeLesson(statistics, prepared.name, options);
     std::ostringstream text;
     if (format == "csv")

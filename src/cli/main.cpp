@@ -159,7 +159,7 @@ CLI::App* addLodCommand(CLI::App& app, LodCommandOptions& lod, const std::string
     command->add_option("--fov", lod.threshold.fovDegrees, "Vertical field of view in degrees, for a threshold in pixels")
         ->capture_default_str();
     command->add_option("--group-size", lod.groupSize, "Most clusters simplified together")->capture_default_str();
-    command->add_option("--cones", lod.cones, "Also cull every level and the cut with K cones per cluster (2, 4 or 8; granularity's cones-K record)")
+    command->add_option("--cones", lod.cones, "Also cull every level and the cut with K cones per cluster (2, 4 or 8; granularity's cones-K record; the same as --cones-per-cluster)")
         ->check(CLI::IsMember({2, 4, 8}));
     command->add_option("--hierarchy", lod.hierarchy, "Read the hierarchy from this file (conescope-cluster-lod JSON or its binary form, made for MESH) instead of building one");
     command->add_option("--write-levels", lod.writeLevels, "Write each level (level-NN.vtp) and the cut from the first view (cut.vtp) to this folder, with cluster_id and level per face");

@@ -9,6 +9,7 @@
 #include "BatchCulling.h"
 #include "EngineRecords.h"
 #include "FileBuilder.h"
+#include "MultiConeCulling.h"
 #include "RecordTests.h"
 #include "SettingsSchema.h"
 #include "meshopt/Meshopt.h"
@@ -325,6 +326,10 @@ RunStatistics measureRun(const PreparedMesh& prepared, const ClusterSet& cluster
             addCullMap(run.results.back(), map);
             ++step;
         }
+        // K cones per cluster: the shown cone's partition and spheres, over the same views.
+        if (settings.conesPerCluster > 1 && cone == settings.cones.front())
+            run.multiCones = measureMultiConeRun(prepared.mesh(), prepared.world, prepared.faces, input.bounds,
+                                                 settings.conesPerCluster, views);
     }
     report(progress, 1.0, "done");
     return run;

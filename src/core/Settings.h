@@ -31,6 +31,7 @@ struct Settings {
     std::vector<ConeMethod> cones{kDefaultCone};
     std::vector<CullTest> tests{kDefaultTest};
     SphereMethod sphere = kDefaultSphere;
+    uint32_t conesPerCluster = 1;     // K cones per cluster measured beside the one cone (1: none); 1, 2, 4 or 8
     size_t views = 128;
     double distance = 3.0;
     bool orthographic = false;

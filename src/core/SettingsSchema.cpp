@@ -230,6 +230,19 @@ void addMeasurementFields(std::vector<SettingField>& fields) {
     f.assign = [](Settings& s, const SettingValue& v) { s.sphere = parseSphereMethod(std::get<std::string>(v)); };
     row(f);
 
+    // Beside the tests, not one of them: the K-cone record keeps the cluster's sphere and splits its cone.
+    f = describe("cones_per_cluster", "cones-per-cluster", "K",
+                 "Also cull with K cones per cluster, each its sub-group's cone and the cluster's sphere (1, 2, 4 or 8; 1: one cone only; granularity's cones-K record)",
+                 SettingKind::Count, false, Stage::Measurement);
+    f.minimum = 1, f.maximum = 8, f.omittedAtDefault = true;
+    f.value = [](const Settings& s) -> SettingValue { return size_t(s.conesPerCluster); };
+    f.assign = [](Settings& s, const SettingValue& v) {
+        const size_t k = std::get<size_t>(v);
+        if (k != 1 && k != 2 && k != 4 && k != 8) throw std::invalid_argument("'" + std::to_string(k) + "' is not 1, 2, 4 or 8");
+        s.conesPerCluster = uint32_t(k);
+    };
+    row(f);
+
     f = describe("views", "views", "N", "Number of orbit views around the mesh", SettingKind::Count, false, Stage::Measurement);
     f.minimum = 1, f.maximum = double(size_t(1) << 24);
     f.value = [](const Settings& s) -> SettingValue { return s.views; };

@@ -50,6 +50,7 @@ struct SettingField {
     std::vector<Builder> usedBy;      // empty: every builder
     std::function<bool(const Settings&)> onlyWhen;  // when set, the field matters only if this holds
     std::vector<std::string> excludes;  // flags that cannot be given together with this one
+    bool omittedAtDefault = false;    // the statistics' settings object leaves it out at its default (added later)
     double minimum = 0.0, maximum = 0.0;
     bool minimumExcluded = false;
     std::function<std::vector<std::string>()> names;  // Name / NameList: the accepted names

@@ -80,6 +80,15 @@ struct CullTestStatistics {
     std::vector<ClusterStatistics> clusters;
 };
 
+// The float K-cone record (each sub-group's cone, its cluster's sphere) over views: triangles in
+// culled sub-groups against back-facing triangles. cones = 0: not measured.
+struct MultiConeCulling {
+    uint32_t cones = 0;
+    size_t trianglesCulled = 0, backFacingTriangles = 0, falseCulls = 0;
+    double efficiency = 0.0;       // trianglesCulled / backFacingTriangles
+    size_t bytesPerCluster = 0;    // multiConeRecordBytes of the float record
+};
+
 struct RunStatistics {
     Settings settings;
     std::string meshName;
@@ -93,6 +102,7 @@ struct RunStatistics {
     size_t fewestClusters = 0;        // fewestClustersWithin the settings' limits: says why a budget was missed
     size_t viewCount = 0;
     std::vector<CullTestStatistics> results;
+    MultiConeCulling multiCones;      // settings.conesPerCluster > 1: the displayed cone's partition with K cones (cones = 0 otherwise)
 };
 
 // Triangles culled / back-facing triangles; 1 when nothing faces away (nothing to cull, nothing lost).

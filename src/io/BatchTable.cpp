@@ -72,7 +72,9 @@ std::vector<std::string> makeColumns() {
     std::vector<std::string> columns = identityColumns;
     columns.insert(columns.end(), totalsColumns().begin(), totalsColumns().end());
     columns.insert(columns.end(), meshColumns.begin(), meshColumns.end());
-    for (const SettingField& field : settingFields()) columns.push_back("setting_" + field.key);
+    // A batch measures one cone per cluster (K cones are its granularity columns): no column for K.
+    for (const SettingField& field : settingFields())
+        if (!field.omittedAtDefault) columns.push_back("setting_" + field.key);
     columns.push_back("a_options");
     for (const std::string& column : totalsColumns())
         if (describesSide(column)) columns.push_back("a_" + column);
@@ -133,7 +135,8 @@ void addRunCells(BatchRow& row, const RunStatistics& run, const std::vector<std:
 }
 
 void addSettingCells(BatchRow& row, const Settings& settings) {
-    for (const SettingField& field : settingFields()) row["setting_" + field.key] = settingText(field, settings);
+    for (const SettingField& field : settingFields())
+        if (!field.omittedAtDefault) row["setting_" + field.key] = settingText(field, settings);
 }
 
 void addComparisonCells(BatchRow& row, const ComparedRuns& runs) {

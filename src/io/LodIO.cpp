@@ -8,9 +8,23 @@
 #include <vector>
 
 #include "io/ColumnTable.h"
+#include "io/MultiConeColumns.h"
 #include "io/StatisticsIO.h"
 
 namespace conescope {
+
+// In the CSV only when K cones were measured; the JSON nests them under "multi_cone".
+const std::vector<NamedColumn<MultiConeCulling>>& multiConeColumns() {
+    using Column = NamedColumn<MultiConeCulling>;
+    static const std::vector<Column> columns{
+        {"cones_per_cluster", [](const MultiConeCulling& m) { return m.cones; }},
+        {"efficiency", [](const MultiConeCulling& m) { return m.efficiency; }},
+        {"false_culls", [](const MultiConeCulling& m) { return m.falseCulls; }},
+        {"triangles_culled", [](const MultiConeCulling& m) { return m.trianglesCulled; }},
+        {"back_facing_triangles", [](const MultiConeCulling& m) { return m.backFacingTriangles; }},
+    };
+    return columns;
+}
 
 namespace {
 
@@ -31,20 +45,6 @@ const std::vector<LevelColumn>& levelColumns() {
         {"max_half_angle_deg", [](const LodLevelStatistics& l) { return l.maxHalfAngleDegrees; }},
         {"min_error", [](const LodLevelStatistics& l) { return l.minError; }},
         {"max_error", [](const LodLevelStatistics& l) { return l.maxError; }},
-    };
-    return columns;
-}
-
-// The K-cone columns, in the CSV only when K cones were measured; the JSON nests them under
-// "multi_cone" (addMultiCone).
-const std::vector<NamedColumn<LodMultiConeCulling>>& multiConeColumns() {
-    using Column = NamedColumn<LodMultiConeCulling>;
-    static const std::vector<Column> columns{
-        {"cones_per_cluster", [](const LodMultiConeCulling& m) { return m.cones; }},
-        {"efficiency", [](const LodMultiConeCulling& m) { return m.efficiency; }},
-        {"false_culls", [](const LodMultiConeCulling& m) { return m.falseCulls; }},
-        {"triangles_culled", [](const LodMultiConeCulling& m) { return m.trianglesCulled; }},
-        {"back_facing_triangles", [](const LodMultiConeCulling& m) { return m.backFacingTriangles; }},
     };
     return columns;
 }

@@ -1,7 +1,9 @@
 #include "io/StatisticsIO.h"
 
+
 #include "core/SettingsSchema.h"
 #include "io/JsonWriter.h"
+#include "io/MultiConeColumns.h"
 
 #include <algorithm>
 #include <array>
@@ -244,10 +246,19 @@ void writeMeshReport(JsonWriter& json, const MeshReport& report) {
     members.write(json);
 }
 
+// The K-cone record's object: lod's keys and the record's bytes per cluster.
+nlohmann::json multiConeJson(const MultiConeCulling& multi) {
+    nlohmann::json json = rowToJson(multiConeColumns(), multi);
+    json["bytes_per_cluster"] = multi.bytesPerCluster;
+    return json;
+}
+
 void writeSettings(JsonWriter& json, const Settings& settings) {
     Members members;
-    for (const SettingField& field : settingFields())
+    for (const SettingField& field : settingFields()) {
+        if (field.omittedAtDefault && settingText(field, settings) == settingText(field, Settings{})) continue;
         members.add(field.key, [&field, &settings](JsonWriter& j) { j.value(settingToJson(field, field.value(settings))); });
+    }
     members.write(json);
 }
 
@@ -273,6 +284,7 @@ void writeStatistics(JsonWriter& json, const RunStatistics& run, const Statistic
         for (const CullTestStatistics& result : run.results) writeResult(j, result, detail);
         j.endArray();
     });
+    if (run.multiCones.cones > 0) top.add("multi_cone", [&run](JsonWriter& j) { j.value(multiConeJson(run.multiCones)); });
     top.write(json);
 }
 
@@ -373,6 +385,8 @@ void writeStatisticsCsv(const RunStatistics& run, std::ostream& out, CsvTable ta
         writeHeader(out, reportColumns());
         out << ",winding_fixed_faces,inside_out_components";
         writeHeader(out, laterTotalColumns());
+        const nlohmann::json multi = run.multiCones.cones > 0 ? multiConeJson(run.multiCones) : nlohmann::json::object();
+        for (const auto& [key, value] : multi.items()) out << ",multi_cone_" << key;
         out << '\n';
         for (const CullTestStatistics& result : run.results) {
             out << toString(result.cone) << ',' << toString(result.test) << ',' << run.clusters << ',' << run.viewCount;
@@ -380,6 +394,7 @@ void writeStatisticsCsv(const RunStatistics& run, std::ostream& out, CsvTable ta
             writeCells(out, reportColumns(), run.meshReport);
             out << ',' << run.windingFixedFaces << ',' << run.meshReport.insideOutComponents;
             writeCells(out, laterTotalColumns(), result);
+            for (const auto& [key, value] : multi.items()) out << ',' << (value.is_number_float() ? csvNumber(value.get<double>()) : value.dump());
             out << '\n';
         }
     } else if (table == CsvTable::Views) {

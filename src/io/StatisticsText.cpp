@@ -66,6 +66,11 @@ void writeStatisticsText(const RunStatistics& run, std::ostream& out, size_t wor
         out << "  worst clusters by test loss (alpha* = never cullable):\n";
         writeClusterTableText(r, rankClusters(r, ClusterSortKey::TestLoss, worstClusters), out);
     }
+    const MultiConeCulling& m = run.multiCones;
+    if (m.cones > 0)
+        out << formatted("\n%u cones per cluster (%s cone's clusters, sub-group cones, each cluster's sphere)\n"
+                         "  efficiency        %.3f of the back faces culled, false culls %zu, record %zu bytes a cluster\n",
+                         m.cones, toString(run.settings.cones.front()).c_str(), m.efficiency, m.falseCulls, m.bytesPerCluster);
 }
 
 }  // namespace conescope

@@ -156,6 +156,11 @@ void ClusterScene::setFaceComparison(const std::vector<FaceDiff>& comparison, co
     impl_->updateLegend();
 }
 
+void ClusterScene::setSubGroups(const std::vector<uint8_t>& groupOfFace, const std::vector<uint8_t>& culledGroups, uint32_t cones) {
+    impl_->faces.setSubGroups(groupOfFace, culledGroups, cones);
+    impl_->updateLegend();
+}
+
 void ClusterScene::setClusterLod(const ClusterLodClasses& lod) {
     impl_->data.tables.setLod(lod);
     impl_->updateLegend();

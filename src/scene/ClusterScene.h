@@ -85,6 +85,8 @@ public:
     // The A/B comparison per face for the eye (core faceDiff); empty clears it. Writes the per-face
     // "comparison" array. `warning` (clusterCountWarning) goes into the legend when not empty.
     void setFaceComparison(const std::vector<FaceDiff>& comparison, const std::string& warning = {});
+    // K cones per cluster from the eye for the sub-group colouring (FacesLayer::setSubGroups); K = 0: none.
+    void setSubGroups(const std::vector<uint8_t>& groupOfFace, const std::vector<uint8_t>& culledGroups, uint32_t cones);
     // The cull map's per-cluster shares (ClusterSet::cullMap) for the fraction colourings, and which
     // clusters have a cone at all. Rewrites K table entries. Throws std::invalid_argument on a size mismatch.
     void setClusterFractions(const std::vector<double>& cullFraction, const std::vector<double>& oracleFraction,

@@ -120,6 +120,7 @@ vtkLookupTable* ClusterTables::forGlyphs(FaceColoring coloring) const {
     case FaceColoring::LodGroup: return hasLod_ ? lodGroup : palette;
     case FaceColoring::LodCut: return hasLod_ ? lodCut : palette;
     case FaceColoring::Cluster:
+    case FaceColoring::SubGroup:
     case FaceColoring::FaceFacing: return palette;
     }
     return palette;

@@ -16,9 +16,15 @@ FacesLayer::FacesLayer(const SceneData& data)
     : SceneLayer(data), mapper_(cellArrayMapper(data.meshData, clusterIdArrayName, data.tables.palette)),
       actor_(actorFor(mapper_)) {
     actor_->GetProperty()->SetInterpolationToFlat();
+    setSubGroups({}, {}, 0);
 }
 
 void FacesLayer::recolour(FaceColoring coloring) {
+    // The sub-group colours are written per face; every other colouring maps ids through a table.
+    if (coloring == FaceColoring::SubGroup)
+        mapper_->SetColorModeToDirectScalars();
+    else
+        mapper_->SetColorModeToMapScalars();
     if (coloring == FaceColoring::FaceFacing) {
         mapper_->SelectColorArray(facingArrayName);
         mapper_->SetLookupTable(data_.tables.facing);
@@ -28,6 +34,8 @@ void FacesLayer::recolour(FaceColoring coloring) {
     } else if (coloring == FaceColoring::Comparison) {
         mapper_->SelectColorArray(comparisonArrayName);
         mapper_->SetLookupTable(data_.tables.comparison);
+    } else if (coloring == FaceColoring::SubGroup) {
+        mapper_->SelectColorArray(subGroupArrayName);
     } else {
         mapper_->SelectColorArray(clusterIdArrayName);
         mapper_->SetLookupTable(data_.tables.forGlyphs(coloring));
@@ -59,6 +67,16 @@ void FacesLayer::addLegendEntries(FaceColoring coloring, std::vector<LegendEntry
         if (cull) entries.push_back({"uncullable: no cone" + countLabel(data_.tables.uncullableClusters()), {SceneColours::uncullable}});
     } else if (coloring == FaceColoring::LodLevel || coloring == FaceColoring::LodGroup || coloring == FaceColoring::LodCut) {
         addLodLegendEntries(coloring, entries);
+    } else if (coloring == FaceColoring::SubGroup) {
+        if (subGroupCones_ == 0) {
+            entries.push_back({"no sub-groups (choose 2, 4 or 8 cones per cluster): clusters", clusterLegendColours()});
+            return;
+        }
+        std::vector<Rgb> shades;
+        for (uint32_t i = 0; i < subGroupCones_; ++i) shades.push_back(subGroupShade(data_.palette.empty() ? Rgb{0.3, 0.5, 0.8} : data_.palette[0], i, subGroupCones_));
+        entries.push_back({"sub-groups, " + std::to_string(subGroupCones_) + " a cluster: shades of its colour", shades});
+        entries.push_back({"sub-group culled from the eye" + countLabel(subGroupsCulled_) + ", " + std::to_string(subGroupTrianglesCulled_) + " tris",
+                           {SceneColours::culled}});
     } else if (coloring == FaceColoring::Loss) {
         if (!hasLoss_) entries.push_back({"no eye measured yet", {SceneColours::unclassified}});
         entries.push_back({"culled back face" + countLabel(lossCounts_[1]), {SceneColours::culled}});
@@ -134,6 +152,37 @@ void FacesLayer::setFaceComparison(const std::vector<FaceDiff>& comparison, cons
     data_.comparison->Modified();
     hasComparison_ = !comparison.empty();
     comparisonWarning_ = comparison.empty() ? std::string() : warning;
+}
+
+Rgb subGroupShade(const Rgb& colour, uint32_t index, uint32_t cones) {
+    // From darker to lighter than the cluster's colour, evenly: neighbours inside a cluster differ.
+    const double t = cones > 1 ? double(index) / double(cones - 1) : 0.5;
+    Rgb shade;
+    for (int k = 0; k < 3; ++k)
+        shade[k] = t < 0.5 ? colour[k] * (0.35 + 1.3 * t) : colour[k] + (1.0 - colour[k]) * 1.3 * (t - 0.5);
+    return shade;
+}
+
+void FacesLayer::setSubGroups(const std::vector<uint8_t>& groupOfFace, const std::vector<uint8_t>& culledGroups, uint32_t cones) {
+    const size_t faceCount = data_.clusterOfFace.size();
+    if (cones > 0 && (groupOfFace.size() != faceCount || culledGroups.size() != data_.bounds.count() * cones))
+        throw std::invalid_argument("setSubGroups: expected " + std::to_string(faceCount) + " faces and " +
+                                    std::to_string(data_.bounds.count() * cones) + " sub-groups");
+    subGroupCones_ = cones;
+    subGroupsCulled_ = subGroupTrianglesCulled_ = 0;
+    for (uint8_t culled : culledGroups) subGroupsCulled_ += culled ? 1 : 0;
+    uint8_t* rgb = data_.subGroup->GetPointer(0);
+    for (size_t f = 0; f < faceCount; ++f) {
+        const uint32_t c = data_.clusterOfFace[f];
+        Rgb colour = data_.palette[c];  // without sub-groups, the clusters
+        if (cones > 0) {
+            const bool culled = culledGroups[size_t(c) * cones + groupOfFace[f]] != 0;
+            colour = culled ? SceneColours::culled : subGroupShade(data_.palette[c], groupOfFace[f], cones);
+            if (culled) subGroupTrianglesCulled_ += data_.mesh.faceSize(f) - 2;
+        }
+        for (int k = 0; k < 3; ++k) rgb[3 * f + k] = uint8_t(std::clamp(colour[k], 0.0, 1.0) * 255.0 + 0.5);
+    }
+    data_.subGroup->Modified();
 }
 
 void FacesLayer::setFaceLoss(const std::vector<FaceLoss>& loss) {

@@ -12,6 +12,9 @@
 
 namespace conescope {
 
+// Sub-group `index` of `cones` in a cluster of this colour: from darker to lighter shades.
+Rgb subGroupShade(const Rgb& colour, uint32_t index, uint32_t cones);
+
 class FacesLayer : public SceneLayer {
 public:
     explicit FacesLayer(const SceneData& data);
@@ -31,6 +34,10 @@ public:
     // with the cluster-count warning if any; empty: nothing compared. Throws std::invalid_argument on
     // a size mismatch.
     void setFaceComparison(const std::vector<FaceDiff>& comparison, const std::string& warning);
+    // K cones per cluster from the eye: each face's sub-group within its cluster (0 to K - 1) and each
+    // sub-group's verdict (cluster * K + index, 1 = culled). K = 0: no K-cone record. Throws
+    // std::invalid_argument on a size mismatch.
+    void setSubGroups(const std::vector<uint8_t>& groupOfFace, const std::vector<uint8_t>& culledGroups, uint32_t cones);
 
 private:
     // The LOD colourings' entries: the level bar, the groups, or the cut's three classes.
@@ -44,6 +51,8 @@ private:
     bool hasComparison_ = false;
     std::array<size_t, 4> comparisonTriangles_{};
     std::string comparisonWarning_;
+    uint32_t subGroupCones_ = 0;
+    size_t subGroupsCulled_ = 0, subGroupTrianglesCulled_ = 0;
 };
 
 }  // namespace conescope

@@ -104,6 +104,12 @@ std::string degreesText(double radians) {
 
 Rgb coneMethodColour(ConeMethod method) { return descriptor(method).colour; }
 
+Rgb subGroupCapColour(size_t index) {
+    static const Rgb hues[] = {{1.00, 0.45, 0.45}, {0.45, 0.85, 1.00}, {1.00, 0.85, 0.35}, {0.65, 1.00, 0.55},
+                               {0.95, 0.55, 1.00}, {1.00, 0.65, 0.25}, {0.55, 0.65, 1.00}, {0.85, 0.85, 0.85}};
+    return hues[index % 8];
+}
+
 struct GaussMapScene::Impl {
     vtkSmartPointer<vtkActor> sphere = actorFor(plainMapper(emptyPolyData()));
     vtkSmartPointer<vtkActor> normals = pointsActor(normalColour, 7.0);
@@ -113,13 +119,16 @@ struct GaussMapScene::Impl {
     vtkSmartPointer<vtkActor> view = lineActor(plainMapper(emptyPolyData()), 3.0);
     vtkSmartPointer<vtkActor> viewTip = pointsActor(SceneColours::viewVector, 12.0);
     vtkSmartPointer<vtkActor> horizon = lineActor(plainMapper(emptyPolyData()), 2.0);
+    std::vector<vtkSmartPointer<vtkActor>> subGroupRims;  // K cones per cluster: one per sub-group
     SceneLegend legend;
+    std::vector<LegendEntry> entries;  // what show() put in the legend
     std::optional<GaussMap> map;
     ConeMethod displayed = ConeMethod::Minimal;
 
     std::vector<vtkActor*> actors() const {
         std::vector<vtkActor*> all = {sphere, cap, octagon, horizon, view, viewTip, normals};
         for (const auto& rim : rims) all.push_back(rim);
+        for (const auto& rim : subGroupRims) all.push_back(rim);
         return all;
     }
 };
@@ -140,6 +149,10 @@ GaussMapScene::GaussMapScene() : impl_(std::make_unique<Impl>()) {
     setColour(impl_->horizon, SceneColours::viewVector);
     setColour(impl_->octagon, octagonColour);
     for (size_t i = 0; i < allConeMethods().size(); ++i) impl_->rims.push_back(lineActor(plainMapper(emptyPolyData()), 3.0));
+    for (size_t i = 0; i < 8; ++i) {
+        impl_->subGroupRims.push_back(lineActor(plainMapper(emptyPolyData()), 2.0));
+        setColour(impl_->subGroupRims.back(), subGroupCapColour(i));
+    }
     impl_->legend.setVisible(true);
     show(std::nullopt, ConeMethod::Minimal);
 }
@@ -150,6 +163,7 @@ void GaussMapScene::show(const std::optional<GaussMap>& map, ConeMethod displaye
     impl_->map = map;
     impl_->displayed = displayed;
     for (vtkActor* actor : impl_->actors()) actor->SetVisibility(map.has_value());
+    for (const auto& rim : impl_->subGroupRims) rim->SetVisibility(false);
     if (!map) {
         impl_->legend.show({{"pick a cluster to see its normals", {sphereColour}}});
         return;
@@ -194,6 +208,30 @@ void GaussMapScene::show(const std::optional<GaussMap>& map, ConeMethod displaye
     setInput(impl_->horizon, polyDataFrom(circleOnSphere(map->view, M_PI / 2.0, 1.002), CellKind::Lines));
     entries.push_back({"view vector v and its horizon", {SceneColours::viewVector}});
     impl_->legend.show(entries);
+    impl_->entries = std::move(entries);
+}
+
+void GaussMapScene::showSubGroups(const std::vector<SubGroupCap>& caps) {
+    if (!impl_->map) return;
+    std::vector<LegendEntry> entries = impl_->entries;
+    for (size_t i = 0; i < impl_->subGroupRims.size(); ++i) {
+        vtkActor* rim = impl_->subGroupRims[i];
+        const bool drawn = i < caps.size() && caps[i].triangles > 0 && caps[i].cone.cullable;
+        rim->SetVisibility(drawn);
+        if (i >= caps.size() || caps[i].triangles == 0) continue;
+        const SubGroupCap& cap = caps[i];
+        if (drawn) setInput(rim, polyDataFrom(circleOnSphere(cap.cone.axis, cap.cone.halfAngle(), 1.008), CellKind::Lines));
+        entries.push_back({"sub-group " + std::to_string(i + 1) + ": " + (cap.cone.cullable ? degreesText(cap.cone.halfAngle()) : "no cone") +
+                               ", " + std::to_string(cap.triangles) + " tris, " + (cap.culled ? "culled" : "drawn"),
+                           {subGroupCapColour(i)}});
+    }
+    impl_->legend.show(entries);
+}
+
+size_t GaussMapScene::subGroupRimsShown() const {
+    size_t shown = 0;
+    for (const auto& rim : impl_->subGroupRims) shown += rim->GetVisibility() ? 1 : 0;
+    return shown;
 }
 
 bool GaussMapScene::hasMap() const { return impl_->map.has_value(); }

@@ -26,6 +26,15 @@ namespace conescope {
 // The colour each cone method's cap is drawn in.
 Rgb coneMethodColour(ConeMethod method);
 
+// One sub-group's cone of K cones per cluster, and its verdict from the eye.
+struct SubGroupCap {
+    ConeOfNormals cone;
+    size_t triangles = 0;
+    bool culled = false;
+};
+// The colour sub-group `index`'s rim is drawn in (up to 8).
+Rgb subGroupCapColour(size_t index);
+
 class GaussMapScene {
 public:
     GaussMapScene();
@@ -36,6 +45,10 @@ public:
     // Shows `map` of cluster `cluster`, with the cap of `displayed` filled; nullopt clears the picture.
     void show(const std::optional<GaussMap>& map, ConeMethod displayed, int cluster = -1);
     bool hasMap() const;
+    // After show(): the cluster's K sub-group cones as rims on the sphere, each with its verdict in the
+    // legend; empty hides them.
+    void showSubGroups(const std::vector<SubGroupCap>& caps);
+    size_t subGroupRimsShown() const;
 
     void addTo(vtkRenderer* renderer) const;
     void removeFrom(vtkRenderer* renderer) const;

@@ -29,6 +29,7 @@ SceneData::SceneData(const Mesh& mesh, const std::vector<glm::vec3>& world, cons
       worldBox(computeAabb(world)), meanEdge(meanEdgeLength(mesh, world)), points(pointsFrom(world)),
       meshData(meshPolyData(mesh, points, partition)), facing(vtkSmartPointer<vtkUnsignedCharArray>::New()),
       loss(vtkSmartPointer<vtkUnsignedCharArray>::New()), comparison(vtkSmartPointer<vtkUnsignedCharArray>::New()),
+      subGroup(vtkSmartPointer<vtkUnsignedCharArray>::New()),
       tables(palette) {
     this->mesh.faceStarts = mesh.faceStarts;
     this->mesh.faceVertices = mesh.faceVertices;
@@ -44,6 +45,11 @@ SceneData::SceneData(const Mesh& mesh, const std::vector<glm::vec3>& world, cons
     comparison->SetNumberOfTuples(vtkIdType(mesh.faceCount()));
     comparison->FillValue(4);
     meshData->GetCellData()->AddArray(comparison);
+    subGroup->SetName(subGroupArrayName);
+    subGroup->SetNumberOfComponents(3);
+    subGroup->SetNumberOfTuples(vtkIdType(mesh.faceCount()));
+    subGroup->FillValue(204);  // SceneColours::undecided until sub-groups are set
+    meshData->GetCellData()->AddArray(subGroup);
 }
 
 }  // namespace conescope

@@ -54,6 +54,7 @@ struct SceneData {
     vtkSmartPointer<vtkUnsignedCharArray> facing;  // meshData's "facing" array
     vtkSmartPointer<vtkUnsignedCharArray> loss;    // meshData's "loss" array
     vtkSmartPointer<vtkUnsignedCharArray> comparison;  // meshData's "comparison" array
+    vtkSmartPointer<vtkUnsignedCharArray> subGroup;    // meshData's "sub_group" array, RGB
     ClusterTables tables;
 };
 

@@ -33,7 +33,8 @@ const std::vector<FaceColoring>& allFaceColorings() {
                                                         FaceColoring::FaceFacing,   FaceColoring::CullFraction,
                                                         FaceColoring::OracleFraction, FaceColoring::Loss,
                                                         FaceColoring::Comparison,   FaceColoring::LodLevel,
-                                                        FaceColoring::LodGroup,     FaceColoring::LodCut};
+                                                        FaceColoring::LodGroup,     FaceColoring::LodCut,
+                                                        FaceColoring::SubGroup};
     return colorings;
 }
 
@@ -66,6 +67,7 @@ std::string toString(FaceColoring coloring) {
     case FaceColoring::LodLevel: return "lod-level";
     case FaceColoring::LodGroup: return "lod-group";
     case FaceColoring::LodCut: return "lod-cut";
+    case FaceColoring::SubGroup: return "sub-group";
     }
     return "unknown";
 }

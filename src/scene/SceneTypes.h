@@ -22,6 +22,9 @@ inline const char* const lossArrayName = "loss";
 // Per-face A/B comparison for the eye (core FaceDiff: 0 culled by neither, 1 by A only, 2 by B only,
 // 3 by both; 4 not compared), written by setFaceComparison.
 inline const char* const comparisonArrayName = "comparison";
+// Per-face colour (RGB) of the sub-group colouring: shades of the cluster's colour, the culled grey,
+// written by setSubGroups.
+inline const char* const subGroupArrayName = "sub_group";
 
 // Switchable parts of the scene. Default visibility: Faces, Borders, Cones, Eye, Highlight, Test, Legend, Lesson on;
 // Normals, Boxes, Spheres off.
@@ -57,6 +60,7 @@ enum class FaceColoring {
     LodLevel,      // per cluster its level, lodLevelColour: coarse levels stand out on a cut
     LodGroup,      // per cluster its group (the clusters simplified together), the cluster palette by group
     LodCut,        // per cluster whether the cut from the eye draws it, or a coarser or a finer level there
+    SubGroup,      // per face its sub-group of K cones per cluster, culled ones from the eye grey (setSubGroups)
 };
 const std::vector<FaceColoring>& allFaceColorings();
 std::string toString(FaceColoring);

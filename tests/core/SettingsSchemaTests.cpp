@@ -58,7 +58,7 @@ TEST(SettingsSchema, KeysAndFlagsAreUniqueAndFindable) {
         EXPECT_EQ(&settingField(field.flag), &field);
         EXPECT_FALSE(settingHelp(field).empty());
     }
-    EXPECT_EQ(settingFields().size(), 16u);
+    EXPECT_EQ(settingFields().size(), 17u);
     EXPECT_THROW(settingField("no-such-setting"), std::out_of_range);
 }
 

@@ -345,7 +345,7 @@ private slots:
     // repeats the command line's help for a list ("comma separated").
     void singleChoiceBoxesSayWhatTheChosenItemMeans() {
         const QList<QComboBox*> boxes = window_->settingsPanel()->findChildren<QComboBox*>();
-        QCOMPARE(boxes.size(), 6);
+        QCOMPARE(boxes.size(), 7);  // with the cones-per-cluster choice
         for (QComboBox* box : boxes) {
             const QString meaning = box->currentData(Qt::ToolTipRole).toString();
             QVERIFY2(!meaning.isEmpty(), qPrintable(box->currentText()));

@@ -79,6 +79,7 @@ QStringList cliSettingsArguments(const Settings& settings) {
                           QStringLiteral("--normal-weight"), QString::number(settings.normalWeight, 'g', 17),
                           QStringLiteral("--cone-weight"), QString::number(double(settings.meshoptConeWeight), 'g', 9),
                           QStringLiteral("--sphere"), QString::fromStdString(toString(settings.sphere))};
+    if (settings.conesPerCluster > 1) arguments << QStringLiteral("--cones-per-cluster") << QString::number(settings.conesPerCluster);
     // The orbit's size and distance mean nothing for a single eye (the CLI refuses both together).
     if (!settings.eye)
         arguments << QStringLiteral("--views") << QString::number(settings.views) << QStringLiteral("--distance")

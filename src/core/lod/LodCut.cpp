@@ -74,23 +74,6 @@ void addMultiCones(LodMultiConeCulling& total, LodMultiConeCulling& part) {
     total.efficiency = cullEfficiency(total.trianglesCulled, total.backFacingTriangles);
 }
 
-// One level from every view with K cones per cluster; `progress` hears of every view and may cancel.
-LodMultiConeCulling cullLevelWithCones(const LodLevel& level, const SubGroupRecord& multi, const std::vector<Eye>& views,
-                                       const ProgressCallback& progress) {
-    LodMultiConeCulling total;
-    total.cones = multi.multi->conesPerCluster;
-    const Mesh& mesh = level.prepared.mesh();
-    for (size_t v = 0; v < views.size(); ++v) {
-        reportProgress(progress, double(v) / double(views.size()), "levels");
-        const Eye& eye = views[v];
-        const std::vector<Facing> facing = classifyFaces(mesh, level.prepared.world, level.prepared.faces, eye);
-        const SubGroupCulling counted = countSubGroupCulling(multi, facing, eye);
-        LodMultiConeCulling view{total.cones, counted.trianglesCulled, backFacingTriangles(mesh, facing), counted.falseCulls, 0.0};
-        addMultiCones(total, view);
-    }
-    return total;
-}
-
 }  // namespace
 
 double projectedError(double error, const Sphere& sphere, const glm::dvec3& eye, const LodThreshold& threshold) {
@@ -165,7 +148,9 @@ LodStatistics measureHierarchy(const ClusterHierarchy& hierarchy, const Settings
         const double split = records.empty() ? end : 0.5 * (begin + end);
         row.culling = measureCulling(cullingInput(level.prepared, level.clusters), views, test, progressWithin(progress, begin, split, "levels"));
         describeLevel(row, level);
-        if (!records.empty()) row.multiCones = cullLevelWithCones(level, records[l], views, progressWithin(progress, split, end));
+        if (!records.empty())
+            row.multiCones = measureMultiCones(level.prepared.mesh(), level.prepared.world, level.prepared.faces, records[l], views,
+                                               progressWithin(progress, split, end));
     }
     LodCutStatistics& cut = statistics.cut;
     std::vector<uint8_t> used(levelCount, 0);

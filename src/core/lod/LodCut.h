@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "ClusterHierarchy.h"
+#include "core/MultiConeCulling.h"
 
 namespace conescope {
 
@@ -35,11 +36,7 @@ Mesh meshOfCut(const ClusterHierarchy& hierarchy, const std::vector<std::vector<
 
 // K cones per cluster (MultiCones.h: the float record, tested batched as the product does) over the
 // same views as the one-cone numbers beside it; cones 0 when not measured.
-struct LodMultiConeCulling {
-    uint32_t cones = 0;
-    size_t trianglesCulled = 0, backFacingTriangles = 0, falseCulls = 0;
-    double efficiency = 0.0;  // trianglesCulled / backFacingTriangles
-};
+using LodMultiConeCulling = MultiConeCulling;
 
 // One level over the views: its size, how wide its cones are, and the displayed test's culling.
 struct LodLevelStatistics {
