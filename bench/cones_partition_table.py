@@ -1,4 +1,4 @@
-"""Whether a partition built for K cones (`--cones K`: the optimized builder's faces moved while the
+"""Whether a partition built for K cones (`--cones-per-cluster K`: the optimized builder's faces moved while the
 K sub-groups' expected culling rises) beats the default partition split into K sub-groups afterwards.
 Runs `conescope-cli granularity` on every mesh of a list ("set path" per line) with the default
 partition and with the partition built for 2 and for 4 cones, and writes OUT.csv (one row per mesh
@@ -17,7 +17,7 @@ CONES = (2, 4)
 
 def granularity(path, cones):
     start = time.monotonic()
-    done = subprocess.run([cli, "granularity", path, "--views", "64", "--distance", "3", "--test", "octagon", "--cones", str(cones),
+    done = subprocess.run([cli, "granularity", path, "--views", "64", "--distance", "3", "--test", "octagon", "--cones-per-cluster", str(cones),
                            "--format", "json", "-q"], capture_output=True, text=True)
     if done.returncode != 0:
         return None, 0.0
@@ -53,7 +53,7 @@ with open(out + ".csv", "w", newline="") as handle:
     writer.writerows(rows)
 
 text = ["64 orbit views at distance 3, limits 64/124. Split afterwards: the default partition, each cluster's faces split "
-        "into K sub-groups; built for K: `--cones K`, the default partition with faces moved across cluster borders while the "
+        "into K sub-groups; built for K: `--cones-per-cluster K`, the default partition with faces moved across cluster borders while the "
         "K sub-groups' expected culled share rises, then split the same way. Both have the same clusters (count); the cones-K "
         "record (float) culls the back faces below. Seconds: the whole `granularity` run, one core busy.", "",
         "| set | K | meshes | equal counts | × split afterwards (geometric mean) | better | worse | mean efficiency split afterwards | built for K | false culls | seconds (split afterwards → built for K) |",

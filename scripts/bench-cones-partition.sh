@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Whether a partition built for K cones per cluster (`--cones K`) beats the default partition split
+# Whether a partition built for K cones per cluster (`--cones-per-cluster K`) beats the default partition split
 # into K sub-groups afterwards, on every CGAL demo mesh that reads and every Sweet Home 3D furniture
 # prop: bench/results/cones-partition.{csv,md}.
 #

@@ -262,8 +262,9 @@ void SettingsPanel::describeWidgets() {
         {"cones", {{cone_, explain(QStringLiteral("normal cone")) + tr(" How the cone is found:")}}},
         {"tests", {{test_, tr("The cheap test that decides from the cull eye whether a whole cluster faces away.")}}},
         {"cones_per_cluster", {{conesPerCluster_, tr("Besides the test, each cluster's faces split into K sub-groups with a "
-                                                     "cone each and the cluster's sphere: the K-cone record's culling, from "
-                                                     "the eye and over the views (1: one cone only).")}}},
+                                                     "cone and an apex each: the K-cone record's culling, from the eye and over "
+                                                     "the views (1: one cone only). The optimized builder makes its clusters for "
+                                                     "K cones.")}}},
         {"sphere", {{sphere_, explain(QStringLiteral("bounding sphere")) + tr(" Ritter's is quick, minimal the smallest.")}}},
         {"orthographic", {{projection_, tr("Perspective: the eye is a point. Orthographic: the eye is infinitely far away and "
                                            "every view vector is the same direction.")}}},

@@ -90,7 +90,7 @@ QString aboutRow(const QString& row) {
         {"efficiency", explain(QStringLiteral("efficiency"))},
         {"false culls", explain(QStringLiteral("false cull")) + QObject::tr(" Always 0 for ConeScope's own tests.")},
         {"missed clusters", explain(QStringLiteral("missed cull")) + QObject::tr(" The count from this eye.")},
-        {"K cones from the eye", QObject::tr("Each cluster split into K sub-groups with a cone each and the cluster's sphere: "
+        {"K cones from the eye", QObject::tr("Each cluster split into K sub-groups with a cone and an apex each: "
                                              "sub-groups culled from this eye, the triangles in them and their share of the "
                                              "back-facing triangles, beside the one-cone test above.")},
         {"K cones over the orbit", QObject::tr("The K-cone record over every orbit eye: efficiency, false culls and the bytes "

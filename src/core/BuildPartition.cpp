@@ -35,7 +35,7 @@ Partition buildPartition(const Mesh& mesh, const FaceGeometry& faces, const Sett
         }
         case Builder::Meshopt: return buildMeshoptMeshlets(mesh, settings.limits, settings.meshoptConeWeight);
         case Builder::Optimized: return buildOptimizedClusters(mesh, faces, settings.limits, settings.clusterCount, progress, settings.effort,
-                                                                 meshlets, partDone);
+                                                                 meshlets, partDone, settings.conesPerCluster);
         case Builder::File: {
             // A meshlet file read with the mesh, an id file read into the settings, or the mesh's own.
             if (const FileClusters* meshlets = meshletClusters(mesh, settings.clusterFile)) return {meshlets->clusterOfFace, meshlets->clusterCount};

@@ -84,8 +84,8 @@ std::string widthStep(const LessonNumbers& n) {
         if (widths[i].conelessShare >= 1.0 || (i > 0 && !(widths[i].meanHalfAngleDegrees < widths[i - 1].meanHalfAngleDegrees)))
             narrowing = false;
     }
-    return "Split each cluster's triangles into K sub-groups of similar normals, each with a cone of its own and the "
-           "cluster's sphere: each cone holds fewer normals, and a sub-group facing away is culled even when another "
+    return "Split each cluster's triangles into K sub-groups of similar normals, each with a cone and an apex of its "
+           "own: each cone holds fewer normals, and a sub-group facing away is culled even when another "
            "sub-group of its cluster faces the eye. With " + counts + " cones per cluster the mean half-angle \u03b1 of the "
            "cones (weighted by triangles, over the sub-groups that have one) is " + angles + (narrowing ? ": the more cones, the narrower. " : ". ") +
            "The sub-groups no cone narrower than a hemisphere holds (never culled) hold " + coneless + " of all triangles. "

@@ -230,10 +230,12 @@ void addMeasurementFields(std::vector<SettingField>& fields) {
     f.assign = [](Settings& s, const SettingValue& v) { s.sphere = parseSphereMethod(std::get<std::string>(v)); };
     row(f);
 
-    // Beside the tests, not one of them: the K-cone record keeps the cluster's sphere and splits its cone.
+    // Beside the tests, not one of them: the K-cone record splits each cluster's cone. The optimized
+    // builder builds its partition for it (at balanced and best), so a change makes new clusters.
     f = describe("cones_per_cluster", "cones-per-cluster", "K",
-                 "Also cull with K cones per cluster, each its sub-group's cone and the cluster's sphere (1, 2, 4 or 8; 1: one cone only; granularity's cones-K record)",
-                 SettingKind::Count, false, Stage::Measurement);
+                 "Also cull with K cones per cluster, each its sub-group's cone and apex (1, 2, 4 or 8; 1: one cone only; granularity's "
+                 "cones-K record); the optimized builder then builds its clusters for K cones (balanced and best efforts)",
+                 SettingKind::Count, false, Stage::Clusters);
     f.minimum = 1, f.maximum = 8, f.omittedAtDefault = true;
     f.value = [](const Settings& s) -> SettingValue { return size_t(s.conesPerCluster); };
     f.assign = [](Settings& s, const SettingValue& v) {

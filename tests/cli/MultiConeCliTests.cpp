@@ -46,8 +46,9 @@ TEST(CliMultiCone, StatsWithFourConesIsTheCoresRun) {
     EXPECT_EQ(multi["back_facing_triangles"], stats["results"][0]["back_facing_triangles"]);
     EXPECT_GT(multi["triangles_culled"].get<size_t>(), stats["results"][0]["triangles_culled"].get<size_t>());
 
-    // granularity's cones-4 row: the same record on the same partition and views.
-    const nlohmann::json granularity = clitest::runJsonCommand("granularity", {"--format", "json", dataset("fandisk.off"), "--views", "24"});
+    // granularity's cones-4 row: the same record on the same partition (built for 4 cones) and views.
+    const nlohmann::json granularity =
+        clitest::runJsonCommand("granularity", {"--format", "json", dataset("fandisk.off"), "--views", "24", "--cones-per-cluster", "4"});
     bool found = false;
     for (const nlohmann::json& row : granularity["rows"]) {
         if (row["record"] != "cones-4") continue;
