@@ -235,7 +235,7 @@ void addMeasurementFields(std::vector<SettingField>& fields) {
     f = describe("cones_per_cluster", "cones-per-cluster", "K",
                  "Also cull with K cones per cluster, each its sub-group's cone and apex (1, 2, 4 or 8; 1: one cone only; granularity's "
                  "cones-K record); the optimized builder then builds its clusters for K cones (balanced and best efforts)",
-                 SettingKind::Count, false, Stage::Clusters);
+                 SettingKind::Count, true, Stage::Clusters);  // a builder option too: `partition` writes the clusters for K
     f.minimum = 1, f.maximum = 8, f.omittedAtDefault = true;
     f.value = [](const Settings& s) -> SettingValue { return size_t(s.conesPerCluster); };
     f.assign = [](Settings& s, const SettingValue& v) {
