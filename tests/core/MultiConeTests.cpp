@@ -135,3 +135,45 @@ TEST(MultiCones, ApexesBehindEveryFacePlaneAndCullAtLeastTheSphereTest) {
         }
     }
 }
+
+// A small cluster is split by trying every split: its value is the largest over every assignment of
+// its faces to K groups, enumerated here independently (K^n of them).
+TEST(MultiCones, SmallClustersGetTheBestSplitOfAll) {
+    std::mt19937_64 random(11);
+    auto valueOf = [](const std::vector<glm::dvec3>& normals, const std::vector<uint32_t>& triangles, const std::vector<uint8_t>& group,
+                      uint32_t k) {
+        double value = 0.0;
+        for (uint32_t g = 0; g < k; ++g) {
+            std::vector<glm::dvec3> members;
+            size_t t = 0;
+            for (size_t i = 0; i < normals.size(); ++i)
+                if (group[i] == g) members.push_back(normals[i]), t += triangles[i];
+            if (!members.empty()) value += expectedCulledTriangles(minimalCone(members.data(), members.size()), t);
+        }
+        return value;
+    };
+    for (uint32_t k : {2u, 4u}) {
+        for (int trial = 0; trial < 6; ++trial) {
+            const size_t n = k == 2 ? 9 : 6;
+            std::vector<glm::dvec3> normals;
+            std::vector<uint32_t> triangles;
+            // Normals around a few directions, so that some splits gain and many do not.
+            const glm::dvec3 a = testmesh::randomUnit(random), b = testmesh::randomUnit(random);
+            for (size_t i = 0; i < n; ++i) {
+                normals.push_back(glm::normalize((i % 2 ? a : b) + 0.35 * testmesh::randomUnit(random)));
+                triangles.push_back(1 + uint32_t(i % 3));
+            }
+            double best = 0.0;
+            std::vector<uint8_t> group(n, 0);
+            size_t assignments = 1;
+            for (size_t i = 0; i < n; ++i) assignments *= k;
+            for (size_t code = 0; code < assignments; ++code) {
+                size_t c = code;
+                for (size_t i = 0; i < n; ++i) group[i] = uint8_t(c % k), c /= k;
+                best = std::max(best, valueOf(normals, triangles, group, k));
+            }
+            const std::vector<uint8_t> split = splitForCones(normals.data(), triangles.data(), n, k);
+            EXPECT_NEAR(valueOf(normals, triangles, split, k), best, 1e-9 * std::max(best, 1.0)) << "K=" << k << " trial " << trial;
+        }
+    }
+}
