@@ -114,19 +114,18 @@ ConeGroupSplit splitClusterForCones(const Mesh& mesh, const FaceGeometry& faces,
     std::vector<uint32_t> triangles;
     for (uint32_t f : split.faces)
         if (!faces.degenerate[f]) normals.push_back(faces.normals[f]), triangles.push_back(fanTriangles(mesh, f));
+    std::vector<ConeOfNormals> cones;  // the split's own minimal cones: not made twice
     const std::vector<uint8_t> groupOfNormal =
-        normals.empty() ? std::vector<uint8_t>{} : splitForCones(normals.data(), triangles.data(), normals.size(), conesPerCluster);
+        normals.empty() ? std::vector<uint8_t>{} : splitForCones(normals.data(), triangles.data(), normals.size(), conesPerCluster, &cones);
     split.group.assign(split.faces.size(), 0);
     for (size_t i = 0, n = 0; i < split.faces.size(); ++i)
         if (!faces.degenerate[split.faces[i]]) split.group[i] = groupOfNormal[n++];
     split.cones.assign(conesPerCluster, ConeOfNormals{});
     split.triangles.assign(conesPerCluster, 0);
-    std::vector<glm::dvec3> members;
     for (uint32_t g = 0; g < conesPerCluster; ++g) {
         for (size_t i = 0; i < split.faces.size(); ++i)
             if (split.group[i] == g) split.triangles[g] += fanTriangles(mesh, split.faces[i]);
-        groupNormals(faces, split, g, UINT32_MAX, nullptr, members);
-        if (!members.empty() && !holdsDegenerate(faces, split, g)) split.cones[g] = minimalCone(members.data(), members.size());
+        if (g < cones.size() && !holdsDegenerate(faces, split, g)) split.cones[g] = cones[g];
         split.value += groupValue(split.cones[g], split.triangles[g]);
     }
     return split;
