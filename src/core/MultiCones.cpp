@@ -319,7 +319,10 @@ std::vector<uint8_t> cullSubGroupsBatched(const ClusterBatch& batch, const std::
 }
 
 size_t multiConeRecordBytes(uint32_t conesPerCluster, size_t maxClusterTriangles, bool compact) {
-    const size_t offsets = (conesPerCluster - 1) * (maxClusterTriangles <= 255 ? 1 : 2);
+    // The K - 1 offsets are bit fields just wide enough for the largest cluster, packed together.
+    size_t bitsPerOffset = 1;
+    while ((size_t(1) << bitsPerOffset) <= maxClusterTriangles) ++bitsPerOffset;
+    const size_t offsets = ((conesPerCluster - 1) * bitsPerOffset + 7) / 8;
     const size_t bytes = compact ? 8 + 5 * conesPerCluster + offsets : 16 + 20 * conesPerCluster + offsets;
     return (bytes + 3) / 4 * 4;
 }

@@ -60,8 +60,9 @@ size_t culledTriangles(const MultiCones& multi, const std::vector<uint8_t>& cull
 // bytes_per_cluster), padded to 4 bytes. Float: sphere (4 floats), per cone its axis, sin(alpha) and
 // the apex's distance behind the centre (5 floats), K - 1 sub-group offsets. Compact: sphere in
 // 4 x 16 bits within the mesh's box, per cone a 3 x 8-bit axis, an 8-bit sin(alpha) and an 8-bit apex
-// distance, the offsets. An offset takes 1 byte when no cluster holds more than 255 triangles
-// (meshoptimizer's limits), else 2.
+// distance, the offsets. The K - 1 offsets are packed bit fields as wide as the largest cluster's
+// triangle count needs: 8 bits up to 255 triangles (meshoptimizer's limits), 10 up to 1023, so the
+// compact 4-cone record stays 32 bytes for clusters of up to 1023 triangles.
 size_t multiConeRecordBytes(uint32_t conesPerCluster, size_t maxClusterTriangles, bool compact);
 
 // The compact record decoded, one per sub-group and cluster, for the same apex test. Every

@@ -86,7 +86,12 @@ TEST(Granularity, RecordBytes) {
     EXPECT_EQ(multiConeRecordBytes(2, 124, true), 20u);
     EXPECT_EQ(multiConeRecordBytes(8, 124, true), 56u);
     EXPECT_EQ(multiConeRecordBytes(4, 124, false), 100u);  // 16 sphere + 4 x 20 cones and apexes + 3 offsets, padded
-    EXPECT_EQ(multiConeRecordBytes(4, 512, true), 36u);    // 2-byte offsets past 255 triangles
+    EXPECT_EQ(multiConeRecordBytes(4, 255, true), 32u);    // 3 x 8 offset bits
+    EXPECT_EQ(multiConeRecordBytes(4, 256, true), 32u);    // 3 x 9 bits in 4 bytes: 28 + 4
+    EXPECT_EQ(multiConeRecordBytes(4, 1023, true), 32u);   // 3 x 10 bits
+    EXPECT_EQ(multiConeRecordBytes(4, 1024, true), 36u);   // 3 x 11 bits take 5 bytes
+    EXPECT_EQ(multiConeRecordBytes(8, 512, true), 60u);    // 8 + 40 + 7 x 10 bits (9 bytes), padded
+    EXPECT_EQ(multiConeRecordBytes(2, 65535, true), 20u);  // one 16-bit offset: 8 + 10 + 2
 }
 
 // The compact sphere holds the float one, and the compact cone every normal of its sub-group.
