@@ -10,10 +10,4 @@
 #   CONESCOPE_PROPS_DEBS=/dir/with/debs CONESCOPE_BENCH_BUILD_DIR=... scripts/bench-granularity.sh
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/bench-setup.sh" conescope-cli
-cli="$build/src/cli/conescope-cli"
-list="$output/granularity.list.tmp"
-bench_mesh_list "$list"
-start=$(date +%s)
-python3 "$root/bench/granularity_table.py" "$cli" "$list" "$output/granularity" "$root"
-rm -f "$list"
-echo "bench-granularity: wrote $output/granularity.{csv,md} in $(( $(date +%s) - start )) s" >&2
+bench_record_table granularity granularity_table.py
