@@ -6,13 +6,4 @@
 #   scripts/bench-cones-partition.sh
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/bench-setup.sh" conescope-cli
-"$root/scripts/fetch-props.sh"
-cli="$build/src/cli/conescope-cli"
-list="$output/cones-partition.list.tmp"
-: > "$list"
-for mesh in "$root"/datasets/cgal-all/*.off "$root"/datasets/cgal-all/*.ply; do [[ -f "$mesh" ]] && echo "cgal $mesh" >> "$list"; done
-find "$root/datasets/props-debian/sh3d" -name '*.obj' | sort | sed 's/^/props /' >> "$list"
-start=$(date +%s)
-python3 "$root/bench/cones_partition_table.py" "$cli" "$list" "$output/cones-partition" "$root"
-rm -f "$list"
-echo "bench-cones-partition: wrote $output/cones-partition.{csv,md} in $(( $(date +%s) - start )) s" >&2
+bench_record_table cones-partition cones_partition_table.py

@@ -10,13 +10,4 @@
 #   CONESCOPE_PROPS_DEBS=/dir/with/debs CONESCOPE_BENCH_BUILD_DIR=... scripts/bench-granularity.sh
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/bench-setup.sh" conescope-cli
-"$root/scripts/fetch-props.sh"
-cli="$build/src/cli/conescope-cli"
-list="$output/granularity.list.tmp"
-: > "$list"
-for mesh in "$root"/datasets/cgal-all/*.off "$root"/datasets/cgal-all/*.ply; do [[ -f "$mesh" ]] && echo "cgal $mesh" >> "$list"; done
-find "$root/datasets/props-debian/sh3d" -name '*.obj' | sort | sed 's/^/props /' >> "$list"
-start=$(date +%s)
-python3 "$root/bench/granularity_table.py" "$cli" "$list" "$output/granularity" "$root"
-rm -f "$list"
-echo "bench-granularity: wrote $output/granularity.{csv,md} in $(( $(date +%s) - start )) s" >&2
+bench_record_table granularity granularity_table.py

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Real props from Debian packages, unpacked once into datasets/props-debian: Sweet Home 3D's
 # furniture OBJ files (sweethome3d-furniture) and Trigger Rally's cars and wheels
-# (trigger-rally-data). Used by bench-props.sh and bench-granularity.sh.
+# (trigger-rally-data). Used by bench-props.sh and by bench-setup.sh's bench_mesh_list (the
+# granularity and cones-partition benches).
 #
 #   scripts/fetch-props.sh                                 # apt-get download, once
 #   CONESCOPE_PROPS_DEBS=/dir/with/debs scripts/fetch-props.sh   # offline, from .deb files there

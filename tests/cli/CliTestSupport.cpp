@@ -86,6 +86,22 @@ CliRun runProgram(const std::string& path, const std::vector<std::string>& argum
 
 nlohmann::json runStatsJson(const std::vector<std::string>& arguments) { return runJsonCommand("stats", arguments); }
 
+nlohmann::json runJsonFormat(const std::string& command, const std::vector<std::string>& arguments) {
+    return runJsonCommand(command, withArguments({"--format", "json"}, arguments));
+}
+
+const nlohmann::json* granularityRow(const nlohmann::json& report, const std::string& record) {
+    const nlohmann::json* found = nullptr;
+    for (const nlohmann::json& row : report["rows"])
+        if (row["record"] == record) found = &row;
+    return found;
+}
+
+std::vector<std::string> withArguments(std::vector<std::string> first, const std::vector<std::string>& then) {
+    first.insert(first.end(), then.begin(), then.end());
+    return first;
+}
+
 nlohmann::json runJsonCommand(const std::string& name, const std::vector<std::string>& arguments) {
     std::vector<std::string> command = {name, "--quiet"};
     command.insert(command.end(), arguments.begin(), arguments.end());

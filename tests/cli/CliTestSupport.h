@@ -46,6 +46,13 @@ std::string readTextFile(const std::string& path);
 nlohmann::json runJsonCommand(const std::string& command, const std::vector<std::string>& arguments);
 // runJsonCommand("stats", ARGUMENTS).
 nlohmann::json runStatsJson(const std::vector<std::string>& arguments);
+// runJsonCommand(COMMAND, "--format json" ARGUMENTS): for the commands whose default format is text.
+nlohmann::json runJsonFormat(const std::string& command, const std::vector<std::string>& arguments);
+// The row of this record in a `granularity` report, or null when it has none.
+const nlohmann::json* granularityRow(const nlohmann::json& report, const std::string& record);
+
+// The arguments `first` with `then` after them.
+std::vector<std::string> withArguments(std::vector<std::string> first, const std::vector<std::string>& then);
 
 // Timings differ between any two runs; everything else is deterministic: drops every ns_per_cluster.
 void removeTimings(nlohmann::json& json);

@@ -13,17 +13,7 @@
 namespace conescope {
 namespace {
 
-using clitest::CliRun;
-using clitest::dataset;
-using clitest::runCli;
-using clitest::runStatsJson;
-using clitest::splitLines;
-
-nlohmann::json runGranularityJson(const std::vector<std::string>& arguments) {
-    std::vector<std::string> command = {"--format", "json"};
-    command.insert(command.end(), arguments.begin(), arguments.end());
-    return clitest::runJsonCommand("granularity", command);
-}
+using namespace clitest;
 
 std::map<std::string, nlohmann::json> rowsByRecord(const nlohmann::json& report) {
     std::map<std::string, nlohmann::json> rows;
@@ -34,10 +24,8 @@ std::map<std::string, nlohmann::json> rowsByRecord(const nlohmann::json& report)
 // Every test of `stats --test all` (but the oracle) is a row with stats' own numbers.
 TEST(CliGranularity, OneConeRowsEqualStats) {
     const std::vector<std::string> options{dataset("fandisk.off"), "--views", "24"};
-    const nlohmann::json report = runGranularityJson(options);
-    std::vector<std::string> statsOptions = options;
-    statsOptions.insert(statsOptions.end(), {"--test", "all", "--no-per-view", "--no-per-cluster"});
-    const nlohmann::json stats = runStatsJson(statsOptions);
+    const nlohmann::json report = runJsonFormat("granularity", options);
+    const nlohmann::json stats = runStatsJson(withArguments(options, {"--test", "all", "--no-per-view", "--no-per-cluster"}));
     const std::map<std::string, nlohmann::json> rows = rowsByRecord(report);
     EXPECT_EQ(report["clusters"], stats["clusters"]);
     size_t compared = 0;
@@ -67,10 +55,8 @@ TEST(CliGranularity, OneConeRowsEqualStats) {
 
 TEST(CliGranularity, CsvAndTextCarryTheRows) {
     const std::vector<std::string> options{"granularity", "--quiet", dataset("elephant.off"), "--views", "16", "--test", "apex"};
-    std::vector<std::string> csv = options, text = options;
-    csv.insert(csv.end(), {"--format", "csv"});
-    text.insert(text.end(), {"--format", "text"});
-    const CliRun csvRun = runCli(csv), textRun = runCli(text);
+    const CliRun csvRun = runCli(withArguments(options, {"--format", "csv"}));
+    const CliRun textRun = runCli(withArguments(options, {"--format", "text"}));
     ASSERT_EQ(csvRun.exitCode, 0) << csvRun.err;
     ASSERT_EQ(textRun.exitCode, 0) << textRun.err;
     const std::vector<std::string> lines = splitLines(csvRun.out);
@@ -84,7 +70,7 @@ TEST(CliGranularity, CsvAndTextCarryTheRows) {
 
 // --write-lesson writes the core's lesson on the same report as Markdown, beside the rows.
 TEST(CliGranularity, WritesTheLessonOfItsReport) {
-    clitest::ScratchDirectory scratch;
+    ScratchDirectory scratch;
     const std::string lessonPath = scratch.file("lesson.md");
     const CliRun run = runCli({"granularity", "--quiet", dataset("elephant.off"), "--views", "16", "--write-lesson", lessonPath, "-o",
                                scratch.file("rows.json")});
@@ -92,14 +78,16 @@ TEST(CliGranularity, WritesTheLessonOfItsReport) {
     Settings settings = granularitySettings(Settings{}, false);
     settings.views = 16;
     const GranularityReport report = runGranularity(readMesh(dataset("elephant.off")), settings, "elephant.off");
-    const std::string lesson = clitest::readTextFile(lessonPath);
+    const std::string lesson = readTextFile(lessonPath);
     EXPECT_EQ(lesson, granularityLessonMarkdown(makeGranularityLesson(report)));
     EXPECT_EQ(lesson.rfind("# Why more cones cull more, and what they cost: elephant.off\n", 0), 0u);
     // It quotes the rows the command wrote.
-    const nlohmann::json rows = nlohmann::json::parse(clitest::readTextFile(scratch.file("rows.json")));
-    for (const nlohmann::json& row : rows["rows"])
-        if (row["record"] == "cones-4-compact")
+    const nlohmann::json rows = nlohmann::json::parse(readTextFile(scratch.file("rows.json")));
+    for (const nlohmann::json& row : rows["rows"]) {
+        if (row["record"] == "cones-4-compact") {
             EXPECT_NE(lesson.find(std::to_string(row["bytes_per_cluster"].get<int>()) + " bytes"), std::string::npos);
+        }
+    }
 }
 
 TEST(CliGranularity, BadMeshIsAnError) {

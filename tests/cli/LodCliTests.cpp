@@ -11,17 +11,9 @@
 namespace conescope {
 namespace {
 
-using clitest::CliRun;
-using clitest::dataset;
-using clitest::runCli;
-using clitest::runStatsJson;
-using clitest::splitLines;
+using namespace clitest;
 
-nlohmann::json runLodJson(const std::vector<std::string>& arguments) {
-    std::vector<std::string> command = {"--format", "json"};
-    command.insert(command.end(), arguments.begin(), arguments.end());
-    return clitest::runJsonCommand("lod", command);
-}
+nlohmann::json runLodJson(const std::vector<std::string>& arguments) { return runJsonFormat("lod", arguments); }
 
 TEST(CliLod, LevelsHalveAndTheCutIsConservative) {
     const nlohmann::json lod = runLodJson({dataset("elephant.off"), "--views", "32", "--threshold", "2"});
@@ -48,9 +40,7 @@ TEST(CliLod, LevelsHalveAndTheCutIsConservative) {
 // At threshold 0 the cut is level 0 from every view: the numbers of `stats` with the same options.
 TEST(CliLod, ThresholdZeroIsStats) {
     const std::vector<std::string> options{dataset("fandisk.off"), "--views", "24", "--test", "apex"};
-    std::vector<std::string> lodArguments = options;
-    lodArguments.insert(lodArguments.end(), {"--threshold", "0"});
-    const nlohmann::json lod = runLodJson(lodArguments);
+    const nlohmann::json lod = runLodJson(withArguments(options, {"--threshold", "0"}));
     const nlohmann::json stats = runStatsJson(options);
     const nlohmann::json& flat = stats["results"][0];
     EXPECT_EQ(lod["cut"]["levels_used"], nlohmann::json::array({0}));
@@ -73,13 +63,13 @@ TEST(CliLod, CsvHasALevelRowEachAndTheCut) {
 // --write-hierarchy, then --hierarchy: the same numbers from the file; a spoiled file is refused
 // naming the cluster.
 TEST(CliLod, HierarchyFileRoundTrips) {
-    clitest::ScratchDirectory scratch;
+    ScratchDirectory scratch;
     const std::string file = scratch.file("h.json");
     nlohmann::json built = runLodJson({dataset("elephant.off"), "--views", "16", "--write-hierarchy", file});
     nlohmann::json read = runLodJson({dataset("elephant.off"), "--views", "16", "--hierarchy", file});
     built.erase("build_seconds"), read.erase("build_seconds");
     EXPECT_EQ(built, read);
-    nlohmann::json document = nlohmann::json::parse(clitest::readTextFile(file));
+    nlohmann::json document = nlohmann::json::parse(readTextFile(file));
     EXPECT_EQ(document["format"], "conescope-cluster-lod");
     EXPECT_EQ(document["clusters"].size(), document["meshlets"].size());
     document["clusters"][7]["error"] = 1e9;
@@ -95,7 +85,7 @@ TEST(CliLod, HierarchyFileRoundTrips) {
 // Each level written as a mesh is read back by the file builder with the level's clusters and
 // numbers; the cut's mesh holds the clusters the first view draws.
 TEST(CliLod, LevelMeshesReadBackWithTheirClusters) {
-    clitest::ScratchDirectory scratch;
+    ScratchDirectory scratch;
     const std::string folder = scratch.file("levels");
     const nlohmann::json lod = runLodJson({dataset("torus.off"), "--views", "8", "--write-levels", folder});
     const nlohmann::json level1 = runStatsJson({folder + "/level-01.vtp", "--builder", "file", "--views", "8"});
@@ -108,10 +98,10 @@ TEST(CliLod, LevelMeshesReadBackWithTheirClusters) {
 
 // The lesson on why coarse clusters cull less quotes the run's own levels, as the JSON has them.
 TEST(CliLod, LessonQuotesTheRunsLevels) {
-    clitest::ScratchDirectory scratch;
+    ScratchDirectory scratch;
     const std::string lessonFile = scratch.file("lesson.md");
     const nlohmann::json lod = runLodJson({dataset("elephant.off"), "--views", "16", "--write-lesson", lessonFile, "--lesson-level", "2"});
-    const std::string lesson = clitest::readTextFile(lessonFile);
+    const std::string lesson = readTextFile(lessonFile);
     const auto percent = [](double share) {
         char text[32];
         std::snprintf(text, sizeof text, "%.1f%%", 100.0 * share);
@@ -146,12 +136,11 @@ TEST(CliLod, BadThresholdsAreUsageErrors) {
 // The binary form (.lod) written and read back gives the same numbers as the built hierarchy and as
 // the JSON of the same hierarchy; a truncated or foreign file is refused, saying so.
 TEST(CliLod, BinaryHierarchyRoundTripsAsTheJson) {
-    clitest::ScratchDirectory scratch;
+    ScratchDirectory scratch;
     const std::string binary = scratch.file("h.lod"), json = scratch.file("h.json");
     const std::vector<std::string> run = {dataset("elephant.off"), "--views", "12", "--cones", "4"};
-    const auto with = [&](std::vector<std::string> more) {
-        more.insert(more.begin(), run.begin(), run.end());
-        nlohmann::json lod = runLodJson(more);
+    const auto with = [&](const std::vector<std::string>& more) {
+        nlohmann::json lod = runLodJson(withArguments(run, more));
         lod.erase("build_seconds");
         return lod;
     };
@@ -159,13 +148,13 @@ TEST(CliLod, BinaryHierarchyRoundTripsAsTheJson) {
     EXPECT_EQ(with({"--write-hierarchy", json}), built);
     EXPECT_EQ(with({"--hierarchy", binary}), built);
     EXPECT_EQ(with({"--hierarchy", json}), built);
-    const std::string bytes = clitest::readTextFile(binary);
+    const std::string bytes = readTextFile(binary);
     EXPECT_EQ(bytes.substr(0, 8), "CLUSTLOD");
-    EXPECT_EQ(nlohmann::json::parse(clitest::readTextFile(json))["format"], "conescope-cluster-lod");
+    EXPECT_EQ(nlohmann::json::parse(readTextFile(json))["format"], "conescope-cluster-lod");
     // The JSON read and written again as binary is the same file.
     const std::string again = scratch.file("again.lod");
     with({"--hierarchy", json, "--write-hierarchy", again});
-    EXPECT_EQ(clitest::readTextFile(again), bytes);
+    EXPECT_EQ(readTextFile(again), bytes);
     std::ofstream(binary, std::ios::binary | std::ios::trunc) << bytes.substr(0, bytes.size() - 9);
     CliRun refused = runCli({"lod", "--quiet", dataset("elephant.off"), "--hierarchy", binary});
     EXPECT_EQ(refused.exitCode, 1);
@@ -178,13 +167,13 @@ TEST(CliLod, BinaryHierarchyRoundTripsAsTheJson) {
 // A mesh of polygons: level 0 read back is the mesh with its polygons whole, as built, so every
 // number (the K-cone sub-groups split faces) and the file written again are the same.
 TEST(CliLod, PolygonMeshHierarchyRoundTripsWithItsPolygons) {
-    clitest::ScratchDirectory scratch;
+    ScratchDirectory scratch;
     const std::string mesh = std::string(CONESCOPE_TESTDATA_DIR) + "/props/bread.obj", file = scratch.file("bread.lod"), again = scratch.file("again.lod");
     nlohmann::json built = runLodJson({mesh, "--views", "16", "--cones", "4", "--write-hierarchy", file});
     nlohmann::json read = runLodJson({mesh, "--views", "16", "--cones", "4", "--hierarchy", file, "--write-hierarchy", again});
     built.erase("build_seconds"), read.erase("build_seconds");
     EXPECT_EQ(built, read);
-    EXPECT_EQ(clitest::readTextFile(again), clitest::readTextFile(file));
+    EXPECT_EQ(readTextFile(again), readTextFile(file));
 }
 
 // --cones K: level 0 is granularity's cones-K row on the same partition and views; no false culls
@@ -192,10 +181,8 @@ TEST(CliLod, PolygonMeshHierarchyRoundTripsWithItsPolygons) {
 // cut is level 0. Without --cones nothing changes.
 TEST(CliLod, ConesPerClusterAsGranularityAndConservative) {
     const nlohmann::json lod = runLodJson({dataset("elephant.off"), "--views", "16", "--threshold", "1", "--cones", "4"});
-    const nlohmann::json granularity = clitest::runJsonCommand("granularity", {dataset("elephant.off"), "--views", "16", "--format", "json"});
-    const nlohmann::json* row = nullptr;
-    for (const nlohmann::json& r : granularity["rows"])
-        if (r["record"] == "cones-4") row = &r;
+    const nlohmann::json granularity = runJsonFormat("granularity", {dataset("elephant.off"), "--views", "16"});
+    const nlohmann::json* row = granularityRow(granularity, "cones-4");
     ASSERT_NE(row, nullptr);
     const nlohmann::json& level0 = lod["levels"][0]["multi_cone"];
     EXPECT_EQ(level0["cones_per_cluster"], 4);

@@ -14,11 +14,7 @@
 namespace conescope {
 namespace {
 
-using clitest::CliRun;
-using clitest::dataset;
-using clitest::runCli;
-using clitest::runStatsJson;
-using clitest::splitLines;
+using namespace clitest;
 
 const char* const kMultiConeKeys[] = {"cones_per_cluster", "efficiency", "false_culls", "triangles_culled",
                                       "back_facing_triangles", "bytes_per_cluster"};
@@ -47,25 +43,18 @@ TEST(CliMultiCone, StatsWithFourConesIsTheCoresRun) {
     EXPECT_GT(multi["triangles_culled"].get<size_t>(), stats["results"][0]["triangles_culled"].get<size_t>());
 
     // granularity's cones-4 row: the same record on the same partition (built for 4 cones) and views.
-    const nlohmann::json granularity =
-        clitest::runJsonCommand("granularity", {"--format", "json", dataset("fandisk.off"), "--views", "24", "--cones-per-cluster", "4"});
-    bool found = false;
-    for (const nlohmann::json& row : granularity["rows"]) {
-        if (row["record"] != "cones-4") continue;
-        found = true;
-        EXPECT_EQ(row["efficiency"], multi["efficiency"]);
-        EXPECT_EQ(row["bytes_per_cluster"], multi["bytes_per_cluster"]);
-        EXPECT_EQ(row["false_culls"], multi["false_culls"]);
-    }
-    EXPECT_TRUE(found);
+    const nlohmann::json granularity = runJsonFormat("granularity", {dataset("fandisk.off"), "--views", "24", "--cones-per-cluster", "4"});
+    const nlohmann::json* row = granularityRow(granularity, "cones-4");
+    ASSERT_NE(row, nullptr);
+    EXPECT_EQ((*row)["efficiency"], multi["efficiency"]);
+    EXPECT_EQ((*row)["bytes_per_cluster"], multi["bytes_per_cluster"]);
+    EXPECT_EQ((*row)["false_culls"], multi["false_culls"]);
 }
 
 TEST(CliMultiCone, CsvAndTextCarryTheSameNumbers) {
     const std::vector<std::string> options{"stats", "--quiet", dataset("torus.off"), "--views", "8", "--cones-per-cluster", "2", "--test", "octagon,sphere"};
     const nlohmann::json json = runStatsJson({dataset("torus.off"), "--views", "8", "--cones-per-cluster", "2", "--test", "octagon,sphere"});
-    std::vector<std::string> csvOptions = options;
-    csvOptions.insert(csvOptions.end(), {"--format", "csv"});
-    const CliRun csv = runCli(csvOptions);
+    const CliRun csv = runCli(withArguments(options, {"--format", "csv"}));
     ASSERT_EQ(csv.exitCode, 0) << csv.err;
     const std::vector<std::string> lines = splitLines(csv.out);
     ASSERT_EQ(lines.size(), 3u);  // header, one row per test
@@ -85,9 +74,7 @@ TEST(CliMultiCone, CsvAndTextCarryTheSameNumbers) {
             EXPECT_EQ(row[i], value.dump()) << header[i];
     }
     EXPECT_EQ(columns, std::size(kMultiConeKeys));
-    std::vector<std::string> textOptions = options;
-    textOptions.insert(textOptions.end(), {"--format", "text"});
-    const CliRun text = runCli(textOptions);
+    const CliRun text = runCli(withArguments(options, {"--format", "text"}));
     ASSERT_EQ(text.exitCode, 0) << text.err;
     EXPECT_NE(text.out.find("2 cones per cluster"), std::string::npos) << text.out;
 }
@@ -106,8 +93,8 @@ TEST(CliMultiCone, OneConeLeavesTheOutputAlone) {
         // Timings aside (ns_per_cluster), the same document.
         if (std::string(format) == "json") {
             nlohmann::json a = nlohmann::json::parse(plain.out), b = nlohmann::json::parse(one.out);
-            clitest::removeTimings(a);
-            clitest::removeTimings(b);
+            removeTimings(a);
+            removeTimings(b);
             EXPECT_EQ(a, b);
         }
     }

@@ -4,8 +4,7 @@
 
 #include <algorithm>
 
-#include "TestMeshes.h"
-#include "core/lod/LodCut.h"
+#include "IcosphereHierarchy.h"
 #include "core/lod/LodFamily.h"
 
 namespace conescope {
@@ -13,18 +12,7 @@ namespace {
 
 bool holds(const std::vector<uint32_t>& list, uint32_t value) { return std::find(list.begin(), list.end(), value) != list.end(); }
 
-class LodFamilyTest : public ::testing::Test {
-protected:
-    static void SetUpTestSuite() {
-        sphere_ = std::make_unique<PreparedMesh>(prepareMesh(std::make_shared<const Mesh>(testmesh::icosphere(4)), "test", false));
-        hierarchy_ = std::make_unique<ClusterHierarchy>(buildClusterHierarchy(*sphere_, Settings{}));
-    }
-    static void TearDownTestSuite() { hierarchy_.reset(), sphere_.reset(); }
-    static std::unique_ptr<PreparedMesh> sphere_;
-    static std::unique_ptr<ClusterHierarchy> hierarchy_;
-};
-std::unique_ptr<PreparedMesh> LodFamilyTest::sphere_;
-std::unique_ptr<ClusterHierarchy> LodFamilyTest::hierarchy_;
+class LodFamilyTest : public testmesh::IcosphereHierarchy<4> {};
 
 // Parents and children are each other's: a cluster is a parent of each of its children, it shares its
 // group with its group mates (who have the same parents), and every cluster below the top has parents.

@@ -9,6 +9,7 @@
 #include <map>
 #include <set>
 
+#include "IcosphereHierarchy.h"
 #include "TestMeshes.h"
 #include "core/Granularity.h"
 #include "core/lod/HierarchyRecords.h"
@@ -48,18 +49,7 @@ std::vector<std::set<uint32_t>> clusterNeighbours(const LodLevel& level) {
     return neighbours;
 }
 
-class LodHierarchy : public ::testing::Test {
-protected:
-    static void SetUpTestSuite() {
-        sphere_ = std::make_unique<PreparedMesh>(prepared(icosphere(5)));
-        hierarchy_ = std::make_unique<ClusterHierarchy>(buildClusterHierarchy(*sphere_, Settings{}));
-    }
-    static void TearDownTestSuite() { hierarchy_.reset(), sphere_.reset(); }
-    static std::unique_ptr<PreparedMesh> sphere_;
-    static std::unique_ptr<ClusterHierarchy> hierarchy_;
-};
-std::unique_ptr<PreparedMesh> LodHierarchy::sphere_;
-std::unique_ptr<ClusterHierarchy> LodHierarchy::hierarchy_;
+class LodHierarchy : public testmesh::IcosphereHierarchy<5> {};
 
 TEST_F(LodHierarchy, LevelsHalveDownToOneCluster) {
     const std::vector<LodLevel>& levels = hierarchy_->levels;

@@ -21,8 +21,7 @@
 #include <vtkVariant.h>
 #include <vtkWindowToImageFilter.h>
 
-#include "core/lod/LodCut.h"
-#include "io/MeshReader.h"
+#include "ElephantLod.h"
 #include "scene/Charts.h"
 
 namespace conescope {
@@ -30,11 +29,7 @@ namespace {
 
 // The elephant's hierarchy over a small orbit: every level and the cut, as conescope-cli lod runs it.
 const LodStatistics& elephantLevels() {
-    static const LodStatistics statistics = [] {
-        Settings settings;
-        settings.views = 24;
-        return lodOfMesh(readMesh(std::string(CONESCOPE_DATASETS_DIR) + "/elephant.off"), "elephant.off", settings, LodThreshold{});
-    }();
+    static const LodStatistics statistics = testing::elephantLod(24);
     return statistics;
 }
 

@@ -13,23 +13,18 @@
 #include <vtkRenderWindow.h>
 #include <vtkTable.h>
 
+#include "ElephantLod.h"
 #include "LodLessonView.h"
 #include "PlotsView.h"
 #include "UiTestSupport.h"
-#include "core/lod/LodCut.h"
 #include "core/lod/LodLesson.h"
-#include "io/MeshReader.h"
 
 namespace conescope {
 
 namespace {
 
 const LodStatistics& elephantLevels() {
-    static const LodStatistics statistics = [] {
-        Settings settings;
-        settings.views = 16;
-        return lodOfMesh(readMesh(testing::datasetPath("elephant.off").toStdString()), "elephant.off", settings, LodThreshold{});
-    }();
+    static const LodStatistics statistics = testing::elephantLod(16);
     return statistics;
 }
 
