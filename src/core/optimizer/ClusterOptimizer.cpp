@@ -18,7 +18,11 @@
 #include "Runs.h"
 #include "State.h"
 #include "Steps.h"
+#include "core/ClusterBounds.h"
 #include "core/Parallel.h"
+#include "core/Settings.h"
+#include "core/Statistics.h"
+#include "core/Views.h"
 #include "core/meshopt/Meshopt.h"
 
 namespace conescope {
@@ -353,6 +357,16 @@ Partition climbed(const BuildInputs& in, const BuildPlan& plan, const ProgressCa
 // grown clusters can end in a worse basin than the balanced one's (on foliage: docs/benchmarks.md),
 // so it never culls less in expectation nor makes more clusters than the default. The
 // balanced run takes the last tenth of the progress; where it is kept it is heard as one part.
+// What `stats` with no options says a partition culls (the default cone and test, the standard
+// orbit's views and distance): how the best level tells its two runs apart at one count, so that it
+// never culls less there than balanced.
+double defaultOrbitEfficiency(const Mesh& mesh, const FaceGeometry& faces, const Partition& partition) {
+    const ClusterBounds bounds = computeClusterBounds(mesh, mesh.positions, faces, partition, kDefaultCone, kDefaultSphere);
+    const Settings defaults;
+    const std::vector<Eye> views = orbitViews(computeAabb(mesh.positions), defaults.views, defaults.distance);
+    return measureCulling({mesh, mesh.positions, faces, bounds}, views, kDefaultTest).efficiency;
+}
+
 Partition bestOfBoth(const BuildInputs& in, const BuildPlan& plan, const ProgressCallback& progress, const PartClusters& partDone) {
     Partition best = atBudget(in, plan, progressShare(progress, 0.0, 0.9), partDone);
     // The default count asked for is the default: its balanced run is the default's (no climb).
@@ -361,7 +375,8 @@ Partition bestOfBoth(const BuildInputs& in, const BuildPlan& plan, const Progres
     Partition balanced = buildOptimizedClusters(in.mesh, in.faces, in.limits, target == defaultCount ? 0 : target,
                                                 progressShare(progress, 0.9, 1.0), Effort::Balanced, in.meshlets, {});
     if (!betterAtBudget(in.mesh, in.faces, balanced, best, target) &&
-        (best.clusterCount != balanced.clusterCount || cullsAsMuchFrom(in.mesh, in.faces, in.limits, best, balanced, in.facts.viewDistance)))
+        (best.clusterCount != balanced.clusterCount ||
+         defaultOrbitEfficiency(in.mesh, in.faces, best) >= defaultOrbitEfficiency(in.mesh, in.faces, balanced)))
         return best;
     heardAsOnePart(partDone, in.facts.faces, balanced);
     return balanced;

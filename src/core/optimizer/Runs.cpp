@@ -158,15 +158,6 @@ Run runOf(const optimizer::State& state) { return {optimizer::result(state), sta
 
 }  // namespace
 
-bool cullsAsMuchFrom(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits, const Partition& a,
-                     const Partition& b, double distance) {
-    optimizer::State state(mesh, faces, limits);
-    optimizer::assign(state, a);
-    const double aValue = objectiveFrom(state, distance);
-    optimizer::assign(state, b);
-    return aValue >= objectiveFrom(state, distance);
-}
-
 // The fast levels start from meshoptimizer's meshlets (`meshlets`, given when the budget is at most
 // their count) and keep that run when it reaches the budget; the balanced level also grows clusters where those meshlets stay mostly without a cone
 // (SearchPlan::growWhereUncullable), with no more clusters over the limits than meshoptimizer's

@@ -61,12 +61,6 @@ size_t annealingSweeps(const SearchPlan& plan, size_t faceCount);
 // and the objective decides.
 std::optional<bool> nearerTheBudget(size_t a, size_t b, size_t target);
 
-// Whether partition `a` culls at least as much as `b` in expectation from eyes `distance` away (each
-// cluster's cone widened by the angle its bounding sphere spans from there): how runs at one count
-// that tie or nearly tie over far views are told apart for the default orbit.
-bool cullsAsMuchFrom(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits, const Partition& a,
-                     const Partition& b, double distance);
-
 // One run of the whole optimisation on a mesh at a budget of `target` clusters, with `sweeps`
 // annealing sweeps; `meshlets`: meshoptimizer's meshlets of this mesh when the plan starts there.
 Partition optimizeClusters(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits, size_t target,
