@@ -14,7 +14,7 @@
 #include <vtkVariant.h>
 
 #include "LodPanel.h"
-#include "LodLessonView.h"
+#include "StepLessonView.h"
 #include "MainWindow.h"
 #include "PlotsView.h"
 #include "StatisticsPanel.h"
