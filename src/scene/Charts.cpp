@@ -23,7 +23,6 @@
 #include <vtkTable.h>
 #include <vtkTextProperty.h>
 
-#include "scene/LabelPlacement.h"
 
 namespace conescope {
 
@@ -222,10 +221,8 @@ bool isConesRecord(const std::string& record, bool compact) {
     return record.rfind("cones-", 0) == 0 && (record.find("-compact") != std::string::npos) == compact;
 }
 
-// Writes each row's "record" beside its point (vtkChartXY draws no labels of its own), placed by
-// LabelPlacer where it covers no point, no K-cone line, no label placed before it and, but for the
-// per-triangle row's own label that names it, not the dashed ceiling. Where no spot is free nearby
-// (a small chart) the point goes without a label: its tooltip names it.
+// Writes each row's "record" beside its point where placeRecordLabels puts it: vtkChartXY draws no
+// labels of its own.
 class PointLabels : public vtkPlot {
 public:
     static PointLabels* New();
@@ -247,14 +244,6 @@ public:
         float area[4] = {float(GetXAxis()->GetMinimum()), float(GetYAxis()->GetMinimum()), float(GetXAxis()->GetMaximum()),
                          float(GetYAxis()->GetMaximum())};
         painter->GetTransform()->TransformPoints(area, area, 2);
-        LabelPlacer placer(GetScene()->GetSceneWidth(), GetScene()->GetSceneHeight(), {area[0], area[1], area[2], area[3]}, 1.0, 9.0);
-        for (const glm::dvec2& point : screen) placer.blockBox({point.x - 5.0, point.y - 5.0, point.x + 5.0, point.y + 5.0});
-        for (const bool compact : {false, true}) {
-            std::vector<glm::dvec2> line;  // the K-cone records of one kind, in the report's order as the line runs
-            for (size_t row = 0; row < screen.size(); ++row)
-                if (isConesRecord(names->GetValue(vtkIdType(row)), compact)) line.push_back(screen[row]);
-            if (line.size() >= 2) placer.blockLine(line, 2.0);
-        }
         painter->PushMatrix();
         vtkNew<vtkTransform2D> identity;
         painter->SetTransform(identity);
@@ -264,22 +253,20 @@ public:
         painter->GetTextProp()->SetVerticalJustificationToCentered();
         painter->GetPen()->SetColor(140, 140, 140);
         painter->GetPen()->SetWidth(1.0f);
-        // The per-triangle row first, before the ceiling is blocked; then the finer records (K cones),
-        // so that on a small chart they keep theirs.
-        std::vector<size_t> order(screen.size());
-        for (size_t row = 0; row < order.size(); ++row) order[row] = row;
-        const auto record = [names](size_t row) { return names->GetValue(vtkIdType(row)); };
-        std::stable_partition(order.begin(), order.end(), [&](size_t row) { return record(row).rfind("cones-", 0) == 0; });
-        std::stable_partition(order.begin(), order.end(), [&](size_t row) { return record(row) == "triangle"; });
-        for (size_t row : order) {
-            const std::string label = record(row);
+        std::vector<std::string> records;
+        std::vector<glm::dvec2> sizes;
+        for (vtkIdType row = 0; row < table->GetNumberOfRows(); ++row) {
+            records.push_back(names->GetValue(row));
             float bounds[4];
-            painter->ComputeStringBounds(label, bounds);
-            const std::optional<LabelSpot> spot = placer.place(screen[row], {1.0, 0.0}, {bounds[2] + 2.0, std::max(12.0f, bounds[3])}, 30.0);
-            if (label == "triangle") placer.blockLine({{area[0], screen[row].y}, {area[2], screen[row].y}}, 2.0);
-            if (!spot) continue;
-            if (spot->leader) painter->DrawLine(float(spot->leaderFrom.x), float(spot->leaderFrom.y), float(spot->leaderTo.x), float(spot->leaderTo.y));
-            painter->DrawString(float(spot->box.x0 + 1.0), float(0.5 * (spot->box.y0 + spot->box.y1)), label);
+            painter->ComputeStringBounds(records.back(), bounds);
+            sizes.emplace_back(bounds[2] + 2.0, std::max(12.0f, bounds[3]));
+        }
+        const PixelBox plotArea{area[0], area[1], area[2], area[3]};
+        for (const RecordLabel& placed :
+             placeRecordLabels(screen, records, sizes, plotArea, GetScene()->GetSceneWidth(), GetScene()->GetSceneHeight())) {
+            const LabelSpot& spot = placed.spot;
+            if (spot.leader) painter->DrawLine(float(spot.leaderFrom.x), float(spot.leaderFrom.y), float(spot.leaderTo.x), float(spot.leaderTo.y));
+            painter->DrawString(float(spot.box.x0 + 1.0), float(0.5 * (spot.box.y0 + spot.box.y1)), records[placed.row]);
         }
         painter->PopMatrix();
         return true;
@@ -311,6 +298,31 @@ vtkPlot* addSeries(vtkChartXY* chart, int type, vtkTable* table, const char* lab
 }
 
 }  // namespace
+
+std::vector<RecordLabel> placeRecordLabels(const std::vector<glm::dvec2>& points, const std::vector<std::string>& records,
+                                           const std::vector<glm::dvec2>& sizes, const PixelBox& area, int width, int height) {
+    LabelPlacer placer(width, height, area, 1.0, 9.0);
+    for (const glm::dvec2& point : points) placer.blockBox({point.x - 5.0, point.y - 5.0, point.x + 5.0, point.y + 5.0});
+    for (const bool compact : {false, true}) {
+        std::vector<glm::dvec2> line;  // the K-cone records of one kind, in the report's order as the line runs
+        for (size_t row = 0; row < points.size(); ++row)
+            if (isConesRecord(records[row], compact)) line.push_back(points[row]);
+        if (line.size() >= 2) placer.blockLine(line, 2.0);
+    }
+    // The per-triangle row first, before the ceiling is blocked; then the finer records (K cones), so
+    // that on a small chart they keep theirs.
+    std::vector<size_t> order(points.size());
+    for (size_t row = 0; row < order.size(); ++row) order[row] = row;
+    std::stable_partition(order.begin(), order.end(), [&](size_t row) { return records[row].rfind("cones-", 0) == 0; });
+    std::stable_partition(order.begin(), order.end(), [&](size_t row) { return records[row] == "triangle"; });
+    std::vector<RecordLabel> placed;
+    for (size_t row : order) {
+        const std::optional<LabelSpot> spot = placer.place(points[row], {1.0, 0.0}, sizes[row], 30.0);
+        if (records[row] == "triangle") placer.blockLine({{area.x0, points[row].y}, {area.x1, points[row].y}}, 2.0);
+        if (spot) placed.push_back({row, *spot});
+    }
+    return placed;
+}
 
 vtkSmartPointer<vtkTable> granularityTable(const GranularityReport& report) {
     auto table = vtkSmartPointer<vtkTable>::New();
