@@ -29,8 +29,7 @@
 #include "GaussMapView.h"
 #include "Glossary.h"
 #include "LessonView.h"
-#include "LodLessonView.h"
-#include "GranularityLessonView.h"
+#include "StepLessonView.h"
 #include "GranularityPanel.h"
 #include "LodPanel.h"
 #include "PickedClusterView.h"
@@ -139,12 +138,12 @@ void MainWindow::createDocks() {
     lessonDock_ = dock(tr("Lesson"), "lessonDock", lessonView_, Qt::RightDockWidgetArea);
     tabifyDockWidget(sideDocks_[2], lessonDock_);
     // Why coarse clusters cull less, with the built hierarchy's own numbers.
-    lodLessonView_ = new LodLessonView(this);
+    lodLessonView_ = makeLodLessonView(this);
     tabifyDockWidget(sideDocks_[2], dock(tr("LOD lesson"), "lodLessonDock", lodLessonView_, Qt::RightDockWidgetArea));
     // What each record granularity culls and costs, and why, behind the statistics.
     granularityPanel_ = new GranularityPanel(this);
     tabifyDockWidget(sideDocks_[2], dock(tr("Granularity"), "granularityDock", granularityPanel_, Qt::RightDockWidgetArea));
-    granularityLessonView_ = new GranularityLessonView(this);
+    granularityLessonView_ = makeGranularityLessonView(this);
     tabifyDockWidget(sideDocks_[2], dock(tr("Granularity lesson"), "granularityLessonDock", granularityLessonView_, Qt::RightDockWidgetArea));
     sideDocks_[2]->raise();
 
@@ -271,7 +270,7 @@ void MainWindow::showGranularity() {
     const GranularityReport* report = session_.granularity();
     granularityPanel_->showReport(report, session_.clusters() != nullptr);
     plots_->showGranularity(report);
-    granularityLessonView_->showReport(report);
+    showGranularityLesson(*granularityLessonView_, report);
 }
 
 void MainWindow::showLod(const ClusterScene* previousScene) {
@@ -284,7 +283,7 @@ void MainWindow::showLod(const ClusterScene* previousScene) {
     lodPanel_->showLod(session_);
     statisticsPanel_->showLod(session_.lodStatistics());
     plots_->showLevels(session_.lodStatistics());
-    lodLessonView_->showStatistics(session_.lodStatistics(), session_.preparedMesh() ? session_.preparedMesh()->name : std::string());
+    showLodStatistics(*lodLessonView_, session_.lodStatistics(), session_.preparedMesh() ? session_.preparedMesh()->name : std::string());
     clusterView_->showPick(session_);
     view_->render();
 }

@@ -35,10 +35,9 @@ class CrossSectionView;
 class EyePanel;
 class EyeView;
 class LessonView;
-class GranularityLessonView;
 class GranularityPanel;
 class LodPanel;
-class LodLessonView;
+class StepLessonView;
 class ObserverView;
 class PickedClusterView;
 class GaussMapView;
@@ -126,9 +125,9 @@ public:
     EyePanel* eyePanel() const { return eyePanel_; }
     StatisticsPanel* statisticsPanel() const { return statisticsPanel_; }
     LodPanel* lodPanel() const { return lodPanel_; }
-    LodLessonView* lodLessonView() const { return lodLessonView_; }
+    StepLessonView* lodLessonView() const { return lodLessonView_; }
     GranularityPanel* granularityPanel() const { return granularityPanel_; }
-    GranularityLessonView* granularityLessonView() const { return granularityLessonView_; }
+    StepLessonView* granularityLessonView() const { return granularityLessonView_; }
     // Every action with a shortcut, in menu order (what the help dialog lists).
     QList<QAction*> shortcutActions() const;
     QAction* animateAction() const;
@@ -248,9 +247,9 @@ private:
     QDockWidget* lessonDock_ = nullptr;
     CrossSectionView* crossSection_ = nullptr;
     LodPanel* lodPanel_ = nullptr;
-    LodLessonView* lodLessonView_ = nullptr;
+    StepLessonView* lodLessonView_ = nullptr;
     GranularityPanel* granularityPanel_ = nullptr;
-    GranularityLessonView* granularityLessonView_ = nullptr;
+    StepLessonView* granularityLessonView_ = nullptr;
     QDockWidget* lodDock_ = nullptr;
     QDockWidget* crossSectionDock_ = nullptr;
     // What the window showed before the lesson, put back when it ends.

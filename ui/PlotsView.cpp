@@ -120,8 +120,9 @@ void PlotsView::showHalfAngles(const std::vector<ClusterStatistics>& clusters) {
 void PlotsView::showLevels(const LodStatistics* statistics) {
     plotLevels(levels_.chart, statistics);
     const bool shown = statistics && !statistics->levels.empty();
-    levels_.caption->setText(shown ? tr("Per level (0: the finest): the share of the back faces culled, what the cones' widths "
-                                        "predict, the share of clusters without a cone, and the mean half-angle of those with one.")
+    levels_.caption->setText(shown ? tr("Per level (0: the finest): the share of the back faces culled (blue bars), what the cones' "
+                                        "widths predict (dark blue, dashed), the share of clusters without a cone (grey, dash-dot), and "
+                                        "the mean half-angle of those with one (orange, right axis).")
                                    : tr("No hierarchy built: build the LOD hierarchy to see culling level by level."));
     render(levels_);
 }

@@ -4,15 +4,16 @@
 #include <array>
 #include <cmath>
 #include <functional>
+#include <optional>
 #include <string>
 
 #include <vtkAxis.h>
 #include <vtkContext2D.h>
+#include <vtkContextScene.h>
 #include <vtkObjectFactory.h>
 #include <vtkStringArray.h>
 #include <vtkTransform2D.h>
 #include <vtkVariant.h>
-#include <vtkChartLegend.h>
 #include <vtkChartXY.h>
 #include <vtkDoubleArray.h>
 #include <vtkNew.h>
@@ -21,6 +22,7 @@
 #include <vtkPlotPoints.h>
 #include <vtkTable.h>
 #include <vtkTextProperty.h>
+
 
 namespace conescope {
 
@@ -202,10 +204,9 @@ void plotLevels(vtkChartXY* chart, const LodStatistics* statistics) {
     for (size_t level = 0; level < levels; ++level) ticks->InsertNextValue(double(level));
     bottom->SetCustomTickPositions(levels > 0 ? ticks.GetPointer() : nullptr);
     chart->SetBarWidthFraction(0.6f);
-    chart->SetShowLegend(levels > 0);
-    // Top left: the bars stay low there and the rising lines reach the top on the right.
-    chart->GetLegend()->SetHorizontalAlignment(vtkChartLegend::LEFT);
-    chart->GetLegend()->SetVerticalAlignment(vtkChartLegend::TOP);
+    // No legend: in the dock's small chart any corner of it covers a high bar, and above the plot it
+    // takes all the height; the caption under the chart says which colour is which.
+    chart->SetShowLegend(false);
     chart->Modified();
 }
 
@@ -215,8 +216,13 @@ namespace conescope {
 
 namespace {
 
-// Writes each row's "record" beside its point, in pixels off the point and clear of the labels
-// placed before it: vtkChartXY draws no labels of its own.
+// A K-cone record ("cones-4", "cones-4-compact"), of the compact kind or the float one.
+bool isConesRecord(const std::string& record, bool compact) {
+    return record.rfind("cones-", 0) == 0 && (record.find("-compact") != std::string::npos) == compact;
+}
+
+// Writes each row's "record" beside its point where placeRecordLabels puts it: vtkChartXY draws no
+// labels of its own.
 class PointLabels : public vtkPlot {
 public:
     static PointLabels* New();
@@ -225,19 +231,19 @@ public:
     bool Paint(vtkContext2D* painter) override {
         vtkTable* table = GetInput();
         auto* names = table ? vtkStringArray::SafeDownCast(table->GetColumnByName("record")) : nullptr;
-        if (!names) return false;
-        const bool logX = GetXAxis() && GetXAxis()->GetLogScaleActive();
-        std::vector<std::array<float, 2>> screen;
+        if (!names || !GetScene() || !GetXAxis() || !GetYAxis()) return false;
+        const bool logX = GetXAxis()->GetLogScaleActive();
+        std::vector<glm::dvec2> screen;
         for (vtkIdType row = 0; row < table->GetNumberOfRows(); ++row) {
             const double x = table->GetValueByName(row, "bytes per cluster").ToDouble();
             float point[2] = {float(logX ? std::log10(x) : x), float(table->GetValueByName(row, "culled share").ToDouble())};
-            float placed[2];
-            painter->GetTransform()->TransformPoints(point, placed, 1);
-            screen.push_back({placed[0], placed[1]});
+            painter->GetTransform()->TransformPoints(point, point, 1);
+            screen.emplace_back(point[0], point[1]);
         }
-        // The plot's left and right edges on screen: labels stay between them.
-        float edges[4] = {float(GetXAxis() ? GetXAxis()->GetMinimum() : 0.0), 0.0f, float(GetXAxis() ? GetXAxis()->GetMaximum() : 0.0), 0.0f};
-        painter->GetTransform()->TransformPoints(edges, edges, 2);
+        // The plot area's corners on screen: labels stay inside it.
+        float area[4] = {float(GetXAxis()->GetMinimum()), float(GetYAxis()->GetMinimum()), float(GetXAxis()->GetMaximum()),
+                         float(GetYAxis()->GetMaximum())};
+        painter->GetTransform()->TransformPoints(area, area, 2);
         painter->PushMatrix();
         vtkNew<vtkTransform2D> identity;
         painter->SetTransform(identity);
@@ -245,41 +251,22 @@ public:
         painter->GetTextProp()->SetColor(0.1, 0.1, 0.1);
         painter->GetTextProp()->SetJustificationToLeft();
         painter->GetTextProp()->SetVerticalJustificationToCentered();
-        std::vector<std::array<float, 4>> taken;  // x0, y0, x1, y1 of each label drawn
-        const auto clashes = [&taken, &edges](float x, float y, float width, float height) {
-            if (x < edges[0] || x + width > edges[2]) return true;
-            for (const auto& box : taken)
-                if (x < box[2] && x + width > box[0] && y - height / 2 < box[3] && y + height / 2 > box[1]) return true;
-            return false;
-        };
-        // The finer records (K cones, per triangle) are labelled first: on a small chart they keep theirs.
-        std::vector<size_t> order(screen.size());
-        for (size_t row = 0; row < order.size(); ++row) order[row] = row;
-        std::stable_partition(order.begin(), order.end(), [names](size_t row) {
-            const std::string record = names->GetValue(vtkIdType(row));
-            return record == "triangle" || record.rfind("cones-", 0) == 0;
-        });
-        for (size_t row : order) {
-            const std::string label = names->GetValue(vtkIdType(row));
-            const float width = 6.0f * float(label.size()), height = 12.0f;
-            const float px = screen[row][0], py = screen[row][1];
-            // Right of the point, else left of it, else a line or two up or down with a line back to the
-            // point; where none is free (a small chart) no label: the point's tooltip names it.
-            float x = px + 7.0f, y = py;
-            if (clashes(x, y, width, height)) x = px - 7.0f - width;
-            int step = 1;
-            for (; step < 9 && clashes(x, y, width, height); ++step) {
-                x = step % 4 < 2 ? px + 7.0f : px - 7.0f - width;
-                y = py + (step % 2 ? -1.0f : 1.0f) * height * float((step + 3) / 4);
-            }
-            if (step == 9) continue;
-            taken.push_back({x, y - height / 2, x + width, y + height / 2});
-            if (y != py) {
-                painter->GetPen()->SetColor(140, 140, 140);
-                painter->GetPen()->SetWidth(1.0f);
-                painter->DrawLine(px, py, x < px ? x + width : x, y);
-            }
-            painter->DrawString(x, y, label);
+        painter->GetPen()->SetColor(140, 140, 140);
+        painter->GetPen()->SetWidth(1.0f);
+        std::vector<std::string> records;
+        std::vector<glm::dvec2> sizes;
+        for (vtkIdType row = 0; row < table->GetNumberOfRows(); ++row) {
+            records.push_back(names->GetValue(row));
+            float bounds[4];
+            painter->ComputeStringBounds(records.back(), bounds);
+            sizes.emplace_back(bounds[2] + 2.0, std::max(12.0f, bounds[3]));
+        }
+        const PixelBox plotArea{area[0], area[1], area[2], area[3]};
+        for (const RecordLabel& placed :
+             placeRecordLabels(screen, records, sizes, plotArea, GetScene()->GetSceneWidth(), GetScene()->GetSceneHeight())) {
+            const LabelSpot& spot = placed.spot;
+            if (spot.leader) painter->DrawLine(float(spot.leaderFrom.x), float(spot.leaderFrom.y), float(spot.leaderTo.x), float(spot.leaderTo.y));
+            painter->DrawString(float(spot.box.x0 + 1.0), float(0.5 * (spot.box.y0 + spot.box.y1)), records[placed.row]);
         }
         painter->PopMatrix();
         return true;
@@ -312,6 +299,31 @@ vtkPlot* addSeries(vtkChartXY* chart, int type, vtkTable* table, const char* lab
 
 }  // namespace
 
+std::vector<RecordLabel> placeRecordLabels(const std::vector<glm::dvec2>& points, const std::vector<std::string>& records,
+                                           const std::vector<glm::dvec2>& sizes, const PixelBox& area, int width, int height) {
+    LabelPlacer placer(width, height, area, 1.0, 9.0);
+    for (const glm::dvec2& point : points) placer.blockBox({point.x - 5.0, point.y - 5.0, point.x + 5.0, point.y + 5.0});
+    for (const bool compact : {false, true}) {
+        std::vector<glm::dvec2> line;  // the K-cone records of one kind, in the report's order as the line runs
+        for (size_t row = 0; row < points.size(); ++row)
+            if (isConesRecord(records[row], compact)) line.push_back(points[row]);
+        if (line.size() >= 2) placer.blockLine(line, 2.0);
+    }
+    // The per-triangle row first, before the ceiling is blocked; then the finer records (K cones), so
+    // that on a small chart they keep theirs.
+    std::vector<size_t> order(points.size());
+    for (size_t row = 0; row < order.size(); ++row) order[row] = row;
+    std::stable_partition(order.begin(), order.end(), [&](size_t row) { return records[row].rfind("cones-", 0) == 0; });
+    std::stable_partition(order.begin(), order.end(), [&](size_t row) { return records[row] == "triangle"; });
+    std::vector<RecordLabel> placed;
+    for (size_t row : order) {
+        const std::optional<LabelSpot> spot = placer.place(points[row], {1.0, 0.0}, sizes[row], 30.0);
+        if (records[row] == "triangle") placer.blockLine({{area.x0, points[row].y}, {area.x1, points[row].y}}, 2.0);
+        if (spot) placed.push_back({row, *spot});
+    }
+    return placed;
+}
+
 vtkSmartPointer<vtkTable> granularityTable(const GranularityReport& report) {
     auto table = vtkSmartPointer<vtkTable>::New();
     for (const char* name : {"bytes per cluster", "culled share"}) {
@@ -338,14 +350,11 @@ void plotGranularity(vtkChartXY* chart, const GranularityReport* report) {
     chart->SetTitle(shown ? "" : "Granularity not measured");
     double lowest = 8.0, highest = 64.0, top = 0.5, ceiling = 0.0;
     if (shown) {
-        const auto isMulti = [](const std::string& record, bool compact) {
-            return record.rfind("cones-", 0) == 0 && (record.find("-compact") != std::string::npos) == compact;
-        };
         addSeries(chart, vtkChart::POINTS, rowsWhere(*report, [&](const std::string& r) { return r != "triangle" && r.rfind("cones-", 0) != 0; }),
                   "one cone per cluster", {40, 110, 220});
-        addSeries(chart, vtkChart::LINE, rowsWhere(*report, [&](const std::string& r) { return isMulti(r, false); }), "2, 4, 8 cones (float)",
+        addSeries(chart, vtkChart::LINE, rowsWhere(*report, [&](const std::string& r) { return isConesRecord(r, false); }), "2, 4, 8 cones (float)",
                   {230, 100, 20});
-        addSeries(chart, vtkChart::LINE, rowsWhere(*report, [&](const std::string& r) { return isMulti(r, true); }), "2, 4, 8 cones (compact)",
+        addSeries(chart, vtkChart::LINE, rowsWhere(*report, [&](const std::string& r) { return isConesRecord(r, true); }), "2, 4, 8 cones (compact)",
                   {30, 150, 70});
         addSeries(chart, vtkChart::POINTS, rowsWhere(*report, [](const std::string& r) { return r == "triangle"; }), "per triangle",
                   {120, 40, 160});

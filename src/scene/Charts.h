@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstddef>
+#include <string>
 #include <vector>
 
 #include <vtkSmartPointer.h>
@@ -11,6 +12,7 @@
 #include "core/Granularity.h"
 #include "core/Statistics.h"
 #include "core/lod/LodCut.h"
+#include "scene/LabelPlacement.h"
 
 class vtkChartXY;
 class vtkTable;
@@ -50,6 +52,18 @@ void plotLevels(vtkChartXY* chart, const LodStatistics* statistics);
 // One row per granularity row, in the report's order: "bytes per cluster", "culled share" and the
 // row's "record" name (a string column).
 vtkSmartPointer<vtkTable> granularityTable(const GranularityReport& report);
+
+// Where the granularity chart writes its records' names, in pixels: `points` on screen, each labelled
+// with its record (`sizes`: the text's box) inside `area` of a `width` x `height` picture. A label
+// covers no point, no line of the K-cone records, no other label and, but for the per-triangle
+// row's own label that names it, not the ceiling at that row's height; the per-triangle and K-cone
+// rows are placed first. A row with no free spot within 30 pixels is left out (its tooltip names it).
+struct RecordLabel {
+    size_t row = 0;
+    LabelSpot spot;
+};
+std::vector<RecordLabel> placeRecordLabels(const std::vector<glm::dvec2>& points, const std::vector<std::string>& records,
+                                           const std::vector<glm::dvec2>& sizes, const PixelBox& area, int width, int height);
 
 // Replaces the chart's plots: culled share of all triangles (y) against bytes per cluster (x, log
 // scale), one marked point per row, each labelled with its record: the one-cone records, the float

@@ -119,5 +119,42 @@ TEST(LevelChart, BarsReachEachLevelsEfficiency) {
     }
 }
 
+// In a chart as small as the plots dock's, the record labels cover no point, no K-cone line, no
+// other label and, but for the per-triangle one, not the ceiling: crowded rows go without a label.
+TEST(GranularityChart, RecordLabelsCoverNoPointLineLabelOrCeiling) {
+    const std::vector<std::string> records = {"minimal/octagon", "minimal/aabb", "minimal/sphere", "minimal/apex",
+                                              "cones-2", "cones-4", "cones-8", "cones-2-compact", "cones-4-compact",
+                                              "cones-8-compact", "triangle"};
+    // Screen pixels (y up) in a 460 x 120 picture whose plot area is x 40..440, y 20..100; the
+    // ceiling at y 92, cones-8-compact just under it and the one-cone records crowded together.
+    const std::vector<glm::dvec2> points = {{250, 30}, {180, 28}, {186, 30}, {176, 33}, {230, 50}, {270, 62},
+                                            {380, 70}, {120, 50}, {160, 70}, {300, 89}, {60, 92}};
+    std::vector<glm::dvec2> sizes;
+    for (const std::string& record : records) sizes.emplace_back(6.0 * double(record.size()), 12.0);
+    const PixelBox area{40, 20, 440, 100};
+    const std::vector<RecordLabel> placed = placeRecordLabels(points, records, sizes, area, 460, 120);
+    ASSERT_FALSE(placed.empty());
+    EXPECT_EQ(records[placed.front().row], "triangle");  // the ceiling's own label comes first
+    EXPECT_LT(placed.size(), records.size());            // the crowded ones cannot all have one
+    const double ceiling = points.back().y;
+    for (size_t a = 0; a < placed.size(); ++a) {
+        const PixelBox& box = placed[a].spot.box;
+        const std::string& record = records[placed[a].row];
+        EXPECT_TRUE(box.x0 >= area.x0 && box.x1 <= area.x1 && box.y0 >= area.y0 && box.y1 <= area.y1) << record;
+        for (size_t b = a + 1; b < placed.size(); ++b) EXPECT_FALSE(box.intersects(placed[b].spot.box)) << record;
+        for (const glm::dvec2& point : points) EXPECT_FALSE(box.intersects({point.x - 4, point.y - 4, point.x + 4, point.y + 4})) << record;
+        if (record != "triangle") EXPECT_FALSE(box.y0 < ceiling && box.y1 > ceiling) << record << " lies on the ceiling";
+        // Off the K-cone lines: sampled along each segment.
+        for (const bool compact : {false, true}) {
+            const size_t first = compact ? 7 : 4;
+            for (size_t s = first; s + 1 < first + 3; ++s)
+                for (double t = 0.0; t <= 1.0; t += 0.05) {
+                    const glm::dvec2 along = points[s] + t * (points[s + 1] - points[s]);
+                    EXPECT_FALSE(along.x > box.x0 && along.x < box.x1 && along.y > box.y0 && along.y < box.y1) << record;
+                }
+        }
+    }
+}
+
 }  // namespace
 }  // namespace conescope

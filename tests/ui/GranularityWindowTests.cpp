@@ -16,7 +16,8 @@
 #include <vtkVariant.h>
 
 #include "Exports.h"
-#include "GranularityLessonView.h"
+#include "StepLessonView.h"
+#include "core/GranularityLesson.h"
 #include "GranularityPanel.h"
 #include "MainWindow.h"
 #include "PlotsView.h"
@@ -102,10 +103,19 @@ class GranularityWindowTests : public QObject, private WindowFixture {
         QVERIFY(marked == expected);
         QVERIFY(labelled == expected);
         // The lesson: its steps are the CLI's lesson, and they quote the rows.
-        const GranularityLesson* lesson = window_->granularityLessonView()->lesson();
-        QVERIFY(lesson);
+        const GranularityLesson lesson = makeGranularityLesson(*report);
+        QVERIFY(shownStepsAre(lesson));
         QCOMPARE(window_->granularityLessonView()->step(), 1);
-        QCOMPARE(window_->granularityLessonView()->text().toStdString(), lesson->steps.front().text);
+        QCOMPARE(window_->granularityLessonView()->text().toStdString(), lesson.steps.front().text);
+    }
+
+    // The lesson view shows `lesson`'s steps, title and text each.
+    bool shownStepsAre(const GranularityLesson& lesson) const {
+        const std::vector<LessonStep>& shown = window_->granularityLessonView()->steps();
+        if (shown.empty() || shown.size() != lesson.steps.size()) return false;
+        for (size_t step = 0; step < shown.size(); ++step)
+            if (shown[step].title != lesson.steps[step].title || shown[step].text != lesson.steps[step].text) return false;
+        return true;
     }
 
     static nlohmann::json granularityToJsonForTest(const GranularityReport& report) {
@@ -128,7 +138,7 @@ private slots:
         QVERIFY(!window_->granularityPanel()->exportButton()->isEnabled());
         QVERIFY(window_->granularityPanel()->measureButton()->isEnabled());
         QCOMPARE(window_->plotsView()->granularityChart()->GetNumberOfPlots(), vtkIdType(0));
-        QVERIFY(!window_->granularityLessonView()->lesson());
+        QVERIFY(window_->granularityLessonView()->steps().empty());
     }
 
     // A Cancel halfway (in the K-cone records) shows nothing: no rows, no plot, no lesson.
@@ -139,7 +149,7 @@ private slots:
         QVERIFY(!session().granularity());
         QCOMPARE(window_->granularityPanel()->table()->rowCount(), 0);
         QCOMPARE(window_->plotsView()->granularityChart()->GetNumberOfPlots(), vtkIdType(0));
-        QVERIFY(!window_->granularityLessonView()->lesson());
+        QVERIFY(window_->granularityLessonView()->steps().empty());
         QVERIFY(!window_->granularityPanel()->exportButton()->isEnabled());
     }
 
@@ -153,8 +163,9 @@ private slots:
         // ... and with the settings the window measured with, spelled out.
         checkShown(cliGranularity(cliSettingsArguments(session().granularityRunSettings())));
         // The lesson is the one the CLI wrote, step for step, and it quotes this mesh's numbers.
-        const GranularityLesson* shown = window_->granularityLessonView()->lesson();
-        QCOMPARE(lesson.toStdString(), granularityLessonMarkdown(*shown));
+        const GranularityLesson shown = makeGranularityLesson(*session().granularity());
+        QVERIFY(shownStepsAre(shown));
+        QCOMPARE(lesson.toStdString(), granularityLessonMarkdown(shown));
         QVERIFY(lesson.contains(QStringLiteral("elephant.off")));
         for (int step = 1; step <= kGranularityLessonStepCount; ++step) {
             QVERIFY(window_->granularityLessonView()->showStep(step));
@@ -212,7 +223,7 @@ private slots:
         QVERIFY(!session().granularity());
         QCOMPARE(window_->granularityPanel()->table()->rowCount(), 0);
         QCOMPARE(window_->plotsView()->granularityChart()->GetNumberOfPlots(), vtkIdType(0));
-        QVERIFY(!window_->granularityLessonView()->lesson());
+        QVERIFY(window_->granularityLessonView()->steps().empty());
         measure();
         checkShown(cliGranularity({QStringLiteral("--views"), QStringLiteral("24")}));
         // New clusters drop them too.

@@ -1,6 +1,8 @@
 // The LOD widgets on their own. The plots dock's Levels tab: without a hierarchy it says so and plots
 // nothing; with one it plots that hierarchy's levels (a picture of it is saved for looking at). The
 // lesson on why coarse clusters cull less: its steps are the core lesson's, Back and Next walk them.
+#include <memory>
+
 #include <QApplication>
 #include <QDir>
 #include <QSurfaceFormat>
@@ -14,7 +16,7 @@
 #include <vtkTable.h>
 
 #include "ElephantLod.h"
-#include "LodLessonView.h"
+#include "StepLessonView.h"
 #include "PlotsView.h"
 #include "UiTestSupport.h"
 #include "core/lod/LodLesson.h"
@@ -69,7 +71,8 @@ private slots:
     }
 
     void lodLessonWalksTheCoreLessonsSteps() {
-        LodLessonView view;
+        std::unique_ptr<StepLessonView> made(makeLodLessonView());
+        StepLessonView& view = *made;
         view.resize(520, 420);
         view.show();
         QVERIFY(QTest::qWaitForWindowExposed(&view));
@@ -77,7 +80,7 @@ private slots:
         QVERIFY(!view.nextButton()->isEnabled() && !view.backButton()->isEnabled());
         QVERIFY(!view.showStep(1));
         const LodLesson lesson = makeLodLesson(elephantLevels(), "elephant.off");
-        view.showLesson(&lesson);
+        showLodLesson(view, &lesson);
         QCOMPARE(view.step(), 1);
         for (int step = 1; step <= kLodLessonStepCount; ++step) {
             QCOMPARE(view.step(), step);
@@ -95,19 +98,19 @@ private slots:
         QCOMPARE(view.step(), kLodLessonStepCount - 1);
         QVERIFY(!view.showStep(kLodLessonStepCount + 1));
         QCOMPARE(view.step(), kLodLessonStepCount - 1);
-        view.showLesson(nullptr);
+        showLodLesson(view, nullptr);
         QCOMPARE(view.step(), 0);
         QVERIFY(view.text().contains(QStringLiteral("Build the LOD hierarchy")));
         // From the statistics directly, as the window gives them: the same lesson; one level is not enough.
-        view.showStatistics(&elephantLevels(), "elephant.off");
+        showLodStatistics(view, &elephantLevels(), "elephant.off");
         QCOMPARE(view.step(), 1);
         QCOMPARE(view.text(), QString::fromStdString(lesson.steps[0].text));
         LodStatistics single;
         single.levels.push_back(elephantLevels().levels.front());
-        view.showStatistics(&single, "elephant.off");
+        showLodStatistics(view, &single, "elephant.off");
         QCOMPARE(view.step(), 0);
         QVERIFY(view.text().contains(QStringLiteral("single level")));
-        view.showStatistics(nullptr, {});
+        showLodStatistics(view, nullptr, {});
         QVERIFY(view.text().contains(QStringLiteral("Build the LOD hierarchy")));
     }
 };

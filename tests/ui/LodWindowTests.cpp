@@ -14,7 +14,7 @@
 #include <vtkVariant.h>
 
 #include "LodPanel.h"
-#include "LodLessonView.h"
+#include "StepLessonView.h"
 #include "MainWindow.h"
 #include "PlotsView.h"
 #include "StatisticsPanel.h"
@@ -119,6 +119,12 @@ private slots:
         QCOMPARE(size_t(plotted->GetNumberOfRows()), cli["levels"].size());
         for (size_t l = 0; l < cli["levels"].size(); ++l)
             QCOMPARE(plotted->GetValueByName(vtkIdType(l), "efficiency").ToDouble(), cli["levels"][l]["efficiency"].get<double>());
+        // The plot as the window's dock shows it at its default size, to look at: no legend covers the bars, the caption names the colours.
+        PlotsView* plots = window_->plotsView();
+        for (int tab = 0; tab < plots->count(); ++tab)
+            if (plots->tabText(tab) == QStringLiteral("Levels")) plots->setCurrentIndex(tab);
+        plots->render();
+        saveWindowPicture(QStringLiteral("lod-levels-window.png"));
         QVERIFY(window_->lodLessonView()->step() == 1);
         QVERIFY2(window_->lodLessonView()->text().contains(QString::number(cli["levels"][0]["clusters"].get<size_t>())),
                  qPrintable(window_->lodLessonView()->text()));
