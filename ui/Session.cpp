@@ -402,11 +402,17 @@ bool Session::exportPartition(const QString& path) {
         emit errorOccurred(tr("Cannot export the partition"), tr("No mesh is loaded."));
         return false;
     }
-    try {
+    return writeExport(tr("Cannot export the partition"), path, [&] {
         conescope::exportPartition(*shown_.prepared, *shown_.clusters, displayedTest(shown_.settings), measurement(),
                                    path.toStdString());
+    });
+}
+
+bool Session::writeExport(const QString& what, const QString& path, const std::function<void()>& write) {
+    try {
+        write();
     } catch (const std::exception& error) {
-        emit errorOccurred(tr("Cannot export the partition"), QString::fromStdString(error.what()));
+        emit errorOccurred(what, QString::fromStdString(error.what()));
         return false;
     }
     emit notice(tr("Wrote %1").arg(path), 6000);

@@ -278,6 +278,9 @@ signals:
     void lodChanged(const conescope::ClusterScene* previousScene);
 
 private:
+    // Runs `write`; says "Wrote PATH", or "Cannot export WHAT" with the writer's message. What every
+    // export does once it has something to write.
+    bool writeExport(const QString& what, const QString& path, const std::function<void()>& write);
     // The K-cone record from the cull eye into the scene (the sub-group colouring), or none.
     void showSubGroups();
     // A against B over B's orbit, with A and B as they were compared (their clusters and settings).

@@ -190,14 +190,7 @@ bool Session::exportExplanation(const QString& path) {
         emit errorOccurred(tr("Cannot export the explanation"), tr("Pick a cluster first: the explanation is about the picked cluster."));
         return false;
     }
-    try {
-        writeLessonJson(*lesson_, path.toStdString());
-    } catch (const std::exception& error) {
-        emit errorOccurred(tr("Cannot export the explanation"), QString::fromStdString(error.what()));
-        return false;
-    }
-    emit notice(tr("Wrote %1").arg(path), 6000);
-    return true;
+    return writeExport(tr("Cannot export the explanation"), path, [&] { writeLessonJson(*lesson_, path.toStdString()); });
 }
 
 const std::vector<ViewStatistics>& Session::orbitRows() const {

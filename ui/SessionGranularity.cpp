@@ -62,14 +62,8 @@ bool Session::exportGranularity(const QString& path, StatisticsFormat format) {
         emit errorOccurred(tr("Cannot export the granularity"), tr("Measure the granularity first (Granularity dock)."));
         return false;
     }
-    try {
-        conescope::exportGranularity(*report, path.toStdString(), format);
-    } catch (const std::exception& error) {
-        emit errorOccurred(tr("Cannot export the granularity"), QString::fromStdString(error.what()));
-        return false;
-    }
-    emit notice(tr("Wrote %1").arg(path), 6000);
-    return true;
+    return writeExport(tr("Cannot export the granularity"), path,
+                       [&] { conescope::exportGranularity(*report, path.toStdString(), format); });
 }
 
 }  // namespace conescope

@@ -135,14 +135,9 @@ bool Session::exportLodStatistics(const QString& path, StatisticsFormat format) 
         emit errorOccurred(tr("Cannot export the LOD statistics"), tr("Build the LOD hierarchy first (LOD hierarchy dock)."));
         return false;
     }
-    try {
+    return writeExport(tr("Cannot export the LOD statistics"), path, [&] {
         conescope::exportLodStatistics(*lod_->statistics, exportSettings(shown_.settings, eyePosition_), path.toStdString(), format);
-    } catch (const std::exception& error) {
-        emit errorOccurred(tr("Cannot export the LOD statistics"), QString::fromStdString(error.what()));
-        return false;
-    }
-    emit notice(tr("Wrote %1").arg(path), 6000);
-    return true;
+    });
 }
 
 const ClusterHierarchy* Session::lodHierarchy() const { return lod_->hierarchy.get(); }
