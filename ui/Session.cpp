@@ -39,6 +39,12 @@ std::string budgetMissedIn(const Snapshot& shown) {
     return budgetMissed(settings, shown.clusters->partition.clusterCount, fewest);
 }
 
+// What the window says of the shown clusters once built: a missed budget, best's fallback to the
+// balanced partition, most clusters never cullable.
+std::string clusterNotesIn(const Snapshot& shown) {
+    return joinSentences({budgetMissedIn(shown), bestEffortNote(shown.clusters->bestEffort), uncullableIn(shown)});
+}
+
 // Whether the progress's stage is the one named: the same text, or the name and a space before the rest.
 bool stageNamed(const QString& stage, const QString& name) {
     return stage == name || (stage.startsWith(name) && stage.size() > name.size() && stage[name.size()] == QLatin1Char(' '));
@@ -143,7 +149,7 @@ void Session::openMesh(const QString& path) {
             }
             showSceneResult(result, true);
             const std::string message = joinSentences(
-                {loadMessage(*shown_.prepared), builderNote, budgetMissedIn(shown_), uncullableIn(shown_)});
+                {loadMessage(*shown_.prepared), builderNote, clusterNotesIn(shown_)});
             emit meshShown(path, QString::fromStdString(message));
         },
         [this, path](const QString& error) {
@@ -221,7 +227,7 @@ void Session::requestClusters() {
         },
         [this](SceneResult& result) {
             showSceneResult(result, false);
-            const std::string said = joinSentences({budgetMissedIn(shown_), uncullableIn(shown_)});
+            const std::string said = clusterNotesIn(shown_);
             if (!said.empty()) emit notice(QString::fromStdString(said), 8000);
         },
         [this, settings](const QString& error) {

@@ -24,7 +24,9 @@ bool startsFromMeshoptMeshlets(const Settings& settings) {
 }
 
 Partition buildPartition(const Mesh& mesh, const FaceGeometry& faces, const Settings& settings,
-                         const ProgressCallback& progress, MeshletStream* meshlets, const PartClusters& partDone) {
+                         const ProgressCallback& progress, MeshletStream* meshlets, const PartClusters& partDone,
+                         BestEffortChoice* choice) {
+    if (choice) *choice = {};
     switch (settings.builder) {
         case Builder::Meshlet: return buildMeshlets(mesh, faces, settings.limits, settings.normalWeight);
         case Builder::KMeans: {
@@ -35,7 +37,7 @@ Partition buildPartition(const Mesh& mesh, const FaceGeometry& faces, const Sett
         }
         case Builder::Meshopt: return buildMeshoptMeshlets(mesh, settings.limits, settings.meshoptConeWeight);
         case Builder::Optimized: return buildOptimizedClusters(mesh, faces, settings.limits, settings.clusterCount, progress, settings.effort,
-                                                                 meshlets, partDone, settings.conesPerCluster);
+                                                                 meshlets, partDone, settings.conesPerCluster, choice);
         case Builder::File: {
             // A meshlet file read with the mesh, an id file read into the settings, or the mesh's own.
             if (const FileClusters* meshlets = meshletClusters(mesh, settings.clusterFile)) return {meshlets->clusterOfFace, meshlets->clusterCount};

@@ -17,10 +17,11 @@ namespace conescope {
 // `partDone`: the optimized builder's parts as they are made (ClusterOptimizer.h); the other
 // builders do not call it. The file builder takes a meshlet file's partition read with the mesh
 // (FileBuilder.h), the ids of settings.clusterFile as io read them into settings.clusterIds (core
-// reads no file), or the mesh's cluster_id array, else its groups.
+// reads no file), or the mesh's cluster_id array, else its groups. `choice`: what the best effort
+// chose between its two searches (ran = false for every other builder and effort).
 Partition buildPartition(const Mesh& mesh, const FaceGeometry& faces, const Settings& settings,
                          const ProgressCallback& progress = {}, MeshletStream* meshlets = nullptr,
-                         const PartClusters& partDone = {});
+                         const PartClusters& partDone = {}, BestEffortChoice* choice = nullptr);
 
 // Whether the settings' builder starts from meshoptimizer's meshlets at cone weight 1 (the optimized
 // builder at its fast levels): those can be built before the face geometry.

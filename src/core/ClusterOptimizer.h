@@ -41,19 +41,21 @@ using PartClusters = std::function<void(size_t part, size_t parts, const std::ve
 // then local search, on parts of the mesh at once (docs/dev/architecture.md, "The optimized builder",
 // has the steps). The result has at most targetClusters clusters whenever the limits allow
 // meshoptimizer's count, and never more than that count. An explicit budget those steps miss is
-// packed to (compact clusters, which cull less), on meshes up to 2^17 faces, where packing reaches it. The same input gives the same partition
-// on any number of cores.
+// packed to (compact clusters, which cull less), on meshes up to 2^17 faces, where packing reaches
+// it. The same input gives the same partition on any number of cores.
 // `progress` hears (parts done / parts, "clusters") as parts finish, on the calling thread;
 // returning false stops the parts not yet started and throws OperationCancelled.
 // `meshlets`: meshoptimizer's meshlets of this mesh at these limits when startsFromMeshoptMeshlets,
 // already started (say while the mesh was being prepared); started here when needed and not given.
 // Its thread helps with the parts once its meshlets are made, so a stream serves one build.
 // `conesPerCluster` > 1: at the balanced and best efforts the partition is built for that many cones
-// per cluster (optimizer/ForCones.h), and no part is heard.
+// per cluster (optimizer/ForCones.h), and no part is heard. `choice`, when given, hears what the
+// best effort chose between its two searches (ran = false at the other efforts).
 Partition buildOptimizedClusters(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits,
                                  size_t targetClusters = 0, const ProgressCallback& progress = {},
                                  Effort effort = Effort::Balanced, MeshletStream* meshlets = nullptr,
-                                 const PartClusters& partDone = {}, uint32_t conesPerCluster = 1);
+                                 const PartClusters& partDone = {}, uint32_t conesPerCluster = 1,
+                                 BestEffortChoice* choice = nullptr);
 
 // The annealing sweeps buildOptimizedClusters makes at `effort` on a mesh of `faceCount` faces
 // from meshoptimizer's meshlets in `meshletParts` parts (meshletPartsFor), on each part when there

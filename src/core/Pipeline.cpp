@@ -110,13 +110,15 @@ ClusterSet buildClusters(const PreparedMesh& prepared, const Settings& settings,
     if (previous && !partitionChanged(previous->builtWith, settings)) {
         clusters.partition = previous->partition;
         clusters.partitionSeconds = previous->partitionSeconds;
+        clusters.bestEffort = previous->bestEffort;
     } else {
         const std::string stage = "clusters (" + toString(settings.builder) + ")";
         report(progress, 0.0, stage);
         const auto start = std::chrono::steady_clock::now();
         // The builder's own progress (parts done) fills the stage's share, under the stage's name.
         clusters.partition =
-            buildPartition(prepared.mesh(), prepared.faces, settings, progressWithin(progress, 0.0, 0.6, stage), meshlets, boundPart);
+            buildPartition(prepared.mesh(), prepared.faces, settings, progressWithin(progress, 0.0, 0.6, stage), meshlets, boundPart,
+                           &clusters.bestEffort);
         clusters.partitionSeconds = secondsSince(start);
     }
     report(progress, 0.6, "bounds (" + toString(cone) + ")");
@@ -305,6 +307,7 @@ RunStatistics measureRun(const PreparedMesh& prepared, const ClusterSet& cluster
     run.degenerateFaces = prepared.faces.degenerateCount;
     run.clusters = clusters.partition.clusterCount;
     if (settings.clusterCount != 0) run.fewestClusters = fewestClustersWithin(prepared.mesh(), settings.limits);
+    run.bestEffort = clusters.bestEffort;
     const std::vector<Eye> views = viewsFor(settings, prepared.box);
     run.viewCount = views.size();
     const size_t steps = settings.cones.size() * settings.tests.size();

@@ -54,6 +54,7 @@ struct ClusterSet {
     CullMap cullMap;
     double partitionSeconds = 0.0;
     double boundsSeconds = 0.0;
+    BestEffortChoice bestEffort;  // what --effort best chose between its two searches (ran = false otherwise)
 };
 
 // The first cone method and cull test of the settings: the ones the window shows.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 #include "BatchCulling.h"
@@ -56,6 +57,25 @@ std::string uncullableNote(size_t uncullableClusters, size_t clusters) {
            "%) can never be culled: each holds face normals over more than a hemisphere (a small closed part, or faces "
            "turned every way), so no cone of normals narrower than a hemisphere holds them and no test culls them from any "
            "eye. Only smaller clusters, or several cones per cluster, could cull there.";
+}
+
+std::string bestEffortNote(const BestEffortChoice& choice) {
+    if (!choice.ran || !choice.keptBalanced) return {};
+    const std::string kept = "--effort best kept the balanced search's partition: ";
+    if (choice.ownClusters != choice.balancedClusters)
+        return kept + "its own search made " + std::to_string(choice.ownClusters) + " clusters, the balanced one " +
+               std::to_string(choice.balancedClusters) + ", nearer the budget";
+    // At one count: each measure by which best's own culled less, with both figures.
+    char figures[2][128] = {"", ""};
+    if (choice.ownEfficiency < choice.balancedEfficiency)
+        std::snprintf(figures[0], sizeof figures[0], "from the default orbit (%.3f against %.3f)", choice.balancedEfficiency,
+                      choice.ownEfficiency);
+    if (choice.ownExpected < choice.balancedExpected)
+        std::snprintf(figures[1], sizeof figures[1], "in expectation over far views (%.3f against %.3f)", choice.balancedExpected,
+                      choice.ownExpected);
+    const std::string both = *figures[0] && *figures[1] ? " and " : "";
+    return kept + "at " + std::to_string(choice.balancedClusters) + " clusters each it culls more than best's own search " +
+           figures[0] + both + figures[1];
 }
 
 double cullEfficiency(size_t trianglesCulled, size_t backFacingTriangles) {

@@ -100,6 +100,7 @@ struct RunStatistics {
     size_t windingFixedFaces = 0;     // faces flipped because settings.fixWinding was set
     size_t clusters = 0;
     size_t fewestClusters = 0;        // fewestClustersWithin the settings' limits: says why a budget was missed
+    BestEffortChoice bestEffort;      // --effort best: which of its two searches made the partition (bestEffortNote)
     size_t viewCount = 0;
     std::vector<CullTestStatistics> results;
     MultiConeCulling multiCones;      // settings.conesPerCluster > 1: the displayed cone's partition with K cones (cones = 0 otherwise)
@@ -115,6 +116,11 @@ double uncullableShare(size_t uncullableClusters, size_t clusters);
 // When most clusters (more than half) are such, a sentence for the user saying so, why and what
 // could help; empty otherwise. What the text summary, batch's report and the window say.
 std::string uncullableNote(size_t uncullableClusters, size_t clusters);
+
+// A sentence for the user when --effort best kept the balanced search's partition (BestEffortChoice),
+// saying why: best's own came farther from the budget, or culled less from the default orbit (the
+// default cone and test, `stats` with no options). Empty when best kept its own or did not run.
+std::string bestEffortNote(const BestEffortChoice& choice);
 
 // Statistics for one (cone, test) over the given views from prepared bounds. `progress` hears of
 // every 16th view and may cancel there (OperationCancelled).

@@ -129,9 +129,13 @@ void addRunCells(BatchRow& row, const RunStatistics& run, const std::vector<std:
     row["faces"] = std::to_string(run.faces);
     row["triangles"] = std::to_string(run.triangles);
     row["warnings"] = joined(warnings, " | ");
-    // Why a mesh culls little or nothing, when most of its clusters never can be.
+    // Why best gave balanced's partition, and why a mesh culls little or nothing when most of its
+    // clusters never can.
     const CullTestStatistics& shown = run.results.front();
-    row["note"] = uncullableNote(shown.uncullableClusters, shown.clusters.size());
+    std::vector<std::string> notes;
+    for (std::string said : {bestEffortNote(run.bestEffort), uncullableNote(shown.uncullableClusters, shown.clusters.size())})
+        if (!said.empty()) notes.push_back(std::move(said));
+    row["note"] = joined(notes, " | ");
 }
 
 void addSettingCells(BatchRow& row, const Settings& settings) {

@@ -253,6 +253,17 @@ nlohmann::json multiConeJson(const MultiConeCulling& multi) {
     return json;
 }
 
+// Which of --effort best's two searches made the partition, and what each made.
+nlohmann::json bestEffortJson(const BestEffortChoice& choice) {
+    return {{"kept", choice.keptBalanced ? "balanced" : "best"},
+            {"own_clusters", choice.ownClusters},
+            {"own_efficiency", choice.ownEfficiency},
+            {"balanced_clusters", choice.balancedClusters},
+            {"balanced_efficiency", choice.balancedEfficiency},
+            {"own_expected_efficiency", choice.ownExpected},
+            {"balanced_expected_efficiency", choice.balancedExpected}};
+}
+
 void writeSettings(JsonWriter& json, const Settings& settings) {
     Members members;
     for (const SettingField& field : settingFields()) {
@@ -285,6 +296,7 @@ void writeStatistics(JsonWriter& json, const RunStatistics& run, const Statistic
         j.endArray();
     });
     if (run.multiCones.cones > 0) top.add("multi_cone", [&run](JsonWriter& j) { j.value(multiConeJson(run.multiCones)); });
+    if (run.bestEffort.ran) top.add("best_effort", [&run](JsonWriter& j) { j.value(bestEffortJson(run.bestEffort)); });
     top.write(json);
 }
 

@@ -42,6 +42,8 @@ void writeStatisticsText(const RunStatistics& run, std::ostream& out, size_t wor
     out << run.meshName << ": " << run.vertices << " vertices, " << run.triangles << " triangles in " << run.clusters
         << " clusters (" << toString(run.settings.builder) << "), " << run.viewCount << (run.viewCount == 1 ? " view" : " views")
         << '\n';
+    const std::string fellBack = bestEffortNote(run.bestEffort);
+    if (!fellBack.empty()) out << "  " << fellBack << '\n';
     for (const CullTestStatistics& r : run.results) {
         out << '\n' << toString(r.cone) << " cone, " << toString(r.test) << " test\n";
         out << formatted("  efficiency        %.3f of the back faces culled (mean per view %.3f), false culls %zu\n", r.efficiency,

@@ -164,8 +164,9 @@ vtkSmartPointer<vtkTable> levelTable(const LodStatistics& statistics) {
 void plotLevels(vtkChartXY* chart, const LodStatistics* statistics) {
     chart->ClearPlots();
     const size_t levels = statistics ? statistics->levels.size() : 0;
-    chart->SetTitle(levels > 0 ? "Culling by LOD level: efficiency (left axis), mean cone half-angle (right axis)"
-                               : "No hierarchy built");
+    // A short title: in the dock's small chart a longer one runs over both axes' titles, which
+    // already say which axis is which.
+    chart->SetTitle(levels > 0 ? "Culling by LOD level" : "No hierarchy built");
     if (levels > 0) {
         const vtkSmartPointer<vtkTable> table = levelTable(*statistics);
         vtkPlot* measured = chart->AddPlot(vtkChart::BAR);

@@ -2,6 +2,9 @@
 // differs nowhere, the CSV is one tidy table and bad configurations are usage errors.
 #include <gtest/gtest.h>
 
+#include <cstdio>
+#include <set>
+
 #include <nlohmann/json.hpp>
 
 #include "CliTestSupport.h"
@@ -38,18 +41,70 @@ void expectSame(nlohmann::json actual, nlohmann::json expected) {
 
 // The best effort never culls less than balanced where a user looks first (`stats` with no options:
 // the default cone, test and orbit), nor makes more clusters. rock1 culled 0.211 at best against
-// 0.215 at balanced when best picked its run by the expected culling from far views.
+// 0.215 at balanced when best picked its run by the expected culling from far views. Its
+// "best_effort" says which search it kept, with the figures the plain runs give: the kept
+// partition's and, where best kept balanced's, the default run's.
 TEST(CliCompare, BestNeverCullsLessThanBalancedFromTheDefaultOrbit) {
     std::vector<std::string> meshes = {dataset("torus.off"), dataset("icosphere.off"), dataset("bumpy-plane.off")};
     for (const char* prop : {"rock1", "bread", "emergencySign", "technicalTable1", "verticalShelves"})
         meshes.push_back(std::string(CONESCOPE_TESTDATA_DIR) + "/props/" + prop + ".obj");
+    std::set<std::string> kept;
     for (const std::string& mesh : meshes) {
         SCOPED_TRACE(mesh);
         const nlohmann::json json = runCompareJson({mesh, "--a", "effort=best"});
         const nlohmann::json &best = json["a"], &balanced = json["b"];
         ASSERT_LE(best["clusters"].get<size_t>(), balanced["clusters"].get<size_t>());
-        if (best["clusters"] == balanced["clusters"])
-            EXPECT_GE(best["results"][0]["efficiency"].get<double>(), balanced["results"][0]["efficiency"].get<double>());
+        const double bestEfficiency = best["results"][0]["efficiency"], balancedEfficiency = balanced["results"][0]["efficiency"];
+        if (best["clusters"] == balanced["clusters"]) {
+            EXPECT_GE(bestEfficiency, balancedEfficiency);
+        }
+        EXPECT_FALSE(balanced.contains("best_effort"));
+        const nlohmann::json& choice = best.at("best_effort");
+        kept.insert(choice["kept"].get<std::string>());
+        EXPECT_EQ(choice["balanced_clusters"], balanced["clusters"]);
+        EXPECT_DOUBLE_EQ(choice["balanced_efficiency"].get<double>(), balancedEfficiency);
+        if (choice["kept"] == "balanced") {
+            EXPECT_EQ(best["clusters"], balanced["clusters"]);
+            EXPECT_EQ(best["results"][0]["triangles_culled"], balanced["results"][0]["triangles_culled"]);
+            EXPECT_TRUE(choice["own_clusters"] != choice["balanced_clusters"] ||
+                        choice["own_efficiency"].get<double>() < choice["balanced_efficiency"].get<double>() ||
+                        choice["own_expected_efficiency"].get<double>() < choice["balanced_expected_efficiency"].get<double>());
+        } else {
+            EXPECT_EQ(choice["own_clusters"], best["clusters"]);
+            EXPECT_DOUBLE_EQ(choice["own_efficiency"].get<double>(), bestEfficiency);
+        }
+    }
+    EXPECT_EQ(kept, (std::set<std::string>{"best", "balanced"}));  // both cases are met
+}
+
+// Where best keeps balanced's partition, the text summary says so and why, with the figures of each
+// measure by which its own search culled less; where it keeps its own, and at the default effort, it
+// says nothing of it.
+TEST(CliCompare, BestSaysWhenItKeepsTheBalancedPartition) {
+    const std::string rock = std::string(CONESCOPE_TESTDATA_DIR) + "/props/rock1.obj";
+    const nlohmann::json choice = runStatsJson({rock, "--effort", "best"})["best_effort"];
+    ASSERT_EQ(choice["kept"], "balanced");
+    ASSERT_EQ(choice["own_clusters"], choice["balanced_clusters"]);
+    const CliRun text = runCli({"stats", rock, "--quiet", "--effort", "best", "--format", "text"});
+    ASSERT_EQ(text.exitCode, 0) << text.err;
+    EXPECT_NE(text.out.find("--effort best kept the balanced search's partition: at " + choice["balanced_clusters"].dump() +
+                            " clusters each it culls more than best's own search"),
+              std::string::npos)
+        << text.out;
+    size_t measures = 0;
+    for (const auto& [measure, key] : {std::pair<std::string, std::string>{"from the default orbit", "efficiency"},
+                                       {"in expectation over far views", "expected_efficiency"}}) {
+        const double balanced = choice["balanced_" + key], own = choice["own_" + key];
+        char figures[96];
+        std::snprintf(figures, sizeof figures, " (%.3f against %.3f)", balanced, own);
+        EXPECT_EQ(text.out.find(measure + figures) != std::string::npos, own < balanced) << measure << "\n" << text.out;
+        measures += own < balanced;
+    }
+    EXPECT_GE(measures, 1u);
+    for (const char* effort : {"balanced", "best"}) {
+        const std::string mesh = effort == std::string("best") ? dataset("torus.off") : rock;
+        const CliRun other = runCli({"stats", mesh, "--quiet", "--effort", effort, "--format", "text"});
+        EXPECT_EQ(other.out.find("kept the balanced"), std::string::npos) << effort << ": " << other.out;
     }
 }
 

@@ -6,8 +6,7 @@
 #include <functional>
 #include <memory>
 
-#include "TestMeshes.h"
-#include "core/lod/LodCut.h"
+#include "IcosphereHierarchy.h"
 #include "io/MeshletFiles.h"
 
 namespace conescope {
@@ -15,22 +14,19 @@ namespace {
 
 #define EXPECT_HAS(text, fragment) EXPECT_NE(std::string(text).find(fragment), std::string::npos) << (text)
 
-class HierarchyFiles : public ::testing::Test {
+// The icosphere(4) hierarchy every LOD suite walks, and its records.
+class HierarchyFiles : public testmesh::IcosphereHierarchy<4> {
 protected:
     static void SetUpTestSuite() {
-        sphere_ = std::make_unique<PreparedMesh>(prepareMesh(std::make_shared<const Mesh>(testmesh::icosphere(4)), "sphere", false));
-        hierarchy_ = std::make_unique<ClusterHierarchy>(buildClusterHierarchy(*sphere_, Settings{}));
+        IcosphereHierarchy::SetUpTestSuite();
         records_ = std::make_unique<HierarchyRecords>(hierarchyRecordsOf(*hierarchy_, {}));
     }
-    static void TearDownTestSuite() { records_.reset(), hierarchy_.reset(), sphere_.reset(); }
-
-    static std::unique_ptr<PreparedMesh> sphere_;
-    static std::unique_ptr<ClusterHierarchy> hierarchy_;
-    static std::unique_ptr<HierarchyRecords> records_;
+    static void TearDownTestSuite() {
+        records_.reset();
+        IcosphereHierarchy::TearDownTestSuite();
+    }
+    static inline std::unique_ptr<HierarchyRecords> records_;
 };
-std::unique_ptr<PreparedMesh> HierarchyFiles::sphere_;
-std::unique_ptr<ClusterHierarchy> HierarchyFiles::hierarchy_;
-std::unique_ptr<HierarchyRecords> HierarchyFiles::records_;
 
 void expectSameRecords(const HierarchyRecords& a, const HierarchyRecords& b) {
     EXPECT_EQ(a.arrays.meshlets, b.arrays.meshlets);

@@ -143,7 +143,9 @@ TEST(GranularityChart, RecordLabelsCoverNoPointLineLabelOrCeiling) {
         EXPECT_TRUE(box.x0 >= area.x0 && box.x1 <= area.x1 && box.y0 >= area.y0 && box.y1 <= area.y1) << record;
         for (size_t b = a + 1; b < placed.size(); ++b) EXPECT_FALSE(box.intersects(placed[b].spot.box)) << record;
         for (const glm::dvec2& point : points) EXPECT_FALSE(box.intersects({point.x - 4, point.y - 4, point.x + 4, point.y + 4})) << record;
-        if (record != "triangle") EXPECT_FALSE(box.y0 < ceiling && box.y1 > ceiling) << record << " lies on the ceiling";
+        if (record != "triangle") {
+            EXPECT_FALSE(box.y0 < ceiling && box.y1 > ceiling) << record << " lies on the ceiling";
+        }
         // Off the K-cone lines: sampled along each segment.
         for (const bool compact : {false, true}) {
             const size_t first = compact ? 7 : 4;

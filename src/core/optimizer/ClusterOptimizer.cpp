@@ -351,12 +351,6 @@ Partition climbed(const BuildInputs& in, const BuildPlan& plan, const ProgressCa
     return best;
 }
 
-// The best level's search, then the balanced one's, and the better kept: nearer the budget, then
-// more culled in expectation over far views and from the default orbit's distance (the best
-// level's larger clusters of like normals can cull less from up close). Its longer search from
-// grown clusters can end in a worse basin than the balanced one's (on foliage: docs/benchmarks.md),
-// so it never culls less in expectation nor makes more clusters than the default. The
-// balanced run takes the last tenth of the progress; where it is kept it is heard as one part.
 // What `stats` with no options says a partition culls (the default cone and test, the standard
 // orbit's views and distance): how the best level tells its two runs apart at one count, so that it
 // never culls less there than balanced.
@@ -367,17 +361,34 @@ double defaultOrbitEfficiency(const Mesh& mesh, const FaceGeometry& faces, const
     return measureCulling({mesh, mesh.positions, faces, bounds}, views, kDefaultTest).efficiency;
 }
 
-Partition bestOfBoth(const BuildInputs& in, const BuildPlan& plan, const ProgressCallback& progress, const PartClusters& partDone) {
+// The best level's search, then the balanced one's, and the better kept: nearer the budget; at one
+// count its own only where it culls at least as much both in expectation over far views and from
+// the default orbit (the best level's larger clusters of like normals can cull less from up close,
+// and its longer search from grown clusters can end in a worse basin: on foliage,
+// docs/benchmarks.md). So best never culls less than the default there nor makes more clusters;
+// `choice` hears which was kept and why. The balanced run takes the last tenth of the progress;
+// where it is kept it is heard as one part.
+Partition bestOfBoth(const BuildInputs& in, const BuildPlan& plan, const ProgressCallback& progress, const PartClusters& partDone,
+                     BestEffortChoice& choice) {
     Partition best = atBudget(in, plan, progressShare(progress, 0.0, 0.9), partDone);
     // The default count asked for is the default: its balanced run is the default's (no climb).
     const size_t defaultCount = defaultClusterBudget(in.mesh, in.limits);
     const size_t target = plan.budget != 0 ? plan.budget : defaultCount;
     Partition balanced = buildOptimizedClusters(in.mesh, in.faces, in.limits, target == defaultCount ? 0 : target,
                                                 progressShare(progress, 0.9, 1.0), Effort::Balanced, in.meshlets, {});
-    if (!betterAtBudget(in.mesh, in.faces, balanced, best, target) &&
-        (best.clusterCount != balanced.clusterCount ||
-         defaultOrbitEfficiency(in.mesh, in.faces, best) >= defaultOrbitEfficiency(in.mesh, in.faces, balanced)))
+    choice = {true,
+              false,
+              best.clusterCount,
+              balanced.clusterCount,
+              defaultOrbitEfficiency(in.mesh, in.faces, best),
+              defaultOrbitEfficiency(in.mesh, in.faces, balanced),
+              expectedCullRate(in.mesh, in.faces, best),
+              expectedCullRate(in.mesh, in.faces, balanced)};
+    const std::optional<bool> balancedNearer = nearerTheBudget(balanced.clusterCount, best.clusterCount, target);
+    if (balancedNearer ? !*balancedNearer
+                       : choice.ownExpected >= choice.balancedExpected && choice.ownEfficiency >= choice.balancedEfficiency)
         return best;
+    choice.keptBalanced = true;
     heardAsOnePart(partDone, in.facts.faces, balanced);
     return balanced;
 }
@@ -386,7 +397,10 @@ Partition bestOfBoth(const BuildInputs& in, const BuildPlan& plan, const Progres
 
 Partition buildOptimizedClusters(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits,
                                  size_t targetClusters, const ProgressCallback& progress, Effort effort,
-                                 MeshletStream* meshlets, const PartClusters& partDone, uint32_t conesPerCluster) {
+                                 MeshletStream* meshlets, const PartClusters& partDone, uint32_t conesPerCluster,
+                                 BestEffortChoice* choice) {
+    BestEffortChoice made;
+    if (choice) *choice = made;
     if (mesh.faceCount() == 0) return {};
     const double viewDistance = kOrbitDistance * double(computeAabb(mesh.positions).halfDiagonal());
     BuildInputs in{mesh, faces, limits, meshlets, {mesh.faceCount(), meshoptTakesLimits(limits), 0, fewestClustersWithin(mesh, limits), viewDistance, conesPerCluster}};
@@ -403,7 +417,7 @@ Partition buildOptimizedClusters(const Mesh& mesh, const FaceGeometry& faces, co
     const PartClusters& heard = plan.forCones > 1 ? none : partDone;
     const double built = plan.forCones > 1 ? 0.8 : 1.0;  // the moves for K cones take the rest
     const ProgressCallback building = built < 1.0 ? progressShare(progress, 0.0, built) : progress;
-    Partition partition = plan.alsoBalanced ? bestOfBoth(in, plan, building, heard)
+    Partition partition = plan.alsoBalanced ? bestOfBoth(in, plan, building, heard, choice ? *choice : made)
                           : plan.climb      ? climbed(in, plan, building, heard)
                                             : atBudget(in, plan, building, heard);
     if (plan.forCones > 1)
