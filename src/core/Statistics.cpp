@@ -61,7 +61,7 @@ std::string uncullableNote(size_t uncullableClusters, size_t clusters) {
 
 std::string bestEffortNote(const BestEffortChoice& choice) {
     if (!choice.ran || !choice.keptBalanced) return {};
-    const std::string kept = "--effort best kept the balanced search's partition: ";
+    const std::string kept = "the best effort kept the balanced search's partition: ";
     if (choice.ownClusters != choice.balancedClusters)
         return kept + "its own search made " + std::to_string(choice.ownClusters) + " clusters, the balanced one " +
                std::to_string(choice.balancedClusters) + ", nearer the budget";

@@ -195,7 +195,7 @@ void plotLevels(vtkChartXY* chart, const LodStatistics* statistics) {
         chart->SetPlotCorner(angle, 1);
     }
     setAxes(chart, "level (0 = finest)", "efficiency");
-    chart->GetAxis(vtkAxis::RIGHT)->SetTitle("mean half-angle (degrees)");
+    chart->GetAxis(vtkAxis::RIGHT)->SetTitle("half-angle (\u00b0)");  // short: the dock's chart is low
     fixRange(chart->GetAxis(vtkAxis::LEFT), 0.0, 1.0);
     fixRange(chart->GetAxis(vtkAxis::RIGHT), 0.0, 90.0);
     vtkAxis* bottom = chart->GetAxis(vtkAxis::BOTTOM);

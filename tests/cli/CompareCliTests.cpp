@@ -87,7 +87,7 @@ TEST(CliCompare, BestSaysWhenItKeepsTheBalancedPartition) {
     ASSERT_EQ(choice["own_clusters"], choice["balanced_clusters"]);
     const CliRun text = runCli({"stats", rock, "--quiet", "--effort", "best", "--format", "text"});
     ASSERT_EQ(text.exitCode, 0) << text.err;
-    EXPECT_NE(text.out.find("--effort best kept the balanced search's partition: at " + choice["balanced_clusters"].dump() +
+    EXPECT_NE(text.out.find("the best effort kept the balanced search's partition: at " + choice["balanced_clusters"].dump() +
                             " clusters each it culls more than best's own search"),
               std::string::npos)
         << text.out;
