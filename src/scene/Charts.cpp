@@ -310,16 +310,16 @@ std::vector<RecordLabel> placeRecordLabels(const std::vector<glm::dvec2>& points
             if (isConesRecord(records[row], compact)) line.push_back(points[row]);
         if (line.size() >= 2) placer.blockLine(line, 2.0);
     }
-    // The per-triangle row first, before the ceiling is blocked; then the finer records (K cones), so
-    // that on a small chart they keep theirs.
+    // The per-triangle row first, off its own ceiling line (blocked before it is placed); then the
+    // finer records (K cones), so that on a small chart they keep theirs.
     std::vector<size_t> order(points.size());
     for (size_t row = 0; row < order.size(); ++row) order[row] = row;
     std::stable_partition(order.begin(), order.end(), [&](size_t row) { return records[row].rfind("cones-", 0) == 0; });
     std::stable_partition(order.begin(), order.end(), [&](size_t row) { return records[row] == "triangle"; });
     std::vector<RecordLabel> placed;
     for (size_t row : order) {
-        const std::optional<LabelSpot> spot = placer.place(points[row], {1.0, 0.0}, sizes[row], 30.0);
         if (records[row] == "triangle") placer.blockLine({{area.x0, points[row].y}, {area.x1, points[row].y}}, 2.0);
+        const std::optional<LabelSpot> spot = placer.place(points[row], {1.0, 0.0}, sizes[row], 30.0);
         if (spot) placed.push_back({row, *spot});
     }
     return placed;
