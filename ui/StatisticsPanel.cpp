@@ -13,6 +13,9 @@ namespace conescope {
 
 namespace {
 
+// Above and below each row's name and value: the rows' spacing (the form's own is 0).
+constexpr int kRowMargin = 3;
+
 QString count(size_t value) { return QLocale().toString(qulonglong(value)); }
 QString percent(double fraction) { return QString::number(100.0 * fraction, 'f', 1) + QLatin1Char('%'); }
 QString seconds(double value) { return QString::number(1000.0 * value, 'f', 1) + QStringLiteral(" ms"); }
@@ -48,6 +51,9 @@ QString configuration(const Settings& settings) {
 StatisticsPanel::StatisticsPanel(QWidget* parent) : QWidget(parent) {
     form_ = new QFormLayout(this);
     form_->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
+    // The space between rows is each row's own margin: Qt 5's form keeps its spacing for hidden rows,
+    // which left a gap where the comparison's rows are hidden.
+    form_->setVerticalSpacing(0);
     // The current eye's numbers first: they change as the eye moves; the mesh's below.
     for (const char* name : {"eye", "clusters culled", "triangles culled", "back-facing triangles", "efficiency",
                              "false culls", "missed clusters", "time per test"})
@@ -146,11 +152,17 @@ QLabel* StatisticsPanel::addRow(const QString& name) {
     label->setTextInteractionFlags(Qt::TextSelectableByMouse);
     label->setWordWrap(true);
     label->setObjectName(name);
+    // The form sizes its rows from a wrapped value's height at another width than the one it gets
+    // (two lines where three are needed): without height-for-width, fitHeight's minimum holds.
+    QSizePolicy policy = label->sizePolicy();
+    policy.setHeightForWidth(false);
+    label->setSizePolicy(policy);
     auto* title = new QLabel(name + QLatin1Char(':'), this);
     // The row's name and its value both say what it means.
     for (QLabel* part : {title, label}) {
         part->setToolTip(aboutRow(name));
         part->setWhatsThis(aboutRow(name));
+        part->setContentsMargins(0, kRowMargin, 0, kRowMargin);
     }
     form_->addRow(title, label);
     values_[name] = label;
@@ -165,9 +177,9 @@ bool StatisticsPanel::eventFilter(QObject* watched, QEvent* event) {
 
 void StatisticsPanel::fitHeight(QLabel* label) {
     // A form lays its rows out from their size hints, not from the height a wrapped text needs at the
-    // width it gets: each value asks for that height itself, or its last lines are cut away.
+    // width it gets: each value takes that height itself, or its last lines are cut away.
     const int needed = label->heightForWidth(label->width());
-    if (needed > 0 && needed != label->minimumHeight()) label->setMinimumHeight(needed);
+    if (needed > 0 && (needed != label->minimumHeight() || needed != label->maximumHeight())) label->setFixedHeight(needed);
 }
 
 void StatisticsPanel::fitHeights() {

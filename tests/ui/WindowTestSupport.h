@@ -2,12 +2,16 @@
 // looking at when a test fails, and small readers of its views.
 #pragma once
 
+#include <algorithm>
 #include <memory>
+#include <utility>
+#include <vector>
 
 #include <QApplication>
 #include <QComboBox>
 #include <QCoreApplication>
 #include <QDir>
+#include <QLabel>
 #include <QStandardPaths>
 #include <QString>
 #include <QTemporaryDir>
@@ -19,6 +23,7 @@
 #include <vtkRendererCollection.h>
 
 #include "MainWindow.h"
+#include "StatisticsPanel.h"
 
 namespace conescope::testing {
 
@@ -60,6 +65,27 @@ inline void chooseInCombo(QComboBox* box, const std::string& name) {
 
 inline vtkRenderer* observerRenderer(MainWindow& window) {
     return window.observerView()->renderWindow()->GetRenderers()->GetFirstRenderer();
+}
+
+// What is wrong with the statistics panel's rows as shown, empty when nothing: a wrapped value lower
+// than its text needs, a value over the next row's, or a gap between two rows (hidden rows between).
+inline QString statisticsLayoutFault(const StatisticsPanel& panel) {
+    QApplication::processEvents();
+    std::vector<std::pair<QRect, QString>> shown;
+    for (const QString& row : panel.rows()) {
+        auto* value = panel.findChild<QLabel*>(row);
+        if (!value || !value->isVisibleTo(&panel)) continue;
+        if (value->wordWrap() && value->height() < value->heightForWidth(value->width()))
+            return QStringLiteral("%1: %2 high, needs %3").arg(row).arg(value->height()).arg(value->heightForWidth(value->width()));
+        shown.emplace_back(value->geometry(), row);
+    }
+    std::sort(shown.begin(), shown.end(), [](const auto& a, const auto& b) { return a.first.top() < b.first.top(); });
+    for (size_t i = 0; i + 1 < shown.size(); ++i) {
+        const int gap = shown[i + 1].first.top() - (shown[i].first.bottom() + 1);
+        if (gap < 0) return QStringLiteral("%1 runs %2 px over %3").arg(shown[i].second).arg(-gap).arg(shown[i + 1].second);
+        if (gap > 12) return QStringLiteral("%1 px between %2 and %3").arg(gap).arg(shown[i].second, shown[i + 1].second);
+    }
+    return {};
 }
 
 // Every legend entry's text, one per line.
