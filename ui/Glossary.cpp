@@ -195,11 +195,12 @@ QString explainLegendLabel(const std::string& label) {
         {"normals from one point", "gauss sphere"}, {"cone axis", "axis"}, {"view vector", "view vector"}, {"cull eye", "cull eye"},
         {"eyes ", "cull eye"}, {"apex", "apex"}, {"bounding sphere", "bounding sphere"}, {"bounding box", "bounding box"},
         {"cluster AABBs", "bounding box"}, {"bounding spheres", "bounding sphere"}, {"normal cones", "normal cone"},
-        {"minimal cone", "cone minimal"}, {"average cone", "cone average"}, {"seed-sphere cone", "cone seed-sphere"},
-        {"meshopt cone", "cone meshopt"}, {"front-facing", "face normal"}, {"back-facing", "back-facing"},
+        {"front-facing", "face normal"}, {"back-facing", "back-facing"},
         {"degenerate", "degenerate face"}, {"visible", "visible face"}, {"point sees back", "view vector"},
         {"no ", "not measured"}, {"faces not classified", "not measured"}, {"unequal cluster counts", "efficiency"},
         {"clusters", "cluster"}, {"cluster", "cluster"}, {"picked cluster", "cluster"}};
+    for (const ConeDescriptor& cone : coneDescriptors())  // "minimal cone, alpha 39.2 deg"
+        if (label.rfind(std::string(cone.name) + " cone", 0) == 0) return explain(cone.method);
     for (const auto& [prefix, key] : prefixes) {
         if (label.rfind(prefix, 0) != 0) continue;
         if (key.isEmpty()) return explain(FaceColoring::Comparison);

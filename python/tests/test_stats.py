@@ -139,9 +139,9 @@ def test_granularity_is_the_cli_document():
     document = conescope.granularity(DATASETS / "elephant.off", views=16)
     assert document == cli_json("granularity", DATASETS / "elephant.off", "--views", "16", "--format", "json", "--quiet")
     records = [row["record"] for row in document["rows"]]
-    assert records[0] == "minimal/octagon" and "cones-4-compact" in records and records[-1] == "triangle"
+    assert records[0] == "chosen/octagon" and "cones-4-compact" in records and records[-1] == "triangle"
     only_apex = conescope.granularity(DATASETS / "elephant.off", views=16, test="apex")
-    assert [row["record"] for row in only_apex["rows"]][0] == "minimal/apex"
+    assert [row["record"] for row in only_apex["rows"]][0] == "chosen/apex"
     assert len(only_apex["rows"]) == 1 + 6 + 1
 
 

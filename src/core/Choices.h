@@ -43,7 +43,7 @@ struct BuilderDescriptor {
     const char* explanation;  // what it does, one sentence (the settings panel's tooltip)
 };
 
-constexpr size_t kConeMethodCount = 4;
+constexpr size_t kConeMethodCount = 5;
 constexpr size_t kCullTestCount = 12;
 constexpr size_t kBuilderCount = 5;
 

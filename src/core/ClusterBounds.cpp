@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "ChosenCones.h"
 #include "Parallel.h"
 #include "meshopt/Meshopt.h"
 
@@ -11,11 +12,11 @@ namespace conescope {
 
 glm::dvec3 coneApex(const ConeOfNormals& cone, const glm::dvec3& center, const Mesh& mesh,
                     const std::vector<glm::vec3>& world, const FaceGeometry& faces, const uint32_t* clusterFaces,
-                    size_t faceCount) {
+                    size_t faceCount, bool forwardToo) {
     if (!cone.cullable) return center;
     // Move back along -axis until the point is on the back side of every face plane: then any eye
     // that sees the apex from inside the back cone sees every face's back (meshoptimizer's argument).
-    double farthest = 0.0;
+    double farthest = forwardToo ? -std::numeric_limits<double>::infinity() : 0.0;
     for (size_t i = 0; i < faceCount; ++i) {
         const uint32_t f = clusterFaces[i];
         const glm::dvec3& n = faces.normals[f];
@@ -26,25 +27,53 @@ glm::dvec3 coneApex(const ConeOfNormals& cone, const glm::dvec3& center, const M
             farthest = std::max(farthest, glm::dot(n, center - q) / along);
         }
     }
-    return center - cone.axis * (farthest * (1.0 + 1e-12) + 1e-300);
+    if (!std::isfinite(farthest)) return center;  // no face with a side: nothing to be behind
+    return center - cone.axis * (farthest + std::abs(farthest) * 1e-12 + 1e-300);
 }
-
-namespace {
 
 ConeOfNormals coneByMethod(ConeMethod method, const std::vector<glm::dvec3>& normals) {
     switch (method) {
         case ConeMethod::Average: return averageCone(normals.data(), normals.size());
         case ConeMethod::SeedSphere: return seedSphereCone(normals.data(), normals.size());
         case ConeMethod::Minimal:
-        case ConeMethod::Meshopt: return minimalCone(normals.data(), normals.size());
+        case ConeMethod::Meshopt:
+        case ConeMethod::Chosen: return minimalCone(normals.data(), normals.size());
     }
     return {};
+}
+
+namespace {
+
+// The chosen cone: the other four, each with its apex on the line its method places it on
+// (meshoptimizer's through its own apex, the others through the cluster's sphere) but as far
+// forward as the face planes allow, the minimal cone first.
+ChosenCone chooseAmongOffered(const Mesh& mesh, const std::vector<glm::vec3>& world, const FaceGeometry& faces,
+                              const uint32_t* clusterFaces, size_t faceCount, const std::vector<glm::dvec3>& normals,
+                              const glm::dvec3& center, const ChoiceEyes& eyes) {
+    std::vector<OfferedCone> offered;
+    for (const ConeMethod method : {ConeMethod::Minimal, ConeMethod::Meshopt, ConeMethod::Average, ConeMethod::SeedSphere}) {
+        if (method == ConeMethod::Meshopt) {
+            const MeshoptClusterBounds meshopt = meshoptClusterBounds(mesh, world, clusterFaces, faceCount, normals);
+            if (meshopt.usable)
+                offered.push_back({method, meshopt.cone, coneApex(meshopt.cone, meshopt.apex, mesh, world, faces, clusterFaces, faceCount, true)});
+            continue;
+        }
+        const ConeOfNormals cone = coneByMethod(method, normals);
+        offered.push_back({method, cone, coneApex(cone, center, mesh, world, faces, clusterFaces, faceCount, true)});
+    }
+    return chooseCone(offered.data(), offered.size(), normals, eyes);
 }
 
 }  // namespace
 
 ConeOfNormals clusterCone(const Mesh& mesh, const std::vector<glm::vec3>& world, const FaceGeometry& faces,
-                          const uint32_t* clusterFaces, size_t faceCount, ConeMethod method) {
+                          const uint32_t* clusterFaces, size_t faceCount, ConeMethod method, SphereMethod sphereMethod) {
+    if (method == ConeMethod::Chosen) {  // its apex, from the sphere, takes part in the choice
+        ClusterFaces one;
+        one.starts = {0, uint32_t(faceCount)};
+        one.faces.assign(clusterFaces, clusterFaces + faceCount);
+        return boundsOfClusters(mesh, world, faces, std::move(one), method, sphereMethod).cones.front();
+    }
     std::vector<glm::dvec3> normals;
     for (size_t i = 0; i < faceCount; ++i) normals.push_back(faces.normals[clusterFaces[i]]);
     if (method == ConeMethod::Meshopt) return meshoptClusterBounds(mesh, world, clusterFaces, faceCount, normals).cone;
@@ -52,7 +81,7 @@ ConeOfNormals clusterCone(const Mesh& mesh, const std::vector<glm::vec3>& world,
 }
 
 ClusterBounds boundsOfClusters(const Mesh& mesh, const std::vector<glm::vec3>& world, const FaceGeometry& faces,
-                               ClusterFaces clusterRows, ConeMethod coneMethod, SphereMethod sphereMethod) {
+                               ClusterFaces clusterRows, ConeMethod coneMethod, SphereMethod sphereMethod, const Aabb* objectBox) {
     ClusterBounds bounds;
     bounds.coneMethod = coneMethod;
     bounds.sphereMethod = sphereMethod;
@@ -73,6 +102,8 @@ ClusterBounds boundsOfClusters(const Mesh& mesh, const std::vector<glm::vec3>& w
     if (seen.size() < world.size() || mark > std::numeric_limits<uint32_t>::max() - clusterCount - 1)
         seen.assign(world.size(), 0), mark = 0;
     std::vector<glm::dvec3> normals, points;
+    const ChoiceEyes eyes = coneMethod == ConeMethod::Chosen && clusterCount > 0 ? choiceEyes(objectBox ? *objectBox : computeAabb(world))
+                                                                                : ChoiceEyes{};
     for (uint32_t c = 0; c < clusterCount; ++c) {
         ++mark;
         const uint32_t* clusterFaces = bounds.faces.faces.data() + bounds.faces.starts[c];
@@ -109,6 +140,13 @@ ClusterBounds boundsOfClusters(const Mesh& mesh, const std::vector<glm::vec3>& w
             } else {
                 bounds.apexes[c] = bounds.spheres[c].center;
             }
+        } else if (coneMethod == ConeMethod::Chosen) {
+            const ChosenCone chosen = chooseAmongOffered(mesh, world, faces, clusterFaces, faceCount, normals, bounds.spheres[c].center, eyes);
+            bounds.cones[c] = chosen.cone;
+            bounds.apexes[c] = chosen.apex;
+            bounds.octagons[c] = chosen.octagon;
+            bounds.normalsShares[c] = normalsCullShare(normals.data(), normals.size(), &chosen.cone);
+            continue;
         } else {
             bounds.cones[c] = coneByMethod(coneMethod, normals);
             bounds.apexes[c] = coneApex(bounds.cones[c], bounds.spheres[c].center, mesh, world, faces, clusterFaces, faceCount);
@@ -164,6 +202,7 @@ ClusterBounds computeClusterBounds(const Mesh& mesh, const std::vector<glm::vec3
     const size_t clusterCount = partition.clusterCount;
     // Clusters are bounded independently, in consecutive pieces on all cores, joined in order.
     const size_t pieces = piecesFor(clusterCount, 64);
+    const Aabb objectBox = computeAabb(world);
     std::vector<ClusterBounds> pieceBounds(pieces);
     forEachInParallel(pieces, [&](size_t piece, size_t) {
         const size_t begin = pieceBegin(clusterCount, pieces, piece), end = pieceBegin(clusterCount, pieces, piece + 1);
@@ -171,7 +210,7 @@ ClusterBounds computeClusterBounds(const Mesh& mesh, const std::vector<glm::vec3
         rows.starts.assign(1, 0);
         for (size_t c = begin; c < end; ++c) rows.starts.push_back(all.starts[c + 1] - all.starts[begin]);
         rows.faces.assign(all.faces.begin() + all.starts[begin], all.faces.begin() + all.starts[end]);
-        pieceBounds[piece] = boundsOfClusters(mesh, world, faces, std::move(rows), coneMethod, sphereMethod);
+        pieceBounds[piece] = boundsOfClusters(mesh, world, faces, std::move(rows), coneMethod, sphereMethod, &objectBox);
     });
     ClusterBounds bounds;
     bounds.coneMethod = coneMethod;

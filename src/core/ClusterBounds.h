@@ -23,10 +23,12 @@ namespace conescope {
 class EngineRecords;
 std::shared_ptr<EngineRecords> makeEngineRecords();
 
-enum class ConeMethod { Average, SeedSphere, Minimal, Meshopt };
+// Chosen: per cluster, the offered cone and octagon turn that culls most (ChosenCones.h).
+enum class ConeMethod { Average, SeedSphere, Minimal, Meshopt, Chosen };
 enum class SphereMethod { Ritter, Minimal };
-// The default cone and sphere (with kDefaultTest, CullTest.h): the exact minimal ones.
-constexpr ConeMethod kDefaultCone = ConeMethod::Minimal;
+// The default cone and sphere (with kDefaultTest, CullTest.h): per cluster the offered cone that
+// culls most, and the exact minimal sphere.
+constexpr ConeMethod kDefaultCone = ConeMethod::Chosen;
 constexpr SphereMethod kDefaultSphere = SphereMethod::Minimal;
 
 struct ClusterBounds {
@@ -61,9 +63,11 @@ ClusterBounds computeClusterBounds(const Mesh& mesh, const std::vector<glm::vec3
 
 // The same for some clusters, given as the faces of each (on the calling thread): a part of a
 // partition bounded as soon as it is made. Faces of a cluster in ascending order give exactly the
-// bounds computeClusterBounds gives that cluster.
+// bounds computeClusterBounds gives that cluster. The chosen cone counts eyes around the whole
+// object's box: pass it (the world box), or it is found from `world` on each call.
 ClusterBounds boundsOfClusters(const Mesh& mesh, const std::vector<glm::vec3>& world, const FaceGeometry& faces,
-                               ClusterFaces clusterRows, ConeMethod coneMethod, SphereMethod sphereMethod = SphereMethod::Minimal);
+                               ClusterFaces clusterRows, ConeMethod coneMethod, SphereMethod sphereMethod = SphereMethod::Minimal,
+                               const Aabb* objectBox = nullptr);
 
 // The clusters of a partition of some faces (partOfThem.clusterOfFace[k] for faceIds[k]) as rows of
 // mesh faces, in ascending order when faceIds is.
@@ -72,15 +76,21 @@ ClusterFaces clusterRowsOf(const uint32_t* faceIds, const Partition& partOfThem)
 // `more`'s clusters numbered after those of `bounds`.
 void appendClusterBounds(ClusterBounds& bounds, ClusterBounds&& more);
 
-// One cluster's cone by `method`, exactly as computeClusterBounds makes it: the Gauss map compares
-// every method's cone on the same cluster.
+// One cluster's cone by `method`, exactly as computeClusterBounds makes it with `sphereMethod`: the
+// Gauss map compares every method's cone on the same cluster.
 ConeOfNormals clusterCone(const Mesh& mesh, const std::vector<glm::vec3>& world, const FaceGeometry& faces,
-                          const uint32_t* clusterFaces, size_t faceCount, ConeMethod method);
+                          const uint32_t* clusterFaces, size_t faceCount, ConeMethod method,
+                          SphereMethod sphereMethod = SphereMethod::Minimal);
+
+// The cone of the methods that read the normals alone (average, seed-sphere, minimal).
+ConeOfNormals coneByMethod(ConeMethod method, const std::vector<glm::dvec3>& normals);
 
 // The point behind every face plane along -axis (meshoptimizer's construction, in double):
-// apex = centre - axis * max_f n_f.(centre - q_f) / n_f.axis over the faces' vertices q_f.
+// apex = centre - axis * max_f n_f.(centre - q_f) / n_f.axis over the faces' vertices q_f, and no
+// further forward than the centre. With `forwardToo` also forward of the centre, onto the last
+// plane: the pyramid of eyes an apex test culls from only grows as the apex moves along +axis.
 glm::dvec3 coneApex(const ConeOfNormals& cone, const glm::dvec3& center, const Mesh& mesh,
                     const std::vector<glm::vec3>& world, const FaceGeometry& faces, const uint32_t* clusterFaces,
-                    size_t faceCount);
+                    size_t faceCount, bool forwardToo = false);
 
 }  // namespace conescope

@@ -70,7 +70,8 @@ GaussMap gaussMapOf(const PreparedMesh& prepared, const ClusterSet& clusters, ui
     for (size_t i = 0; i < count; ++i)
         if (!prepared.faces.degenerate[faces[i]]) map.normals.push_back(prepared.faces.normals[faces[i]]);
     for (ConeMethod method : allConeMethods())
-        map.cones.emplace_back(method, clusterCone(prepared.mesh(), prepared.world, prepared.faces, faces, count, method));
+        map.cones.emplace_back(method, clusterCone(prepared.mesh(), prepared.world, prepared.faces, faces, count, method,
+                                                         clusters.builtWith.sphere));
     map.octagon = clusters.bounds.octagons[cluster];
     map.view = why.view;
     return map;

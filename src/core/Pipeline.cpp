@@ -100,7 +100,7 @@ ClusterSet buildClusters(const PreparedMesh& prepared, const Settings& settings,
     const PartClusters boundPart = [&](size_t part, size_t partCount, const std::vector<uint32_t>& faces, const Partition& partClusters) {
         const auto start = std::chrono::steady_clock::now();
         PartBounds made{boundsOfClusters(prepared.mesh(), prepared.world, prepared.faces, clusterRowsOf(faces.data(), partClusters), cone,
-                                         settings.sphere),
+                                         settings.sphere, &prepared.box),
                         true};
         std::lock_guard<std::mutex> lock(partsMutex);
         if (parts.size() != partCount) parts.assign(partCount, PartBounds{});  // a new start: its own parts

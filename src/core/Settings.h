@@ -32,8 +32,8 @@ struct Settings {
     std::vector<CullTest> tests{kDefaultTest};
     SphereMethod sphere = kDefaultSphere;
     uint32_t conesPerCluster = 1;     // K cones per cluster measured beside the one cone (1: none); 1, 2, 4 or 8
-    size_t views = 128;
-    double distance = 3.0;
+    size_t views = kStandardOrbitViews;
+    double distance = kStandardOrbitDistance;
     bool orthographic = false;
     std::optional<glm::dvec3> eye;    // a single eye instead of the orbit
     bool fixWinding = false;          // make face winding consistent before culling (orientable parts)

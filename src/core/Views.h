@@ -26,6 +26,10 @@ struct Eye {
 // y = 1 - 2(i + 0.5)/N, r = sqrt(1 - y^2), phi = i*pi*(3 - sqrt 5), d = (cos(phi) r, y, sin(phi) r).
 std::vector<glm::dvec3> spiralDirections(size_t count);
 
+// The standard orbit's size, the settings' default (Settings.h) and the chosen cone's (ChosenCones.h).
+constexpr size_t kStandardOrbitViews = 128;
+constexpr double kStandardOrbitDistance = 3.0;
+
 // The standard orbit: for i = 0..N-1, y = 1 - 2(i + 0.5)/N, r = sqrt(1 - y^2), phi = i*pi*(3 - sqrt 5),
 // eye = c + D*R*(cos(phi) r, y, sin(phi) r), c the AABB centre and R half its diagonal.
 // Orthographic views look from the same points towards c.

@@ -81,11 +81,11 @@ TEST(CliCompare, BestNeverCullsLessThanBalancedFromTheDefaultOrbit) {
 // measure by which its own search culled less; where it keeps its own, and at the default effort, it
 // says nothing of it.
 TEST(CliCompare, BestSaysWhenItKeepsTheBalancedPartition) {
-    const std::string rock = std::string(CONESCOPE_TESTDATA_DIR) + "/props/rock1.obj";
-    const nlohmann::json choice = runStatsJson({rock, "--effort", "best"})["best_effort"];
+    const std::string sign = std::string(CONESCOPE_TESTDATA_DIR) + "/props/emergencySign.obj";
+    const nlohmann::json choice = runStatsJson({sign, "--effort", "best"})["best_effort"];
     ASSERT_EQ(choice["kept"], "balanced");
     ASSERT_EQ(choice["own_clusters"], choice["balanced_clusters"]);
-    const CliRun text = runCli({"stats", rock, "--quiet", "--effort", "best", "--format", "text"});
+    const CliRun text = runCli({"stats", sign, "--quiet", "--effort", "best", "--format", "text"});
     ASSERT_EQ(text.exitCode, 0) << text.err;
     EXPECT_NE(text.out.find("the best effort kept the balanced search's partition: at " + choice["balanced_clusters"].dump() +
                             " clusters each it culls more than best's own search"),
@@ -102,7 +102,7 @@ TEST(CliCompare, BestSaysWhenItKeepsTheBalancedPartition) {
     }
     EXPECT_GE(measures, 1u);
     for (const char* effort : {"balanced", "best"}) {
-        const std::string mesh = effort == std::string("best") ? dataset("torus.off") : rock;
+        const std::string mesh = effort == std::string("best") ? dataset("torus.off") : sign;
         const CliRun other = runCli({"stats", mesh, "--quiet", "--effort", effort, "--format", "text"});
         EXPECT_EQ(other.out.find("kept the balanced"), std::string::npos) << effort << ": " << other.out;
     }

@@ -41,7 +41,7 @@ TEST(CliGranularity, OneConeRowsEqualStats) {
         ++compared;
     }
     EXPECT_EQ(compared, 11u);
-    EXPECT_EQ(report["rows"][0]["record"], "minimal/octagon");  // the default first
+    EXPECT_EQ(report["rows"][0]["record"], "chosen/octagon");  // the default first
     for (const char* name : {"cones-2", "cones-4", "cones-8", "cones-2-compact", "cones-4-compact", "cones-8-compact", "triangle"}) {
         ASSERT_TRUE(rows.count(name)) << name;
         for (const char* key : {"record", "bytes_per_cluster", "bits_per_triangle", "efficiency", "culled_share", "tests_per_view", "false_culls"})
@@ -49,7 +49,7 @@ TEST(CliGranularity, OneConeRowsEqualStats) {
         EXPECT_EQ(rows.at(name)["false_culls"], 0) << name;
     }
     EXPECT_LE(rows.at("cones-4-compact")["bytes_per_cluster"].get<int>(), 32);
-    EXPECT_GT(rows.at("cones-4")["efficiency"].get<double>(), rows.at("minimal/octagon")["efficiency"].get<double>());
+    EXPECT_GT(rows.at("cones-4")["efficiency"].get<double>(), rows.at("chosen/octagon")["efficiency"].get<double>());
     EXPECT_EQ(rows.at("triangle")["efficiency"], 1.0);
 }
 
@@ -62,10 +62,10 @@ TEST(CliGranularity, CsvAndTextCarryTheRows) {
     const std::vector<std::string> lines = splitLines(csvRun.out);
     ASSERT_EQ(lines.size(), 1u + 1u + 6u + 1u);  // header, the apex test, six K-cone records, triangle
     EXPECT_EQ(lines[0].rfind("record,bytes_per_cluster,bits_per_triangle,efficiency,culled_share,tests_per_view,false_culls", 0), 0u);
-    EXPECT_EQ(lines[1].rfind("minimal/apex,28,", 0), 0u);
+    EXPECT_EQ(lines[1].rfind("chosen/apex,28,", 0), 0u);
     EXPECT_EQ(lines.back().rfind("triangle,28,", 0), 0u);  // per-triangle after the apex test
     EXPECT_NE(textRun.out.find("cones-4-compact"), std::string::npos);
-    EXPECT_NE(textRun.out.find("per-triangle culling after the minimal/apex cluster test"), std::string::npos);
+    EXPECT_NE(textRun.out.find("per-triangle culling after the chosen/apex cluster test"), std::string::npos);
 }
 
 // --write-lesson writes the core's lesson on the same report as Markdown, beside the rows.

@@ -34,6 +34,7 @@ protected:
         Settings settings;
         settings.builder = Builder::Meshlet;
         settings.limits.maxTriangles = 64;
+        settings.cones = {ConeMethod::Minimal};  // the lesson's pair: the minimal cone beside the article's average one
         clusters_ = new ClusterSet(buildClusters(*prepared_, settings));
         // The first cluster the octagon test loses from this eye: every face turned away, yet drawn.
         for (uint32_t c = 0; c < clusters_->bounds.count() && !lesson_; ++c) {

@@ -164,7 +164,7 @@ private slots:
         // A's summary says its cone and test first (what A and B differ in), then its effort and budget:
         // an explicit budget is searched longer.
         QCOMPARE(window_->statisticsPanel()->value(QStringLiteral("A (pinned)")),
-                 QStringLiteral("minimal / octagon, optimized (balanced, default budget), 64/124"));
+                 QString::fromStdString(toString(kDefaultCone)) + QStringLiteral(" / octagon, optimized (balanced, default budget), 64/124"));
         // The picked cluster is shown under A too.
         window_->pickCluster(0);
         QVERIFY(window_->clusterReportHtml().contains(QStringLiteral("Under A (pinned): cluster %1").arg(window_->session().pinnedClusterOf(0))));

@@ -175,7 +175,7 @@ private slots:
         // As a user sets the boxes: the test last, after the clusters are built (and back first).
         const QByteArray steps = QStringLiteral(R"([{"open": "%1"}, {"set": {"views": 64, "distance": 3}},
             {"set": {"builder": "meshopt", "cone": "meshopt"}}, {"set": {"test": "apex"}}, {"pin": "A"},
-            {"set": {"test": "octagon"}}, {"set": {"builder": "optimized", "cone": "minimal"}}, {"export": "%2"}])")
+            {"set": {"test": "octagon"}}, {"set": {"builder": "optimized", "cone": "chosen"}}, {"export": "%2"}])")
                                      .arg(datasetPath("elephant.off"), out)
                                      .toUtf8();
         QCOMPARE(replay(QStringLiteral("meshopt-ab-replay.json"), steps, &errors), 0);

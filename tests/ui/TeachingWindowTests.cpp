@@ -387,7 +387,7 @@ private slots:
         }
         const QString cut = statisticsLayoutFault(*panel);
         QVERIFY2(cut.isEmpty(), qPrintable(cut));
-        QVERIFY(panel->value(QStringLiteral("A (pinned)")).startsWith(QStringLiteral("minimal / octagon")));
+        QVERIFY(panel->value(QStringLiteral("A (pinned)")).startsWith(QString::fromStdString(toString(kDefaultCone)) + QStringLiteral(" / octagon")));
         window_->clearPin();
         window_->setSettings(Settings{});
         window_->waitUntilIdle();
