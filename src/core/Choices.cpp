@@ -20,8 +20,8 @@ constexpr std::array<ConeDescriptor, kConeMethodCount> kCones = {{
     {ConeMethod::Meshopt, "meshopt", "meshoptimizer's cone (meshopt_computeClusterBounds).", {0.95, 0.35, 0.60},
      kOtherConesWording},
     {ConeMethod::Chosen, "chosen",
-     "Per cluster, the cone of the other four (with its apex, and its octagon at the best of 17 turns) whose octagon test culls "
-     "the cluster from the most eyes of the standard orbit (128 eyes at 3 half-diagonals).",
+     "Per cluster, the cone of the other four (with its apex as far forward as the faces allow) whose octagon test culls "
+     "the cluster from the most of 4,096 eyes on the standard orbit's sphere, 3 half-diagonals out. The default.",
      {0.70, 0.45, 1.00},
      "It is, of the offered cones, the one whose octagon culls this cluster from the most eyes; the narrowest (minimal) needs "
      "\u03b1 = {minimal}, the article's average {average}. "},

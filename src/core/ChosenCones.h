@@ -1,8 +1,8 @@
 // The default cone (ConeMethod::Chosen): per cluster, of the cones the tool offers (minimal,
-// meshoptimizer's, average, seed-sphere) and the octagon's sixteen turns, the one whose octagon
-// test culls the cluster from the most eyes of the standard orbit. Each candidate is a whole cone
-// with its own apex and octagon, so the choice stays conservative and the record keeps its size;
-// it only picks, per cluster, which of the offered records to store.
+// meshoptimizer's, average, seed-sphere), the one whose octagon test culls the cluster from the
+// most eyes of the standard orbit. Each candidate is a whole cone with its own apex and octagon,
+// so the choice stays conservative and the record keeps its size; it only picks, per cluster,
+// which of the offered records to store.
 #pragma once
 
 #include <cstddef>
@@ -21,16 +21,26 @@ enum class ConeMethod;  // ClusterBounds.h
 
 // The eyes the choice counts: on the standard orbit's sphere (kStandardOrbitDistance, Views.h)
 // around the object's box, kChoiceEyes of them. Dense, so that the choice follows the share of that
-// sphere each record culls, not where a few eyes happen to fall. They are kept in groups of
-// neighbours, so that a record is compared with a whole group at once where it can be.
+// sphere each record culls, not where a few eyes happen to fall.
 constexpr size_t kChoiceEyes = 4096;
+
+// Their directions in groups of neighbours, and each group in subgroups, so that a record is
+// compared with a whole group or subgroup at once where it can be. The same for every object.
+struct DirectionGroups {
+    std::vector<glm::dvec3> directions;  // unit, by subgroup
+    std::vector<uint32_t> groupStarts;   // the subgroups of each group, with a trailing end
+    std::vector<glm::dvec3> groupCenters;
+    std::vector<double> groupReach;      // every direction of the group within this of its centre
+    std::vector<uint32_t> subStarts;     // the directions of each subgroup, with a trailing end
+    std::vector<glm::dvec3> subCenters;
+    std::vector<double> subReach;
+};
+
 struct ChoiceEyes {
     glm::dvec3 center{0.0};
-    double radius = 1.0;                  // the sphere's
-    std::vector<glm::dvec3> positions;    // by group
-    std::vector<uint32_t> groupStarts;    // rows of positions, with a trailing end
-    std::vector<glm::dvec3> groupCenters; // unit; every direction of the group within groupReach of it
-    std::vector<double> groupReach;
+    double radius = 1.0;                      // the sphere's
+    const DirectionGroups* groups = nullptr;
+    std::vector<glm::dvec3> positions;        // center + radius x direction, in the groups' order
 };
 ChoiceEyes choiceEyes(const Aabb& objectBox);
 
@@ -40,7 +50,6 @@ size_t eyesCulled(const OctagonCone& octagon, const glm::dvec3& apex, const Choi
 
 struct ChosenCone {
     ConeMethod method;            // whose axis (and apex) it is
-    int turn = -1;                // the octagon's sides at turn x 45/16 degrees; -1: turned to the least area
     ConeOfNormals cone;
     glm::dvec3 apex{0.0};
     OctagonCone octagon;

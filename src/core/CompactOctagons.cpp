@@ -10,6 +10,7 @@ namespace conescope {
 
 namespace {
 
+constexpr int kTurnSteps = 16;       // over the octagon's 45 degree period
 constexpr uint32_t kApexLast = 4095;  // 12 bits
 constexpr int kAxisLast = 2047;       // signed 12 bits
 constexpr int kStripLast = 255;       // 8 bits
@@ -65,6 +66,8 @@ int stripCode(double value, bool up) {
     while (!up && code > 0 && stripValue(code) > value) --code;
     return code;
 }
+
+double turnAngle(int code) { return code * (M_PI / 4.0) / kTurnSteps; }
 
 // The apex's codes, or none when the point is off the grid.
 bool apexCodes(const glm::dvec3& point, const ApexGrid& grid, std::array<uint32_t, 3>& codes) {
@@ -159,8 +162,8 @@ CompactOctagon encodeCompactOctagon(const ConeOfNormals& cone, const Mesh& mesh,
     // Of the 16 turns, the one whose decoded octagon culls from the most directions.
     CompactOctagon best;
     double bestShare = 0.0;
-    for (int turn = 0; turn < kOctagonTurns; ++turn) {
-        const std::optional<OctagonStrips> strips = octagonStripsOf(axis, octagonTurnAngle(turn), normals.data(), normals.size());
+    for (int turn = 0; turn < kTurnSteps; ++turn) {
+        const std::optional<OctagonStrips> strips = octagonStripsOf(axis, turnAngle(turn), normals.data(), normals.size());
         if (!strips) return {};
         const CompactOctagon record = pack(apex, axisCode, turn, *strips);
         const double share = octagonCullShare(decodeCompactOctagon(record, grid).octagon);
@@ -175,7 +178,7 @@ DecodedOctagon decodeCompactOctagon(const CompactOctagon& record, const ApexGrid
     for (uint32_t& code : apex) code = bits.get(12);
     const int x = bits.getSigned(12), y = bits.getSigned(12);
     OctagonStrips strips;
-    strips.turn = octagonTurnAngle(int(bits.get(4)));
+    strips.turn = turnAngle(int(bits.get(4)));
     bool open = false;
     for (int j = 0; j < 4; ++j) {
         const int high = int(bits.get(8)), low = int(bits.get(8));

@@ -15,7 +15,6 @@
 #pragma once
 
 #include <array>
-#include <cmath>
 #include <cstddef>
 #include <optional>
 
@@ -71,10 +70,6 @@ struct OctagonStrips {
     double turn = 0.0;  // radians
     std::array<double, 4> low{}, high{};
 };
-// The turns an octagon's sides may take over their 45 degree period (the compact record's 4 bits,
-// the chosen cone's candidates): turn t puts them at t x 45/16 degrees.
-constexpr int kOctagonTurns = 16;
-inline double octagonTurnAngle(int turn) { return turn * (M_PI / 4.0) / kOctagonTurns; }
 // The strips of these normals (zero normals left out) at this turn, padded against rounding as
 // octagonCone pads its own; empty when some normal is not in front of the axis.
 std::optional<OctagonStrips> octagonStripsOf(const glm::dvec3& axis, double turn, const glm::dvec3* normals, size_t count);

@@ -24,10 +24,18 @@ TEST(ChosenCone, EyesAreTheStandardOrbitsAtTheChoicesViews) {
     for (const Eye& eye : orbit) theirs.push_back(eye.position);
     std::sort(ours.begin(), ours.end(), less), std::sort(theirs.begin(), theirs.end(), less);
     EXPECT_EQ(ours, theirs);  // bit for bit: a run at kChoiceEyes views looks from these eyes
-    // Every group's directions lie within its reach of its centre.
-    for (size_t g = 0; g + 1 < eyes.groupStarts.size(); ++g)
-        for (uint32_t i = eyes.groupStarts[g]; i < eyes.groupStarts[g + 1]; ++i)
-            EXPECT_LE(glm::length((eyes.positions[i] - eyes.center) / eyes.radius - eyes.groupCenters[g]), eyes.groupReach[g]);
+    // Every direction is its eye's, and lies within the reach of its subgroup's and its group's centres.
+    const DirectionGroups& groups = *eyes.groups;
+    ASSERT_EQ(groups.directions.size(), eyes.positions.size());
+    size_t seen = 0;
+    for (size_t g = 0; g + 1 < groups.groupStarts.size(); ++g)
+        for (uint32_t s = groups.groupStarts[g]; s < groups.groupStarts[g + 1]; ++s)
+            for (uint32_t i = groups.subStarts[s]; i < groups.subStarts[s + 1]; ++i, ++seen) {
+                EXPECT_NEAR(glm::length((eyes.positions[i] - eyes.center) / eyes.radius - groups.directions[i]), 0.0, 1e-12);
+                EXPECT_LE(glm::length(groups.directions[i] - groups.subCenters[s]), groups.subReach[s]);
+                EXPECT_LE(glm::length(groups.directions[i] - groups.groupCenters[g]), groups.groupReach[g]);
+            }
+    EXPECT_EQ(seen, kChoiceEyes);
 }
 
 TEST(ChosenCone, CountsTheEyesExactlyAsTheOctagonTest) {
