@@ -98,7 +98,7 @@ with open(md_path, "w") as md:
     md.write("# Every CGAL demo mesh: each effort level against meshoptimizer's pipeline\n\n")
     md.write(f"`scripts/bench-all-meshes.sh`, {len(rows)} files, {len(measured)} measured, {seconds} s. 64 orbit views "
              "at distance 3, limits 64/124. A = meshoptimizer's builder, cone and apex test (cone weight 1); "
-             "B = the defaults (optimized builder at meshoptimizer's count, minimal cone, octagon test) at the effort "
+             "B = the defaults (optimized builder at meshoptimizer's count, chosen cone, octagon test) at the effort "
              f"of the column; `{DEFAULT}` is the default.\n\n")
     md.write("| | fast | balanced (default) | best |\n|---|---:|---:|---:|\n")
     md.write("| geometric mean of culled back faces / meshoptimizer's | "

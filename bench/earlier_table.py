@@ -119,7 +119,7 @@ def main():
         writer.writerows(rows)
     lines = [f"# {title}: the default against an earlier build's", "",
              f"{len(rows)} meshes, {len(rows) - len(good)} that do not read in one of the builds; `conescope-cli compare` "
-             "at 64 views, distance 3, limits 64/124, the default record (minimal cone, octagon test) against "
+             "at 64 views, distance 3, limits 64/124, the default record (chosen cone, octagon test) against "
              "meshoptimizer's pipeline (its builder at cone weight 1, its cone, apex test). Ratio: the default's "
              "efficiency over the earlier build's default, at equal counts (within 5%), where both cull (1 where "
              "neither does). Below 0.8x: culls less than 0.8 times the earlier build's. Losses: less culled than "

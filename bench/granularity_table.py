@@ -11,7 +11,7 @@ import sys
 from collections import defaultdict
 
 cli, list_path, out, root = sys.argv[1], sys.argv[2], sys.argv[3], sys.argv[4]
-DEFAULT = "minimal/octagon"
+DEFAULT = "chosen/octagon"
 ENGINE = {"meshopt-apex-f32", "meshopt-sphere-s8", "cadscene-box-s8"}
 runs, failed = [], []
 for line in open(list_path):
@@ -63,9 +63,9 @@ def summary(group):
 
 
 text = ["64 orbit views at distance 3, the default partition (limits 64/124) of each mesh; one cone per cluster: "
-        "each test with the minimal cone; K cones: the cluster's faces in K sub-groups, a minimal cone and an apex on its axis "
+        "each test with the default (chosen) cone; K cones: the cluster's faces in K sub-groups, a minimal cone and an apex on its axis "
         "each, the apex test per sub-group; triangle: every back face culled after the default cluster test. "
-        "Culled share: of all triangles, per view. × default: back faces culled over the default record's (minimal/octagon).", ""]
+        "Culled share: of all triangles, per view. × default: back faces culled over the default record's (chosen/octagon).", ""]
 for group, title in (("cgal", "CGAL demo meshes"), ("props", "Sweet Home 3D furniture")):
     count, lines = summary(group)
     text += [f"### {title} ({count} meshes)", ""] + lines + [""]

@@ -48,7 +48,7 @@ def row(name, rows_of):
 
 
 lines = [f"{len(measured)} meshes measured, {len(failed)} not read, in {seconds} s; 64 views at distance 3, the default "
-         "builder, minimal cone and octagon test at every level, and four cones per cluster (granularity's cones-4 record); "
+         "builder, chosen cone and octagon test at every level, and four cones per cluster (granularity's cones-4 record); "
          "the cut at 1 pixel (1080 pixels high, 60 degrees). Means over the meshes where level 0 culls with one cone.", ""]
 lines.append("| level | meshes | 1 cone: efficiency | 1 cone: kept of level 0's | 4 cones: efficiency | 4 cones: kept of level 0's | "
              "4 cones / 1 cone |")

@@ -86,7 +86,7 @@ Partition meshletPartition(const bench::MeshletTriangles& triangles) {
 
 // ConeScope's preparation as the product makes it: meshoptimizer's meshlets (where the builder
 // starts there) started on another core before world positions and face geometry are computed,
-// then buildClusters: the partition, refining parts as they come, and each part's bounds (minimal
+// then buildClusters: the partition, refining parts as they come, and each part's bounds (chosen
 // cone, its octagon, minimal sphere) and cull map as soon as the part is made. The mesh checks of
 // prepareMesh are left out, as meshoptimizer makes none.
 Measurement prepareConeScope(const Mesh& mesh, const Settings& settings) {

@@ -143,7 +143,7 @@ int main(int argc, char** argv) {
         std::string command;
         for (int i = 0; i < argc; ++i) command += (i ? " " : "") + std::string(i ? argv[i] : "conescope-bench-records");
         md << "# Culling per byte of record\n\n`" << command << "`: " << measured << " meshes, " << views << " orbit views at distance "
-           << distance << ", limits 64/124, the minimal cone; the default partition (optimized, balanced, at meshoptimizer's count) and "
+           << distance << ", limits 64/124, the default (chosen) cone; the default partition (optimized, balanced, at meshoptimizer's count) and "
            << "meshoptimizer's own meshlets (cone weight 1). Efficiency: back faces culled / back faces, the mean over the meshes; per "
            << "byte: that over the record's bytes per cluster. False culls: summed over meshes, views and both partitions.\n\n";
         if (!skipped.empty()) {
