@@ -15,7 +15,7 @@ namespace {
 // The index of the nearest of the `count` spiral directions (spiralDirections) to a unit direction:
 // the spiral runs down in y, so it is among those whose y is near the direction's.
 uint32_t nearestSpiral(const glm::dvec3& direction, const std::vector<glm::dvec3>& spiral) {
-    const long count = long(spiral.size()), window = 3 * long(std::sqrt(double(count))) / 2;
+    const long count = long(spiral.size()), window = long(std::sqrt(double(count)));
     const long guess = std::lround((1.0 - direction.y) * double(count) / 2.0 - 0.5);
     long nearest = std::clamp(guess, 0L, count - 1);
     for (long i = std::max(0L, guess - window); i <= std::min(count - 1, guess + window); ++i)

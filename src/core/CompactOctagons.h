@@ -5,7 +5,7 @@
 //   apex     3 x 12 bits  unsigned, on a grid over the object's box grown by half its largest side on
 //                         every side; the apex is pushed back along the axis until the grid point is
 //                         behind every face plane (checked in double)
-//   axis     2 x 12 bits  signed, octahedral (value / 2047), the normals' minimal cone's axis rounded
+//   axis     2 x 12 bits  signed, octahedral (value / 2047), the axis of the run's cone rounded
 //                         to nearest; the octagon is then built around the decoded axis
 //   turn     4 bits       the sides' turn, t x 45/16 degrees (the turn of the 16 that culls most)
 //   strips   8 x 8 bits   high, low of each of the four strips (sides at turn + k 45 degrees) in the
