@@ -202,7 +202,8 @@ ClusterBounds computeClusterBounds(const Mesh& mesh, const std::vector<glm::vec3
     const size_t clusterCount = partition.clusterCount;
     // Clusters are bounded independently, in consecutive pieces on all cores, joined in order.
     const size_t pieces = piecesFor(clusterCount, 64);
-    const Aabb objectBox = computeAabb(world);
+    // The chosen cone's eyes are around the whole object: its box found once, not per piece.
+    const Aabb objectBox = coneMethod == ConeMethod::Chosen ? computeAabb(world) : Aabb{};
     std::vector<ClusterBounds> pieceBounds(pieces);
     forEachInParallel(pieces, [&](size_t piece, size_t) {
         const size_t begin = pieceBegin(clusterCount, pieces, piece), end = pieceBegin(clusterCount, pieces, piece + 1);

@@ -26,7 +26,8 @@ struct Eye {
 // y = 1 - 2(i + 0.5)/N, r = sqrt(1 - y^2), phi = i*pi*(3 - sqrt 5), d = (cos(phi) r, y, sin(phi) r).
 std::vector<glm::dvec3> spiralDirections(size_t count);
 
-// The standard orbit's size, the settings' default (Settings.h) and the chosen cone's (ChosenCones.h).
+// The standard orbit: the settings' default views and distance (Settings.h); the chosen cone counts
+// eyes on its sphere (ChosenCones.h).
 constexpr size_t kStandardOrbitViews = 128;
 constexpr double kStandardOrbitDistance = 3.0;
 
