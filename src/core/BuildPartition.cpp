@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "FileBuilder.h"
+#include "Statistics.h"
 #include "meshopt/Meshopt.h"
 
 namespace conescope {
@@ -36,8 +37,12 @@ Partition buildPartition(const Mesh& mesh, const FaceGeometry& faces, const Sett
             return buildKMeans(mesh, faces, target, settings.normalWeight);
         }
         case Builder::Meshopt: return buildMeshoptMeshlets(mesh, settings.limits, settings.meshoptConeWeight);
-        case Builder::Optimized: return buildOptimizedClusters(mesh, faces, settings.limits, settings.clusterCount, progress, settings.effort,
-                                                                 meshlets, partDone, settings.conesPerCluster, choice);
+        case Builder::Optimized: {
+            // The best effort keeps whichever of its two searches culls more as this run measures it.
+            const PartitionMeasure shown = [&](const Partition& partition) { return shownEfficiency(mesh, faces, partition, settings); };
+            return buildOptimizedClusters(mesh, faces, settings.limits, settings.clusterCount, progress, settings.effort, meshlets,
+                                          partDone, settings.conesPerCluster, choice, shown);
+        }
         case Builder::File: {
             // A meshlet file read with the mesh, an id file read into the settings, or the mesh's own.
             if (const FileClusters* meshlets = meshletClusters(mesh, settings.clusterFile)) return {meshlets->clusterOfFace, meshlets->clusterCount};

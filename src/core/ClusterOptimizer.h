@@ -36,6 +36,10 @@ size_t fewestClustersWithin(const Mesh& mesh, const MeshletLimits& limits);
 // holding every face, with the partition returned.
 using PartClusters = std::function<void(size_t part, size_t parts, const std::vector<uint32_t>& faces, const Partition& clusters)>;
 
+// The culling efficiency a run reports for a partition (its shown cone and test from its views), so
+// that the best effort never culls less there than balanced (buildPartition makes it from Settings).
+using PartitionMeasure = std::function<double(const Partition&)>;
+
 // Maximises expectedCullRate under the vertex/triangle limits at a budget of targetClusters (0:
 // defaultClusterBudget): from meshoptimizer's meshlets or from grown clusters reduced to the budget,
 // then local search, on parts of the mesh at once (docs/dev/architecture.md, "The optimized builder",
@@ -50,12 +54,13 @@ using PartClusters = std::function<void(size_t part, size_t parts, const std::ve
 // Its thread helps with the parts once its meshlets are made, so a stream serves one build.
 // `conesPerCluster` > 1: at the balanced and best efforts the partition is built for that many cones
 // per cluster (optimizer/ForCones.h), and no part is heard. `choice`, when given, hears what the
-// best effort chose between its two searches (ran = false at the other efforts).
+// best effort chose between its two searches (ran = false at the other efforts), `measure` (empty:
+// as `stats` with no options measures) what it tells them apart by at one count.
 Partition buildOptimizedClusters(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits,
                                  size_t targetClusters = 0, const ProgressCallback& progress = {},
                                  Effort effort = Effort::Balanced, MeshletStream* meshlets = nullptr,
                                  const PartClusters& partDone = {}, uint32_t conesPerCluster = 1,
-                                 BestEffortChoice* choice = nullptr);
+                                 BestEffortChoice* choice = nullptr, const PartitionMeasure& measure = {});
 
 // The annealing sweeps buildOptimizedClusters makes at `effort` on a mesh of `faceCount` faces
 // from meshoptimizer's meshlets in `meshletParts` parts (meshletPartsFor), on each part when there

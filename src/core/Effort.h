@@ -16,7 +16,7 @@ namespace conescope {
 //  Best:     clusters grown from like normals and reduced to the budget, also started from
 //            meshoptimizer's meshlets where growth misses the budget or the mesh is small, and up
 //            to 100 annealing sweeps; then the balanced search too, whose partition is kept where
-//            it is nearer the budget or culls more in expectation or from the default orbit (best
+//            it is nearer the budget or culls more in expectation or as the run measures it (best
 //            never below balanced in either; BestEffortChoice says which was kept).
 //            Several times slower; culls the most.
 // Fast and Balanced grow clusters too when the budget is above meshoptimizer's count.
@@ -24,13 +24,13 @@ enum class Effort { Fast, Balanced, Best };
 
 // What the best effort's two searches made (buildOptimizedClusters, ClusterOptimizer.h), so a run can
 // say when best gave the balanced search's partition and why: its own came farther from the budget,
-// or at one count culled less in expectation over far views (expectedCullRate) or as `stats` with no
-// options measures it (the default cone and test from the default orbit).
+// or at one count culled less in expectation over far views (expectedCullRate) or as the run measures
+// it (its shown cone and test from its views: shownEfficiency, Statistics.h).
 struct BestEffortChoice {
     bool ran = false;           // the best effort built both; nothing else below is set otherwise
     bool keptBalanced = false;  // the partition returned is the balanced search's
     size_t ownClusters = 0, balancedClusters = 0;
-    double ownEfficiency = 0.0, balancedEfficiency = 0.0;  // from the default orbit, default cone and test
+    double ownEfficiency = 0.0, balancedEfficiency = 0.0;  // as the run measures it (shownEfficiency)
     double ownExpected = 0.0, balancedExpected = 0.0;      // expectedCullRate
 };
 

@@ -34,14 +34,6 @@ void useStoredMeshletBounds(ClusterBounds& bounds, const Mesh& mesh, const Setti
 
 }  // namespace
 
-ConeMethod displayedCone(const Settings& settings) {
-    return settings.cones.empty() ? ConeMethod::Minimal : settings.cones.front();
-}
-
-CullTest displayedTest(const Settings& settings) {
-    return settings.tests.empty() ? CullTest::Vertices : settings.tests.front();
-}
-
 bool partitionChanged(const Settings& before, const Settings& after) {
     const std::optional<Stage> stale = firstStaleStage(before, after);
     return stale && *stale <= Stage::Clusters;

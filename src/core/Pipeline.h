@@ -57,10 +57,6 @@ struct ClusterSet {
     BestEffortChoice bestEffort;  // what --effort best chose between its two searches (ran = false otherwise)
 };
 
-// The first cone method and cull test of the settings: the ones the window shows.
-ConeMethod displayedCone(const Settings& settings);
-CullTest displayedTest(const Settings& settings);
-
 // True when going from `before` to `after` needs a new partition (builder or its parameters).
 bool partitionChanged(const Settings& before, const Settings& after);
 // True when it needs new bounds (a new partition, cone method or sphere method).

@@ -91,6 +91,14 @@ const std::vector<Builder>& allBuilders() { return allOf(builderNames()); }
 const std::vector<SphereMethod>& allSphereMethods() { return allOf(sphereNames()); }
 const std::vector<Effort>& allEfforts() { return allOf(effortNames()); }
 
+ConeMethod displayedCone(const Settings& settings) {
+    return settings.cones.empty() ? ConeMethod::Minimal : settings.cones.front();
+}
+
+CullTest displayedTest(const Settings& settings) {
+    return settings.tests.empty() ? CullTest::Vertices : settings.tests.front();
+}
+
 std::vector<Eye> viewsFor(const Settings& settings, const Aabb& worldBox) {
     if (settings.eye) {
         if (!settings.orthographic) return {Eye::perspective(*settings.eye)};

@@ -55,6 +55,11 @@ const std::vector<Builder>& allBuilders();
 const std::vector<SphereMethod>& allSphereMethods();
 const std::vector<Effort>& allEfforts();
 
+// The first cone method and cull test of the settings: the ones the window shows and a run's
+// summary heads with.
+ConeMethod displayedCone(const Settings& settings);
+CullTest displayedTest(const Settings& settings);
+
 // The views a run uses: the single eye if set, else the standard orbit around the world AABB.
 std::vector<Eye> viewsFor(const Settings& settings, const Aabb& worldBox);
 

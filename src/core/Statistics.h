@@ -118,9 +118,14 @@ double uncullableShare(size_t uncullableClusters, size_t clusters);
 std::string uncullableNote(size_t uncullableClusters, size_t clusters);
 
 // A sentence for the user when --effort best kept the balanced search's partition (BestEffortChoice),
-// saying why: best's own came farther from the budget, or culled less from the default orbit (the
-// default cone and test, `stats` with no options). Empty when best kept its own or did not run.
+// saying why: best's own came farther from the budget, or culled less as the run measures it (its
+// shown cone and test from its views) or in expectation. Empty when best kept its own or did not run.
 std::string bestEffortNote(const BestEffortChoice& choice);
+
+// The efficiency a run with these settings reports for this partition of the mesh: its shown cone
+// and test (displayedCone, displayedTest) from its views around the world box, as runStatistics
+// measures it. What the best effort tells its two searches apart by (buildPartition).
+double shownEfficiency(const Mesh& mesh, const FaceGeometry& faces, const Partition& partition, const Settings& settings);
 
 // Statistics for one (cone, test) over the given views from prepared bounds. `progress` hears of
 // every 16th view and may cancel there (OperationCancelled).

@@ -142,4 +142,12 @@ TEST(SettingsSchema, AChangeMakesItsStageAndLaterOnesStale) {
     kmeans.clusterCount = 12;
     EXPECT_EQ(staleAfter("max_triangles", "64", kmeans), std::nullopt);
     EXPECT_EQ(staleAfter("clusters_target", "13", kmeans), Stage::Clusters);
+    // The best effort keeps whichever of its two searches culls more as the run measures it: the
+    // measure's settings choose its partition too.
+    Settings best = base;
+    best.effort = Effort::Best;
+    for (const auto& [key, text] : std::vector<std::pair<std::string, std::string>>{
+             {"views", "7"}, {"distance", "5"}, {"tests", "apex"}, {"cones", "minimal"}, {"sphere", "ritter"}, {"orthographic", "true"}})
+        EXPECT_EQ(staleAfter(key, text, best), Stage::Clusters) << key;
+    EXPECT_EQ(staleAfter("fix_winding", "true", best), Stage::PreparedMesh);
 }

@@ -351,37 +351,30 @@ Partition climbed(const BuildInputs& in, const BuildPlan& plan, const ProgressCa
     return best;
 }
 
-// What `stats` with no options says a partition culls (the default cone and test, the standard
-// orbit's views and distance): how the best level tells its two runs apart at one count, so that it
-// never culls less there than balanced.
-double defaultOrbitEfficiency(const Mesh& mesh, const FaceGeometry& faces, const Partition& partition) {
-    const ClusterBounds bounds = computeClusterBounds(mesh, mesh.positions, faces, partition, kDefaultCone, kDefaultSphere);
-    const Settings defaults;
-    const std::vector<Eye> views = orbitViews(computeAabb(mesh.positions), defaults.views, defaults.distance);
-    return measureCulling({mesh, mesh.positions, faces, bounds}, views, kDefaultTest).efficiency;
-}
-
 // The best level's search, then the balanced one's, and the better kept: nearer the budget; at one
-// count its own only where it culls at least as much both in expectation over far views and from
-// the default orbit (the best level's larger clusters of like normals can cull less from up close,
-// and its longer search from grown clusters can end in a worse basin: on foliage,
+// count its own only where it culls at least as much both in expectation over far views and as the
+// run measures it, `measure` (the best level's larger clusters of like normals can cull less from up
+// close, and its longer search from grown clusters can end in a worse basin: on foliage,
 // docs/benchmarks.md). So best never culls less than the default there nor makes more clusters;
 // `choice` hears which was kept and why. The balanced run takes the last tenth of the progress;
 // where it is kept it is heard as one part.
 Partition bestOfBoth(const BuildInputs& in, const BuildPlan& plan, const ProgressCallback& progress, const PartClusters& partDone,
-                     BestEffortChoice& choice) {
+                     const PartitionMeasure& measure, BestEffortChoice& choice) {
     Partition best = atBudget(in, plan, progressShare(progress, 0.0, 0.9), partDone);
     // The default count asked for is the default: its balanced run is the default's (no climb).
     const size_t defaultCount = defaultClusterBudget(in.mesh, in.limits);
     const size_t target = plan.budget != 0 ? plan.budget : defaultCount;
     Partition balanced = buildOptimizedClusters(in.mesh, in.faces, in.limits, target == defaultCount ? 0 : target,
                                                 progressShare(progress, 0.9, 1.0), Effort::Balanced, in.meshlets, {});
+    auto measured = [&](const Partition& partition) {
+        return measure ? measure(partition) : shownEfficiency(in.mesh, in.faces, partition, Settings{});
+    };
     choice = {true,
               false,
               best.clusterCount,
               balanced.clusterCount,
-              defaultOrbitEfficiency(in.mesh, in.faces, best),
-              defaultOrbitEfficiency(in.mesh, in.faces, balanced),
+              measured(best),
+              measured(balanced),
               expectedCullRate(in.mesh, in.faces, best),
               expectedCullRate(in.mesh, in.faces, balanced)};
     const std::optional<bool> balancedNearer = nearerTheBudget(balanced.clusterCount, best.clusterCount, target);
@@ -398,7 +391,7 @@ Partition bestOfBoth(const BuildInputs& in, const BuildPlan& plan, const Progres
 Partition buildOptimizedClusters(const Mesh& mesh, const FaceGeometry& faces, const MeshletLimits& limits,
                                  size_t targetClusters, const ProgressCallback& progress, Effort effort,
                                  MeshletStream* meshlets, const PartClusters& partDone, uint32_t conesPerCluster,
-                                 BestEffortChoice* choice) {
+                                 BestEffortChoice* choice, const PartitionMeasure& measure) {
     BestEffortChoice made;
     if (choice) *choice = made;
     if (mesh.faceCount() == 0) return {};
@@ -417,7 +410,7 @@ Partition buildOptimizedClusters(const Mesh& mesh, const FaceGeometry& faces, co
     const PartClusters& heard = plan.forCones > 1 ? none : partDone;
     const double built = plan.forCones > 1 ? 0.8 : 1.0;  // the moves for K cones take the rest
     const ProgressCallback building = built < 1.0 ? progressShare(progress, 0.0, built) : progress;
-    Partition partition = plan.alsoBalanced ? bestOfBoth(in, plan, building, heard, choice ? *choice : made)
+    Partition partition = plan.alsoBalanced ? bestOfBoth(in, plan, building, heard, measure, choice ? *choice : made)
                           : plan.climb      ? climbed(in, plan, building, heard)
                                             : atBudget(in, plan, building, heard);
     if (plan.forCones > 1)
