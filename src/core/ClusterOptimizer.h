@@ -47,8 +47,7 @@ using PartitionMeasure = std::function<double(const Partition&)>;
 // meshoptimizer's count, and never more than that count. An explicit budget those steps miss is
 // packed to (compact clusters, which cull less), on meshes up to 2^17 faces, where packing reaches
 // it. The same input gives the same partition on any number of cores.
-// `progress` hears (parts done / parts, "clusters") as parts finish, on the calling thread;
-// returning false stops the parts not yet started and throws OperationCancelled.
+// `progress` hears (parts done / parts, "clusters") as parts finish; false cancels (OperationCancelled).
 // `meshlets`: meshoptimizer's meshlets of this mesh at these limits when startsFromMeshoptMeshlets,
 // already started (say while the mesh was being prepared); started here when needed and not given.
 // Its thread helps with the parts once its meshlets are made, so a stream serves one build.
