@@ -65,7 +65,7 @@ struct BuildPlan {
     // The balanced level's climb from the fewest clusters, one cluster at a time (climbStride).
     bool climb = false;
     // The best level runs the balanced plan too and keeps the better: nearer the budget, then what
-    // `stats` with no options measures (never below the default there).
+    // the run measures (never below the default there).
     bool alsoBalanced = false;
     // For K > 1 cones per cluster, balanced and best move faces afterwards while the K sub-groups'
     // expected culling rises (optimizer/ForCones.h); best also tries moves the kept sub-groups
