@@ -40,7 +40,9 @@ struct ChoiceEyes {
     glm::dvec3 center{0.0};
     double radius = 1.0;                      // the sphere's
     const DirectionGroups* groups = nullptr;
-    std::vector<glm::dvec3> positions;        // center + radius x direction, in the groups' order
+    // The eye of the i-th direction, as orbitViews places it (so bit for bit its eye at kChoiceEyes
+    // views); made where asked, as few are.
+    glm::dvec3 position(size_t i) const { return center + radius * groups->directions[i]; }
 };
 ChoiceEyes choiceEyes(const Aabb& objectBox);
 

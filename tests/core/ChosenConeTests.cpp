@@ -18,20 +18,20 @@ TEST(ChosenCone, EyesAreTheStandardOrbitsAtTheChoicesViews) {
     const Aabb box{glm::vec3(-1.0f, 2.0f, 0.5f), glm::vec3(3.0f, 2.5f, 7.0f)};
     const ChoiceEyes eyes = choiceEyes(box);
     std::vector<Eye> orbit = orbitViews(box, kChoiceEyes, kStandardOrbitDistance);
-    ASSERT_EQ(eyes.positions.size(), orbit.size());
+    ASSERT_EQ(eyes.groups->directions.size(), orbit.size());
     const auto less = [](const glm::dvec3& a, const glm::dvec3& b) { return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z); };
-    std::vector<glm::dvec3> ours = eyes.positions, theirs;
+    std::vector<glm::dvec3> ours, theirs;
+    for (size_t i = 0; i < orbit.size(); ++i) ours.push_back(eyes.position(i));
     for (const Eye& eye : orbit) theirs.push_back(eye.position);
     std::sort(ours.begin(), ours.end(), less), std::sort(theirs.begin(), theirs.end(), less);
     EXPECT_EQ(ours, theirs);  // bit for bit: a run at kChoiceEyes views looks from these eyes
     // Every direction is its eye's, and lies within the reach of its subgroup's and its group's centres.
     const DirectionGroups& groups = *eyes.groups;
-    ASSERT_EQ(groups.directions.size(), eyes.positions.size());
     size_t seen = 0;
     for (size_t g = 0; g + 1 < groups.groupStarts.size(); ++g)
         for (uint32_t s = groups.groupStarts[g]; s < groups.groupStarts[g + 1]; ++s)
             for (uint32_t i = groups.subStarts[s]; i < groups.subStarts[s + 1]; ++i, ++seen) {
-                EXPECT_NEAR(glm::length((eyes.positions[i] - eyes.center) / eyes.radius - groups.directions[i]), 0.0, 1e-12);
+                EXPECT_NEAR(glm::length((eyes.position(i) - eyes.center) / eyes.radius - groups.directions[i]), 0.0, 1e-12);
                 EXPECT_LE(glm::length(groups.directions[i] - groups.subCenters[s]), groups.subReach[s]);
                 EXPECT_LE(glm::length(groups.directions[i] - groups.groupCenters[g]), groups.groupReach[g]);
             }
@@ -53,9 +53,11 @@ TEST(ChosenCone, CountsTheEyesExactlyAsTheOctagonTest) {
             const ChoiceEyes eyes = choiceEyes(computeAabb(world));
             for (size_t c = 0; c < bounds.count(); ++c) {
                 size_t oneByOne = 0;
-                for (const glm::dvec3& eye : eyes.positions)
+                for (size_t i = 0; i < kChoiceEyes; ++i) {
+                    const glm::dvec3 eye = eyes.position(i);
                     oneByOne += bounds.cones[c].cullable &&
                                 octagonSeesBack(bounds.octagons[c], bounds.apexes[c] - eye, apexRoundingSlack(bounds.apexes[c], eye));
+                }
                 EXPECT_EQ(eyesCulled(bounds.octagons[c], bounds.apexes[c], eyes), oneByOne) << "trial " << trial << " cluster " << c;
                 ++records, someCulled += oneByOne > 0;
             }

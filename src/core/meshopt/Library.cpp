@@ -132,9 +132,17 @@ MeshoptClusterBounds meshoptClusterBounds(const Mesh& mesh, const std::vector<gl
     // and trips its internal assertion (found by fuzzing). It gets the cluster's own vertices moved
     // to their box centre and scaled by a power of two to unit size instead; centre and apex are
     // mapped back. Normals and the cone do not change under this similarity.
-    std::vector<uint32_t> local(indices);
-    std::sort(local.begin(), local.end());
-    local.erase(std::unique(local.begin(), local.end()), local.end());
+    // The cluster's own vertices numbered as first met, through a map kept per thread: sorting them
+    // cost more than meshoptimizer's bounds themselves (the chosen cone asks for every cluster).
+    constexpr uint32_t kUnmet = std::numeric_limits<uint32_t>::max();
+    thread_local std::vector<uint32_t> localOf;
+    if (localOf.size() < world.size()) localOf.resize(world.size(), kUnmet);
+    std::vector<uint32_t> local;
+    for (uint32_t& index : indices) {
+        if (localOf[index] == kUnmet) localOf[index] = uint32_t(local.size()), local.push_back(index);
+        index = localOf[index];
+    }
+    for (uint32_t v : local) localOf[v] = kUnmet;
     glm::dvec3 low(world[local.front()]), high(low);
     for (uint32_t v : local) low = glm::min(low, glm::dvec3(world[v])), high = glm::max(high, glm::dvec3(world[v]));
     const glm::dvec3 middle = 0.5 * (low + high);
@@ -144,8 +152,6 @@ MeshoptClusterBounds meshoptClusterBounds(const Mesh& mesh, const std::vector<gl
     const double scale = std::ldexp(1.0, -exponent);
     std::vector<glm::vec3> scaled(local.size());
     for (size_t i = 0; i < local.size(); ++i) scaled[i] = glm::vec3((glm::dvec3(world[local[i]]) - middle) * scale);
-    for (uint32_t& index : indices)
-        index = uint32_t(std::lower_bound(local.begin(), local.end(), index) - local.begin());
     const meshopt_Bounds bounds =
         meshopt_computeClusterBounds(indices.data(), indices.size(), &scaled[0].x, scaled.size(), sizeof(glm::vec3));
     result.center = middle + glm::dvec3(bounds.center[0], bounds.center[1], bounds.center[2]) / scale;
