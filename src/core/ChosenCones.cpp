@@ -26,45 +26,47 @@ uint32_t cubeCell(const glm::dvec3& d, uint32_t n) {
     return (face * n + index(u)) * n + index(v);
 }
 
-// The group (3 x 3 cells a face) of a subgroup's cell (9 x 9 a face).
-uint32_t groupOfCell(uint32_t cell) {
-    const uint32_t face = cell / 81, u = cell / 9 % 9, v = cell % 9;
-    return (face * 3 + u / 3) * 3 + v / 3;
-}
-
 // The unit mean of some directions, and how far the farthest of them lies from it (with slack for
 // the rounding of the test that trusts it).
-std::pair<glm::dvec3, double> centreAndReach(const std::vector<glm::dvec3>& all, const std::vector<uint32_t>& members) {
+std::pair<glm::dvec3, double> centreAndReach(const glm::dvec3* directions, size_t count) {
     glm::dvec3 sum(0.0);
-    for (uint32_t i : members) sum += all[i];
+    for (size_t i = 0; i < count; ++i) sum += directions[i];
     const glm::dvec3 centre = glm::normalize(sum);
     double reach = 0.0;
-    for (uint32_t i : members) reach = std::max(reach, glm::length(all[i] - centre));
+    for (size_t i = 0; i < count; ++i) reach = std::max(reach, glm::length(directions[i] - centre));
     return {centre, reach * (1.0 + 1e-9) + 1e-12};
 }
 
-// The spiral's directions by cube cells: 486 subgroups of 9 x 9 cells a face in 54 groups of 3 x 3.
-// Any grouping counts exactly (the reach is measured from the members); near cells prune well.
+// The spiral's directions by cube cells: 486 subgroups of 9 x 9 cells a face in 54 groups of 3 x 3,
+// ordered by group then subgroup (one counting sort). Any grouping counts exactly (the reach is
+// measured from the members); near cells prune well.
 DirectionGroups groupDirections() {
+    constexpr uint32_t kCells = 6 * 81;
     const std::vector<glm::dvec3> all = spiralDirections(kChoiceEyes);
-    std::vector<std::vector<uint32_t>> byCell(6 * 81);
-    for (uint32_t i = 0; i < all.size(); ++i) byCell[cubeCell(all[i], 9)].push_back(i);
+    // A cell's rank in the order: its group (face, u / 3, v / 3), then its place within the group.
+    auto rankOf = [](uint32_t cell) {
+        const uint32_t face = cell / 81, u = cell / 9 % 9, v = cell % 9;
+        return (((face * 3 + u / 3) * 3 + v / 3) * 3 + u % 3) * 3 + v % 3;
+    };
+    std::vector<uint32_t> rank(all.size()), starts(kCells + 1, 0);
+    for (size_t i = 0; i < all.size(); ++i) ++starts[(rank[i] = rankOf(cubeCell(all[i], 9))) + 1];
+    for (uint32_t r = 0; r < kCells; ++r) starts[r + 1] += starts[r];
     DirectionGroups groups;
+    groups.directions.resize(all.size());
+    std::vector<uint32_t> next(starts.begin(), starts.end() - 1);
+    for (size_t i = 0; i < all.size(); ++i) groups.directions[next[rank[i]]++] = all[i];
     groups.groupStarts.push_back(0);
     groups.subStarts.push_back(0);
-    for (uint32_t g = 0; g < 6 * 9; ++g) {
-        std::vector<uint32_t> groupMembers;
-        for (uint32_t cell = 0; cell < byCell.size(); ++cell) {
-            if (groupOfCell(cell) != g || byCell[cell].empty()) continue;
-            const auto [centre, reach] = centreAndReach(all, byCell[cell]);
-            for (uint32_t i : byCell[cell]) groups.directions.push_back(all[i]);
-            groupMembers.insert(groupMembers.end(), byCell[cell].begin(), byCell[cell].end());
+    for (uint32_t g = 0; g < kCells / 9; ++g) {
+        for (uint32_t r = 9 * g; r < 9 * g + 9; ++r) {
+            if (starts[r] == starts[r + 1]) continue;
+            const auto [centre, reach] = centreAndReach(&groups.directions[starts[r]], starts[r + 1] - starts[r]);
             groups.subCenters.push_back(centre);
             groups.subReach.push_back(reach);
-            groups.subStarts.push_back(uint32_t(groups.directions.size()));
+            groups.subStarts.push_back(starts[r + 1]);
         }
-        if (groupMembers.empty()) continue;
-        const auto [centre, reach] = centreAndReach(all, groupMembers);
+        if (starts[9 * g] == starts[9 * g + 9]) continue;
+        const auto [centre, reach] = centreAndReach(&groups.directions[starts[9 * g]], starts[9 * g + 9] - starts[9 * g]);
         groups.groupCenters.push_back(centre);
         groups.groupReach.push_back(reach);
         groups.groupStarts.push_back(uint32_t(groups.subCenters.size()));
