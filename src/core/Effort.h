@@ -10,9 +10,9 @@ namespace conescope {
 //  Fast:     meshoptimizer's meshlets (cone weight 1; the default budget builds them anyway), then
 //            greedy moves of border faces;
 //  Balanced: the same start, then annealing: two to ten sweeps on a mesh of one part (below 2,048
-//            faces), one on each part of a larger mesh; where the meshlets leave most triangles in
-//            clusters with no cone (foliage, props of a few clusters), clusters grown from like
-//            normals too, and the better kept (the default);
+//            faces), one on each part of a larger mesh; clusters grown from like normals too, and
+//            the better kept, on a mesh below 20,000 faces and where the meshlets leave most
+//            triangles in clusters with no cone (foliage) (the default);
 //  Best:     clusters grown from like normals and reduced to the budget, also started from
 //            meshoptimizer's meshlets where growth misses the budget or the mesh is small, and up
 //            to 100 annealing sweeps; then the balanced search too, whose partition is kept where

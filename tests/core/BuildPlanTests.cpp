@@ -14,6 +14,8 @@
 
 #include "TestMeshes.h"
 #include "core/ClusterOptimizer.h"
+#include "core/Settings.h"
+#include "core/meshopt/Meshopt.h"
 #include "core/optimizer/BuildPlan.h"
 
 using namespace conescope;
@@ -24,13 +26,18 @@ BuildFacts factsOf(size_t faces, size_t meshletCount, size_t fewest) { return {f
 
 }  // namespace
 
+// The default budget starts from meshoptimizer's searched meshlets; the balanced level also grows
+// clusters over the whole of a mesh of several meshlet parts below kGrowWholeBelowFaces (a mesh of
+// one part grows its own in the search, Runs.h).
 TEST(BuildPlan, TheDefaultBudgetKeepsMeshoptimizersSearchedMeshlets) {
-    for (Effort effort : {Effort::Fast, Effort::Balanced}) {
-        const BuildPlan plan = planBuild(effort, 0, factsOf(5000, 0, 20));
-        EXPECT_EQ(plan.start, BuildStart::Meshlets);
-        EXPECT_EQ(plan.alsoGrown, AlsoGrown::Never);
-        EXPECT_FALSE(plan.annealFurther || plan.packWhenMissed || plan.climb || plan.alsoBalanced);
-    }
+    for (Effort effort : {Effort::Fast, Effort::Balanced})
+        for (size_t faces : {size_t(1000), size_t(5000), kGrowWholeBelowFaces - 1, kGrowWholeBelowFaces}) {
+            const BuildPlan plan = planBuild(effort, 0, factsOf(faces, 0, 20));
+            EXPECT_EQ(plan.start, BuildStart::Meshlets);
+            const bool whole = effort == Effort::Balanced && meshletPartsFor(faces) > 1 && faces < kGrowWholeBelowFaces;
+            EXPECT_EQ(plan.alsoGrown, whole ? AlsoGrown::Always : AlsoGrown::Never) << toString(effort) << " " << faces;
+            EXPECT_FALSE(plan.annealFurther || plan.packWhenMissed || plan.climb || plan.alsoBalanced);
+        }
 }
 
 TEST(BuildPlan, ExplicitBudgetsBelowTheCount) {

@@ -64,8 +64,8 @@ void expectCullMapShares(const RunStatistics& run, const Mesh& mesh, const Setti
                 EXPECT_EQ(cluster.cullFraction, cluster.oracleFraction);
             else if (result.test == CullTest::Octagon)
                 EXPECT_DOUBLE_EQ(cluster.cullFraction, octagonShare);
-            else if (result.test == CullTest::OctagonCompact)
-                EXPECT_LE(cluster.cullFraction, octagonShare + 1e-12) << "the compact octagon only ever culls less";
+            else if (result.test == CullTest::OctagonCompact)  // its best of 16 turns can beat the least-area octagon's by a little
+                EXPECT_LE(cluster.cullFraction, octagonShare + 0.01) << "the compact octagon is the float one's, turned and rounded";
             else if (readsOwnRecord(result.test))
                 EXPECT_TRUE(cluster.cullFraction >= 0.0 && cluster.cullFraction <= 1.0) << toString(result.test);
             else

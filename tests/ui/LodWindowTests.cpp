@@ -72,8 +72,8 @@ private slots:
     void cutNumbersEqualTheCommandLine() {
         const glm::dvec3 eye(0.2, 0.9, 1.6);
         window_->setEyePosition(eye);
-        window_->lodPanel()->thresholdBox()->setValue(3.0);
-        QCOMPARE(session().lodThreshold().value, 3.0);
+        window_->lodPanel()->thresholdBox()->setValue(2.0);
+        QCOMPARE(session().lodThreshold().value, 2.0);
         QCOMPARE(session().lodThreshold().screenHeight, 1080.0);
         QCOMPARE(session().lodThreshold().fovDegrees, 60.0);
         QTest::mouseClick(window_->lodPanel()->buildButton(), Qt::LeftButton);
@@ -83,7 +83,7 @@ private slots:
         choose(kLodCut);
         const LodStatistics* shown = session().lodStatistics();
         QVERIFY(shown);
-        const nlohmann::json cli = cliLod(eye, 3.0);
+        const nlohmann::json cli = cliLod(eye, 2.0);
         QVERIFY(!cli.is_null());
         const LodCutView& cut = shown->cut.views.front();
         QCOMPARE(cli["cut"]["views"].size(), size_t(1));

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <limits>
 
+#include "core/meshopt/Meshopt.h"
+
 namespace conescope {
 
 SearchPlan searchPlanFor(Effort effort, bool meshoptLimits) {
@@ -47,9 +49,13 @@ namespace {
 void chooseStart(BuildPlan& plan, const BuildFacts& facts) {
     if (!startsFromMeshlets(plan.effort, facts.meshoptLimits)) {
         plan.start = BuildStart::Grown;
-    } else if (plan.budget == 0 || plan.budget <= facts.meshletCount) {
+    } else if (plan.budget == 0) {
         plan.start = BuildStart::Meshlets;
-        plan.alsoGrown = plan.budget == 0 ? AlsoGrown::Never : plan.effort == Effort::Balanced ? AlsoGrown::Always : AlsoGrown::WhenMissed;
+        const bool wholeGrowth = plan.effort == Effort::Balanced && facts.faces < kGrowWholeBelowFaces && meshletPartsFor(facts.faces) > 1;
+        plan.alsoGrown = wholeGrowth ? AlsoGrown::Always : AlsoGrown::Never;
+    } else if (plan.budget <= facts.meshletCount) {
+        plan.start = BuildStart::Meshlets;
+        plan.alsoGrown = plan.effort == Effort::Balanced ? AlsoGrown::Always : AlsoGrown::WhenMissed;
     } else {
         plan.start = BuildStart::SplitMeshlets;
     }

@@ -24,6 +24,12 @@ constexpr size_t kPackingFacesAtMost = size_t(1) << 17;
 constexpr size_t kClimbWork = size_t(1) << 17;
 constexpr size_t kClimbStrideAtMost = 8;
 constexpr double kClimbAboveCount = 1.25;
+// At the default budget the balanced level also grows clusters over the whole of a mesh of several
+// meshlet parts below this many faces and keeps them where they cull more in expectation: across
+// the parts' seams, growth joins like normals that meshoptimizer's meshlets of separate pieces mix
+// (a prop of many parts: 1.09x on those of 2,048 faces and more, 3 of 4 below 0.8x of the earlier
+// build back). Above, it cost a third more for little (docs/dev/benchmarks-log.md, "Whole-mesh growth").
+constexpr size_t kGrowWholeBelowFaces = 20000;
 // A partition built for K cones: sweeps over the faces at most, and how far below zero a move
 // weighed with the kept sub-groups is still tried at the best effort (docs/benchmarks.md,
 // "A partition built for K cones").
@@ -47,8 +53,9 @@ struct BuildFacts {
 // budget above their count, or clusters grown from like normals and reduced to the budget.
 enum class BuildStart { Meshlets, SplitMeshlets, Grown };
 
-// From meshoptimizer's meshlets, whether clusters are grown too and the better at the budget kept:
-// never (the default budget), when the searched meshlets miss the budget, or always.
+// From meshoptimizer's meshlets, whether clusters are grown too and the better at the budget kept
+// (the meshlets' searched count at the default budget): never, when the searched meshlets miss the
+// budget, or always.
 enum class AlsoGrown { Never, WhenMissed, Always };
 
 struct BuildPlan {

@@ -255,12 +255,16 @@ ProgressCallback progressShare(const ProgressCallback& progress, double from, do
 Partition fromMeshlets(const BuildInputs& in, const BuildPlan& plan, const ProgressCallback& progress, const PartClusters& partDone) {
     const size_t sweeps = annealingSweepsFor(plan.effort, in.facts.faces, in.meshlets->partCount());
     const bool always = plan.alsoGrown == AlsoGrown::Always;
+    // Where growth always follows, the two share the progress, so it never runs back.
     const Partition searched = optimizeMeshletParts(in.mesh, in.faces, in.limits, plan.budget, plan.search, sweeps, *in.meshlets,
-                                                    progress, always ? PartClusters() : partDone);
+                                                    always ? progressShare(progress, 0.0, 0.5) : progress, always ? PartClusters() : partDone);
     if (plan.alsoGrown == AlsoGrown::Never || (!always && searched.clusterCount <= plan.budget)) return searched;
-    const Partition grown = optimizeGrownParts(in.mesh, in.faces, in.limits, plan.budget, plan.search,
-                                               annealingSweeps(plan.search, in.facts.faces), progress, {});
-    const bool grownKept = betterAtBudget(in.mesh, in.faces, grown, searched, plan.budget);
+    // At the default budget growth aims at the meshlets' own count, so never makes more clusters.
+    const size_t budget = plan.budget != 0 ? plan.budget : searched.clusterCount;
+    const Partition grown = optimizeGrownParts(in.mesh, in.faces, in.limits, budget, plan.search,
+                                               annealingSweeps(plan.search, in.facts.faces),
+                                               always ? progressShare(progress, 0.5, 1.0) : progress, {});
+    const bool grownKept = betterAtBudget(in.mesh, in.faces, grown, searched, budget);
     const Partition& kept = grownKept ? grown : searched;
     if (always || grownKept) heardAsOnePart(partDone, in.facts.faces, kept);  // else its parts were heard
     return kept;
