@@ -27,8 +27,8 @@ constexpr double kClimbAboveCount = 1.25;
 // At the default budget the balanced level also grows clusters over the whole of a mesh of several
 // meshlet parts below this many faces and keeps them where they cull more in expectation: across
 // the parts' seams, growth joins like normals that meshoptimizer's meshlets of separate pieces mix
-// (a prop of many parts: 1.09x on those of 2,048 faces and more, 3 of 4 below 0.8x of the earlier
-// build back). Above, it cost a third more for little (docs/dev/benchmarks-log.md, "Whole-mesh growth").
+// (props of 2,048 faces and more: 1.08x an earlier build's culling, from 1.02x, for 1.4x their time).
+// Up to 70,000 faces it bought 0.6% more for a fifth more time (docs/dev/benchmarks-log.md).
 constexpr size_t kGrowWholeBelowFaces = 20000;
 // A partition built for K cones: sweeps over the faces at most, and how far below zero a move
 // weighed with the kept sub-groups is still tried at the best effort (docs/benchmarks.md,
