@@ -23,7 +23,7 @@ namespace conescope {
 class EngineRecords;
 std::shared_ptr<EngineRecords> makeEngineRecords();
 
-// Chosen: per cluster, the offered cone and octagon turn that culls most (ChosenCones.h).
+// Chosen: per cluster, the offered cone whose octagon test culls from the most eyes (ChosenCones.h).
 enum class ConeMethod { Average, SeedSphere, Minimal, Meshopt, Chosen };
 enum class SphereMethod { Ritter, Minimal };
 // The default cone and sphere (with kDefaultTest, CullTest.h): per cluster the offered cone that

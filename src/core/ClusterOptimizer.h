@@ -36,7 +36,7 @@ size_t fewestClustersWithin(const Mesh& mesh, const MeshletLimits& limits);
 // holding every face, with the partition returned.
 using PartClusters = std::function<void(size_t part, size_t parts, const std::vector<uint32_t>& faces, const Partition& clusters)>;
 
-// The culling efficiency a run reports for a partition (its shown cone and test from its views), so
+// The culling efficiency a run reports for a partition (its shown cone and test from its orbit), so
 // that the best effort never culls less there than balanced (buildPartition makes it from Settings).
 using PartitionMeasure = std::function<double(const Partition&)>;
 

@@ -25,7 +25,7 @@ enum class Effort { Fast, Balanced, Best };
 // What the best effort's two searches made (buildOptimizedClusters, ClusterOptimizer.h), so a run can
 // say when best gave the balanced search's partition and why: its own came farther from the budget,
 // or at one count culled less in expectation over far views (expectedCullRate) or as the run measures
-// it (its shown cone and test from its views: shownEfficiency, Statistics.h).
+// it (its shown cone and test from its orbit: shownEfficiency, Statistics.h).
 struct BestEffortChoice {
     bool ran = false;           // the best effort built both; nothing else below is set otherwise
     bool keptBalanced = false;  // the partition returned is the balanced search's

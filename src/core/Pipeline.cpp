@@ -150,12 +150,6 @@ Eye eyeAt(const Settings& settings, const glm::dvec3& position, const Aabb& worl
     return viewsFor(single, worldBox).front();
 }
 
-std::vector<Eye> orbitOf(const Settings& settings, const Aabb& worldBox) {
-    Settings orbit = settings;
-    orbit.eye.reset();
-    return viewsFor(orbit, worldBox);
-}
-
 size_t nearestOrbitView(const Settings& settings, const Aabb& worldBox, const glm::dvec3& position) {
     const glm::dvec3 center(worldBox.center());
     const std::vector<Eye> views = orbitOf(settings, worldBox);

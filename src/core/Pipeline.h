@@ -91,9 +91,6 @@ CullingInput cullingInput(const PreparedMesh& prepared, const ClusterSet& cluste
 // orthographic eye at the centre.
 Eye eyeAt(const Settings& settings, const glm::dvec3& position, const Aabb& worldBox);
 
-// The standard orbit of the settings (views, distance, projection), ignoring settings.eye.
-std::vector<Eye> orbitOf(const Settings& settings, const Aabb& worldBox);
-
 // The orbit view whose direction from the mesh centre is nearest the eye's at `position` (every
 // orbit eye lies on that ray from the centre); 0 for an eye at the centre. Where stepping through
 // the orbit goes on from when the eye was moved off it.

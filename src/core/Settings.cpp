@@ -112,4 +112,10 @@ std::vector<Eye> viewsFor(const Settings& settings, const Aabb& worldBox) {
     return orbitViews(worldBox, settings.views, settings.distance, settings.orthographic);
 }
 
+std::vector<Eye> orbitOf(const Settings& settings, const Aabb& worldBox) {
+    Settings orbit = settings;
+    orbit.eye.reset();
+    return viewsFor(orbit, worldBox);
+}
+
 }  // namespace conescope

@@ -62,5 +62,7 @@ CullTest displayedTest(const Settings& settings);
 
 // The views a run uses: the single eye if set, else the standard orbit around the world AABB.
 std::vector<Eye> viewsFor(const Settings& settings, const Aabb& worldBox);
+// The standard orbit of the settings (views, distance, projection), ignoring settings.eye.
+std::vector<Eye> orbitOf(const Settings& settings, const Aabb& worldBox);
 
 }  // namespace conescope

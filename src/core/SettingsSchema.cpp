@@ -348,13 +348,14 @@ bool sameSettings(const Settings& a, const Settings& b) {
 }
 
 std::optional<Stage> firstStaleStage(const Settings& before, const Settings& after) {
-    // The best effort keeps whichever of its two searches culls more as the run measures it
-    // (buildPartition): its cone, sphere, test and views choose the partition too.
+    // The best effort keeps whichever of its two searches culls more as the run measures it from its
+    // orbit (shownEfficiency): its cone, sphere, test and orbit choose the partition too; an eye does not.
     const bool judgedByTheRun = after.builder == Builder::Optimized && after.effort == Effort::Best;
     std::optional<Stage> stale;
     for (const SettingField& field : settingFields()) {
         if (!fieldMatters(field, after) || field.value(before) == field.value(after)) continue;
-        const Stage invalidates = judgedByTheRun ? std::min(field.invalidates, Stage::Clusters) : field.invalidates;
+        const bool choosesClusters = judgedByTheRun && field.key != "eye";
+        const Stage invalidates = choosesClusters ? std::min(field.invalidates, Stage::Clusters) : field.invalidates;
         if (!stale || invalidates < *stale) stale = invalidates;
     }
     return stale;

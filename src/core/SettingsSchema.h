@@ -82,8 +82,8 @@ std::string settingHelp(const SettingField& field);
 bool sameSettings(const Settings& a, const Settings& b);
 
 // The earliest stage that differs between `before` and `after`: a change of builder, or of a field
-// that matters to `after` (at the optimized builder's best effort every field is the partition's:
-// it chooses by the run's own measure). Empty when nothing that matters changed.
+// that matters to `after` (at the optimized builder's best effort every field but the eye is the
+// partition's: it chooses by the run's own orbit). Empty when nothing that matters changed.
 std::optional<Stage> firstStaleStage(const Settings& before, const Settings& after);
 
 // "x,y,z" as three finite numbers, whatever the C locale. Throws std::invalid_argument.

@@ -68,7 +68,7 @@ std::string bestEffortNote(const BestEffortChoice& choice) {
     // At one count: each measure by which best's own culled less, with both figures.
     char figures[2][128] = {"", ""};
     if (choice.ownEfficiency < choice.balancedEfficiency)
-        std::snprintf(figures[0], sizeof figures[0], "from the run's views (%.3f against %.3f)", choice.balancedEfficiency,
+        std::snprintf(figures[0], sizeof figures[0], "from the run's orbit (%.3f against %.3f)", choice.balancedEfficiency,
                       choice.ownEfficiency);
     if (choice.ownExpected < choice.balancedExpected)
         std::snprintf(figures[1], sizeof figures[1], "in expectation over far views (%.3f against %.3f)", choice.balancedExpected,
@@ -81,7 +81,7 @@ std::string bestEffortNote(const BestEffortChoice& choice) {
 double shownEfficiency(const Mesh& mesh, const FaceGeometry& faces, const Partition& partition, const Settings& settings) {
     const std::vector<glm::vec3> world = worldPositions(mesh);
     const ClusterBounds bounds = computeClusterBounds(mesh, world, faces, partition, displayedCone(settings), settings.sphere);
-    return measureCulling({mesh, world, faces, bounds}, viewsFor(settings, computeAabb(world)), displayedTest(settings)).efficiency;
+    return measureCulling({mesh, world, faces, bounds}, orbitOf(settings, computeAabb(world)), displayedTest(settings)).efficiency;
 }
 
 double cullEfficiency(size_t trianglesCulled, size_t backFacingTriangles) {

@@ -119,12 +119,14 @@ std::string uncullableNote(size_t uncullableClusters, size_t clusters);
 
 // A sentence for the user when --effort best kept the balanced search's partition (BestEffortChoice),
 // saying why: best's own came farther from the budget, or culled less as the run measures it (its
-// shown cone and test from its views) or in expectation. Empty when best kept its own or did not run.
+// shown cone and test from its orbit) or in expectation. Empty when best kept its own or did not run.
 std::string bestEffortNote(const BestEffortChoice& choice);
 
-// The efficiency a run with these settings reports for this partition of the mesh: its shown cone
-// and test (displayedCone, displayedTest) from its views around the world box, as runStatistics
-// measures it. What the best effort tells its two searches apart by (buildPartition).
+// The efficiency a run with these settings reports for this partition of the mesh from its orbit:
+// its shown cone and test (displayedCone, displayedTest) from its orbit views around the world box,
+// as runStatistics measures it. What the best effort tells its two searches apart by
+// (buildPartition). A single eye (settings.eye) does not choose: the window moves its eye over one
+// partition, and `stats --eye` must give that partition's numbers.
 double shownEfficiency(const Mesh& mesh, const FaceGeometry& faces, const Partition& partition, const Settings& settings);
 
 // Statistics for one (cone, test) over the given views from prepared bounds. `progress` hears of

@@ -82,6 +82,20 @@ TEST(CliCompare, BestNeverCullsLessThanBalancedAsTheRunMeasures) {
     }
 }
 
+// A single eye does not choose best's partition: the window moves its eye over the partition its orbit
+// chose, and `stats --eye` gives that partition's numbers.
+TEST(CliCompare, BestChoosesByTheOrbitNotBySingleEye) {
+    for (const char* prop : {"bread", "rock1"}) {
+        const std::string mesh = std::string(CONESCOPE_TESTDATA_DIR) + "/props/" + prop + ".obj";
+        SCOPED_TRACE(mesh);
+        const nlohmann::json orbit = runStatsJson({mesh, "--effort", "best"});
+        const nlohmann::json eye = runStatsJson({mesh, "--effort", "best", "--eye", "30,-20,45"});
+        EXPECT_EQ(eye["view_count"], 1);
+        EXPECT_EQ(eye["best_effort"], orbit["best_effort"]);
+        EXPECT_EQ(eye["clusters"], orbit["clusters"]);
+    }
+}
+
 // Where best keeps balanced's partition, the text summary says so and why, with the figures of each
 // measure by which its own search culled less; where it keeps its own, and at the default effort, it
 // says nothing of it.
@@ -97,7 +111,7 @@ TEST(CliCompare, BestSaysWhenItKeepsTheBalancedPartition) {
               std::string::npos)
         << text.out;
     size_t measures = 0;
-    for (const auto& [measure, key] : {std::pair<std::string, std::string>{"from the run's views", "efficiency"},
+    for (const auto& [measure, key] : {std::pair<std::string, std::string>{"from the run's orbit", "efficiency"},
                                        {"in expectation over far views", "expected_efficiency"}}) {
         const double balanced = choice["balanced_" + key], own = choice["own_" + key];
         char figures[96];

@@ -150,4 +150,5 @@ TEST(SettingsSchema, AChangeMakesItsStageAndLaterOnesStale) {
              {"views", "7"}, {"distance", "5"}, {"tests", "apex"}, {"cones", "minimal"}, {"sphere", "ritter"}, {"orthographic", "true"}})
         EXPECT_EQ(staleAfter(key, text, best), Stage::Clusters) << key;
     EXPECT_EQ(staleAfter("fix_winding", "true", best), Stage::PreparedMesh);
+    EXPECT_EQ(staleAfter("eye", "1,2,3", best), Stage::Measurement) << "an eye looks at the orbit's partition";
 }

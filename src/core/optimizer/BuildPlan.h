@@ -15,8 +15,6 @@ namespace conescope {
 // The default budget for limits meshoptimizer does not take fills clusters to this share of a round
 // patch: 84 triangles at 64/124, about what meshoptimizer reaches at cone weight 1.
 constexpr double kDefaultFill = 0.68;
-// The default orbit's distance in half-diagonals of the mesh's box (Settings::distance).
-constexpr double kOrbitDistance = 3.0;
 // Packing and the further annealing of an explicit budget run on meshes up to this many faces.
 constexpr size_t kPackingFacesAtMost = size_t(1) << 17;
 // The climb searches on its own within this many face visits, every stride budgets at most this

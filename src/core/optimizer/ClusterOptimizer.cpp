@@ -399,7 +399,7 @@ Partition buildOptimizedClusters(const Mesh& mesh, const FaceGeometry& faces, co
     BestEffortChoice made;
     if (choice) *choice = made;
     if (mesh.faceCount() == 0) return {};
-    const double viewDistance = kOrbitDistance * double(computeAabb(mesh.positions).halfDiagonal());
+    const double viewDistance = kStandardOrbitDistance * double(computeAabb(mesh.positions).halfDiagonal());
     BuildInputs in{mesh, faces, limits, meshlets, {mesh.faceCount(), meshoptTakesLimits(limits), 0, fewestClustersWithin(mesh, limits), viewDistance, conesPerCluster}};
     // One stream of meshoptimizer's meshlets for every step; its count (which waits for every
     // meshlet) is asked for only where an explicit budget is set against it.
